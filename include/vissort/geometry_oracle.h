@@ -1,0 +1,39 @@
+#pragma once
+// Occlusion oracles that answer from triangles seen through a camera: the backends.
+
+#include <memory>
+#include <span>
+#include <string>
+
+#include "vissort/camera.h"
+#include "vissort/geometry.h"
+#include "vissort/occlusion_oracle.h"
+
+namespace vissort {
+
+/// Depth tolerance, in units of the depth d (camera.h): a fragment is "behind" only when its
+/// depth exceeds the stored depth by more than this, so coplanar, touching and shared-edge
+/// surfaces never count as occluding each other.
+inline constexpr float kDepthTolerance = 1.0f / (1 << 20);
+
+class GeometryOracle : public OcclusionOracle {
+public:
+    /// Binds what later primitive ids refer to: primitive i is the triangles
+    /// primitives[i] of positions, seen through view. The three must stay alive and unchanged
+    /// until the next bind (the oracle keeps references, or copies what it needs).
+    /// Also clears the depth buffer. Call again after positions change (a new frame).
+    virtual void bind(const TrianglePositions& positions, const ViewProjection& view,
+                      std::span<const PrimitiveRange> primitives) = 0;
+};
+
+enum class OracleKind { cpu, exact };
+
+/// "cpu" or "exact"; empty optional-like: returns false when the name is unknown.
+bool parseOracleKind(const std::string& name, OracleKind& kind);
+const char* oracleName(OracleKind kind);
+
+/// The plain CPU depth rasterizer (raster/cpu_oracle.h) or the ray-cast reference
+/// (exact/exact_oracle.h).
+std::unique_ptr<GeometryOracle> makeOracle(OracleKind kind);
+
+} // namespace vissort

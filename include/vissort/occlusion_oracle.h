@@ -1,0 +1,50 @@
+#pragma once
+// The comparison operation of Vis-sort in 3D: occlusion queries against a depth buffer that holds
+// the union of the primitives drawn since the last clear. The core sees only primitive ids
+// 0..primitiveCount()-1; what a primitive is (an object, a triangle) is the backend's business.
+//
+// To implement an oracle:
+//  - primitiveCount(): how many primitives the ids refer to;
+//  - clear(): empty the depth buffer (every pixel infinitely far);
+//  - draw(p): rasterize p with depth test LESS and depth writes on;
+//  - anyBehind(p): true when some fragment of p lies strictly behind the stored depth, beyond the
+//    backend's documented tolerance (depth test GREATER, no writes). Must not change the buffer.
+//  - optionally override the pass-level batches below, which the core uses; their default
+//    implementations call the three primitive operations in the order documented, so an
+//    override must give the same answers (it may reorder work that has no data dependency).
+// Only standard-library types appear here: the core depends on nothing else.
+
+#include <cstdint>
+#include <span>
+
+namespace vissort {
+
+class OcclusionOracle {
+public:
+    virtual ~OcclusionOracle() = default;
+
+    virtual uint32_t primitiveCount() const = 0;
+    virtual void clear() = 0;
+    virtual void draw(uint32_t primitive) = 0;
+    virtual bool anyBehind(uint32_t primitive) = 0;
+
+    /// Vis-sort's pass 1. Clears, then for i = sequence.size()-1 down to 0:
+    ///   if query[i]: behind[i] = anyBehind(sequence[i]);  then always draw(sequence[i]).
+    /// No draw depends on an answer, so a backend may answer every query at the end.
+    /// query and behind have sequence.size() entries; behind[i] is untouched where !query[i].
+    virtual void backToFrontPass(std::span<const uint32_t> sequence,
+                                 std::span<const uint8_t> query, std::span<uint8_t> behind);
+
+    /// Vis-sort's pass 2. Clears, then for i = 0 up to sequence.size()-1:
+    ///   if query[i]: behind[i] = anyBehind(sequence[i]); draw only if behind[i];
+    ///   else draw(sequence[i]).
+    /// Here a draw depends on its own query's answer (conditional rendering on a GPU).
+    virtual void frontToBackPass(std::span<const uint32_t> sequence,
+                                 std::span<const uint8_t> query, std::span<uint8_t> behind);
+
+    /// Group test: clears, draws every occluder, then behind[i] = anyBehind(targets[i]).
+    virtual void queryAgainst(std::span<const uint32_t> occluders,
+                              std::span<const uint32_t> targets, std::span<uint8_t> behind);
+};
+
+} // namespace vissort

@@ -1,0 +1,39 @@
+#pragma once
+// Vis-sort in 3D (Govindaraju, Henson, Lin, Manocha, I3D 2005, section 4): a front-to-back
+// visibility order of primitives computed with occlusion queries only, and the cycles that make
+// a strict order impossible. Depends on nothing but the standard library.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "vissort/occlusion_oracle.h"
+
+namespace vissort {
+
+/// What one ordering cost, counted in oracle operations.
+struct VisSortStats {
+    uint64_t queries = 0;     // anyBehind answers asked for
+    uint64_t draws = 0;       // primitives drawn into the depth buffer
+    uint64_t clears = 0;      // depth buffer clears (one per pass or group test)
+    uint32_t iterations = 0;  // Vis-sort iterations (pass 1 + pass 2)
+    uint32_t stuck_iterations = 0;  // iterations that output nothing (a cycle was met)
+};
+
+struct VisibilityOrder {
+    /// Primitive ids front to back: a permutation of 0..n-1.
+    std::vector<uint32_t> order;
+    /// Each cycle: the primitives of one strongly connected component (of two or more) of the
+    /// occlusion graph among primitives that could not be ordered, ascending ids.
+    std::vector<std::vector<uint32_t>> cycles;
+    VisSortStats stats;
+};
+
+/// Orders the oracle's primitives front to back.
+/// initial_order is the list I to start from (a permutation of 0..n-1): the previous frame's
+/// order for coherence, or a depth-key order; the closer to a visibility order, the fewer
+/// queries. On return order is complete even when there are cycles: see docs/algorithm.md for
+/// how cycles are found and broken.
+VisibilityOrder visSort(OcclusionOracle& oracle, std::span<const uint32_t> initial_order);
+
+} // namespace vissort

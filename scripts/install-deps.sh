@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs everything vissort needs to build and test on Debian 12, from Debian's packages.
+# Idempotent; run as root. Each package and why: README.md, "Dependencies".
+set -euo pipefail
+
+packages=(
+  ca-certificates
+  g++ cmake make             # C++20 compiler and build
+  libassimp-dev              # reading OBJ, PLY, STL, glTF/GLB and the rest
+  libglm-dev                 # camera and transform maths
+  nlohmann-json3-dev         # JSON scenes and --json output
+  libcli11-dev               # command-line parsing
+  libembree-dev              # ray casting for the exact oracle and the ground truth
+  libgtest-dev               # the test suite
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages already installed"
+  exit 0
+fi
+if [ "$(id -u)" -ne 0 ]; then
+  echo "install-deps: missing ${missing[*]}; run this script as root" >&2
+  exit 1
+fi
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -q
+apt-get install -y -q --no-install-recommends "${missing[@]}"

@@ -1,0 +1,142 @@
+#include "vissort/camera.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+namespace vissort {
+namespace {
+
+glm::dvec3 toGlm(const Vec3& v) { return {v.x, v.y, v.z}; }
+Vec3 fromGlm(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+
+glm::dmat4 toMat(const std::array<double, 16>& m) { return glm::make_mat4(m.data()); }
+
+std::array<double, 16> fromMat(const glm::dmat4& m) {
+    std::array<double, 16> out{};
+    const double* p = glm::value_ptr(m);
+    std::copy(p, p + 16, out.begin());
+    return out;
+}
+
+bool isFinite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// A sphere of radius 0 (one point) still gets a usable frame.
+double framingRadius(const Bounds& b) { return b.radius() > 0 ? b.radius() : 1.0; }
+
+} // namespace
+
+std::string validateCamera(const CameraSpec& camera) {
+    if (camera.projection == Projection::orthographic) {
+        if (!isFinite(camera.ortho_direction)) return "orthographic direction is not finite";
+        if (glm::length(toGlm(camera.ortho_direction)) < 1e-12) return "orthographic direction is zero";
+        return {};
+    }
+    if (!isFinite(camera.eye) || !isFinite(camera.target) || !isFinite(camera.up))
+        return "camera eye, target and up must be finite";
+    if (!(camera.fov_degrees > 0 && camera.fov_degrees < 180))
+        return "field of view must be between 0 and 180 degrees (exclusive)";
+    const glm::dvec3 forward = toGlm(camera.target) - toGlm(camera.eye);
+    if (glm::length(forward) < 1e-12) return "camera eye and target coincide";
+    const glm::dvec3 up = toGlm(camera.up);
+    if (glm::length(up) < 1e-12) return "camera up vector is zero";
+    if (glm::length(glm::cross(glm::normalize(forward), glm::normalize(up))) < 1e-9)
+        return "camera up vector is parallel to the view direction";
+    return {};
+}
+
+CameraSpec defaultCamera(const Bounds& scene_bounds) {
+    CameraSpec camera;
+    camera.projection = Projection::perspective;
+    camera.fov_degrees = 45.0;
+    const glm::dvec3 centre = toGlm(scene_bounds.centre());
+    const double r = framingRadius(scene_bounds);
+    // Far enough that the bounding sphere fits in the vertical field of view, with a margin.
+    const double distance = r / std::sin(glm::radians(camera.fov_degrees) / 2) * 1.05;
+    camera.eye = fromGlm(centre + glm::normalize(glm::dvec3(0.6, 0.5, 1.0)) * distance);
+    camera.target = fromGlm(centre);
+    camera.up = {0, 1, 0};
+    return camera;
+}
+
+ViewProjection frameCamera(const CameraSpec& camera, const Bounds& scene_bounds, uint32_t width,
+                           uint32_t height) {
+    ViewProjection vp;
+    vp.projection = camera.projection;
+    vp.width = std::max<uint32_t>(width, 1);
+    vp.height = std::max<uint32_t>(height, 1);
+    const double aspect = double(vp.width) / double(vp.height);
+    const glm::dvec3 centre = toGlm(scene_bounds.centre());
+    const double r = framingRadius(scene_bounds);
+
+    glm::dmat4 view, projection(0.0);
+    if (camera.projection == Projection::perspective) {
+        const glm::dvec3 eye = toGlm(camera.eye);
+        view = glm::lookAt(eye, toGlm(camera.target), toGlm(camera.up));
+        const double distance = glm::length(eye - centre);
+        vp.near = std::max(distance - r, r * 1e-3) * 0.99;
+        vp.far = INFINITY;
+        const glm::dmat4 gl = glm::perspective(glm::radians(camera.fov_degrees), aspect, 1.0, 2.0);
+        projection[0][0] = gl[0][0];
+        projection[1][1] = gl[1][1];
+        // z_clip = z - near and w_clip = z, with z = -z_eye the distance along the view
+        // direction: z_clip / w_clip = 1 - near / z.
+        projection[2][2] = -1.0;
+        projection[3][2] = -vp.near;
+        projection[2][3] = -1.0;
+        vp.eye_position = camera.eye;
+        vp.forward = fromGlm(glm::normalize(toGlm(camera.target) - eye));
+    } else {
+        const glm::dvec3 dir = glm::normalize(toGlm(camera.ortho_direction));
+        const glm::dvec3 up0 = std::abs(dir.y) > 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+        const glm::dvec3 right = glm::normalize(glm::cross(dir, up0));
+        const glm::dvec3 up = glm::cross(right, dir);
+        const glm::dvec3 eye = centre - dir * (2.0 * r);
+        view = glm::lookAt(eye, centre, up);
+        // The sphere spans distances [r, 3r] from the eye; keep a margin on both sides.
+        vp.near = 0.5 * r;
+        vp.far = 3.5 * r;
+        projection[0][0] = 1.0 / (r * aspect);
+        projection[1][1] = 1.0 / r;
+        projection[2][2] = -1.0 / (vp.far - vp.near);
+        projection[3][2] = -vp.near / (vp.far - vp.near);
+        projection[3][3] = 1.0;
+        vp.eye_position = fromGlm(eye);
+        vp.forward = fromGlm(dir);
+    }
+    vp.view = fromMat(view);
+    vp.projection_matrix = fromMat(projection);
+    return vp;
+}
+
+std::array<double, 4> ViewProjection::toClip(const Vec3& world) const {
+    const glm::dvec4 clip = toMat(projection_matrix) * toMat(view) * glm::dvec4(toGlm(world), 1.0);
+    return {clip.x, clip.y, clip.z, clip.w};
+}
+
+double ViewProjection::depthOf(const Vec3& world) const {
+    const double z = -(toMat(view) * glm::dvec4(toGlm(world), 1.0)).z;
+    if (projection == Projection::perspective) return 1.0 - near / z;
+    return (z - near) / (far - near);
+}
+
+void ViewProjection::pixelRay(double px, double py, Vec3& origin, Vec3& direction) const {
+    const double x_ndc = 2.0 * px / width - 1.0;
+    const double y_ndc = 1.0 - 2.0 * py / height;
+    const glm::dmat4 inverse_view = glm::inverse(toMat(view));
+    const glm::dmat4& p = toMat(projection_matrix);
+    if (projection == Projection::perspective) {
+        const glm::dvec3 eye_dir(x_ndc / p[0][0], y_ndc / p[1][1], -1.0);
+        origin = eye_position;
+        direction = fromGlm(glm::normalize(glm::dvec3(inverse_view * glm::dvec4(eye_dir, 0.0))));
+    } else {
+        const glm::dvec3 eye_point(x_ndc / p[0][0], y_ndc / p[1][1], 0.0);
+        origin = fromGlm(glm::dvec3(inverse_view * glm::dvec4(eye_point, 1.0)));
+        direction = forward;
+    }
+}
+
+} // namespace vissort

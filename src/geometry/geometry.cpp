@@ -1,0 +1,36 @@
+#include "vissort/geometry.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vissort {
+
+void Bounds::add(const Vec3& p) {
+    min = {std::min(min.x, p.x), std::min(min.y, p.y), std::min(min.z, p.z)};
+    max = {std::max(max.x, p.x), std::max(max.y, p.y), std::max(max.z, p.z)};
+}
+
+Vec3 Bounds::centre() const {
+    if (isEmpty()) return {};
+    return {(min.x + max.x) / 2, (min.y + max.y) / 2, (min.z + max.z) / 2};
+}
+
+double Bounds::radius() const {
+    if (isEmpty()) return 0;
+    const double dx = max.x - min.x, dy = max.y - min.y, dz = max.z - min.z;
+    return std::sqrt(dx * dx + dy * dy + dz * dz) / 2;
+}
+
+void TrianglePositions::resize(std::size_t triangles) {
+    x.resize(triangles * 3);
+    y.resize(triangles * 3);
+    z.resize(triangles * 3);
+}
+
+Bounds TrianglePositions::bounds() const {
+    Bounds b;
+    for (std::size_t i = 0; i < x.size(); ++i) b.add(corner(i));
+    return b;
+}
+
+} // namespace vissort

@@ -1,0 +1,22 @@
+#pragma once
+// Reads triangle meshes with assimp. Internal: no assimp type leaves src/scene/.
+
+#include <cstddef>
+#include <string>
+
+#include "vissort/scene.h"
+
+namespace vissort::detail {
+
+/// Reads every mesh of a file as one object each, in file order (an OBJ `o`/`g` group is one
+/// mesh). Polygons are fan-triangulated in place; no vertex welding or reordering that would
+/// change triangle ids. Objects get the material's diffuse colour and opacity when the file has
+/// one (transparent when opacity < 1), else a default grey, opaque.
+Loaded<Scene> loadMeshFile(const std::string& path);
+
+/// The same from bytes in memory; `format_hint` is a file extension such as "obj".
+/// `label` names the source in error messages.
+Loaded<Scene> loadMeshMemory(const void* data, std::size_t size, const std::string& format_hint,
+                             const std::string& label);
+
+} // namespace vissort::detail
