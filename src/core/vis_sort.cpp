@@ -1,1 +1,160 @@
-// placeholder
+// Vis-sort in 3D: Govindaraju, Henson, Lin, Manocha, "Interactive Visibility Ordering and
+// Transparency Computations among Geometric Primitives in Complex Environments", I3D 2005,
+// section 4. The running minimum of Algorithm 3.1 becomes a depth buffer holding the union of a
+// set of primitives, and "x <= min" becomes an occlusion query that finds no fragment of x behind
+// it. docs/algorithm.md explains the passes, the constraints and how cycles are resolved.
+
+#include "vissort/vis_sort.h"
+
+#include <algorithm>
+#include <cassert>
+
+#include "source_cycle.h"
+
+namespace vissort {
+namespace {
+
+bool isPermutation(std::span<const uint32_t> ids, uint32_t n) {
+    if (ids.size() != n) return false;
+    std::vector<uint8_t> seen(n, 0);
+    for (uint32_t id : ids) {
+        if (id >= n || seen[id]) return false;
+        seen[id] = 1;
+    }
+    return true;
+}
+
+class VisSorter {
+public:
+    VisSorter(OcclusionOracle& oracle, std::span<const uint32_t> initial_order)
+        : oracle_(oracle), unsorted_(initial_order.begin(), initial_order.end()),
+          in_monotone_run_(unsorted_.size(), 0) {
+        result_.order.reserve(unsorted_.size());
+    }
+
+    VisibilityOrder run() {
+        while (!unsorted_.empty()) {
+            ++result_.stats.iterations;
+            buildMonotoneRun();
+            if (moveSortedToOutput() == 0) {
+                ++result_.stats.stuck_iterations;
+                outputSourceCycle();
+            }
+        }
+        return std::move(result_);
+    }
+
+private:
+    // Pass 1, back to front. Constraint 1: p joins M only if no fragment of p lies behind the
+    // union of the primitives after it. The back-most primitive joins without a query: the
+    // depth buffer is empty when it is met.
+    void buildMonotoneRun() {
+        in_monotone_run_.back() = 1;
+        query_.resize(unsorted_.size());
+        behind_.resize(unsorted_.size());
+        std::size_t queries = 0;
+        for (std::size_t i = 0; i < unsorted_.size(); ++i) {
+            query_[i] = in_monotone_run_[i] ? 0 : 1;
+            queries += query_[i];
+        }
+        if (queries == 0) return;  // everything is in M: no pass needed
+        oracle_.backToFrontPass(unsorted_, query_, behind_);
+        count(queries, unsorted_.size());
+        for (std::size_t i = 0; i < unsorted_.size(); ++i)
+            if (query_[i] && !behind_[i]) in_monotone_run_[i] = 1;
+    }
+
+    // Pass 2, front to back. Constraint 2: p in M is output only if no fragment of p lies behind
+    // the union of the unsorted primitives before it; primitives after it cannot occlude it,
+    // because it is in M. Then every primitive that occludes p has been output already.
+    // Returns how many primitives were output.
+    std::size_t moveSortedToOutput() {
+        const std::size_t before = result_.order.size();
+        // The leading members of M meet an empty depth buffer: out without a query.
+        std::size_t first = 0;
+        while (first < unsorted_.size() && in_monotone_run_[first])
+            result_.order.push_back(unsorted_[first++]);
+
+        const std::span<const uint32_t> rest = std::span(unsorted_).subspan(first);
+        query_.resize(rest.size());
+        behind_.resize(rest.size());
+        std::size_t queries = 0;
+        for (std::size_t i = 0; i < rest.size(); ++i) {
+            query_[i] = in_monotone_run_[first + i];
+            queries += query_[i];
+        }
+        std::size_t kept = 0;
+        if (queries > 0) {
+            oracle_.frontToBackPass(rest, query_, behind_);
+            std::size_t draws = 0;
+            for (std::size_t i = 0; i < rest.size(); ++i) {
+                const uint32_t p = rest[i];
+                const bool output = query_[i] && !behind_[i];
+                draws += output ? 0 : 1;
+                if (output) {
+                    result_.order.push_back(p);
+                } else {
+                    unsorted_[kept] = p;
+                    in_monotone_run_[kept++] = in_monotone_run_[first + i];
+                }
+            }
+            count(queries, draws);
+        } else {
+            // No member of M left to test: nothing else can be output in this pass.
+            for (std::size_t i = 0; i < rest.size(); ++i) {
+                unsorted_[kept] = rest[i];
+                in_monotone_run_[kept++] = in_monotone_run_[first + i];
+            }
+        }
+        unsorted_.resize(kept);
+        in_monotone_run_.resize(kept);
+        return result_.order.size() - before;
+    }
+
+    // No progress: every unsorted primitive is occluded by another unsorted one, so the occlusion
+    // graph among them has a cycle. Output a source component whole (members in list order: the
+    // cycle-breaking rule) and go on; M stays valid because primitives are only removed.
+    void outputSourceCycle() {
+        std::vector<uint32_t> cycle = detail::findSourceCycle(oracle_, unsorted_, result_.stats);
+        std::vector<uint8_t> in_cycle(oracle_.primitiveCount(), 0);
+        for (uint32_t p : cycle) {
+            in_cycle[p] = 1;
+            result_.order.push_back(p);
+        }
+        std::size_t kept = 0;
+        for (std::size_t i = 0; i < unsorted_.size(); ++i) {
+            if (in_cycle[unsorted_[i]]) continue;
+            unsorted_[kept] = unsorted_[i];
+            in_monotone_run_[kept++] = in_monotone_run_[i];
+        }
+        unsorted_.resize(kept);
+        in_monotone_run_.resize(kept);
+        if (cycle.size() > 1) {
+            std::sort(cycle.begin(), cycle.end());
+            result_.cycles.push_back(std::move(cycle));
+        }
+    }
+
+    void count(std::size_t queries, std::size_t draws) {
+        result_.stats.clears += 1;
+        result_.stats.queries += queries;
+        result_.stats.draws += draws;
+    }
+
+    OcclusionOracle& oracle_;
+    std::vector<uint32_t> unsorted_;         // the list I, front to back
+    std::vector<uint8_t> in_monotone_run_;   // M, parallel to unsorted_
+    std::vector<uint8_t> query_, behind_;    // per-pass scratch
+    VisibilityOrder result_;
+};
+
+} // namespace
+
+VisibilityOrder visSort(OcclusionOracle& oracle, std::span<const uint32_t> initial_order) {
+    assert(isPermutation(initial_order, oracle.primitiveCount()));
+    (void)isPermutation;
+    if (initial_order.empty()) return {};
+    return VisSorter(oracle, initial_order).run();
+}
+
+} // namespace vissort

@@ -1,0 +1,96 @@
+// Finding a source strongly connected component by following occluders and contracting the
+// cycles the walk closes: the path-based idea of Purdom's transitive-closure algorithm (1970) and
+// Gabow's path-based SCC algorithm (2000), with edges discovered by group tests: one occlusion
+// query answers "is p behind any of this set", so one occluder is found by halving.
+
+#include "source_cycle.h"
+
+#include <algorithm>
+#include <cassert>
+
+namespace vissort::detail {
+namespace {
+
+class GroupTester {
+public:
+    GroupTester(OcclusionOracle& oracle, VisSortStats& stats) : oracle_(oracle), stats_(stats) {}
+
+    void test(std::span<const uint32_t> occluders, std::span<const uint32_t> targets,
+              std::span<uint8_t> behind) {
+        oracle_.queryAgainst(occluders, targets, behind);
+        stats_.clears += 1;
+        stats_.draws += occluders.size();
+        stats_.queries += targets.size();
+    }
+
+    /// One member of candidates that occludes target, given that the whole set does.
+    uint32_t findOccluder(std::vector<uint32_t> candidates, uint32_t target) {
+        uint8_t behind = 0;
+        while (candidates.size() > 1) {
+            const std::size_t half = candidates.size() / 2;
+            test(std::span(candidates).first(half), std::span(&target, 1), std::span(&behind, 1));
+            // Behind a union means behind one of its members, so when the first half does not
+            // occlude the target, the second half does.
+            if (behind)
+                candidates.resize(half);
+            else
+                candidates.erase(candidates.begin(), candidates.begin() + half);
+        }
+        return candidates.front();
+    }
+
+private:
+    OcclusionOracle& oracle_;
+    VisSortStats& stats_;
+};
+
+} // namespace
+
+std::vector<uint32_t> findSourceCycle(OcclusionOracle& oracle, std::span<const uint32_t> stuck,
+                                      VisSortStats& stats) {
+    assert(!stuck.empty());
+    GroupTester tester(oracle, stats);
+    constexpr int32_t kNotOnPath = -1;
+    std::vector<int32_t> path_index(oracle.primitiveCount(), kNotOnPath);
+    // path[k + 1] holds an occluder of a member of path[k]; each entry is strongly connected.
+    std::vector<std::vector<uint32_t>> path{{stuck.front()}};
+    path_index[stuck.front()] = 0;
+
+    std::vector<uint32_t> outside;
+    std::vector<uint8_t> behind;
+    for (;;) {
+        const auto top = static_cast<int32_t>(path.size() - 1);
+        const std::vector<uint32_t>& component = path.back();
+        outside.clear();
+        for (uint32_t p : stuck)
+            if (path_index[p] != top) outside.push_back(p);
+        behind.assign(component.size(), 0);
+        if (!outside.empty()) tester.test(outside, component, behind);
+        const auto occluded = std::find(behind.begin(), behind.end(), 1);
+        if (occluded == behind.end()) {
+            // Nothing outside occludes the component: it is a source. List it in stuck order.
+            std::vector<uint32_t> members;
+            for (uint32_t p : stuck)
+                if (path_index[p] == top) members.push_back(p);
+            return members;
+        }
+        const uint32_t target = component[occluded - behind.begin()];
+        const uint32_t occluder = tester.findOccluder(outside, target);
+        const int32_t found_at = path_index[occluder];
+        if (found_at == kNotOnPath) {
+            path.push_back({occluder});
+            path_index[occluder] = top + 1;
+            continue;
+        }
+        // occluder -> path[top] -> ... -> path[found_at] ∋ occluder closes a cycle: merge.
+        for (int32_t k = found_at + 1; k <= top; ++k) {
+            for (uint32_t p : path[k]) {
+                path_index[p] = found_at;
+                path[found_at].push_back(p);
+            }
+        }
+        path.resize(found_at + 1);
+    }
+}
+
+} // namespace vissort::detail

@@ -1,0 +1,189 @@
+// Vis-sort over an oracle whose "depth buffer" is a set and whose occlusion relation is an
+// explicit graph: the algorithm's output is checked against the graph itself (brute-force
+// reachability for the strongly connected components), independently of any geometry.
+#include "vissort/vis_sort.h"
+
+#include <algorithm>
+#include <numeric>
+#include <random>
+#include <set>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace vissort {
+namespace {
+
+class GraphOracle : public OcclusionOracle {
+public:
+    explicit GraphOracle(uint32_t n) : occludes_(n, std::vector<uint8_t>(n, 0)), drawn_(n, 0) {}
+    void addEdge(uint32_t front, uint32_t back) { occludes_[front][back] = 1; }
+    uint32_t primitiveCount() const override { return uint32_t(drawn_.size()); }
+    void clear() override { std::fill(drawn_.begin(), drawn_.end(), 0); }
+    void draw(uint32_t p) override { drawn_[p] = 1; }
+    bool anyBehind(uint32_t p) override {
+        ++queries;
+        for (uint32_t q = 0; q < drawn_.size(); ++q)
+            if (drawn_[q] && q != p && occludes_[q][p]) return true;
+        return false;
+    }
+    const std::vector<std::vector<uint8_t>>& edges() const { return occludes_; }
+    uint64_t queries = 0;
+
+private:
+    std::vector<std::vector<uint8_t>> occludes_;
+    std::vector<uint8_t> drawn_;
+};
+
+std::vector<uint32_t> identity(uint32_t n) {
+    std::vector<uint32_t> v(n);
+    std::iota(v.begin(), v.end(), 0u);
+    return v;
+}
+
+// Nontrivial strongly connected components by transitive closure (Warshall).
+std::set<std::vector<uint32_t>> referenceCycles(const GraphOracle& g) {
+    const uint32_t n = g.primitiveCount();
+    auto reach = g.edges();
+    for (uint32_t k = 0; k < n; ++k)
+        for (uint32_t i = 0; i < n; ++i)
+            if (reach[i][k])
+                for (uint32_t j = 0; j < n; ++j)
+                    if (reach[k][j]) reach[i][j] = 1;
+    std::set<std::vector<uint32_t>> cycles;
+    for (uint32_t i = 0; i < n; ++i) {
+        std::vector<uint32_t> component{i};
+        for (uint32_t j = 0; j < n; ++j)
+            if (j != i && reach[i][j] && reach[j][i]) component.push_back(j);
+        std::sort(component.begin(), component.end());
+        if (component.size() > 1) cycles.insert(component);
+    }
+    return cycles;
+}
+
+// Every edge front -> back between different components has front first.
+void expectRespectsEdges(const GraphOracle& g, const VisibilityOrder& r) {
+    const uint32_t n = g.primitiveCount();
+    ASSERT_EQ(r.order.size(), n);
+    std::vector<uint32_t> position(n, UINT32_MAX), component(n);
+    std::iota(component.begin(), component.end(), 0u);
+    for (uint32_t i = 0; i < n; ++i) {
+        ASSERT_LT(r.order[i], n);
+        ASSERT_EQ(position[r.order[i]], UINT32_MAX) << "duplicate id " << r.order[i];
+        position[r.order[i]] = i;
+    }
+    for (std::size_t c = 0; c < r.cycles.size(); ++c)
+        for (uint32_t p : r.cycles[c]) component[p] = n + uint32_t(c);
+    for (uint32_t a = 0; a < n; ++a)
+        for (uint32_t b = 0; b < n; ++b)
+            if (a != b && g.edges()[a][b] && component[a] != component[b])
+                EXPECT_LT(position[a], position[b]) << a << " occludes " << b;
+}
+
+TEST(VisSort, EmptyAndSingle) {
+    GraphOracle none(0);
+    EXPECT_TRUE(visSort(none, {}).order.empty());
+    GraphOracle one(1);
+    const auto order = identity(1);
+    const auto r = visSort(one, order);
+    EXPECT_EQ(r.order, order);
+    EXPECT_EQ(r.stats.queries, 0u);
+}
+
+TEST(VisSort, ChainGivenBackToFrontIsReversed) {
+    GraphOracle g(5);
+    for (uint32_t i = 0; i + 1 < 5; ++i) g.addEdge(i, i + 1);  // 0 in front of 1 in front of ...
+    const std::vector<uint32_t> reversed{4, 3, 2, 1, 0};
+    const auto r = visSort(g, reversed);
+    EXPECT_EQ(r.order, identity(5));
+    EXPECT_TRUE(r.cycles.empty());
+}
+
+TEST(VisSort, AlreadyOrderedInputCostsOneIterationAndLinearQueries) {
+    const uint32_t n = 200;
+    GraphOracle g(n);
+    std::mt19937 rng(3);
+    for (int e = 0; e < 600; ++e) {
+        uint32_t a = rng() % n, b = rng() % n;
+        if (a > b) std::swap(a, b);
+        if (a != b) g.addEdge(a, b);
+    }
+    const auto r = visSort(g, identity(n));
+    EXPECT_EQ(r.order, identity(n));
+    EXPECT_EQ(r.stats.iterations, 1u);
+    EXPECT_LE(r.stats.queries, 2u * n);
+}
+
+TEST(VisSort, TwoCycleIsReportedAndTheRestOrdered) {
+    GraphOracle g(4);
+    g.addEdge(0, 1);
+    g.addEdge(1, 2);
+    g.addEdge(2, 1);  // 1 and 2 overlap each other
+    g.addEdge(2, 3);
+    const auto r = visSort(g, identity(4));
+    ASSERT_EQ(r.cycles.size(), 1u);
+    EXPECT_EQ(r.cycles[0], (std::vector<uint32_t>{1, 2}));
+    EXPECT_EQ(r.order.front(), 0u);
+    EXPECT_EQ(r.order.back(), 3u);
+    EXPECT_GE(r.stats.stuck_iterations, 1u);
+}
+
+TEST(VisSort, ThreeSticksCycleIsOneComponentNotTheWholeRemainder) {
+    // Sticks 0 -> 1 -> 2 -> 0 and two primitives behind them that are not in the cycle.
+    GraphOracle g(5);
+    g.addEdge(0, 1);
+    g.addEdge(1, 2);
+    g.addEdge(2, 0);
+    g.addEdge(2, 3);
+    g.addEdge(3, 4);
+    const auto r = visSort(g, std::vector<uint32_t>{4, 3, 2, 1, 0});
+    ASSERT_EQ(r.cycles.size(), 1u);
+    EXPECT_EQ(r.cycles[0], (std::vector<uint32_t>{0, 1, 2}));
+    EXPECT_EQ(r.order[3], 3u);
+    EXPECT_EQ(r.order[4], 4u);
+}
+
+TEST(VisSort, RandomGraphsMatchBruteForceComponents) {
+    std::mt19937 rng(17);
+    for (int trial = 0; trial < 300; ++trial) {
+        const uint32_t n = 1 + rng() % 40;
+        GraphOracle g(n);
+        const double density = (rng() % 100) / 100.0 * 0.15;
+        const bool acyclic = trial % 3 == 0;
+        for (uint32_t a = 0; a < n; ++a)
+            for (uint32_t b = 0; b < n; ++b)
+                if (a != b && (rng() % 10000) < density * 10000 && (!acyclic || a < b))
+                    g.addEdge(a, b);
+        std::vector<uint32_t> start = identity(n);
+        std::shuffle(start.begin(), start.end(), rng);
+        const auto r = visSort(g, start);
+        expectRespectsEdges(g, r);
+        const auto expected = referenceCycles(g);
+        const std::set<std::vector<uint32_t>> reported(r.cycles.begin(), r.cycles.end());
+        EXPECT_EQ(reported.size(), r.cycles.size()) << "a cycle was reported twice";
+        EXPECT_EQ(reported, expected) << "trial " << trial;
+        if (acyclic) EXPECT_TRUE(r.cycles.empty());
+    }
+}
+
+TEST(VisSort, CoherentRestartFromTheLastOrderIsCheap) {
+    const uint32_t n = 300;
+    GraphOracle g(n);
+    std::mt19937 rng(23);
+    for (int e = 0; e < 2000; ++e) {
+        uint32_t a = rng() % n, b = rng() % n;
+        if (a > b) std::swap(a, b);
+        if (a != b) g.addEdge(a, b);
+    }
+    std::vector<uint32_t> start = identity(n);
+    std::shuffle(start.begin(), start.end(), rng);
+    const auto first = visSort(g, start);
+    const auto second = visSort(g, first.order);
+    EXPECT_EQ(second.order, first.order);
+    EXPECT_EQ(second.stats.iterations, 1u);
+    EXPECT_LT(second.stats.queries, first.stats.queries);
+    EXPECT_LE(second.stats.queries, 2u * n);
+}
+
+} // namespace
+} // namespace vissort
