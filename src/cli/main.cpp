@@ -1,1 +1,34 @@
-int main() { return 0; }
+// vissort: visibility orderings of 3D geometry from the command line.
+
+#include <iostream>
+
+#include "cli/commands.h"
+
+int main(int argc, char** argv) {
+    using namespace vissort::cli;
+    CLI::App app{"vissort: visibility ordering of 3D geometry with occlusion queries (Vis-sort)"};
+    app.require_subcommand(1);
+    OrderOptions order;
+    InfoOptions info;
+    CLI::App* order_command = addOrderCommand(app, order);
+    CLI::App* info_command = addInfoCommand(app, info);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        // One line, not CLI11's multi-line report.
+        return fail(kExitUsage, std::string(e.what()) + " (run 'vissort --help')");
+    }
+    try {
+        if (order_command->parsed()) return runOrder(order);
+        if (info_command->parsed()) return runInfo(info);
+    } catch (const std::bad_alloc&) {
+        return fail(kExitFailure, "out of memory (try a smaller --size or scene)");
+    } catch (const std::exception& e) {
+        return fail(kExitFailure, e.what());
+    }
+    return kExitUsage;
+}

@@ -1,1 +1,147 @@
-// placeholder
+#include <algorithm>
+#include <fstream>
+#include <iostream>
+#include <numeric>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.h"
+#include "vissort/scene_orderer.h"
+
+namespace vissort::cli {
+namespace {
+
+nlohmann::json frameRecord(const FrameOrder& frame, bool back_to_front) {
+    std::vector<uint32_t> order = frame.order;
+    if (back_to_front) std::reverse(order.begin(), order.end());
+    return {{"order", order},
+            {"level", orderLevelName(frame.level)},
+            {"cycles", frame.cycles},
+            {"stats",
+             {{"queries", frame.stats.queries},
+              {"draws", frame.stats.draws},
+              {"clears", frame.stats.clears},
+              {"iterations", frame.stats.iterations},
+              {"stuck_iterations", frame.stats.stuck_iterations},
+              {"ms", frame.milliseconds}}}};
+}
+
+// One `o prim_<id>` group per primitive so that any tool can check an order against it.
+bool dumpPrimitives(const std::string& path, const TrianglePositions& positions,
+                    std::span<const PrimitiveRange> primitives) {
+    std::ofstream out(path);
+    if (!out) return false;
+    out << "# vissort primitives: one group per primitive id, world space\n";
+    std::size_t next_vertex = 1;
+    for (std::size_t p = 0; p < primitives.size(); ++p) {
+        out << "o prim_" << p << '\n';
+        const std::size_t first = std::size_t(primitives[p].first_triangle) * 3;
+        const std::size_t count = std::size_t(primitives[p].triangle_count) * 3;
+        for (std::size_t c = first; c < first + count; ++c)
+            out << "v " << positions.x[c] << ' ' << positions.y[c] << ' ' << positions.z[c] << '\n';
+        for (std::size_t t = 0; t < count / 3; ++t, next_vertex += 3)
+            out << "f " << next_vertex << ' ' << next_vertex + 1 << ' ' << next_vertex + 2 << '\n';
+    }
+    return bool(out);
+}
+
+void printFrame(int index, const FrameOrder& frame) {
+    std::cout << "frame " << index << ": " << frame.order.size() << " primitives, "
+              << frame.cycles.size() << " cycles, " << frame.stats.iterations << " iterations, "
+              << frame.stats.queries << " queries, " << frame.stats.draws << " draws, "
+              << frame.milliseconds << " ms\n";
+}
+
+} // namespace
+
+CLI::App* addOrderCommand(CLI::App& app, OrderOptions& options) {
+    CLI::App* command = app.add_subcommand("order", "Compute a visibility order of a scene");
+    command->add_option("scene", options.scene,
+                        "Mesh file, JSON scene, or builtin:NAME?key=value&...")
+        ->required();
+    addViewOptions(*command, options.view);
+    command->add_option("--level", options.level, "object, triangle or multistage")
+        ->capture_default_str();
+    command->add_option("--oracle", options.oracle, "cpu or exact")->capture_default_str();
+    command->add_flag("--back-to-front", options.back_to_front,
+                      "Output back to front (default front to back)");
+    command->add_option("--json", options.json_path, "Write the order and statistics as JSON");
+    command->add_option("--dump-primitives", options.dump_path,
+                        "Write the last frame's primitives as OBJ, one group per id");
+    return command;
+}
+
+int runOrder(const OrderOptions& options) {
+    OrderLevel level;
+    if (!parseOrderLevel(options.level, level))
+        return fail(kExitUsage, "--level must be object, triangle or multistage, got '" +
+                                    options.level + "'");
+    OracleKind oracle_kind;
+    if (!parseOracleKind(options.oracle, oracle_kind))
+        return fail(kExitUsage, "--oracle must be cpu or exact, got '" + options.oracle + "'");
+    std::optional<Scene> scene = loadSceneOrReport(options.scene);
+    if (!scene) return kExitInput;
+    ResolvedView view;
+    if (auto error = resolveView(options.view, *scene, view); !error.empty())
+        return fail(kExitUsage, error);
+
+    std::unique_ptr<GeometryOracle> oracle = makeOracle(oracle_kind);
+    SceneOrderer orderer(*scene, level, *oracle);
+    const Bounds first_bounds = scene->positions.bounds();
+    TrianglePositions positions;
+    nlohmann::json frames = nlohmann::json::array();
+    FrameOrder last;
+    double total_ms = 0;
+    for (int f = 0; f < view.frames; ++f) {
+        scene->frame(f * kFrameInterval, positions);
+        const CameraSpec camera = cameraOnPath(view.camera, view.path, f, first_bounds);
+        const ViewProjection vp = frameCamera(camera, positions.bounds(), view.width, view.height);
+        last = orderer.orderFrame(positions, vp);
+        total_ms += last.milliseconds;
+        if (view.frames > 1) {
+            printFrame(f, last);
+            frames.push_back(frameRecord(last, options.back_to_front));
+        }
+    }
+
+    const char* unit = level == OrderLevel::object ? "objects" : "triangles";
+    std::cout << options.scene << ": " << scene->objects.size() << " objects, "
+              << scene->triangleCount() << " triangles; " << orderLevelName(level) << " level, "
+              << oracleName(oracle_kind) << " oracle, " << view.width << 'x' << view.height << ", "
+              << view.frames << (view.frames == 1 ? " frame\n" : " frames\n");
+    std::cout << "order (" << (options.back_to_front ? "back to front" : "front to back") << ") of "
+              << last.order.size() << ' ' << unit << ':';
+    std::vector<uint32_t> shown = last.order;
+    if (options.back_to_front) std::reverse(shown.begin(), shown.end());
+    for (std::size_t i = 0; i < std::min<std::size_t>(shown.size(), 20); ++i) std::cout << ' ' << shown[i];
+    std::cout << (shown.size() > 20 ? " ...\n" : "\n");
+    std::cout << "cycles: " << last.cycles.size();
+    for (std::size_t c = 0; c < std::min<std::size_t>(last.cycles.size(), 5); ++c) {
+        std::cout << (c ? "; " : " (") << last.cycles[c].size() << " primitives";
+        if (c + 1 == std::min<std::size_t>(last.cycles.size(), 5)) std::cout << ')';
+    }
+    std::cout << "\nlast frame: " << last.stats.iterations << " iterations, " << last.stats.queries
+              << " queries, " << last.stats.draws << " draws, " << last.milliseconds << " ms";
+    if (view.frames > 1) std::cout << "; mean " << total_ms / view.frames << " ms per frame";
+    std::cout << '\n';
+
+    if (!options.json_path.empty()) {
+        nlohmann::json document = frameRecord(last, options.back_to_front);
+        document["scene"] = options.scene;
+        document["oracle"] = oracleName(oracle_kind);
+        document["back_to_front"] = options.back_to_front;
+        document["size"] = {view.width, view.height};
+        if (view.frames > 1) document["frames"] = std::move(frames);
+        std::ofstream out(options.json_path);
+        out << document.dump(1) << '\n';
+        if (!out) return fail(kExitFailure, "cannot write " + options.json_path);
+    }
+    if (!options.dump_path.empty()) {
+        const auto primitives = primitivesOf(*scene, level);
+        if (!dumpPrimitives(options.dump_path, positions, primitives))
+            return fail(kExitFailure, "cannot write " + options.dump_path);
+    }
+    return kExitOk;
+}
+
+} // namespace vissort::cli

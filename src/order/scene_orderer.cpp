@@ -1,1 +1,140 @@
-// placeholder
+// Ordering scenes at a level, with the multi-stage scheme of Govindaraju et al. (I3D 2005,
+// section 5): order objects, then re-sort triangles only within each object or object cycle.
+
+#include "vissort/scene_orderer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <numeric>
+
+namespace vissort {
+namespace {
+
+void addStats(VisSortStats& total, const VisSortStats& part) {
+    total.queries += part.queries;
+    total.draws += part.draws;
+    total.clears += part.clears;
+    total.iterations += part.iterations;
+    total.stuck_iterations += part.stuck_iterations;
+}
+
+} // namespace
+
+bool parseOrderLevel(const std::string& name, OrderLevel& level) {
+    if (name == "object") level = OrderLevel::object;
+    else if (name == "triangle") level = OrderLevel::triangle;
+    else if (name == "multistage") level = OrderLevel::multistage;
+    else return false;
+    return true;
+}
+
+const char* orderLevelName(OrderLevel level) {
+    switch (level) {
+    case OrderLevel::object: return "object";
+    case OrderLevel::triangle: return "triangle";
+    case OrderLevel::multistage: return "multistage";
+    }
+    return "?";
+}
+
+std::vector<PrimitiveRange> primitivesOf(const Scene& scene, OrderLevel level) {
+    return level == OrderLevel::object ? scene.objectPrimitives() : scene.trianglePrimitives();
+}
+
+SceneOrderer::SceneOrderer(const Scene& scene, OrderLevel level, GeometryOracle& oracle)
+    : scene_(scene), level_(level), oracle_(oracle),
+      primitives_(level == OrderLevel::triangle ? scene.trianglePrimitives()
+                                                : scene.objectPrimitives()) {}
+
+VisibilityOrder SceneOrderer::sortPrimitives(const TrianglePositions& positions,
+                                             const ViewProjection& view,
+                                             std::span<const PrimitiveRange> primitives,
+                                             std::span<const uint32_t> previous_order) {
+    oracle_.bind(positions, view, primitives);
+    if (previous_order.size() == primitives.size()) return visSort(oracle_, previous_order);
+    const std::vector<uint32_t> start = depthKeyOrder(positions, view, primitives);
+    return visSort(oracle_, start);
+}
+
+FrameOrder SceneOrderer::orderFrame(const TrianglePositions& positions, const ViewProjection& view) {
+    const auto start = std::chrono::steady_clock::now();
+    FrameOrder frame;
+    if (level_ == OrderLevel::multistage) {
+        frame = orderMultistage(positions, view);
+    } else {
+        VisibilityOrder sorted = sortPrimitives(positions, view, primitives_, previous_order_);
+        previous_order_ = sorted.order;
+        frame.level = level_;
+        frame.order = std::move(sorted.order);
+        frame.cycles = std::move(sorted.cycles);
+        frame.stats = sorted.stats;
+    }
+    frame.milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return frame;
+}
+
+FrameOrder SceneOrderer::orderMultistage(const TrianglePositions& positions,
+                                         const ViewProjection& view) {
+    FrameOrder frame;
+    frame.level = OrderLevel::multistage;
+    // Stage 1: objects.
+    VisibilityOrder objects = sortPrimitives(positions, view, primitives_, previous_order_);
+    previous_order_ = objects.order;
+    addStats(frame.stats, objects.stats);
+
+    // Stage 2: a group is one object, or all objects of one cycle; groups come out whole and in
+    // object order (a cycle's members are contiguous in it), and no triangle of a later group
+    // occludes one of an earlier group, so ordering triangles within groups orders them all.
+    std::vector<int32_t> cycle_of(scene_.objects.size(), -1);
+    for (std::size_t c = 0; c < objects.cycles.size(); ++c)
+        for (uint32_t object : objects.cycles[c]) cycle_of[object] = int32_t(c);
+
+    const std::size_t triangle_count = positions.triangleCount();
+    const bool have_ranks = previous_triangle_rank_.size() == triangle_count;
+    std::vector<uint32_t> rank(triangle_count, 0);
+    std::vector<PrimitiveRange> group;
+    std::vector<uint32_t> group_start;
+    frame.order.reserve(triangle_count);
+    for (std::size_t i = 0; i < objects.order.size();) {
+        std::size_t end = i + 1;
+        if (cycle_of[objects.order[i]] >= 0)
+            while (end < objects.order.size() &&
+                   cycle_of[objects.order[end]] == cycle_of[objects.order[i]])
+                ++end;
+        group.clear();
+        for (std::size_t k = i; k < end; ++k) {
+            const SceneObject& object = scene_.objects[objects.order[k]];
+            for (uint32_t t = 0; t < object.triangle_count; ++t)
+                group.push_back({object.first_triangle + t, 1});
+        }
+        oracle_.bind(positions, view, group);
+        if (have_ranks) {
+            // Coherence: the group's triangles in last frame's order.
+            group_start.resize(group.size());
+            std::iota(group_start.begin(), group_start.end(), 0u);
+            std::sort(group_start.begin(), group_start.end(), [&](uint32_t a, uint32_t b) {
+                return previous_triangle_rank_[group[a].first_triangle] <
+                       previous_triangle_rank_[group[b].first_triangle];
+            });
+        } else {
+            group_start = depthKeyOrder(positions, view, group);
+        }
+        VisibilityOrder triangles = visSort(oracle_, group_start);
+        addStats(frame.stats, triangles.stats);
+        for (uint32_t local : triangles.order) {
+            rank[group[local].first_triangle] = uint32_t(frame.order.size());
+            frame.order.push_back(group[local].first_triangle);
+        }
+        for (auto& cycle : triangles.cycles) {
+            for (uint32_t& local : cycle) local = group[local].first_triangle;
+            std::sort(cycle.begin(), cycle.end());
+            frame.cycles.push_back(std::move(cycle));
+        }
+        i = end;
+    }
+    previous_triangle_rank_ = std::move(rank);
+    return frame;
+}
+
+} // namespace vissort

@@ -1,0 +1,28 @@
+#pragma once
+// Camera paths for multi-frame runs, shared by every command.
+
+#include <string>
+
+#include "vissort/camera.h"
+
+namespace vissort {
+
+enum class CameraPath {
+    fixed,       // "static": the same camera every frame
+    orbit,       // the eye (or orthographic direction) turns 3 degrees per frame about the
+                 // vertical axis through the scene's centre, keeping distance and height
+    flythrough,  // the eye flies inside the scene on a horizontal circle of radius 0.6 r around
+                 // the centre, 2 degrees per frame, looking along its direction of travel
+};
+
+bool parseCameraPath(const std::string& name, CameraPath& path);
+const char* cameraPathName(CameraPath path);
+
+/// The camera of frame `frame` (0 = the base camera itself, except for flythrough, which starts
+/// on its circle) for a scene whose first frame has the given bounds.
+CameraSpec cameraOnPath(const CameraSpec& base, CameraPath path, int frame, const Bounds& bounds);
+
+/// Seconds between frames of a dynamic scene.
+inline constexpr double kFrameInterval = 1.0 / 30.0;
+
+} // namespace vissort

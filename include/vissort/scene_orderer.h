@@ -1,0 +1,67 @@
+#pragma once
+// Ordering a scene frame by frame: the primitive level (objects, triangles, or the paper's
+// multi-stage scheme), the first-frame depth-key order, and coherence between frames.
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "vissort/camera.h"
+#include "vissort/geometry_oracle.h"
+#include "vissort/scene.h"
+#include "vissort/vis_sort.h"
+
+namespace vissort {
+
+enum class OrderLevel {
+    object,      // one primitive per object; ids are object ids
+    triangle,    // one primitive per triangle; ids are triangle ids
+    multistage,  // objects first, then the triangles of each object or cycle; triangle ids
+};
+
+bool parseOrderLevel(const std::string& name, OrderLevel& level);
+const char* orderLevelName(OrderLevel level);
+
+struct FrameOrder {
+    OrderLevel level = OrderLevel::object;
+    std::vector<uint32_t> order;                // front to back: object or triangle ids
+    std::vector<std::vector<uint32_t>> cycles;  // in the same ids, each ascending
+    VisSortStats stats;                         // summed over every stage
+    double milliseconds = 0;                    // wall time of orderFrame
+};
+
+/// The primitives of a level: one range per object, or one per triangle (multistage's output
+/// is triangles, so it uses the triangle ranges).
+std::vector<PrimitiveRange> primitivesOf(const Scene& scene, OrderLevel level);
+
+/// The first-frame order: primitives sorted front to back by the depth of their nearest corner
+/// in front of the near plane (a cheap key; ties and primitives entirely behind the camera keep
+/// id order after the rest).
+std::vector<uint32_t> depthKeyOrder(const TrianglePositions& positions, const ViewProjection& view,
+                                    std::span<const PrimitiveRange> primitives);
+
+/// Orders successive frames of one scene at one level with one oracle. Each frame starts from
+/// the previous frame's order (coherence); the first from depthKeyOrder.
+class SceneOrderer {
+public:
+    SceneOrderer(const Scene& scene, OrderLevel level, GeometryOracle& oracle);
+
+    /// Orders the scene's triangles at `positions` (scene.frame(t)) seen through view.
+    FrameOrder orderFrame(const TrianglePositions& positions, const ViewProjection& view);
+
+private:
+    FrameOrder orderMultistage(const TrianglePositions& positions, const ViewProjection& view);
+    VisibilityOrder sortPrimitives(const TrianglePositions& positions, const ViewProjection& view,
+                                   std::span<const PrimitiveRange> primitives,
+                                   std::span<const uint32_t> previous_order);
+
+    const Scene& scene_;
+    OrderLevel level_;
+    GeometryOracle& oracle_;
+    std::vector<PrimitiveRange> primitives_;
+    std::vector<uint32_t> previous_order_;           // last frame, at level_ (objects for multistage)
+    std::vector<uint32_t> previous_triangle_rank_;   // multistage: last frame's triangle positions
+};
+
+} // namespace vissort

@@ -1,0 +1,48 @@
+#pragma once
+// What every vissort command shares: exit codes, errors, the camera and frame options.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "vissort/camera.h"
+#include "vissort/camera_path.h"
+#include "vissort/scene.h"
+
+namespace vissort::cli {
+
+// Distinct codes so scripts can tell a mistyped command from a bad input file.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailure = 1;  // could not write an output, or an internal failure
+inline constexpr int kExitUsage = 2;    // bad command-line syntax or values
+inline constexpr int kExitInput = 3;    // the scene or a mesh could not be loaded
+
+/// Prints "vissort: error: MESSAGE" on one line to stderr and returns code.
+int fail(int code, const std::string& message);
+
+struct ViewOptions {
+    std::string eye, target, up, ortho_dir, size = "1024x1024", path = "static";
+    std::optional<double> fov;
+    int frames = 1;
+};
+
+/// Adds --eye --target --up --fov --ortho-dir --size --frames --path.
+void addViewOptions(CLI::App& command, ViewOptions& options);
+
+/// A camera, image size and path resolved from the options and the scene.
+struct ResolvedView {
+    CameraSpec camera;
+    uint32_t width = 0, height = 0;
+    CameraPath path = CameraPath::fixed;
+    int frames = 1;
+};
+
+/// Empty on success, else a one-line message naming the bad option.
+std::string resolveView(const ViewOptions& options, const Scene& scene, ResolvedView& view);
+
+/// Loads a scene, printing the error and returning nullopt on failure.
+std::optional<Scene> loadSceneOrReport(const std::string& specification);
+
+} // namespace vissort::cli

@@ -1,0 +1,29 @@
+#pragma once
+// The vissort subcommands: each registers its options and runs when chosen.
+
+#include <CLI/CLI.hpp>
+
+#include "cli/cli_common.h"
+
+namespace vissort::cli {
+
+struct OrderOptions {
+    std::string scene;
+    ViewOptions view;
+    std::string level = "object";
+    std::string oracle = "cpu";
+    bool back_to_front = false;
+    std::string json_path;
+    std::string dump_path;
+};
+CLI::App* addOrderCommand(CLI::App& app, OrderOptions& options);
+int runOrder(const OrderOptions& options);
+
+struct InfoOptions {
+    std::string scene;
+    ViewOptions view;
+};
+CLI::App* addInfoCommand(CLI::App& app, InfoOptions& options);
+int runInfo(const InfoOptions& options);
+
+} // namespace vissort::cli

@@ -1,0 +1,60 @@
+#include "vissort/camera_path.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace vissort {
+namespace {
+
+// Rotation about the vertical axis through `centre`.
+Vec3 turnAboutVertical(const Vec3& p, const Vec3& centre, double radians) {
+    const double c = std::cos(radians), s = std::sin(radians);
+    const double dx = p.x - centre.x, dz = p.z - centre.z;
+    return {centre.x + c * dx + s * dz, p.y, centre.z - s * dx + c * dz};
+}
+
+double degrees(double d) { return d * std::numbers::pi / 180.0; }
+
+} // namespace
+
+bool parseCameraPath(const std::string& name, CameraPath& path) {
+    if (name == "static") path = CameraPath::fixed;
+    else if (name == "orbit") path = CameraPath::orbit;
+    else if (name == "flythrough") path = CameraPath::flythrough;
+    else return false;
+    return true;
+}
+
+const char* cameraPathName(CameraPath path) {
+    switch (path) {
+    case CameraPath::fixed: return "static";
+    case CameraPath::orbit: return "orbit";
+    case CameraPath::flythrough: return "flythrough";
+    }
+    return "?";
+}
+
+CameraSpec cameraOnPath(const CameraSpec& base, CameraPath path, int frame, const Bounds& bounds) {
+    if (path == CameraPath::fixed) return base;
+    CameraSpec camera = base;
+    const Vec3 centre = bounds.centre();
+    if (path == CameraPath::orbit || camera.projection == Projection::orthographic) {
+        const double angle = degrees(3.0 * frame);
+        if (camera.projection == Projection::orthographic) {
+            camera.ortho_direction = turnAboutVertical(base.ortho_direction, {}, angle);
+        } else {
+            camera.eye = turnAboutVertical(base.eye, centre, angle);
+            camera.target = turnAboutVertical(base.target, centre, angle);
+        }
+        return camera;
+    }
+    const double r = bounds.radius() > 0 ? bounds.radius() : 1.0;
+    const double angle = degrees(2.0 * frame), ahead = angle + degrees(10.0);
+    camera.eye = {centre.x + 0.6 * r * std::cos(angle), centre.y, centre.z + 0.6 * r * std::sin(angle)};
+    camera.target = {centre.x + 0.6 * r * std::cos(ahead), centre.y,
+                     centre.z + 0.6 * r * std::sin(ahead)};
+    camera.up = {0, 1, 0};
+    return camera;
+}
+
+} // namespace vissort

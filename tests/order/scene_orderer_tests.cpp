@@ -1,0 +1,188 @@
+// End to end: scenes composed of real meshes, ordered with each oracle at each level, checked
+// against the ray-cast ground truth (tests/support): no pixel where a primitive in front comes
+// after one behind it, except inside a reported cycle.
+#include <algorithm>
+#include <set>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "ground_truth.h"
+#include "tarjan_scc.h"
+#include "vissort/scene_library.h"
+#include "vissort/scene_orderer.h"
+
+namespace vissort {
+namespace {
+
+Scene load(const std::string& spec) {
+    const std::string path =
+        spec.rfind("builtin:", 0) == 0 ? spec : std::string(VISSORT_SOURCE_DIR) + "/" + spec;
+    Loaded<Scene> loaded = loadScene(path);
+    EXPECT_TRUE(loaded) << loaded.error;
+    return loaded ? std::move(*loaded.value) : Scene{};
+}
+
+struct Case {
+    std::string scene;
+    OracleKind oracle;
+    OrderLevel level;
+    Projection projection;
+    uint32_t width, height;
+};
+
+std::string caseName(const testing::TestParamInfo<Case>& info) {
+    std::string name = info.param.scene.substr(info.param.scene.find_last_of("/:") + 1);
+    name = name.substr(0, name.find_first_of(".?"));
+    name += std::string("_") + oracleName(info.param.oracle) + "_" +
+            orderLevelName(info.param.level) +
+            (info.param.projection == Projection::perspective ? "_persp" : "_ortho");
+    return name;
+}
+
+ViewProjection viewOf(const Scene& scene, const Case& c) {
+    CameraSpec camera = scene.camera.value_or(defaultCamera(scene.positions.bounds()));
+    if (c.projection == Projection::orthographic) {
+        CameraSpec ortho;
+        ortho.projection = Projection::orthographic;
+        // Look along the perspective camera's direction so the same overlaps are seen.
+        ortho.ortho_direction = {camera.target.x - camera.eye.x, camera.target.y - camera.eye.y,
+                                 camera.target.z - camera.eye.z};
+        camera = ortho;
+    }
+    return frameCamera(camera, scene.positions.bounds(), c.width, c.height);
+}
+
+std::set<std::vector<uint32_t>> trueCycles(const Scene& scene, const ViewProjection& view,
+                                           std::span<const PrimitiveRange> primitives) {
+    const auto graph = test::occlusionGraph(scene.positions, view, primitives);
+    std::set<std::vector<uint32_t>> cycles;
+    for (auto component : test::stronglyConnectedComponents(graph)) {
+        std::sort(component.begin(), component.end());
+        if (component.size() > 1) cycles.insert(component);
+    }
+    return cycles;
+}
+
+class OrderAgainstGroundTruth : public testing::TestWithParam<Case> {};
+
+TEST_P(OrderAgainstGroundTruth, NoOcclusionIsOrderedBackwards) {
+    const Case& c = GetParam();
+    const Scene scene = load(c.scene);
+    ASSERT_FALSE(scene.objects.empty());
+    const ViewProjection view = viewOf(scene, c);
+    auto oracle = makeOracle(c.oracle);
+    SceneOrderer orderer(scene, c.level, *oracle);
+    const FrameOrder frame = orderer.orderFrame(scene.positions, view);
+
+    const auto primitives = primitivesOf(scene, c.level);
+    const test::OrderCheck check =
+        test::checkVisibilityOrder(scene.positions, view, primitives, frame.order, frame.cycles);
+    ASSERT_TRUE(check.valid_permutation);
+    EXPECT_GT(check.pairs_checked, 0u) << "the view shows no overlap: the test would prove nothing";
+    EXPECT_EQ(check.violation_count, 0u)
+        << "first: primitive " << (check.violations.empty() ? 0 : check.violations[0].front)
+        << " in front of " << (check.violations.empty() ? 0 : check.violations[0].behind);
+
+    // Every reported cycle is strongly connected in the true occlusion graph, and every true
+    // cycle lies inside one reported cycle: reported cycles are the components, not the whole
+    // stuck remainder.
+    if (c.level != OrderLevel::multistage) {
+        const auto truth = trueCycles(scene, view, primitives);
+        for (const auto& true_cycle : truth) {
+            const bool covered = std::any_of(frame.cycles.begin(), frame.cycles.end(), [&](auto& r) {
+                return std::includes(r.begin(), r.end(), true_cycle.begin(), true_cycle.end());
+            });
+            EXPECT_TRUE(covered) << "a true cycle of " << true_cycle.size() << " was not reported";
+        }
+        if (c.oracle == OracleKind::exact) {
+            const std::set<std::vector<uint32_t>> reported(frame.cycles.begin(), frame.cycles.end());
+            EXPECT_EQ(reported, truth);
+        }
+    }
+}
+
+const Case kCases[] = {
+    {"tests/data/scenes/disjoint.json", OracleKind::cpu, OrderLevel::object, Projection::perspective, 160, 120},
+    {"tests/data/scenes/disjoint.json", OracleKind::exact, OrderLevel::object, Projection::orthographic, 160, 120},
+    {"tests/data/scenes/disjoint.json", OracleKind::cpu, OrderLevel::triangle, Projection::perspective, 96, 72},
+    {"tests/data/scenes/stack.json", OracleKind::cpu, OrderLevel::object, Projection::perspective, 128, 128},
+    {"tests/data/scenes/stack.json", OracleKind::exact, OrderLevel::object, Projection::orthographic, 128, 128},
+    {"tests/data/scenes/stack.json", OracleKind::cpu, OrderLevel::triangle, Projection::orthographic, 96, 96},
+    {"tests/data/scenes/interpenetrating.json", OracleKind::cpu, OrderLevel::object, Projection::perspective, 160, 120},
+    {"tests/data/scenes/interpenetrating.json", OracleKind::exact, OrderLevel::object, Projection::perspective, 160, 120},
+    {"tests/data/scenes/interpenetrating.json", OracleKind::cpu, OrderLevel::triangle, Projection::orthographic, 96, 72},
+    {"tests/data/scenes/interpenetrating.json", OracleKind::cpu, OrderLevel::multistage, Projection::perspective, 96, 72},
+    {"tests/data/scenes/interpenetrating.json", OracleKind::exact, OrderLevel::multistage, Projection::orthographic, 96, 72},
+    {"tests/data/scenes/three_sticks.json", OracleKind::cpu, OrderLevel::object, Projection::perspective, 128, 128},
+    {"tests/data/scenes/three_sticks.json", OracleKind::exact, OrderLevel::object, Projection::orthographic, 128, 128},
+    {"tests/data/scenes/three_sticks.json", OracleKind::cpu, OrderLevel::triangle, Projection::perspective, 128, 128},
+    {"tests/data/scenes/three_sticks.json", OracleKind::cpu, OrderLevel::multistage, Projection::orthographic, 128, 128},
+    {"builtin:bunnies?n=6&seed=3", OracleKind::cpu, OrderLevel::object, Projection::perspective, 128, 96},
+    {"builtin:bunnies?n=6&seed=3", OracleKind::exact, OrderLevel::triangle, Projection::orthographic, 96, 96},
+    {"builtin:bunnies?n=6&seed=3", OracleKind::cpu, OrderLevel::multistage, Projection::perspective, 96, 96},
+    {"builtin:slabs?layers=40", OracleKind::cpu, OrderLevel::triangle, Projection::perspective, 64, 64},
+    {"builtin:soup?n=400", OracleKind::cpu, OrderLevel::triangle, Projection::orthographic, 96, 96},
+};
+
+INSTANTIATE_TEST_SUITE_P(Scenes, OrderAgainstGroundTruth, testing::ValuesIn(kCases), caseName);
+
+TEST(SceneOrderer, StackHasDepthComplexityOver30) {
+    const Scene scene = load("tests/data/scenes/stack.json");
+    const ViewProjection view =
+        frameCamera(*scene.camera, scene.positions.bounds(), 64, 64);
+    const auto primitives = primitivesOf(scene, OrderLevel::object);
+    auto oracle = makeOracle(OracleKind::cpu);
+    SceneOrderer orderer(scene, OrderLevel::object, *oracle);
+    const FrameOrder frame = orderer.orderFrame(scene.positions, view);
+    const auto check = test::checkVisibilityOrder(scene.positions, view, primitives, frame.order, {});
+    EXPECT_GT(check.max_depth_complexity, 30u);
+    EXPECT_EQ(check.violation_count, 0u);
+    EXPECT_TRUE(frame.cycles.empty());
+}
+
+TEST(SceneOrderer, ThreeSticksFormOneCycleOfThree) {
+    const Scene scene = load("tests/data/scenes/three_sticks.json");
+    const ViewProjection view = frameCamera(*scene.camera, scene.positions.bounds(), 128, 128);
+    auto oracle = makeOracle(OracleKind::cpu);
+    SceneOrderer orderer(scene, OrderLevel::object, *oracle);
+    const FrameOrder frame = orderer.orderFrame(scene.positions, view);
+    ASSERT_EQ(frame.cycles.size(), 1u);
+    EXPECT_EQ(frame.cycles[0], (std::vector<uint32_t>{0, 1, 2}));
+}
+
+TEST(SceneOrderer, CoherentFramesCostAboutLinearQueries) {
+    const Scene scene = load("builtin:bunnies?n=8&seed=5");
+    ASSERT_TRUE(scene.isDynamic());
+    auto oracle = makeOracle(OracleKind::cpu);
+    SceneOrderer orderer(scene, OrderLevel::object, *oracle);
+    const CameraSpec camera = scene.camera.value_or(defaultCamera(scene.positions.bounds()));
+    TrianglePositions positions;
+    for (int f = 0; f < 6; ++f) {
+        scene.frame(f / 30.0, positions);
+        const ViewProjection view = frameCamera(camera, positions.bounds(), 96, 96);
+        const FrameOrder frame = orderer.orderFrame(positions, view);
+        const auto primitives = primitivesOf(scene, OrderLevel::object);
+        EXPECT_EQ(test::checkVisibilityOrder(positions, view, primitives, frame.order, frame.cycles)
+                      .violation_count,
+                  0u);
+        if (f > 0 && frame.cycles.empty()) {
+            // Starting from the last order, one iteration of two passes: at most 2n queries.
+            EXPECT_LE(frame.stats.queries, 2u * scene.objects.size()) << "frame " << f;
+        }
+    }
+}
+
+TEST(SceneOrderer, MultistageOutputsEveryTriangleOnce) {
+    const Scene scene = load("tests/data/scenes/interpenetrating.json");
+    const ViewProjection view = frameCamera(*scene.camera, scene.positions.bounds(), 64, 64);
+    auto oracle = makeOracle(OracleKind::cpu);
+    SceneOrderer orderer(scene, OrderLevel::multistage, *oracle);
+    FrameOrder frame = orderer.orderFrame(scene.positions, view);
+    ASSERT_EQ(frame.order.size(), scene.triangleCount());
+    std::sort(frame.order.begin(), frame.order.end());
+    for (uint32_t i = 0; i < frame.order.size(); ++i) ASSERT_EQ(frame.order[i], i);
+}
+
+} // namespace
+} // namespace vissort
