@@ -55,7 +55,7 @@ int runInfo(const InfoOptions& options) {
     const detail::AllHits hits = detail::castAllHits(scene->positions, vp);
     std::size_t covered = 0, most = 0;
     for (std::size_t p = 0; p < hits.pixelCount(); ++p) {
-        const std::size_t n = hits.end(p) - hits.begin(p);
+        const std::size_t n = hits.endHit(p) - hits.firstHit(p);
         covered += n > 0 ? 1 : 0;
         most = std::max(most, n);
     }

@@ -1,1 +1,110 @@
-// placeholder
+// The reference occlusion oracle: Vis-sort's queries (Govindaraju, Henson, Lin, Manocha, I3D 2005,
+// section 4) answered by the plain depth rasterizer of cpu_rasterizer.h.
+
+#include "vissort/cpu_oracle.h"
+
+#include <algorithm>
+#include <cassert>
+#include <limits>
+
+#include "raster/cpu_rasterizer.h"
+
+namespace vissort {
+namespace {
+
+using Matrix = std::array<double, 16>;  // column-major: element (row r, column c) at 4 c + r
+
+// The order of the sums is part of the contract (cpu_oracle.h, rule 1).
+Matrix multiply(const Matrix& a, const Matrix& b) {
+    Matrix out{};
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) {
+            double sum = 0;
+            for (int k = 0; k < 4; ++k) sum += a[4 * k + r] * b[4 * c + k];
+            out[4 * c + r] = sum;
+        }
+    return out;
+}
+
+template <class Corner>
+detail::ClipVertex toClipVertex(const Corner& corner) {
+    return {corner.x, corner.y, corner.z, corner.w};
+}
+
+} // namespace
+
+void CpuOracle::bind(const TrianglePositions& positions, const ViewProjection& view,
+                     std::span<const PrimitiveRange> primitives) {
+    assert(view.width >= 1 && view.width <= detail::kMaxViewportSize);
+    assert(view.height >= 1 && view.height <= detail::kMaxViewportSize);
+    assert(positions.y.size() == positions.x.size() && positions.z.size() == positions.x.size());
+    width_ = view.width;
+    height_ = view.height;
+    primitives_.assign(primitives.begin(), primitives.end());
+    for ([[maybe_unused]] const PrimitiveRange& range : primitives_)
+        assert(uint64_t(range.first_triangle) + range.triangle_count <=
+               positions.triangleCount());
+
+    const Matrix m = multiply(view.projection_matrix, view.view);
+    const std::size_t corner_count = positions.triangleCount() * 3;
+    corners_.resize(corner_count);
+    for (std::size_t i = 0; i < corner_count; ++i) {
+        const double p[4] = {positions.x[i], positions.y[i], positions.z[i], 1.0};
+        double clip[4];
+        for (int r = 0; r < 4; ++r) {
+            double sum = 0;
+            for (int k = 0; k < 4; ++k) sum += m[4 * k + r] * p[k];
+            clip[r] = sum;
+        }
+        corners_[i] = {clip[0], clip[1], clip[2], clip[3]};
+    }
+    depth_.resize(std::size_t(width_) * height_);
+    clear();
+}
+
+void CpuOracle::clear() {
+    std::fill(depth_.begin(), depth_.end(), std::numeric_limits<float>::infinity());
+}
+
+void CpuOracle::draw(uint32_t primitive) {
+    assert(primitive < primitives_.size());
+    ++stats_.draws;
+    const PrimitiveRange range = primitives_[primitive];
+    uint64_t fragments = 0;
+    for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count; ++t) {
+        const std::size_t c = std::size_t(t) * 3;
+        detail::rasterizeTriangle(
+            toClipVertex(corners_[c]), toClipVertex(corners_[c + 1]),
+            toClipVertex(corners_[c + 2]), width_, height_,
+            [&](uint32_t px, uint32_t py, float depth) {
+                ++fragments;
+                float& stored = depth_[std::size_t(py) * width_ + px];
+                if (depth < stored) stored = depth;
+                return false;
+            });
+    }
+    stats_.fragments_drawn += fragments;
+}
+
+bool CpuOracle::anyBehind(uint32_t primitive) {
+    assert(primitive < primitives_.size());
+    ++stats_.queries;
+    const PrimitiveRange range = primitives_[primitive];
+    uint64_t fragments = 0;
+    bool behind = false;
+    for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count && !behind;
+         ++t) {
+        const std::size_t c = std::size_t(t) * 3;
+        behind = detail::rasterizeTriangle(
+            toClipVertex(corners_[c]), toClipVertex(corners_[c + 1]),
+            toClipVertex(corners_[c + 2]), width_, height_,
+            [&](uint32_t px, uint32_t py, float depth) {
+                ++fragments;
+                return depth > depth_[std::size_t(py) * width_ + px] + kDepthTolerance;
+            });
+    }
+    stats_.fragments_tested += fragments;
+    return behind;
+}
+
+} // namespace vissort

@@ -1,1 +1,51 @@
-// placeholder
+// The registry of built-in scenes: names, summaries and dispatch to their generators.
+
+#include "vissort/scene_library.h"
+
+#include "scene/builtin_scenes.h"
+
+namespace vissort {
+namespace {
+
+struct BuiltinScene {
+    const char *name;
+    const char *summary;
+    Loaded<Scene> (*make)(const SceneParameters &);
+};
+
+constexpr BuiltinScene kBuiltinScenes[] = {
+    {"bunnies",
+     "n (18, 1..10000), seed (1): the paper's dynamic scene, n deforming Stanford bunnies "
+     "bouncing in a cube",
+     detail::makeBunniesScene},
+    {"slabs",
+     "layers (8, 1..100000), seed (1): a stack of 4x4 quads along z, slightly tilted, "
+     "non-intersecting, acyclic; depth complexity = layers",
+     detail::makeSlabsScene},
+    {"soup",
+     "n (1000, 1..10000000), seed (1): n random triangles in a cube, one per cell of a jittered "
+     "grid, never intersecting",
+     detail::makeSoupScene},
+};
+
+} // namespace
+
+std::vector<BuiltinSceneInfo> builtinScenes() {
+    std::vector<BuiltinSceneInfo> infos;
+    for (const BuiltinScene &scene : kBuiltinScenes)
+        infos.push_back({scene.name, scene.summary});
+    return infos;
+}
+
+Loaded<Scene> makeBuiltinScene(const std::string &name, const SceneParameters &parameters) {
+    std::string known;
+    for (const BuiltinScene &scene : kBuiltinScenes) {
+        if (name == scene.name)
+            return scene.make(parameters);
+        known += (known.empty() ? "" : ", ") + std::string(scene.name);
+    }
+    return Loaded<Scene>::failure("unknown built-in scene 'builtin:" + name + "' (known: " + known +
+                                  ")");
+}
+
+} // namespace vissort

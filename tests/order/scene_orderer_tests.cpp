@@ -31,6 +31,12 @@ struct Case {
     uint32_t width, height;
 };
 
+// Readable parameters in test logs.
+void PrintTo(const Case& c, std::ostream* os) {
+    *os << c.scene << ' ' << oracleName(c.oracle) << ' ' << orderLevelName(c.level) << ' '
+        << c.width << 'x' << c.height;
+}
+
 std::string caseName(const testing::TestParamInfo<Case>& info) {
     std::string name = info.param.scene.substr(info.param.scene.find_last_of("/:") + 1);
     name = name.substr(0, name.find_first_of(".?"));

@@ -1,0 +1,84 @@
+#pragma once
+// The reference CPU depth rasterizer as an occlusion oracle. Plain rather than fast: a faster
+// rasterizer must give the same answers, and the same depth buffer, bit for bit. The rules:
+//
+//  1. Transform, once per bind: clip = M (x, y, z, 1) in double, with M = projection_matrix * view
+//     (column-major; each entry and each clip coordinate summed in index order 0..3, no FMA).
+//  2. Clip in homogeneous space (Sutherland-Hodgman), planes in this order: z >= 0, z <= w,
+//     x >= -G w, x <= G w, y >= -G w, y <= G w with the guard band G = 32; keep a vertex when its
+//     signed distance is >= 0; cut an edge at p + t (q - p), t = dist(p) / (dist(p) - dist(q)),
+//     where p is the lexicographically smaller endpoint in (x, y, z, w), so shared edges are cut
+//     identically. Nothing is drawn when a coordinate is non-finite or a result has w <= 0.
+//  3. Fan the polygon out from its first vertex: triangles (p0, p_i, p_i+1), i = 1..n-2.
+//  4. Screen: sx = (x / w + 1) * 0.5 * width, sy = (1 - y / w) * 0.5 * height (row 0 on top),
+//     d = z / w. Snap sx and sy to 24.8 fixed point: llround(s * 256).
+//  5. Coverage: doubled area A = (x1 - x0)(y2 - y0) - (y1 - y0)(x2 - x0) in int64_t. A == 0 draws
+//     nothing; A < 0 swaps vertices 1 and 2 (both windings are drawn). Edge i runs from vertex i
+//     to vertex (i + 1) % 3, E_i(p) = (xj - xi)(py - yi) - (yj - yi)(px - xi); pixel (px, py) is
+//     sampled at its centre (256 px + 128, 256 py + 128) and covered when every E_i > 0, or == 0
+//     on a top edge (dy == 0, dx > 0: horizontal, interior below) or a left edge (dy < 0: the
+//     interior to its right). Y points down. A mesh tiling a region covers each centre once.
+//  6. Depth: the plane through the fan triangle's unsnapped (sx, sy, d), vertices in the order of
+//     rule 5: e1 = v1 - v0, e2 = v2 - v0, det = e1x e2y - e2x e1y, ddx = (e1d e2y - e2d e1y) / det,
+//     ddy = (e2d e1x - e1d e2x) / det (both 0 when det == 0), and at the centre (cx, cy) =
+//     (px + 0.5, py + 0.5): float(d0 + ddx (cx - x0) + ddy (cy - y0)), all in double. No clamping.
+//  7. Depth buffer: one float per pixel, row-major from the top row, cleared to +infinity.
+//     draw writes a fragment when frag < stored. anyBehind is true when some fragment has
+//     frag > stored + kDepthTolerance (float sum), so +infinity pixels never count.
+//
+// Viewports up to kMaxViewportSize = 65536 on a side keep every edge function exact in int64_t.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "vissort/geometry_oracle.h"
+
+namespace vissort {
+
+/// What the oracle did since bind (or resetStats), for benchmarks and tests.
+struct CpuOracleStats {
+    uint64_t draws = 0;            // draw calls
+    uint64_t queries = 0;          // anyBehind calls
+    uint64_t fragments_drawn = 0;  // covered pixel centres visited by draw
+    uint64_t fragments_tested = 0; // covered pixel centres visited by anyBehind (stops early)
+};
+
+class CpuOracle final : public GeometryOracle {
+public:
+    CpuOracle() = default;
+
+    /// See GeometryOracle::bind. Copies the primitives and the clip-space corners it needs.
+    /// The view's width and height must be in [1, 65536]; every range must lie within positions.
+    void bind(const TrianglePositions& positions, const ViewProjection& view,
+              std::span<const PrimitiveRange> primitives) override;
+
+    uint32_t primitiveCount() const override { return uint32_t(primitives_.size()); }
+    void clear() override;
+    /// Depth test LESS, writes on. primitive must be < primitiveCount().
+    void draw(uint32_t primitive) override;
+    /// True when a fragment lies behind the stored depth by more than kDepthTolerance.
+    /// primitive must be < primitiveCount(). Leaves the buffer unchanged.
+    bool anyBehind(uint32_t primitive) override;
+
+    /// The depth buffer: width() * height() floats, row-major from the top row.
+    std::span<const float> depthBuffer() const { return depth_; }
+    uint32_t width() const { return width_; }
+    uint32_t height() const { return height_; }
+
+    const CpuOracleStats& stats() const { return stats_; }
+    void resetStats() { stats_ = {}; }
+
+private:
+    struct ClipCorner {
+        double x, y, z, w;
+    };
+
+    uint32_t width_ = 0, height_ = 0;
+    std::vector<PrimitiveRange> primitives_;
+    std::vector<ClipCorner> corners_;  // 3 per triangle, clip space
+    std::vector<float> depth_;
+    CpuOracleStats stats_;
+};
+
+} // namespace vissort

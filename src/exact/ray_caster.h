@@ -1,0 +1,54 @@
+#pragma once
+// All-hits ray casting through every pixel centre, the reference behind the exact oracle and the
+// test ground truth. Embree finds the candidate triangles; depths and barycentrics are then
+// recomputed in double precision so that the answers do not depend on Embree's float arithmetic.
+
+#include <cassert>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "vissort/camera.h"
+#include "vissort/geometry.h"
+
+namespace vissort::detail {
+
+/// A hit is robust when all three barycentric coordinates exceed this: not on an edge or corner,
+/// where a neighbouring triangle may or may not also be hit.
+inline constexpr double kRobustBarycentric = 1e-6;
+
+/// A robust hit's triangle also covers the square of half-side kRobustPixelMargin pixels around
+/// the pixel centre: the centre is that far from every edge in screen space, farther than a
+/// rasterizer's 8-bit sub-pixel snapping can move an edge (at most about 0.003 px).
+inline constexpr double kRobustPixelMargin = 0.01;
+
+/// Every hit of every pixel's ray, in compressed rows: pixel i = py * width + px owns the hits
+/// [offsets[i], offsets[i + 1]), sorted by (depth, triangle), at most one per triangle.
+struct AllHits {
+    uint32_t width = 0, height = 0;
+    std::vector<uint64_t> offsets;   // pixelCount() + 1 entries
+    std::vector<uint32_t> triangles; // triangle id of each hit
+    std::vector<double> depths;      // depth d (camera.h), in [0, 1]
+    std::vector<uint8_t> robust;     // 1 when every barycentric coordinate > kRobustBarycentric
+
+    std::size_t pixelCount() const { return std::size_t(width) * height; }
+    std::size_t hitCount() const { return triangles.size(); }
+    uint64_t firstHit(std::size_t pixel) const {
+        assert(pixel < pixelCount());
+        return offsets[pixel];
+    }
+    uint64_t endHit(std::size_t pixel) const {
+        assert(pixel < pixelCount());
+        return offsets[pixel + 1];
+    }
+};
+
+/// Casts the ray through the centre of every pixel of view (ViewProjection::pixelRay at
+/// (px + 0.5, py + 0.5), row 0 at the top) and records all its hits with 0 <= d <= 1.
+/// Degenerate triangles (zero area, non-finite corners) are never hit.
+/// thread_count 0 uses the hardware concurrency; the result is the same for any thread count.
+/// Throws std::runtime_error when no Embree device can be created.
+AllHits castAllHits(const TrianglePositions& positions, const ViewProjection& view,
+                    unsigned thread_count = 0);
+
+} // namespace vissort::detail

@@ -1,0 +1,107 @@
+#pragma once
+// The reference depth rasterizer behind CpuOracle: clip, snap, cover, interpolate depth. Plain and
+// exact rather than fast; a faster rasterizer must reproduce its coverage and depths bit for bit,
+// so every rule is fixed here (the full list is in include/vissort/cpu_oracle.h).
+//
+// Number formats: clip and screen coordinates are double; snapped screen coordinates are 24.8
+// fixed point (kSubpixelBits) in int64_t; edge functions are exact int64_t products.
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+
+#include "raster/homogeneous_clip.h"
+
+namespace vissort::detail {
+
+/// Sub-pixel precision of snapped screen coordinates: 8 fractional bits.
+inline constexpr int kSubpixelBits = 8;
+inline constexpr int64_t kSubpixelScale = int64_t(1) << kSubpixelBits;
+
+/// Largest width or height a viewport may have. With the guard band G = 32 (homogeneous_clip.h)
+/// and 8 sub-pixel bits a snapped coordinate stays below M = 33/2 * 2^16 * 2^8 < 2^29, so an edge
+/// function (two products of differences, each factor below 2M) stays below 8 M^2 < 2^61: exact
+/// in int64_t with room to spare.
+inline constexpr uint32_t kMaxViewportSize = 1u << 16;
+
+/// Snapped coordinates beyond this are rejected (the triangle draws nothing). Only non-finite or
+/// absurd input gets here: clipping keeps honest geometry far below it.
+inline constexpr int64_t kMaxSnapped = int64_t(1) << 29;
+
+/// A vertex after the perspective divide: screen position in pixels (y down) and depth d.
+struct ScreenVertex {
+    double x = 0, y = 0, d = 0;
+};
+
+/// Everything needed to walk one fan triangle's pixels. Vertices are ordered so that the snapped
+/// doubled area is positive; edge i runs from vertex i to vertex (i + 1) % 3.
+struct TriangleSetup {
+    std::array<int64_t, 3> x{}, y{};  // 24.8 fixed point
+    std::array<int64_t, 3> bias{};    // 1 on top-left edges, 0 elsewhere: covered iff E + bias > 0
+    // Depth plane d(sx, sy) = d0 + ddx (sx - x0) + ddy (sy - y0), in double.
+    double x0 = 0, y0 = 0, d0 = 0, ddx = 0, ddy = 0;
+    // Inclusive pixel range whose centres may be covered, clamped to the viewport.
+    int64_t px_min = 0, px_max = -1, py_min = 0, py_max = -1;
+};
+
+/// Screen mapping of a clip-space point: sx = (x / w + 1) * 0.5 * width,
+/// sy = (1 - y / w) * 0.5 * height, d = z / w.
+ScreenVertex toScreen(const ClipVertex& v, uint32_t width, uint32_t height);
+
+/// Round to nearest (halves away from zero) in 24.8 fixed point: llround(v * 256).
+int64_t snapToFixed(double v);
+
+/// Snaps, orients and sets up one screen triangle. Returns false when it can cover no pixel
+/// centre: zero snapped area, a non-finite or out-of-range coordinate, or off-screen bounds.
+bool setupTriangle(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
+                   uint32_t width, uint32_t height, TriangleSetup& setup);
+
+/// The edge function of edge i at a 24.8 fixed-point point: positive inside.
+inline int64_t edgeFunction(const TriangleSetup& s, int i, int64_t px, int64_t py) {
+    const int j = (i + 1) % 3;
+    return (s.x[j] - s.x[i]) * (py - s.y[i]) - (s.y[j] - s.y[i]) * (px - s.x[i]);
+}
+
+/// Depth of the plane at the centre of pixel (px, py), evaluated in double, rounded to float.
+inline float depthAt(const TriangleSetup& s, int64_t px, int64_t py) {
+    const double cx = double(px) + 0.5, cy = double(py) + 0.5;
+    return float(s.d0 + s.ddx * (cx - s.x0) + s.ddy * (cy - s.y0));
+}
+
+/// Calls visit(px, py, depth) for every pixel whose centre the set-up triangle covers, rows top
+/// to bottom, left to right. Stops, returning true, as soon as visit returns true.
+template <class Visit>
+bool walkTriangle(const TriangleSetup& s, Visit&& visit) {
+    for (int64_t py = s.py_min; py <= s.py_max; ++py) {
+        const int64_t cy = py * kSubpixelScale + kSubpixelScale / 2;
+        for (int64_t px = s.px_min; px <= s.px_max; ++px) {
+            const int64_t cx = px * kSubpixelScale + kSubpixelScale / 2;
+            if (edgeFunction(s, 0, cx, cy) + s.bias[0] <= 0) continue;
+            if (edgeFunction(s, 1, cx, cy) + s.bias[1] <= 0) continue;
+            if (edgeFunction(s, 2, cx, cy) + s.bias[2] <= 0) continue;
+            if (visit(uint32_t(px), uint32_t(py), depthAt(s, px, py))) return true;
+        }
+    }
+    return false;
+}
+
+/// Rasterizes one clip-space triangle into a width x height viewport: clips, fans the polygon
+/// out from its first vertex as (p0, p_i, p_i+1), and walks each fan triangle (see walkTriangle).
+/// Returns true when visit stopped the walk.
+template <class Visit>
+bool rasterizeTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
+                       uint32_t width, uint32_t height, Visit&& visit) {
+    std::array<ClipVertex, kMaxPolygonVertices> polygon;
+    const int count = clipTriangle(a, b, c, polygon);
+    if (count < 3) return false;
+    std::array<ScreenVertex, kMaxPolygonVertices> screen;
+    for (int i = 0; i < count; ++i) screen[i] = toScreen(polygon[i], width, height);
+    TriangleSetup setup;
+    for (int i = 1; i + 1 < count; ++i) {
+        if (!setupTriangle(screen[0], screen[i], screen[i + 1], width, height, setup)) continue;
+        if (walkTriangle(setup, visit)) return true;
+    }
+    return false;
+}
+
+} // namespace vissort::detail
