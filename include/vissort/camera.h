@@ -35,20 +35,23 @@ struct ViewProjection {
     std::array<double, 16> view{};        // world -> eye space (camera looks along -z)
     std::array<double, 16> projection_matrix{};  // eye -> clip space, z_clip / w_clip = d
     double near = 0.1, far = 1.0;         // far is unused (infinite) for perspective
-    Vec3 eye_position;                    // perspective eye; orthographic: a point on the near plane
+    Vec3 eye_position;                    // perspective eye; orthographic: the eye plane's centre,
+                                          // 2r before the sphere's centre (behind the near plane)
     Vec3 forward;                         // unit view direction
 
     /// Depth d of a world point (see the header comment); may be outside [0,1) when clipped.
     double depthOf(const Vec3& world) const;
     /// Clip-space position (x, y, z, w) of a world point.
     std::array<double, 4> toClip(const Vec3& world) const;
-    /// The ray through the centre of pixel (px, py): origin and unit direction, in world space.
+    /// The ray through screen point (px, py), in pixels from the top-left corner of the image:
+    /// pixel (i, j) is sampled at (i + 0.5, j + 0.5). Origin and unit direction, world space.
     void pixelRay(double px, double py, Vec3& origin, Vec3& direction) const;
 };
 
-/// The default view of a scene: perspective, 45 degrees, looking at the bounding sphere's
-/// centre from the direction (0.6, 0.5, 1) so that the whole sphere fits in the image.
-CameraSpec defaultCamera(const Bounds& scene_bounds);
+/// The default view of a scene: perspective, 45 degrees vertically, looking at the bounding
+/// sphere's centre from the direction (0.6, 0.5, 1), far enough that the whole sphere fits in an
+/// image of the given aspect ratio (width / height) with a 5% margin.
+CameraSpec defaultCamera(const Bounds& scene_bounds, double aspect = 1.0);
 
 /// Builds the view and projection for a camera over a scene.
 /// Perspective: near = max(distance to the sphere - r, r * 1e-3) * 0.99; far = infinity.

@@ -9,10 +9,11 @@ namespace vissort {
 
 enum class CameraPath {
     fixed,       // "static": the same camera every frame
-    orbit,       // the eye (or orthographic direction) turns 3 degrees per frame about the
-                 // vertical axis through the scene's centre, keeping distance and height
+    orbit,       // the eye, target and up (or the orthographic direction) turn 3 degrees per
+                 // frame about the vertical axis through the scene's centre
     flythrough,  // the eye flies inside the scene on a horizontal circle of radius 0.6 r around
-                 // the centre, 2 degrees per frame, looking along its direction of travel
+                 // the centre, 2 degrees per frame, looking along its direction of travel;
+                 // an orthographic camera has no inside, so it orbits instead
 };
 
 bool parseCameraPath(const std::string& name, CameraPath& path);

@@ -93,9 +93,10 @@ std::string resolveView(const ViewOptions& options, const Scene& scene, Resolved
             return e;
     } else {
         const Bounds bounds = scene.positions.bounds();
-        view.camera = scene.camera.value_or(defaultCamera(bounds));
+        const double aspect = double(view.width) / view.height;
+        view.camera = scene.camera.value_or(defaultCamera(bounds, aspect));
         if (perspective_given && view.camera.projection == Projection::orthographic)
-            view.camera = defaultCamera(bounds);
+            view.camera = defaultCamera(bounds, aspect);
         if (!options.eye.empty())
             if (auto e = parseVec3("--eye", options.eye, view.camera.eye); !e.empty()) return e;
         if (!options.target.empty())

@@ -48,14 +48,16 @@ std::string validateCamera(const CameraSpec& camera) {
     return {};
 }
 
-CameraSpec defaultCamera(const Bounds& scene_bounds) {
+CameraSpec defaultCamera(const Bounds& scene_bounds, double aspect) {
     CameraSpec camera;
     camera.projection = Projection::perspective;
     camera.fov_degrees = 45.0;
     const glm::dvec3 centre = toGlm(scene_bounds.centre());
     const double r = framingRadius(scene_bounds);
-    // Far enough that the bounding sphere fits in the vertical field of view, with a margin.
-    const double distance = r / std::sin(glm::radians(camera.fov_degrees) / 2) * 1.05;
+    // Far enough that the bounding sphere fits in the narrower of the two fields of view.
+    const double half_vertical = glm::radians(camera.fov_degrees) / 2;
+    const double half_horizontal = std::atan(std::tan(half_vertical) * (aspect > 0 ? aspect : 1.0));
+    const double distance = r / std::sin(std::min(half_vertical, half_horizontal)) * 1.05;
     camera.eye = fromGlm(centre + glm::normalize(glm::dvec3(0.6, 0.5, 1.0)) * distance);
     camera.target = fromGlm(centre);
     camera.up = {0, 1, 0};

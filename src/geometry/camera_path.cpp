@@ -45,6 +45,8 @@ CameraSpec cameraOnPath(const CameraSpec& base, CameraPath path, int frame, cons
         } else {
             camera.eye = turnAboutVertical(base.eye, centre, angle);
             camera.target = turnAboutVertical(base.target, centre, angle);
+            // up turns with the eye: a tilted up stays valid and the image does not roll.
+            camera.up = turnAboutVertical(base.up, {}, angle);
         }
         return camera;
     }
