@@ -106,7 +106,12 @@ std::string resolveView(const ViewOptions& options, const Scene& scene, Resolved
             if (auto e = parseVec3("--up", options.up, view.camera.up); !e.empty()) return e;
         if (options.fov) view.camera.fov_degrees = *options.fov;
     }
-    if (auto e = validateCamera(view.camera); !e.empty()) return e;
+    if (auto e = validateCamera(view.camera); !e.empty()) {
+        // Name where the bad camera came from: the user's options, or the scene file.
+        if (!options.ortho_dir.empty()) return "--ortho-dir: " + e;
+        if (perspective_given) return "--eye/--target/--up/--fov: " + e;
+        return "the scene's camera: " + e;
+    }
     return {};
 }
 

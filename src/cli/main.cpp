@@ -8,6 +8,8 @@ int main(int argc, char** argv) {
     using namespace vissort::cli;
     CLI::App app{"vissort: visibility ordering of 3D geometry with occlusion queries (Vis-sort)"};
     app.require_subcommand(1);
+    app.footer("Run 'vissort order --help' for the camera, --size, --level, --oracle, --frames and\n"
+               "output options; docs/ and README.md explain the algorithm and the scene formats.");
     OrderOptions order;
     InfoOptions info;
     CLI::App* order_command = addOrderCommand(app, order);

@@ -22,7 +22,13 @@ std::array<double, 16> fromMat(const glm::dmat4& m) {
     return out;
 }
 
-bool isFinite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+// Beyond this, squared lengths overflow and the camera maths gives no meaningful answer.
+constexpr double kMaxCoordinate = 1e30;
+
+bool isFinite(const Vec3& v) {
+    return std::abs(v.x) <= kMaxCoordinate && std::abs(v.y) <= kMaxCoordinate &&
+           std::abs(v.z) <= kMaxCoordinate;
+}
 
 // A sphere of radius 0 (one point) still gets a usable frame.
 double framingRadius(const Bounds& b) { return b.radius() > 0 ? b.radius() : 1.0; }
@@ -31,12 +37,12 @@ double framingRadius(const Bounds& b) { return b.radius() > 0 ? b.radius() : 1.0
 
 std::string validateCamera(const CameraSpec& camera) {
     if (camera.projection == Projection::orthographic) {
-        if (!isFinite(camera.ortho_direction)) return "orthographic direction is not finite";
+        if (!isFinite(camera.ortho_direction)) return "orthographic direction must be finite and below 1e30";
         if (glm::length(toGlm(camera.ortho_direction)) < 1e-12) return "orthographic direction is zero";
         return {};
     }
     if (!isFinite(camera.eye) || !isFinite(camera.target) || !isFinite(camera.up))
-        return "camera eye, target and up must be finite";
+        return "camera eye, target and up must be finite and below 1e30";
     if (!(camera.fov_degrees > 0 && camera.fov_degrees < 180))
         return "field of view must be between 0 and 180 degrees (exclusive)";
     const glm::dvec3 forward = toGlm(camera.target) - toGlm(camera.eye);

@@ -1,0 +1,593 @@
+// End to end: runs the built `vissort` tool (VISSORT_TOOL) as a user would, in a fresh temporary
+// folder per test, and checks its exit codes, its one-line errors, its summaries, the JSON and OBJ
+// it writes, and (independently of the library's own tests) its orders against the ray-cast
+// ground truth of tests/support on the same view.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <regex>
+#include <span>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "ground_truth.h"
+#include "vissort/camera.h"
+#include "vissort/scene.h"
+
+namespace vissort {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const std::string kTool = VISSORT_TOOL;
+const std::string kSource = VISSORT_SOURCE_DIR;
+
+std::string dataPath(const std::string& relative) { return kSource + "/tests/data/" + relative; }
+
+std::string shellQuote(const std::string& text) {
+    std::string quoted = "'";
+    for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return quoted + "'";
+}
+
+std::string readFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+std::vector<std::string> lines(const std::string& text) {
+    std::vector<std::string> result;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) result.push_back(line);
+    return result;
+}
+
+struct Result {
+    int code = -1;     // the tool's exit status; 124 = killed by `timeout`, >= 128 = a signal
+    std::string out;   // stdout
+    std::string err;   // stderr
+    std::string command;
+};
+
+std::ostream& operator<<(std::ostream& os, const Result& r) {
+    return os << "\n  command: " << r.command << "\n  exit: " << r.code << "\n  stdout: " << r.out
+              << "\n  stderr: " << r.err;
+}
+
+// Each test gets a fresh folder, removed afterwards; the tool runs with it as working directory.
+class Cli : public testing::Test {
+protected:
+    void SetUp() override {
+        std::string pattern = (fs::temp_directory_path() / "vissort_cli_XXXXXX").string();
+        ASSERT_NE(mkdtemp(pattern.data()), nullptr);
+        dir_ = pattern;
+    }
+    void TearDown() override {
+        std::error_code ignored;
+        fs::remove_all(dir_, ignored);
+    }
+
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+    Result run(const std::vector<std::string>& args) {
+        Result r;
+        std::string command = "timeout 60 " + shellQuote(kTool);
+        for (const std::string& a : args) command += ' ' + shellQuote(a);
+        r.command = command;
+        const std::string out = path("tool.stdout"), err = path("tool.stderr");
+        const std::string full = "cd " + shellQuote(dir_.string()) + " && " + command + " >" +
+                                 shellQuote(out) + " 2>" + shellQuote(err);
+        const int status = std::system(full.c_str());
+        if (status != -1 && WIFEXITED(status)) r.code = WEXITSTATUS(status);
+        else if (status != -1 && WIFSIGNALED(status)) r.code = 128 + WTERMSIG(status);
+        r.out = readFile(out);
+        r.err = readFile(err);
+        return r;
+    }
+
+    // Runs `order` with --json into the test folder and returns the document.
+    json orderJson(std::vector<std::string> args, const std::string& name = "out.json") {
+        args.insert(args.begin(), "order");
+        args.push_back("--json");
+        args.push_back(path(name));
+        const Result r = run(args);
+        EXPECT_EQ(r.code, 0) << r;
+        EXPECT_TRUE(r.err.empty()) << r;
+        try {
+            return json::parse(readFile(path(name)));
+        } catch (const std::exception& e) {
+            ADD_FAILURE() << "invalid JSON from the tool: " << e.what() << r;
+            return json::object();
+        }
+    }
+
+    // Exactly one line on stderr, "vissort: error: ..." mentioning every needle, and the code.
+    void expectError(const std::vector<std::string>& args, int code,
+                     const std::vector<std::string>& needles) {
+        const Result r = run(args);
+        EXPECT_EQ(r.code, code) << r;
+        EXPECT_LT(r.code, 124) << "crashed or hung" << r;
+        const auto err_lines = lines(r.err);
+        EXPECT_EQ(err_lines.size(), 1u) << "expected exactly one line on stderr" << r;
+        EXPECT_FALSE(r.err.empty() || r.err.back() != '\n') << "stderr must end with a newline" << r;
+        if (!err_lines.empty()) {
+            EXPECT_EQ(err_lines[0].rfind("vissort: error: ", 0), 0u) << r;
+            for (const std::string& needle : needles)
+                EXPECT_NE(err_lines[0].find(needle), std::string::npos)
+                    << "the error should name '" << needle << "'" << r;
+        }
+    }
+
+    fs::path dir_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// JSON structure helpers
+
+std::vector<uint32_t> orderOf(const json& record) {
+    std::vector<uint32_t> order;
+    if (!record.contains("order") || !record["order"].is_array()) {
+        ADD_FAILURE() << "no \"order\" array in " << record.dump().substr(0, 300);
+        return order;
+    }
+    for (const json& id : record["order"]) {
+        EXPECT_TRUE(id.is_number_unsigned()) << id;
+        order.push_back(id.is_number_unsigned() ? id.get<uint32_t>() : ~0u);
+    }
+    return order;
+}
+
+std::vector<std::vector<uint32_t>> cyclesOf(const json& record) {
+    std::vector<std::vector<uint32_t>> cycles;
+    if (!record.contains("cycles") || !record["cycles"].is_array()) {
+        ADD_FAILURE() << "no \"cycles\" array";
+        return cycles;
+    }
+    for (const json& cycle : record["cycles"]) {
+        EXPECT_TRUE(cycle.is_array()) << cycle;
+        if (!cycle.is_array()) continue;
+        cycles.emplace_back();
+        for (const json& id : cycle) {
+            EXPECT_TRUE(id.is_number_unsigned()) << id;
+            if (id.is_number_unsigned()) cycles.back().push_back(id.get<uint32_t>());
+        }
+    }
+    return cycles;
+}
+
+bool isPermutation(std::vector<uint32_t> order, std::size_t n) {
+    if (order.size() != n) return false;
+    std::sort(order.begin(), order.end());
+    for (std::size_t i = 0; i < n; ++i)
+        if (order[i] != i) return false;
+    return true;
+}
+
+// A frame record: order (a permutation of n ids), level, cycles (within the ids), stats.
+void expectFrameRecord(const json& record, std::size_t n, const std::string& level) {
+    ASSERT_TRUE(record.is_object());
+    EXPECT_TRUE(isPermutation(orderOf(record), n)) << "order is not a permutation of 0.." << n - 1;
+    ASSERT_TRUE(record.contains("level"));
+    EXPECT_EQ(record["level"], level);
+    for (const auto& cycle : cyclesOf(record)) {
+        EXPECT_GE(cycle.size(), 2u);
+        for (uint32_t id : cycle) EXPECT_LT(id, n);
+    }
+    ASSERT_TRUE(record.contains("stats") && record["stats"].is_object());
+    const json& stats = record["stats"];
+    for (const char* key : {"queries", "draws", "iterations"}) {
+        ASSERT_TRUE(stats.contains(key)) << key;
+        EXPECT_TRUE(stats[key].is_number_integer()) << key << ": " << stats[key];
+    }
+    EXPECT_GE(stats["iterations"].get<int64_t>(), 1);
+    if (n > 1) {
+        EXPECT_GT(stats["queries"].get<int64_t>(), 0);
+        EXPECT_GT(stats["draws"].get<int64_t>(), 0);
+    }
+    ASSERT_TRUE(stats.contains("ms"));
+    EXPECT_TRUE(stats["ms"].is_number());
+    EXPECT_GE(stats["ms"].get<double>(), 0.0);
+}
+
+Scene loadOrDie(const std::string& spec) {
+    Loaded<Scene> loaded = loadScene(spec);
+    EXPECT_TRUE(loaded) << loaded.error;
+    return loaded ? std::move(*loaded.value) : Scene{};
+}
+
+// ---------------------------------------------------------------------------------------------
+// Ordering built-in scenes
+
+constexpr uint32_t kBunnyTriangles = 3674;
+const std::string kBunnies = "builtin:bunnies?n=4";
+
+TEST_F(Cli, OrderSummaryMentionsTheObjectCount) {
+    const Result r = run({"order", kBunnies, "--size", "64x48"});
+    ASSERT_EQ(r.code, 0) << r;
+    EXPECT_TRUE(r.err.empty()) << r;
+    EXPECT_NE(r.out.find("4 objects"), std::string::npos) << r;
+    EXPECT_NE(r.out.find(std::to_string(4 * kBunnyTriangles) + " triangles"), std::string::npos)
+        << r;
+    EXPECT_NE(r.out.find("64x48"), std::string::npos) << r;
+}
+
+TEST_F(Cli, ObjectLevelJson) {
+    const json doc = orderJson({kBunnies, "--size", "64x48"});
+    expectFrameRecord(doc, 4, "object");
+    EXPECT_FALSE(doc.contains("frames"));
+    EXPECT_EQ(doc.value("size", json()), json({64, 48}));
+    EXPECT_EQ(doc.value("oracle", json()), "cpu");
+    EXPECT_EQ(doc.value("back_to_front", json()), false);
+}
+
+TEST_F(Cli, TriangleLevelJson) {
+    const json doc = orderJson({kBunnies, "--size", "64x48", "--level", "triangle"});
+    expectFrameRecord(doc, 4 * kBunnyTriangles, "triangle");
+}
+
+TEST_F(Cli, MultistageJson) {
+    const json doc = orderJson({kBunnies, "--size", "64x48", "--level", "multistage"});
+    expectFrameRecord(doc, 4 * kBunnyTriangles, "multistage");
+}
+
+TEST_F(Cli, BackToFrontIsTheReverse) {
+    const std::vector<std::string> args = {kBunnies, "--size", "64x48"};
+    const json forward = orderJson(args, "forward.json");
+    std::vector<std::string> back_args = args;
+    back_args.push_back("--back-to-front");
+    const json backward = orderJson(back_args, "backward.json");
+    std::vector<uint32_t> expected = orderOf(forward);
+    ASSERT_TRUE(isPermutation(expected, 4));
+    std::reverse(expected.begin(), expected.end());
+    EXPECT_EQ(orderOf(backward), expected);
+    EXPECT_EQ(backward.value("back_to_front", json()), true);
+}
+
+TEST_F(Cli, FramesOnAnOrbit) {
+    const json doc = orderJson({kBunnies, "--size", "64x48", "--frames", "3", "--path", "orbit"});
+    expectFrameRecord(doc, 4, "object");
+    ASSERT_TRUE(doc.contains("frames") && doc["frames"].is_array());
+    ASSERT_EQ(doc["frames"].size(), 3u);
+    for (const json& frame : doc["frames"]) expectFrameRecord(frame, 4, "object");
+    const json& last = doc["frames"][2];
+    EXPECT_EQ(doc["order"], last["order"]);
+    EXPECT_EQ(doc["level"], last["level"]);
+    EXPECT_EQ(doc["cycles"], last["cycles"]);
+    EXPECT_EQ(doc["stats"], last["stats"]);
+}
+
+TEST_F(Cli, FramesPrintOneLineEach) {
+    const Result r =
+        run({"order", kBunnies, "--size", "32x24", "--frames", "3", "--path", "flythrough"});
+    ASSERT_EQ(r.code, 0) << r;
+    for (const char* frame : {"frame 0:", "frame 1:", "frame 2:"})
+        EXPECT_NE(r.out.find(frame), std::string::npos) << frame << r;
+    EXPECT_EQ(r.out.find("frame 3:"), std::string::npos) << r;
+}
+
+// ---------------------------------------------------------------------------------------------
+// --dump-primitives
+
+struct ObjDump {
+    std::vector<std::string> groups;              // names of the `o` lines, in file order
+    std::vector<std::size_t> group_faces;         // faces per group
+    std::vector<double> vx, vy, vz;               // every vertex, in file order
+    std::vector<std::array<long, 3>> faces;       // 1-based vertex indices
+};
+
+ObjDump parseObj(const std::string& text) {
+    ObjDump dump;
+    for (const std::string& line : lines(text)) {
+        std::istringstream in(line);
+        std::string tag;
+        in >> tag;
+        if (tag == "o") {
+            std::string name;
+            in >> name;
+            dump.groups.push_back(name);
+            dump.group_faces.push_back(0);
+        } else if (tag == "v") {
+            double x = NAN, y = NAN, z = NAN;
+            in >> x >> y >> z;
+            EXPECT_FALSE(in.fail()) << line;
+            dump.vx.push_back(x);
+            dump.vy.push_back(y);
+            dump.vz.push_back(z);
+        } else if (tag == "f") {
+            std::array<long, 3> f{};
+            in >> f[0] >> f[1] >> f[2];
+            EXPECT_FALSE(in.fail()) << line;
+            dump.faces.push_back(f);
+            if (!dump.group_faces.empty()) ++dump.group_faces.back();
+        }
+    }
+    return dump;
+}
+
+// The OBJ has one `o prim_<id>` group per primitive, in id order, with the primitive's
+// triangles, and its vertices are `positions` (to the printed precision).
+void expectDumpMatches(const ObjDump& dump, const TrianglePositions& positions,
+                       std::span<const PrimitiveRange> primitives) {
+    ASSERT_EQ(dump.groups.size(), primitives.size());
+    for (std::size_t p = 0; p < primitives.size(); ++p) {
+        EXPECT_EQ(dump.groups[p], "prim_" + std::to_string(p));
+        EXPECT_EQ(dump.group_faces[p], primitives[p].triangle_count) << "group " << p;
+    }
+    ASSERT_EQ(dump.vx.size(), positions.x.size());
+    auto close = [](double printed, float actual) {
+        return std::abs(printed - actual) <= 2e-5 * std::max(1.0, std::abs(double(actual)));
+    };
+    std::size_t mismatches = 0;
+    for (std::size_t c = 0; c < positions.x.size(); ++c) {
+        if (close(dump.vx[c], positions.x[c]) && close(dump.vy[c], positions.y[c]) &&
+            close(dump.vz[c], positions.z[c]))
+            continue;
+        if (++mismatches <= 5)
+            ADD_FAILURE() << "vertex " << c << ": OBJ (" << dump.vx[c] << ", " << dump.vy[c]
+                          << ", " << dump.vz[c] << ") scene (" << positions.x[c] << ", "
+                          << positions.y[c] << ", " << positions.z[c] << ")";
+    }
+    EXPECT_EQ(mismatches, 0u);
+    ASSERT_EQ(dump.faces.size(), positions.triangleCount());
+    for (std::size_t t = 0; t < dump.faces.size(); ++t)
+        for (long k = 0; k < 3; ++k) EXPECT_EQ(dump.faces[t][k], long(3 * t) + k + 1);
+}
+
+TEST_F(Cli, DumpPrimitivesObjectLevel) {
+    const std::string scene_path = dataPath("scenes/three_sticks.json");
+    const Scene scene = loadOrDie(scene_path);
+    ASSERT_EQ(scene.objects.size(), 3u);
+    const Result r = run({"order", scene_path, "--size", "64x64", "--dump-primitives",
+                          path("prims.obj")});
+    ASSERT_EQ(r.code, 0) << r;
+    expectDumpMatches(parseObj(readFile(path("prims.obj"))), scene.frame(0),
+                      scene.objectPrimitives());
+}
+
+TEST_F(Cli, DumpPrimitivesTriangleLevel) {
+    const std::string scene_path = dataPath("scenes/three_sticks.json");
+    const Scene scene = loadOrDie(scene_path);
+    ASSERT_EQ(scene.triangleCount(), 36u);
+    const Result r = run({"order", scene_path, "--size", "64x64", "--level", "triangle",
+                          "--dump-primitives", path("prims.obj")});
+    ASSERT_EQ(r.code, 0) << r;
+    expectDumpMatches(parseObj(readFile(path("prims.obj"))), scene.frame(0),
+                      scene.trianglePrimitives());
+}
+
+// A dynamic scene: the dump is the last frame's geometry (frame 2 at 1/30 s per frame).
+TEST_F(Cli, DumpPrimitivesIsTheLastFrame) {
+    const std::string scene_path = dataPath("scenes/animated.json");
+    const Scene scene = loadOrDie(scene_path);
+    ASSERT_TRUE(scene.isDynamic());
+    const Result r = run({"order", scene_path, "--size", "48x48", "--frames", "3",
+                          "--dump-primitives", path("prims.obj")});
+    ASSERT_EQ(r.code, 0) << r;
+    expectDumpMatches(parseObj(readFile(path("prims.obj"))), scene.frame(2.0 / 30.0),
+                      scene.objectPrimitives());
+}
+
+// ---------------------------------------------------------------------------------------------
+// The tool's orders against the ray-cast ground truth, on the view the tool was asked for
+
+void expectOrderIsCorrect(const json& doc, const Scene& scene, const ViewProjection& view,
+                          std::span<const PrimitiveRange> primitives, uint32_t min_complexity) {
+    const std::vector<uint32_t> order = orderOf(doc);
+    const test::OrderCheck check =
+        test::checkVisibilityOrder(scene.positions, view, primitives, order, cyclesOf(doc));
+    ASSERT_TRUE(check.valid_permutation);
+    EXPECT_GT(check.pairs_checked, 0u);
+    EXPECT_GE(check.max_depth_complexity, min_complexity) << "the view misses the stack";
+    EXPECT_EQ(check.violation_count, 0u);
+    for (const test::OrderViolation& v : check.violations)
+        ADD_FAILURE() << "pixel (" << v.pixel_x << ", " << v.pixel_y << "): " << v.front
+                      << " (depth " << v.front_depth << ") is in front of " << v.behind
+                      << " (depth " << v.behind_depth << ") but ordered after it";
+}
+
+TEST_F(Cli, StackPerspectiveOrderMatchesGroundTruth) {
+    const std::string scene_path = dataPath("scenes/stack.json");
+    const Scene scene = loadOrDie(scene_path);
+    ASSERT_EQ(scene.objects.size(), 36u);
+    const json doc = orderJson({scene_path, "--eye", "0.6,-0.5,13", "--target", "0.1,0.2,3",
+                                "--up", "0,1,0", "--fov", "42", "--size", "120x90"});
+    CameraSpec camera;
+    camera.projection = Projection::perspective;
+    camera.eye = {0.6, -0.5, 13};
+    camera.target = {0.1, 0.2, 3};
+    camera.up = {0, 1, 0};
+    camera.fov_degrees = 42;
+    const ViewProjection view = frameCamera(camera, scene.positions.bounds(), 120, 90);
+    expectOrderIsCorrect(doc, scene, view, scene.objectPrimitives(), 20);
+}
+
+TEST_F(Cli, StackOrthographicExactOrderMatchesGroundTruth) {
+    const std::string scene_path = dataPath("scenes/stack.json");
+    const Scene scene = loadOrDie(scene_path);
+    const json doc = orderJson({scene_path, "--ortho-dir", "0.15,-0.1,-1", "--oracle", "exact",
+                                "--size", "100x80"});
+    EXPECT_EQ(doc.value("oracle", json()), "exact");
+    CameraSpec camera;
+    camera.projection = Projection::orthographic;
+    camera.ortho_direction = {0.15, -0.1, -1};
+    const ViewProjection view = frameCamera(camera, scene.positions.bounds(), 100, 80);
+    expectOrderIsCorrect(doc, scene, view, scene.objectPrimitives(), 20);
+}
+
+TEST_F(Cli, StackTriangleLevelOrderMatchesGroundTruth) {
+    const std::string scene_path = dataPath("scenes/stack.json");
+    const Scene scene = loadOrDie(scene_path);
+    const json doc = orderJson({scene_path, "--eye", "-0.4,0.3,12", "--target", "0,0,3.5",
+                                "--level", "triangle", "--size", "80x80"});
+    ASSERT_EQ(doc.value("level", json()), "triangle");
+    CameraSpec camera = scene.camera.value();  // --up and --fov come from the scene's camera
+    camera.eye = {-0.4, 0.3, 12};
+    camera.target = {0, 0, 3.5};
+    const ViewProjection view = frameCamera(camera, scene.positions.bounds(), 80, 80);
+    expectOrderIsCorrect(doc, scene, view, scene.trianglePrimitives(), 20);
+}
+
+TEST_F(Cli, ThreeSticksReportOneCycle) {
+    const json doc = orderJson({dataPath("scenes/three_sticks.json"), "--size", "200x200"});
+    expectFrameRecord(doc, 3, "object");
+    const auto cycles = cyclesOf(doc);
+    ASSERT_EQ(cycles.size(), 1u) << doc["cycles"];
+    std::vector<uint32_t> cycle = cycles[0];
+    std::sort(cycle.begin(), cycle.end());
+    EXPECT_EQ(cycle, (std::vector<uint32_t>{0, 1, 2}));
+}
+
+// ---------------------------------------------------------------------------------------------
+// info and help
+
+TEST_F(Cli, InfoOnSlabs) {
+    const Result r = run({"info", "builtin:slabs?layers=12"});
+    ASSERT_EQ(r.code, 0) << r;
+    EXPECT_TRUE(r.err.empty()) << r;
+    EXPECT_NE(r.out.find("objects: 12"), std::string::npos) << r;
+    EXPECT_NE(r.out.find("triangles: 24"), std::string::npos) << r;
+    std::smatch match;
+    const std::regex depth(R"(depth complexity[^\n]*max (\d+))");
+    ASSERT_TRUE(std::regex_search(r.out, match, depth)) << r;
+    EXPECT_GE(std::stoi(match[1]), 12) << r;
+}
+
+TEST_F(Cli, TopLevelHelpMentionsLevel) {
+    const Result r = run({"--help"});
+    EXPECT_EQ(r.code, 0) << r;
+    EXPECT_NE(r.out.find("order"), std::string::npos) << r;
+    EXPECT_NE(r.out.find("--level"), std::string::npos) << "help should mention --level" << r;
+}
+
+TEST_F(Cli, OrderHelpMentionsLevel) {
+    const Result r = run({"order", "--help"});
+    EXPECT_EQ(r.code, 0) << r;
+    for (const char* option : {"--level", "--oracle", "--json", "--dump-primitives", "--size"})
+        EXPECT_NE(r.out.find(option), std::string::npos) << "help should mention " << option << r;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Errors: the documented exit code and one line "vissort: error: ..." naming the problem
+
+constexpr int kUsage = 2, kInput = 3, kFailure = 1;
+
+TEST_F(Cli, ErrorMissingFile) {
+    const std::string missing = path("no_such_scene.obj");
+    expectError({"order", missing}, kInput, {missing});
+    expectError({"info", missing}, kInput, {missing});
+}
+
+TEST_F(Cli, ErrorDirectory) {
+    fs::create_directory(path("folder.obj"));
+    expectError({"order", path("folder.obj")}, kInput, {path("folder.obj")});
+    expectError({"order", dir_.string()}, kInput, {dir_.string()});
+}
+
+TEST_F(Cli, ErrorGarbageObj) {
+    std::mt19937 random(7);
+    std::string bytes(4096, '\0');
+    for (char& c : bytes) c = char(random() & 0xff);
+    std::ofstream(path("garbage.obj"), std::ios::binary) << bytes;
+    expectError({"order", path("garbage.obj")}, kInput, {path("garbage.obj")});
+}
+
+TEST_F(Cli, ErrorEmptyObj) {
+    std::ofstream(path("empty.obj")).flush();
+    ASSERT_TRUE(fs::exists(path("empty.obj")));
+    expectError({"order", path("empty.obj")}, kInput, {path("empty.obj")});
+}
+
+TEST_F(Cli, ErrorNonFiniteCoordinates) {
+    expectError({"order", dataPath("cli/nan_coordinate.obj")}, kInput,
+                {dataPath("cli/nan_coordinate.obj")});
+    expectError({"order", dataPath("cli/inf_coordinate.obj")}, kInput,
+                {dataPath("cli/inf_coordinate.obj")});
+}
+
+TEST_F(Cli, ErrorJsonScenes) {
+    expectError({"order", dataPath("cli/syntax_error.json")}, kInput,
+                {dataPath("cli/syntax_error.json")});
+    expectError({"order", dataPath("cli/unknown_key.json")}, kInput,
+                {dataPath("cli/unknown_key.json"), "translte"});
+}
+
+TEST_F(Cli, ErrorBuiltins) {
+    expectError({"order", "builtin:nosuch"}, kInput, {"nosuch"});
+    expectError({"order", "builtin:bunnies?n=-1"}, kInput, {"bunnies", "n"});
+}
+
+TEST_F(Cli, ErrorSize) {
+    expectError({"order", kBunnies, "--size", "0x10"}, kUsage, {"--size"});
+    expectError({"order", kBunnies, "--size", "100000x100000"}, kUsage, {"--size"});
+    expectError({"order", kBunnies, "--size", "abc"}, kUsage, {"--size"});
+}
+
+TEST_F(Cli, ErrorInfoOptions) {
+    expectError({"info", "builtin:slabs", "--size", "abc"}, kUsage, {"--size"});
+    expectError({"info", "builtin:slabs", "--eye", "1,2"}, kUsage, {"--eye"});
+    expectError({"info", "builtin:slabs?layers=0"}, kInput, {"layers"});
+}
+
+TEST_F(Cli, ErrorEye) {
+    expectError({"order", kBunnies, "--eye", "1,2"}, kUsage, {"--eye"});
+    expectError({"order", kBunnies, "--eye", "1,nan,2"}, kUsage, {"--eye"});
+}
+
+TEST_F(Cli, ErrorEyeEqualsTarget) {
+    const Result r = run({"order", kBunnies, "--size", "32x32", "--eye", "1,2,3", "--target",
+                          "1,2,3"});
+    EXPECT_EQ(r.code, kUsage) << r;
+    const auto err_lines = lines(r.err);
+    ASSERT_EQ(err_lines.size(), 1u) << r;
+    EXPECT_EQ(err_lines[0].rfind("vissort: error: ", 0), 0u) << r;
+    EXPECT_TRUE(err_lines[0].find("--eye") != std::string::npos ||
+                err_lines[0].find("--target") != std::string::npos)
+        << "the error should name the option (--eye or --target)" << r;
+}
+
+TEST_F(Cli, ErrorFov) { expectError({"order", kBunnies, "--fov", "0"}, kUsage, {"--fov"}); }
+
+TEST_F(Cli, ErrorOrthoDir) {
+    expectError({"order", kBunnies, "--ortho-dir", "0,0,0"}, kUsage, {"--ortho-dir"});
+}
+
+TEST_F(Cli, ErrorLevelAndOracle) {
+    expectError({"order", kBunnies, "--level", "bogus"}, kUsage, {"--level", "bogus"});
+    expectError({"order", kBunnies, "--oracle", "bogus"}, kUsage, {"--oracle", "bogus"});
+}
+
+TEST_F(Cli, ErrorFramesAndPath) {
+    expectError({"order", kBunnies, "--frames", "0"}, kUsage, {"--frames"});
+    expectError({"order", kBunnies, "--path", "nowhere"}, kUsage, {"--path", "nowhere"});
+}
+
+TEST_F(Cli, ErrorUnknownOption) {
+    expectError({"order", kBunnies, "--no-such-option"}, kUsage, {"--no-such-option"});
+}
+
+TEST_F(Cli, ErrorNoSubcommand) {
+    expectError({}, kUsage, {"subcommand"});
+}
+
+TEST_F(Cli, ErrorJsonIntoMissingFolder) {
+    const std::string target = path("no/such/folder/out.json");
+    expectError({"order", kBunnies, "--size", "32x24", "--json", target}, kFailure, {target});
+    EXPECT_FALSE(fs::exists(path("no")));
+}
+
+} // namespace
+} // namespace vissort
