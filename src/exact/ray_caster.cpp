@@ -19,41 +19,30 @@
 namespace vissort::detail {
 namespace {
 
-class EmbreeDevice {
+// Owns one Embree handle (device or scene) and releases it once: non-copyable RAII.
+template <class Handle, void (*release)(Handle)>
+class EmbreeHandle {
 public:
-    EmbreeDevice() : device_(rtcNewDevice(nullptr)) {}
-    ~EmbreeDevice() {
-        if (device_)
-            rtcReleaseDevice(device_);
+    explicit EmbreeHandle(Handle handle) : handle_(handle) {}
+    ~EmbreeHandle() {
+        if (handle_)
+            release(handle_);
     }
-    EmbreeDevice(const EmbreeDevice&) = delete;
-    EmbreeDevice& operator=(const EmbreeDevice&) = delete;
+    EmbreeHandle(const EmbreeHandle&) = delete;
+    EmbreeHandle& operator=(const EmbreeHandle&) = delete;
 
-    RTCDevice get() const { return device_; }
+    Handle get() const { return handle_; }
 
 private:
-    RTCDevice device_;
+    Handle handle_;
 };
 
-class EmbreeScene {
-public:
-    explicit EmbreeScene(RTCDevice device) : scene_(rtcNewScene(device)) {}
-    ~EmbreeScene() {
-        if (scene_)
-            rtcReleaseScene(scene_);
-    }
-    EmbreeScene(const EmbreeScene&) = delete;
-    EmbreeScene& operator=(const EmbreeScene&) = delete;
-
-    RTCScene get() const { return scene_; }
-
-private:
-    RTCScene scene_;
-};
+using EmbreeDevice = EmbreeHandle<RTCDevice, rtcReleaseDevice>;
+using EmbreeScene = EmbreeHandle<RTCScene, rtcReleaseScene>;
 
 // One device for the process: creating one starts Embree's thread pool, too costly per frame.
 RTCDevice sharedDevice() {
-    static const EmbreeDevice device;
+    static const EmbreeDevice device(rtcNewDevice(nullptr));
     if (!device.get()) {
         throw std::runtime_error("cannot create an Embree device (error " +
                                  std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
@@ -307,7 +296,7 @@ AllHits castAllHits(const TrianglePositions& positions, const ViewProjection& vi
         return result;
 
     const RTCDevice device = sharedDevice();
-    EmbreeScene scene(device);
+    EmbreeScene scene(rtcNewScene(device));
     rtcSetSceneFlags(scene.get(), RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(scene.get(), RTC_BUILD_QUALITY_HIGH);
     addTriangles(device, scene.get(), positions);
