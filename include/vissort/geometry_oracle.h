@@ -4,6 +4,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "vissort/camera.h"
 #include "vissort/geometry.h"
@@ -35,5 +36,9 @@ const char* oracleName(OracleKind kind);
 /// The plain CPU depth rasterizer (raster/cpu_oracle.h) or the ray-cast reference
 /// (exact/exact_oracle.h).
 std::unique_ptr<GeometryOracle> makeOracle(OracleKind kind);
+
+/// The rasterizing oracles that `vissort bench oracle` compares (the exact oracle ray-casts every
+/// pixel when bound, so it is a reference, not a contender).
+std::vector<OracleKind> benchmarkedOracles();
 
 } // namespace vissort

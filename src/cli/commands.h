@@ -26,4 +26,13 @@ struct InfoOptions {
 CLI::App* addInfoCommand(CLI::App& app, InfoOptions& options);
 int runInfo(const InfoOptions& options);
 
+struct BenchOptions {
+    std::string what;
+    int repeat = 3;
+    int frames = 11;
+    std::string json_path;
+};
+CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options);
+int runBench(const BenchOptions& options);
+
 } // namespace vissort::cli

@@ -14,6 +14,8 @@ int main(int argc, char** argv) {
     InfoOptions info;
     CLI::App* order_command = addOrderCommand(app, order);
     CLI::App* info_command = addInfoCommand(app, info);
+    BenchOptions bench;
+    CLI::App* bench_command = addBenchCommand(app, bench);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -27,6 +29,7 @@ int main(int argc, char** argv) {
     try {
         if (order_command->parsed()) return runOrder(order);
         if (info_command->parsed()) return runInfo(info);
+        if (bench_command->parsed()) return runBench(bench);
     } catch (const std::bad_alloc&) {
         return fail(kExitFailure, "out of memory (try a smaller --size or scene)");
     } catch (const std::exception& e) {

@@ -18,4 +18,6 @@ std::unique_ptr<GeometryOracle> makeOracle(OracleKind kind) {
     return std::make_unique<CpuOracle>();
 }
 
+std::vector<OracleKind> benchmarkedOracles() { return {OracleKind::cpu}; }
+
 } // namespace vissort

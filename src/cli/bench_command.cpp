@@ -1,0 +1,161 @@
+// `vissort bench oracle`: the oracle's cost on the synthetic setup-bound and fill-bound
+// workloads and on the real one (triangle-level ordering of the bunnies along an orbit), every
+// oracle measured in the same run so the figures are ratios on one machine.
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.h"
+#include "vissort/oracle_workloads.h"
+#include "vissort/scene_orderer.h"
+
+namespace vissort::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0 : v[v.size() / 2];
+}
+
+std::string machineName() {
+    std::ifstream cpuinfo("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(cpuinfo, line))
+        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+    return "unknown CPU";
+}
+
+struct SyntheticResult {
+    double draw_seconds = 0, query_seconds = 0;
+};
+
+// Best of `repeat` runs: draws of every triangle back to front (each one passes), then queries of
+// every triangle against the far background alone (nothing behind: every pixel is tested).
+SyntheticResult runSynthetic(GeometryOracle& oracle, const ScreenTriangleWorkload& w, int repeat) {
+    oracle.bind(w.positions, w.view, w.primitives);
+    SyntheticResult best{1e300, 1e300};
+    const auto count = uint32_t(w.primitives.size() - 1);
+    uint32_t answered_behind = 0;
+    for (int r = 0; r < repeat; ++r) {
+        oracle.clear();
+        auto start = Clock::now();
+        for (uint32_t i = 0; i < count; ++i) oracle.draw(i);
+        best.draw_seconds = std::min(best.draw_seconds, secondsSince(start));
+        oracle.clear();
+        oracle.draw(w.background);
+        start = Clock::now();
+        for (uint32_t i = 0; i < count; ++i) answered_behind += oracle.anyBehind(i) ? 1 : 0;
+        best.query_seconds = std::min(best.query_seconds, secondsSince(start));
+    }
+    if (answered_behind != 0)
+        throw std::runtime_error("bench workload broken: a query found fragments behind");
+    return best;
+}
+
+struct Row {
+    std::string workload, oracle, unit;
+    double value;
+    std::string detail;
+};
+
+} // namespace
+
+CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options) {
+    CLI::App* command = app.add_subcommand("bench", "Measure the oracles (figures for docs/benchmarks.md)");
+    command->add_option("what", options.what, "What to measure: oracle")->required();
+    command->add_option("--repeat", options.repeat, "Runs per synthetic case (best is kept)")
+        ->capture_default_str();
+    command->add_option("--frames", options.frames, "Frames of the real workload")
+        ->capture_default_str();
+    command->add_option("--json", options.json_path, "Write the figures as JSON");
+    return command;
+}
+
+int runBench(const BenchOptions& options) {
+    if (options.what != "oracle") return fail(kExitUsage, "bench: unknown benchmark '" + options.what + "' (try: oracle)");
+    if (options.repeat < 1 || options.repeat > 100) return fail(kExitUsage, "--repeat must be 1..100");
+    if (options.frames < 2 || options.frames > 1000) return fail(kExitUsage, "--frames must be 2..1000");
+
+    const std::vector<OracleKind> kinds = benchmarkedOracles();
+    std::vector<Row> rows;
+    std::cout << "vissort bench oracle on " << machineName() << ", "
+              << std::thread::hardware_concurrency() << " hardware threads\n";
+
+    struct Case { const char* name; uint32_t count; double leg; uint32_t width, height; bool setup_bound; };
+    const Case cases[] = {{"right triangles, 10 px legs, 1920x1080", 100000, 10, 1920, 1080, true},
+                          {"right triangles, 100 px legs, 1600x1200", 2000, 100, 1600, 1200, false},
+                          {"right triangles, 500 px legs, 1600x1200", 200, 500, 1600, 1200, false}};
+    for (const Case& c : cases) {
+        const ScreenTriangleWorkload w = makeRightTriangleWorkload(c.count, c.leg, c.width, c.height);
+        const double pixels = c.count * c.leg * c.leg / 2;
+        for (OracleKind kind : kinds) {
+            auto oracle = makeOracle(kind);
+            const SyntheticResult r = runSynthetic(*oracle, w, options.repeat);
+            if (c.setup_bound) {
+                rows.push_back({std::string(c.name) + ", draws", oracleName(kind), "M triangles/s", c.count / r.draw_seconds / 1e6, ""});
+                rows.push_back({std::string(c.name) + ", queries", oracleName(kind), "M triangles/s", c.count / r.query_seconds / 1e6, ""});
+            } else {
+                rows.push_back({std::string(c.name) + ", draws", oracleName(kind), "G pixels/s", pixels / r.draw_seconds / 1e9, ""});
+                rows.push_back({std::string(c.name) + ", queries", oracleName(kind), "G pixels/s", pixels / r.query_seconds / 1e9, ""});
+            }
+        }
+    }
+
+    // The real workload: the paper's dynamic scene at triangle level, coherent frames on an orbit.
+    Loaded<Scene> bunnies = loadScene("builtin:bunnies");
+    if (!bunnies) return fail(kExitFailure, bunnies.error);
+    const Scene& scene = *bunnies.value;
+    const CameraSpec base = scene.camera.value_or(defaultCamera(scene.positions.bounds(), 1024.0 / 768));
+    for (OracleKind kind : kinds) {
+        auto oracle = makeOracle(kind);
+        SceneOrderer orderer(scene, OrderLevel::triangle, *oracle);
+        TrianglePositions positions;
+        std::vector<double> ms, queries, iterations;
+        for (int f = 0; f < options.frames; ++f) {
+            scene.frame(f * kFrameInterval, positions);
+            const CameraSpec camera = cameraOnPath(base, CameraPath::orbit, f, scene.positions.bounds());
+            const ViewProjection vp = frameCamera(camera, positions.bounds(), 1024, 768);
+            const FrameOrder frame = orderer.orderFrame(positions, vp);
+            if (f == 0) continue;  // the first frame has no previous order to start from
+            ms.push_back(frame.milliseconds);
+            queries.push_back(double(frame.stats.queries));
+            iterations.push_back(frame.stats.iterations);
+        }
+        std::ostringstream detail;
+        detail << median(queries) << " queries, " << median(iterations) << " iterations per frame";
+        rows.push_back({"bunnies (18, 66,132 triangles), triangle level, orbit, 1024x768", oracleName(kind),
+                        "ms per coherent frame (median)", median(ms), detail.str()});
+    }
+
+    std::cout << std::left;
+    for (const Row& row : rows) {
+        std::cout << "  " << std::setw(66) << row.workload << std::setw(8) << row.oracle << std::right
+                  << std::setw(10) << std::fixed << std::setprecision(3) << row.value << ' ' << std::left
+                  << row.unit << (row.detail.empty() ? "" : "  (" + row.detail + ")") << '\n';
+    }
+    if (!options.json_path.empty()) {
+        nlohmann::json doc = {{"machine", machineName()}, {"rows", nlohmann::json::array()}};
+        for (const Row& row : rows)
+            doc["rows"].push_back({{"workload", row.workload}, {"oracle", row.oracle},
+                                   {"value", row.value}, {"unit", row.unit}, {"detail", row.detail}});
+        std::ofstream out(options.json_path);
+        out << doc.dump(1) << '\n';
+        if (!out) return fail(kExitFailure, "cannot write " + options.json_path);
+    }
+    return kExitOk;
+}
+
+} // namespace vissort::cli
