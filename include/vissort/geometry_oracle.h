@@ -27,14 +27,17 @@ public:
                       std::span<const PrimitiveRange> primitives) = 0;
 };
 
-enum class OracleKind { cpu, exact };
+enum class OracleKind {
+    cpu,            // "cpu": the tiled CPU rasterizer (fast_cpu_oracle.h), the default
+    cpu_reference,  // "cpu-reference": the plain rasterizer that defines the cpu answers
+                    // (cpu_oracle.h); cpu gives identical answers, faster
+    exact,          // "exact": ray casting at pixel centres in double (exact_oracle.h)
+};
 
-/// "cpu" or "exact"; empty optional-like: returns false when the name is unknown.
+/// Parses "cpu", "cpu-reference" or "exact"; returns false when the name is unknown.
 bool parseOracleKind(const std::string& name, OracleKind& kind);
 const char* oracleName(OracleKind kind);
 
-/// The plain CPU depth rasterizer (raster/cpu_oracle.h) or the ray-cast reference
-/// (exact/exact_oracle.h).
 std::unique_ptr<GeometryOracle> makeOracle(OracleKind kind);
 
 /// The rasterizing oracles that `vissort bench oracle` compares (the exact oracle ray-casts every

@@ -1,23 +1,36 @@
 #include "vissort/cpu_oracle.h"
 #include "vissort/exact_oracle.h"
+#include "vissort/fast_cpu_oracle.h"
 #include "vissort/geometry_oracle.h"
 
 namespace vissort {
 
 bool parseOracleKind(const std::string& name, OracleKind& kind) {
     if (name == "cpu") kind = OracleKind::cpu;
+    else if (name == "cpu-reference") kind = OracleKind::cpu_reference;
     else if (name == "exact") kind = OracleKind::exact;
     else return false;
     return true;
 }
 
-const char* oracleName(OracleKind kind) { return kind == OracleKind::cpu ? "cpu" : "exact"; }
-
-std::unique_ptr<GeometryOracle> makeOracle(OracleKind kind) {
-    if (kind == OracleKind::exact) return std::make_unique<ExactOracle>();
-    return std::make_unique<CpuOracle>();
+const char* oracleName(OracleKind kind) {
+    switch (kind) {
+    case OracleKind::cpu: return "cpu";
+    case OracleKind::cpu_reference: return "cpu-reference";
+    case OracleKind::exact: return "exact";
+    }
+    return "?";
 }
 
-std::vector<OracleKind> benchmarkedOracles() { return {OracleKind::cpu}; }
+std::unique_ptr<GeometryOracle> makeOracle(OracleKind kind) {
+    switch (kind) {
+    case OracleKind::cpu: return std::make_unique<FastCpuOracle>();
+    case OracleKind::cpu_reference: return std::make_unique<CpuOracle>();
+    case OracleKind::exact: return std::make_unique<ExactOracle>();
+    }
+    return nullptr;
+}
+
+std::vector<OracleKind> benchmarkedOracles() { return {OracleKind::cpu_reference, OracleKind::cpu}; }
 
 } // namespace vissort

@@ -12,20 +12,6 @@
 namespace vissort {
 namespace {
 
-using Matrix = std::array<double, 16>;  // column-major: element (row r, column c) at 4 c + r
-
-// The order of the sums is part of the contract (cpu_oracle.h, rule 1).
-Matrix multiply(const Matrix& a, const Matrix& b) {
-    Matrix out{};
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r) {
-            double sum = 0;
-            for (int k = 0; k < 4; ++k) sum += a[4 * k + r] * b[4 * c + k];
-            out[4 * c + r] = sum;
-        }
-    return out;
-}
-
 template <class Corner>
 detail::ClipVertex toClipVertex(const Corner& corner) {
     return {corner.x, corner.y, corner.z, corner.w};
@@ -45,18 +31,13 @@ void CpuOracle::bind(const TrianglePositions& positions, const ViewProjection& v
         assert(uint64_t(range.first_triangle) + range.triangle_count <=
                positions.triangleCount());
 
-    const Matrix m = multiply(view.projection_matrix, view.view);
+    const detail::Matrix4 m = detail::multiply(view.projection_matrix, view.view);
     const std::size_t corner_count = positions.triangleCount() * 3;
     corners_.resize(corner_count);
     for (std::size_t i = 0; i < corner_count; ++i) {
-        const double p[4] = {positions.x[i], positions.y[i], positions.z[i], 1.0};
-        double clip[4];
-        for (int r = 0; r < 4; ++r) {
-            double sum = 0;
-            for (int k = 0; k < 4; ++k) sum += m[4 * k + r] * p[k];
-            clip[r] = sum;
-        }
-        corners_[i] = {clip[0], clip[1], clip[2], clip[3]};
+        const detail::ClipVertex c =
+            detail::toClipSpace(m, positions.x[i], positions.y[i], positions.z[i]);
+        corners_[i] = {c.x, c.y, c.z, c.w};
     }
     depth_.resize(std::size_t(width_) * height_);
     clear();

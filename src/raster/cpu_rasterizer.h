@@ -28,6 +28,33 @@ inline constexpr uint32_t kMaxViewportSize = 1u << 16;
 /// absurd input gets here: clipping keeps honest geometry far below it.
 inline constexpr int64_t kMaxSnapped = int64_t(1) << 29;
 
+/// Column-major 4x4 matrix: element (row r, column c) at 4 c + r.
+using Matrix4 = std::array<double, 16>;
+
+/// Rule 1 (cpu_oracle.h): projection * view, summed in this order, once per bind.
+inline Matrix4 multiply(const Matrix4& a, const Matrix4& b) {
+    Matrix4 out{};
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) {
+            double sum = 0;
+            for (int k = 0; k < 4; ++k) sum += a[4 * k + r] * b[4 * c + k];
+            out[4 * c + r] = sum;
+        }
+    return out;
+}
+
+/// Rule 1: a world corner (float coordinates, w = 1) to clip space, summed in this order.
+inline ClipVertex toClipSpace(const Matrix4& m, float x, float y, float z) {
+    const double p[4] = {x, y, z, 1.0};
+    double clip[4];
+    for (int r = 0; r < 4; ++r) {
+        double sum = 0;
+        for (int k = 0; k < 4; ++k) sum += m[4 * k + r] * p[k];
+        clip[r] = sum;
+    }
+    return {clip[0], clip[1], clip[2], clip[3]};
+}
+
 /// A vertex after the perspective divide: screen position in pixels (y down) and depth d.
 struct ScreenVertex {
     double x = 0, y = 0, d = 0;

@@ -1,0 +1,373 @@
+// FastCpuOracle against the reference CpuOracle: the same answer to every query and the same
+// depth buffer, bit for bit, after the same clears and draws, on random soups, slabs, shared-edge
+// grids and real meshes, through both projections, at many viewport sizes; and the same Vis-sort
+// order.
+
+#include "vissort/fast_cpu_oracle.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "vissort/cpu_oracle.h"
+#include "vissort/scene.h"
+#include "vissort/vis_sort.h"
+
+namespace vissort {
+namespace {
+
+bool sameBits(std::span<const float> a, std::span<const float> b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+}
+
+// Random clears, draws and queries, in the same order on both oracles; every answer and, after
+// every draw, the depth buffers compared. Returns how many queries answered true (so that a test
+// can check it exercised both answers); adds the fast oracle's tile counts to totals if given.
+std::size_t compareInterleaving(const TrianglePositions& p, const ViewProjection& view,
+                                std::span<const PrimitiveRange> primitives, uint32_t seed,
+                                int operations, FastCpuOracleStats* totals = nullptr) {
+    CpuOracle reference;
+    FastCpuOracle fast;
+    reference.bind(p, view, primitives);
+    fast.bind(p, view, primitives);
+    EXPECT_EQ(fast.primitiveCount(), reference.primitiveCount());
+    EXPECT_EQ(fast.width(), reference.width());
+    EXPECT_EQ(fast.height(), reference.height());
+    EXPECT_TRUE(sameBits(fast.depthBuffer(), reference.depthBuffer()));
+    if (primitives.empty()) return 0;
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<uint32_t> pick(0, uint32_t(primitives.size()) - 1);
+    std::uniform_real_distribution<double> action(0, 1);
+    std::size_t behind = 0;
+    for (int op = 0; op < operations; ++op) {
+        const double a = action(rng);
+        const uint32_t id = pick(rng);
+        if (a < 0.03) {
+            reference.clear();
+            fast.clear();
+        } else if (a < 0.5) {
+            reference.draw(id);
+            fast.draw(id);
+            if (!sameBits(fast.depthBuffer(), reference.depthBuffer())) {
+                ADD_FAILURE() << "depth buffers differ after draw " << id << " (operation " << op
+                              << ", seed " << seed << ")";
+                return behind;
+            }
+        } else {
+            const bool expected = reference.anyBehind(id);
+            const bool got = fast.anyBehind(id);
+            if (expected != got) {
+                ADD_FAILURE() << "anyBehind(" << id << ") = " << got << ", reference " << expected
+                              << " (operation " << op << ", seed " << seed << ")";
+                return behind;
+            }
+            behind += expected;
+        }
+    }
+    EXPECT_TRUE(sameBits(fast.depthBuffer(), reference.depthBuffer()));
+    if (totals != nullptr) {
+        totals->tiles_visited += fast.stats().tiles_visited;
+        totals->tiles_culled += fast.stats().tiles_culled;
+        totals->tiles_accepted += fast.stats().tiles_accepted;
+    }
+    return behind;
+}
+
+// Every primitive drawn in order, then every primitive queried: the pass-like access pattern.
+void compareDrawAllThenQueryAll(const TrianglePositions& p, const ViewProjection& view,
+                                std::span<const PrimitiveRange> primitives) {
+    CpuOracle reference;
+    FastCpuOracle fast;
+    reference.bind(p, view, primitives);
+    fast.bind(p, view, primitives);
+    for (uint32_t i = 0; i < primitives.size(); ++i) {
+        reference.draw(i);
+        fast.draw(i);
+    }
+    ASSERT_TRUE(sameBits(fast.depthBuffer(), reference.depthBuffer()));
+    for (uint32_t i = 0; i < primitives.size(); ++i)
+        ASSERT_EQ(fast.anyBehind(i), reference.anyBehind(i)) << "primitive " << i;
+}
+
+// Random triangles in [-1, 1]^3 with legs between min_size and max_size.
+TrianglePositions randomSoup(uint32_t seed, std::size_t count, double min_size, double max_size) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    std::uniform_real_distribution<double> size(min_size, max_size);
+    TrianglePositions p;
+    for (std::size_t t = 0; t < count; ++t) {
+        const double cx = unit(rng), cy = unit(rng), cz = unit(rng), s = size(rng);
+        for (int k = 0; k < 3; ++k) {
+            p.x.push_back(float(cx + s * unit(rng)));
+            p.y.push_back(float(cy + s * unit(rng)));
+            p.z.push_back(float(cz + s * unit(rng)));
+        }
+    }
+    return p;
+}
+
+// A (cells + 1)^2 vertex grid of layers at different depths, slightly tilted: every interior edge
+// is shared by two triangles of a layer.
+TrianglePositions sharedEdgeGrid(int cells, int layers) {
+    TrianglePositions p;
+    const auto vertex = [&](int i, int j, int layer) {
+        const double x = -1 + 2.0 * i / cells, y = -1 + 2.0 * j / cells;
+        // Irrational-looking offsets keep vertices off pixel centres but shared exactly.
+        const double jitter = 0.3 / cells * std::sin(7.1 * i + 3.3 * j);
+        p.x.push_back(float(x + jitter));
+        p.y.push_back(float(y - jitter));
+        p.z.push_back(float(-0.5 * layer + 0.05 * x + 0.02 * y));
+    };
+    for (int layer = 0; layer < layers; ++layer)
+        for (int i = 0; i < cells; ++i)
+            for (int j = 0; j < cells; ++j) {
+                vertex(i, j, layer), vertex(i + 1, j, layer), vertex(i + 1, j + 1, layer);
+                vertex(i, j, layer), vertex(i + 1, j + 1, layer), vertex(i, j + 1, layer);
+            }
+    return p;
+}
+
+ViewProjection viewOf(const Bounds& bounds, Projection projection, uint32_t width, uint32_t height,
+                      Vec3 eye = {0.7, 0.5, 4}) {
+    CameraSpec spec;
+    spec.projection = projection;
+    spec.eye = eye;
+    spec.target = {0, 0, 0};
+    spec.ortho_direction = {-0.2, -0.1, -1};
+    return frameCamera(spec, bounds, width, height);
+}
+
+struct Case {
+    Projection projection;
+    uint32_t width, height;
+};
+
+std::string caseName(const ::testing::TestParamInfo<Case>& info) {
+    return std::string(info.param.projection == Projection::perspective ? "Perspective" : "Ortho") +
+           std::to_string(info.param.width) + "x" + std::to_string(info.param.height);
+}
+
+class FastCpuOracleMatches : public ::testing::TestWithParam<Case> {};
+
+TEST_P(FastCpuOracleMatches, RandomSoupOfSingleTriangles) {
+    const Case c = GetParam();
+    std::size_t behind = 0;
+    for (uint32_t seed = 1; seed <= 3; ++seed) {
+        const TrianglePositions p = randomSoup(seed, 200, 0.02, 0.6);
+        const std::vector<PrimitiveRange> primitives = [&] {
+            std::vector<PrimitiveRange> r;
+            for (uint32_t t = 0; t < p.triangleCount(); ++t) r.push_back({t, 1});
+            return r;
+        }();
+        const ViewProjection view = viewOf(p.bounds(), c.projection, c.width, c.height);
+        behind += compareInterleaving(p, view, primitives, seed, 1500);
+        compareDrawAllThenQueryAll(p, view, primitives);
+    }
+    if (c.width * c.height >= 17 * 13) {
+        EXPECT_GT(behind, 0u);  // both answers exercised
+    }
+}
+
+TEST_P(FastCpuOracleMatches, SoupSeenFromInsideCrossesTheNearPlaneAndScreenEdges) {
+    const Case c = GetParam();
+    const TrianglePositions p = randomSoup(11, 300, 0.1, 1.0);
+    std::vector<PrimitiveRange> primitives;
+    for (uint32_t t = 0; t + 3 <= p.triangleCount(); t += 3) primitives.push_back({t, 3});
+    // The eye inside the soup: many triangles cross the near plane or lie behind the eye.
+    const ViewProjection view = viewOf(p.bounds(), c.projection, c.width, c.height, {0.1, 0.05, 0.2});
+    compareInterleaving(p, view, primitives, 5, 1500);
+    compareDrawAllThenQueryAll(p, view, primitives);
+}
+
+TEST_P(FastCpuOracleMatches, SharedEdgeGridLayers) {
+    const Case c = GetParam();
+    const TrianglePositions p = sharedEdgeGrid(9, 3);
+    std::vector<PrimitiveRange> per_triangle, per_layer;
+    for (uint32_t t = 0; t < p.triangleCount(); ++t) per_triangle.push_back({t, 1});
+    const uint32_t per = uint32_t(p.triangleCount() / 3);
+    for (uint32_t l = 0; l < 3; ++l) per_layer.push_back({l * per, per});
+    const ViewProjection view = viewOf(p.bounds(), c.projection, c.width, c.height);
+    compareInterleaving(p, view, per_triangle, 7, 2000);
+    compareInterleaving(p, view, per_layer, 8, 200);
+    compareDrawAllThenQueryAll(p, view, per_triangle);
+    compareDrawAllThenQueryAll(p, view, per_layer);
+}
+
+TEST_P(FastCpuOracleMatches, BuiltinSlabsAndSoup) {
+    const Case c = GetParam();
+    for (const char* spec : {"builtin:slabs?layers=6", "builtin:soup?n=300"}) {
+        const Loaded<Scene> loaded = loadScene(spec);
+        ASSERT_TRUE(loaded) << loaded.error;
+        const Scene& scene = *loaded.value;
+        const ViewProjection view =
+            frameCamera([&] {
+                CameraSpec s = defaultCamera(scene.positions.bounds());
+                s.projection = c.projection;
+                return s;
+            }(), scene.positions.bounds(), c.width, c.height);
+        const auto triangles = scene.trianglePrimitives();
+        const auto objects = scene.objectPrimitives();
+        compareInterleaving(scene.positions, view, triangles, 21, 1500);
+        compareInterleaving(scene.positions, view, objects, 22, 300);
+        compareDrawAllThenQueryAll(scene.positions, view, triangles);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    ProjectionsAndSizes, FastCpuOracleMatches,
+    ::testing::Values(Case{Projection::perspective, 1, 1}, Case{Projection::orthographic, 1, 1},
+                      Case{Projection::perspective, 3, 5}, Case{Projection::orthographic, 3, 5},
+                      Case{Projection::perspective, 17, 13}, Case{Projection::orthographic, 17, 13},
+                      Case{Projection::perspective, 64, 48}, Case{Projection::orthographic, 64, 48},
+                      Case{Projection::perspective, 203, 111}),
+    caseName);
+
+TEST(FastCpuOracle, SpotMeshBothProjections) {
+    const Loaded<Scene> loaded = loadScene(std::string(VISSORT_SOURCE_DIR) + "/assets/models/spot.obj");
+    ASSERT_TRUE(loaded) << loaded.error;
+    const TrianglePositions& p = loaded.value->positions;
+    std::vector<PrimitiveRange> triangles;
+    for (uint32_t t = 0; t < p.triangleCount(); ++t) triangles.push_back({t, 1});
+    FastCpuOracleStats totals;
+    std::size_t behind = 0;
+    for (Projection projection : {Projection::perspective, Projection::orthographic})
+        for (auto [w, h] : {std::pair<uint32_t, uint32_t>{17, 13}, {160, 120}, {640, 480}}) {
+            CameraSpec spec = defaultCamera(p.bounds(), double(w) / h);
+            spec.projection = projection;
+            const ViewProjection view = frameCamera(spec, p.bounds(), w, h);
+            behind += compareInterleaving(p, view, triangles, w, 3000, &totals);
+            compareDrawAllThenQueryAll(p, view, triangles);
+            // The whole mesh as one primitive.
+            const PrimitiveRange whole{0, uint32_t(p.triangleCount())};
+            behind += compareInterleaving(p, view, std::span(&whole, 1), 3, 20, &totals);
+        }
+    EXPECT_GT(behind, 0u);
+    EXPECT_GT(totals.tiles_culled, 0u);
+}
+
+TEST(FastCpuOracle, LargeViewportWithBigTriangles) {
+    const TrianglePositions p = randomSoup(99, 12, 0.8, 2.0);
+    std::vector<PrimitiveRange> primitives;
+    for (uint32_t t = 0; t < p.triangleCount(); ++t) primitives.push_back({t, 1});
+    for (Projection projection : {Projection::perspective, Projection::orthographic}) {
+        const ViewProjection view = viewOf(p.bounds(), projection, 1600, 1200);
+        FastCpuOracleStats totals;
+        const std::size_t behind = compareInterleaving(p, view, primitives, 4, 120, &totals);
+        EXPECT_GT(behind, 0u);
+        EXPECT_GT(totals.tiles_culled, 0u);
+        compareDrawAllThenQueryAll(p, view, primitives);
+        const ViewProjection inside = viewOf(p.bounds(), projection, 1600, 1200, {0.1, 0, 0.3});
+        compareInterleaving(p, inside, primitives, 6, 120);
+    }
+}
+
+TEST(FastCpuOracle, WholeTilesAreCulledAndAcceptedWithTheReferenceAnswers) {
+    // 0 and 1: squares of half-side 1 at height z, two triangles each, inside the screen.
+    // 2 and 3: one triangle each, much larger than the screen: it covers every tile.
+    TrianglePositions p;
+    const auto square = [&](double r, double z) {
+        const double c[6][2] = {{-r, -r}, {r, -r}, {r, r}, {-r, -r}, {r, r}, {-r, r}};
+        for (const auto& v : c) {
+            p.x.push_back(float(v[0]));
+            p.y.push_back(float(v[1]));
+            p.z.push_back(float(z));
+        }
+    };
+    square(1, 0.5);
+    square(1, -0.5);
+    for (double z : {0.5, -0.5})
+        for (const auto& v : {std::array<double, 2>{-20, -20}, {40, -20}, {-20, 40}}) {
+            p.x.push_back(float(v[0]));
+            p.y.push_back(float(v[1]));
+            p.z.push_back(float(z));
+        }
+    const std::vector<PrimitiveRange> primitives{{0, 2}, {2, 2}, {4, 1}, {5, 1}};
+    Bounds b;
+    b.add({-3, -3, -1});
+    b.add({3, 3, 1});
+    const ViewProjection view = viewOf(b, Projection::orthographic, 256, 192, {0, 0, 4});
+    CpuOracle reference;
+    FastCpuOracle fast;
+    reference.bind(p, view, primitives);
+    fast.bind(p, view, primitives);
+    const auto both_draw = [&](uint32_t id) {
+        reference.draw(id);
+        fast.draw(id);
+        EXPECT_TRUE(sameBits(fast.depthBuffer(), reference.depthBuffer())) << "after draw " << id;
+    };
+    const auto both_query = [&](uint32_t id) {
+        const bool expected = reference.anyBehind(id);
+        EXPECT_EQ(fast.anyBehind(id), expected) << "query " << id;
+        return expected;
+    };
+
+    both_draw(0);
+    EXPECT_TRUE(both_query(1));
+    EXPECT_FALSE(both_query(0));  // itself: coplanar tiles culled by depth bounds
+    EXPECT_GT(fast.stats().tiles_culled, 0u);
+    fast.resetStats();
+    both_draw(1);  // entirely behind: the tiles inside square 0 culled by depth bounds
+    EXPECT_GT(fast.stats().tiles_culled, 0u);
+
+    // The screen-filling near triangle makes every tile's bounds exact; the far one is then
+    // behind in the first tile, which is wholly covered: accepted without per-pixel work.
+    reference.clear();
+    fast.clear();
+    both_draw(2);
+    fast.resetStats();
+    EXPECT_TRUE(both_query(3));
+    EXPECT_EQ(fast.stats().tiles_accepted, 1u);
+    EXPECT_FALSE(both_query(2));
+    EXPECT_FALSE(both_query(0));
+    EXPECT_TRUE(both_query(1));
+    both_draw(3);
+    both_draw(1);
+}
+
+TEST(FastCpuOracle, EmptyPrimitivesAndRebind) {
+    TrianglePositions p = randomSoup(3, 20, 0.1, 0.5);
+    std::vector<PrimitiveRange> primitives{{0, 0}, {0, 20}, {5, 0}, {19, 1}};
+    const ViewProjection view = viewOf(p.bounds(), Projection::perspective, 40, 30);
+    compareInterleaving(p, view, primitives, 1, 200);
+    FastCpuOracle fast;
+    fast.bind(p, view, primitives);
+    fast.draw(1);
+    fast.bind(p, viewOf(p.bounds(), Projection::orthographic, 7, 9), primitives);  // clears
+    EXPECT_EQ(fast.depthBuffer().size(), 63u);
+    for (float d : fast.depthBuffer()) EXPECT_EQ(d, std::numeric_limits<float>::infinity());
+    EXPECT_FALSE(fast.anyBehind(1));
+    fast.bind(p, view, {});
+    EXPECT_EQ(fast.primitiveCount(), 0u);
+}
+
+TEST(FastCpuOracle, VisSortOrderMatchesReferenceOnBunnies) {
+    const Loaded<Scene> loaded = loadScene("builtin:bunnies?n=6");
+    ASSERT_TRUE(loaded) << loaded.error;
+    const Scene& scene = *loaded.value;
+    const auto triangles = scene.trianglePrimitives();
+    for (Projection projection : {Projection::perspective, Projection::orthographic}) {
+        CameraSpec spec = scene.camera ? *scene.camera : defaultCamera(scene.positions.bounds());
+        spec.projection = projection;
+        const ViewProjection view = frameCamera(spec, scene.positions.bounds(), 256, 192);
+        std::vector<uint32_t> start(triangles.size());
+        for (uint32_t i = 0; i < start.size(); ++i) start[i] = uint32_t(start.size()) - 1 - i;
+        CpuOracle reference;
+        FastCpuOracle fast;
+        reference.bind(scene.positions, view, triangles);
+        fast.bind(scene.positions, view, triangles);
+        const VisibilityOrder expected = visSort(reference, start);
+        const VisibilityOrder got = visSort(fast, start);
+        EXPECT_EQ(got.order, expected.order);
+        EXPECT_EQ(got.cycles, expected.cycles);
+        EXPECT_EQ(got.stats.queries, expected.stats.queries);
+        EXPECT_EQ(got.stats.iterations, expected.stats.iterations);
+        EXPECT_TRUE(sameBits(fast.depthBuffer(), reference.depthBuffer()));
+    }
+}
+
+} // namespace
+} // namespace vissort
