@@ -52,9 +52,11 @@ public:
 
 private:
     FrameOrder orderMultistage(const TrianglePositions& positions, const ViewProjection& view);
-    VisibilityOrder sortPrimitives(const TrianglePositions& positions, const ViewProjection& view,
-                                   std::span<const PrimitiveRange> primitives,
-                                   std::span<const uint32_t> previous_order);
+    /// Binds the oracle to primitives and sorts them into `into`, starting from previous_order
+    /// when it has the right size, else from the depth-key order.
+    void sortPrimitives(const TrianglePositions& positions, const ViewProjection& view,
+                        std::span<const PrimitiveRange> primitives,
+                        std::span<const uint32_t> previous_order, VisibilityOrder& into);
 
     const Scene& scene_;
     OrderLevel level_;
@@ -62,6 +64,11 @@ private:
     std::vector<PrimitiveRange> primitives_;
     std::vector<uint32_t> previous_order_;           // last frame, at level_ (objects for multistage)
     std::vector<uint32_t> previous_triangle_rank_;   // multistage: last frame's triangle positions
+    // Reused every frame so that steady-state frames allocate nothing large.
+    VisSortWorkspace workspace_;
+    VisibilityOrder sorted_, group_sorted_;
+    std::vector<PrimitiveRange> group_;
+    std::vector<uint32_t> group_start_;
 };
 
 } // namespace vissort

@@ -29,11 +29,23 @@ struct VisibilityOrder {
     VisSortStats stats;
 };
 
+/// Scratch memory for visSort, owned by the caller and reused across frames, so that a frame
+/// allocates nothing in steady state. Contents between calls are unspecified.
+struct VisSortWorkspace {
+    std::vector<uint32_t> unsorted, outside, candidates;
+    std::vector<uint8_t> in_monotone_run, query, behind, in_cycle;
+    std::vector<int32_t> path_index;
+};
+
 /// Orders the oracle's primitives front to back.
 /// initial_order is the list I to start from (a permutation of 0..n-1): the previous frame's
 /// order for coherence, or a depth-key order; the closer to a visibility order, the fewer
 /// queries. On return order is complete even when there are cycles: see docs/algorithm.md for
 /// how cycles are found and broken.
 VisibilityOrder visSort(OcclusionOracle& oracle, std::span<const uint32_t> initial_order);
+
+/// The same, writing into result (its vectors keep their capacity) with the caller's scratch.
+void visSort(OcclusionOracle& oracle, std::span<const uint32_t> initial_order,
+             VisibilityOrder& result, VisSortWorkspace& workspace);
 
 } // namespace vissort

@@ -142,7 +142,7 @@ int runBench(const BenchOptions& options) {
 
     std::cout << std::left;
     for (const Row& row : rows) {
-        std::cout << "  " << std::setw(66) << row.workload << std::setw(8) << row.oracle << std::right
+        std::cout << "  " << std::setw(66) << row.workload << std::setw(15) << row.oracle << std::right
                   << std::setw(10) << std::fixed << std::setprecision(3) << row.value << ' ' << std::left
                   << row.unit << (row.detail.empty() ? "" : "  (" + row.detail + ")") << '\n';
     }

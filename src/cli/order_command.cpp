@@ -100,7 +100,8 @@ int runOrder(const OrderOptions& options) {
         total_ms += last.milliseconds;
         if (view.frames > 1) {
             printFrame(f, last);
-            frames.push_back(frameRecord(last, options.back_to_front));
+            if (!options.json_path.empty())
+                frames.push_back(frameRecord(last, options.back_to_front));
         }
     }
 

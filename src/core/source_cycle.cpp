@@ -24,7 +24,8 @@ public:
     }
 
     /// One member of candidates that occludes target, given that the whole set does.
-    uint32_t findOccluder(std::vector<uint32_t> candidates, uint32_t target) {
+    /// candidates is consumed.
+    uint32_t findOccluder(std::vector<uint32_t>& candidates, uint32_t target) {
         uint8_t behind = 0;
         while (candidates.size() > 1) {
             const std::size_t half = candidates.size() / 2;
@@ -47,17 +48,19 @@ private:
 } // namespace
 
 std::vector<uint32_t> findSourceCycle(OcclusionOracle& oracle, std::span<const uint32_t> stuck,
-                                      VisSortStats& stats) {
+                                      VisSortStats& stats, VisSortWorkspace& scratch) {
     assert(!stuck.empty());
     GroupTester tester(oracle, stats);
     constexpr int32_t kNotOnPath = -1;
-    std::vector<int32_t> path_index(oracle.primitiveCount(), kNotOnPath);
+    // Every entry is kNotOnPath between calls; only the stuck primitives' entries are touched.
+    std::vector<int32_t>& path_index = scratch.path_index;
+    path_index.resize(oracle.primitiveCount(), kNotOnPath);
     // path[k + 1] holds an occluder of a member of path[k]; each entry is strongly connected.
     std::vector<std::vector<uint32_t>> path{{stuck.front()}};
     path_index[stuck.front()] = 0;
 
-    std::vector<uint32_t> outside;
-    std::vector<uint8_t> behind;
+    std::vector<uint32_t>& outside = scratch.outside;
+    std::vector<uint8_t>& behind = scratch.behind;
     for (;;) {
         const auto top = static_cast<int32_t>(path.size() - 1);
         const std::vector<uint32_t>& component = path.back();
@@ -70,12 +73,15 @@ std::vector<uint32_t> findSourceCycle(OcclusionOracle& oracle, std::span<const u
         if (occluded == behind.end()) {
             // Nothing outside occludes the component: it is a source. List it in stuck order.
             std::vector<uint32_t> members;
-            for (uint32_t p : stuck)
+            for (uint32_t p : stuck) {
                 if (path_index[p] == top) members.push_back(p);
+                path_index[p] = kNotOnPath;
+            }
             return members;
         }
         const uint32_t target = component[occluded - behind.begin()];
-        const uint32_t occluder = tester.findOccluder(outside, target);
+        scratch.candidates.assign(outside.begin(), outside.end());
+        const uint32_t occluder = tester.findOccluder(scratch.candidates, target);
         const int32_t found_at = path_index[occluder];
         if (found_at == kNotOnPath) {
             path.push_back({occluder});

@@ -15,9 +15,10 @@ namespace vissort::detail {
 /// (edge q -> p when q lies in front of p at some pixel) and that nothing else in `stuck`
 /// occludes: a source component. Precondition: every primitive of `stuck` is occluded by another
 /// one of `stuck` (Vis-sort made no progress), so C has two or more members.
-/// Uses group tests only (draw a set, query members) and counts them in stats.
+/// Uses group tests only (draw a set, query members) and counts them in stats; scratch's
+/// path_index must hold -1 for every primitive (it does again on return).
 /// Returns C's members in the order they have in `stuck`.
 std::vector<uint32_t> findSourceCycle(OcclusionOracle& oracle, std::span<const uint32_t> stuck,
-                                      VisSortStats& stats);
+                                      VisSortStats& stats, VisSortWorkspace& scratch);
 
 } // namespace vissort::detail

@@ -26,13 +26,23 @@ bool isPermutation(std::span<const uint32_t> ids, uint32_t n) {
 
 class VisSorter {
 public:
-    VisSorter(OcclusionOracle& oracle, std::span<const uint32_t> initial_order)
-        : oracle_(oracle), unsorted_(initial_order.begin(), initial_order.end()),
-          in_monotone_run_(unsorted_.size(), 0) {
+    VisSorter(OcclusionOracle& oracle, std::span<const uint32_t> initial_order,
+              VisibilityOrder& result, VisSortWorkspace& workspace)
+        : oracle_(oracle), unsorted_(workspace.unsorted),
+          in_monotone_run_(workspace.in_monotone_run), query_(workspace.query),
+          behind_(workspace.behind), in_cycle_(workspace.in_cycle), workspace_(workspace),
+          result_(result) {
+        unsorted_.assign(initial_order.begin(), initial_order.end());
+        in_monotone_run_.assign(unsorted_.size(), 0);
+        in_cycle_.assign(oracle.primitiveCount(), 0);
+        workspace.path_index.assign(oracle.primitiveCount(), -1);
+        result_.order.clear();
         result_.order.reserve(unsorted_.size());
+        result_.cycles.clear();
+        result_.stats = {};
     }
 
-    VisibilityOrder run() {
+    void run() {
         while (!unsorted_.empty()) {
             ++result_.stats.iterations;
             buildMonotoneRun();
@@ -41,7 +51,6 @@ public:
                 outputSourceCycle();
             }
         }
-        return std::move(result_);
     }
 
 private:
@@ -115,18 +124,19 @@ private:
     // graph among them has a cycle. Output a source component whole (members in list order: the
     // cycle-breaking rule) and go on; M stays valid because primitives are only removed.
     void outputSourceCycle() {
-        std::vector<uint32_t> cycle = detail::findSourceCycle(oracle_, unsorted_, result_.stats);
-        std::vector<uint8_t> in_cycle(oracle_.primitiveCount(), 0);
+        std::vector<uint32_t> cycle =
+            detail::findSourceCycle(oracle_, unsorted_, result_.stats, workspace_);
         for (uint32_t p : cycle) {
-            in_cycle[p] = 1;
+            in_cycle_[p] = 1;
             result_.order.push_back(p);
         }
         std::size_t kept = 0;
         for (std::size_t i = 0; i < unsorted_.size(); ++i) {
-            if (in_cycle[unsorted_[i]]) continue;
+            if (in_cycle_[unsorted_[i]]) continue;
             unsorted_[kept] = unsorted_[i];
             in_monotone_run_[kept++] = in_monotone_run_[i];
         }
+        for (uint32_t p : cycle) in_cycle_[p] = 0;
         unsorted_.resize(kept);
         in_monotone_run_.resize(kept);
         if (cycle.size() > 1) {
@@ -142,19 +152,29 @@ private:
     }
 
     OcclusionOracle& oracle_;
-    std::vector<uint32_t> unsorted_;         // the list I, front to back
-    std::vector<uint8_t> in_monotone_run_;   // M, parallel to unsorted_
-    std::vector<uint8_t> query_, behind_;    // per-pass scratch
-    VisibilityOrder result_;
+    std::vector<uint32_t>& unsorted_;        // the list I, front to back
+    std::vector<uint8_t>& in_monotone_run_;  // M, parallel to unsorted_
+    std::vector<uint8_t>& query_;            // per-pass scratch
+    std::vector<uint8_t>& behind_;
+    std::vector<uint8_t>& in_cycle_;         // per primitive, zero between cycles
+    VisSortWorkspace& workspace_;
+    VisibilityOrder& result_;
 };
 
 } // namespace
 
-VisibilityOrder visSort(OcclusionOracle& oracle, std::span<const uint32_t> initial_order) {
+void visSort(OcclusionOracle& oracle, std::span<const uint32_t> initial_order,
+             VisibilityOrder& result, VisSortWorkspace& workspace) {
     assert(isPermutation(initial_order, oracle.primitiveCount()));
     (void)isPermutation;
-    if (initial_order.empty()) return {};
-    return VisSorter(oracle, initial_order).run();
+    VisSorter(oracle, initial_order, result, workspace).run();
+}
+
+VisibilityOrder visSort(OcclusionOracle& oracle, std::span<const uint32_t> initial_order) {
+    VisibilityOrder result;
+    VisSortWorkspace workspace;
+    visSort(oracle, initial_order, result, workspace);
+    return result;
 }
 
 } // namespace vissort

@@ -46,14 +46,16 @@ SceneOrderer::SceneOrderer(const Scene& scene, OrderLevel level, GeometryOracle&
       primitives_(level == OrderLevel::triangle ? scene.trianglePrimitives()
                                                 : scene.objectPrimitives()) {}
 
-VisibilityOrder SceneOrderer::sortPrimitives(const TrianglePositions& positions,
-                                             const ViewProjection& view,
-                                             std::span<const PrimitiveRange> primitives,
-                                             std::span<const uint32_t> previous_order) {
+void SceneOrderer::sortPrimitives(const TrianglePositions& positions, const ViewProjection& view,
+                                  std::span<const PrimitiveRange> primitives,
+                                  std::span<const uint32_t> previous_order, VisibilityOrder& into) {
     oracle_.bind(positions, view, primitives);
-    if (previous_order.size() == primitives.size()) return visSort(oracle_, previous_order);
+    if (previous_order.size() == primitives.size()) {
+        visSort(oracle_, previous_order, into, workspace_);
+        return;
+    }
     const std::vector<uint32_t> start = depthKeyOrder(positions, view, primitives);
-    return visSort(oracle_, start);
+    visSort(oracle_, start, into, workspace_);
 }
 
 FrameOrder SceneOrderer::orderFrame(const TrianglePositions& positions, const ViewProjection& view) {
@@ -62,12 +64,12 @@ FrameOrder SceneOrderer::orderFrame(const TrianglePositions& positions, const Vi
     if (level_ == OrderLevel::multistage) {
         frame = orderMultistage(positions, view);
     } else {
-        VisibilityOrder sorted = sortPrimitives(positions, view, primitives_, previous_order_);
-        previous_order_ = sorted.order;
+        sortPrimitives(positions, view, primitives_, previous_order_, sorted_);
+        previous_order_ = sorted_.order;
         frame.level = level_;
-        frame.order = std::move(sorted.order);
-        frame.cycles = std::move(sorted.cycles);
-        frame.stats = sorted.stats;
+        frame.order = sorted_.order;
+        frame.cycles = sorted_.cycles;
+        frame.stats = sorted_.stats;
     }
     frame.milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -79,7 +81,8 @@ FrameOrder SceneOrderer::orderMultistage(const TrianglePositions& positions,
     FrameOrder frame;
     frame.level = OrderLevel::multistage;
     // Stage 1: objects.
-    VisibilityOrder objects = sortPrimitives(positions, view, primitives_, previous_order_);
+    sortPrimitives(positions, view, primitives_, previous_order_, sorted_);
+    const VisibilityOrder& objects = sorted_;
     previous_order_ = objects.order;
     addStats(frame.stats, objects.stats);
 
@@ -93,8 +96,8 @@ FrameOrder SceneOrderer::orderMultistage(const TrianglePositions& positions,
     const std::size_t triangle_count = positions.triangleCount();
     const bool have_ranks = previous_triangle_rank_.size() == triangle_count;
     std::vector<uint32_t> rank(triangle_count, 0);
-    std::vector<PrimitiveRange> group;
-    std::vector<uint32_t> group_start;
+    std::vector<PrimitiveRange>& group = group_;
+    std::vector<uint32_t>& group_start = group_start_;
     frame.order.reserve(triangle_count);
     for (std::size_t i = 0; i < objects.order.size();) {
         std::size_t end = i + 1;
@@ -120,7 +123,8 @@ FrameOrder SceneOrderer::orderMultistage(const TrianglePositions& positions,
         } else {
             group_start = depthKeyOrder(positions, view, group);
         }
-        VisibilityOrder triangles = visSort(oracle_, group_start);
+        VisibilityOrder& triangles = group_sorted_;
+        visSort(oracle_, group_start, triangles, workspace_);
         addStats(frame.stats, triangles.stats);
         for (uint32_t local : triangles.order) {
             rank[group[local].first_triangle] = uint32_t(frame.order.size());
