@@ -13,6 +13,7 @@ packages=(
   libcli11-dev               # command-line parsing
   libembree-dev              # ray casting for the exact oracle and the ground truth
   libgtest-dev               # the test suite
+  libbenchmark-dev           # the Google Benchmark suite (built by the test script, not run)
 )
 
 missing=()

@@ -13,7 +13,7 @@ if [ "${1:-}" = "--sanitize" ]; then
 fi
 
 bash scripts/install-deps.sh
-cmake -S . -B "$build_dir" "${flags[@]}" -DVISSORT_BUILD_TESTS=ON
+cmake -S . -B "$build_dir" "${flags[@]}" -DVISSORT_BUILD_TESTS=ON -DVISSORT_BUILD_BENCHMARKS=ON
 cmake --build "$build_dir" -j"$(nproc)"
 # Embree starts its own worker threads; LeakSanitizer cannot follow them reliably, and the suite
 # checks memory errors, not leaks at exit (the tool frees everything it allocates per frame).

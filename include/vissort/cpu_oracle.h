@@ -26,6 +26,13 @@
 //     draw writes a fragment when frag < stored. anyBehind is true when some fragment has
 //     frag > stored + kDepthTolerance (float sum), so +infinity pixels never count.
 //
+// Conservative mode (RasterMode::conservative) changes rules 5 and 6 only: pixel (px, py) is
+// covered when its square [px, px + 1] x [py, py + 1] lies in the snapped bounding box grown to
+// whole pixels and every edge function's maximum over the square is >= 0, i.e.
+// E_i(centre) + 128 (|xj - xi| + |yj - yi|) >= 0; a draw writes float(c - |ddx| / 2 - |ddy| / 2)
+// and a query tests float(c + |ddx| / 2 + |ddy| / 2), with c the double centre value of rule 6.
+// Both are monotone in the exact mode's values, so its "behind" answers are a superset.
+//
 // Viewports up to kMaxViewportSize = 65536 on a side keep every edge function exact in int64_t.
 
 #include <cstdint>
@@ -46,7 +53,7 @@ struct CpuOracleStats {
 
 class CpuOracle final : public GeometryOracle {
 public:
-    CpuOracle() = default;
+    explicit CpuOracle(RasterMode mode = RasterMode::exact) : mode_(mode) {}
 
     /// See GeometryOracle::bind. Copies the primitives and the clip-space corners it needs.
     /// The view's width and height must be in [1, 65536]; every range must lie within positions.
@@ -74,6 +81,7 @@ private:
         double x, y, z, w;
     };
 
+    RasterMode mode_;
     uint32_t width_ = 0, height_ = 0;
     std::vector<PrimitiveRange> primitives_;
     std::vector<ClipCorner> corners_;  // 3 per triangle, clip space

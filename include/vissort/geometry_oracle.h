@@ -17,6 +17,17 @@ namespace vissort {
 /// surfaces never count as occluding each other.
 inline constexpr float kDepthTolerance = 1.0f / (1 << 20);
 
+/// How a rasterizing oracle samples a triangle.
+enum class RasterMode {
+    /// Pixel centres, the top-left rule, the depth at the centre: answers that match the
+    /// exact ray-cast reference up to sampling. For visibility ordering and transparency.
+    exact,
+    /// Every pixel whose square the triangle touches; draws write the nearest depth the plane
+    /// takes over the square and queries test the farthest. It can only add "behind" answers,
+    /// never remove one: for collision culling, which must not miss a contact.
+    conservative,
+};
+
 class GeometryOracle : public OcclusionOracle {
 public:
     /// Binds what later primitive ids refer to: primitive i is the triangles

@@ -52,17 +52,23 @@ void CpuOracle::draw(uint32_t primitive) {
     ++stats_.draws;
     const PrimitiveRange range = primitives_[primitive];
     uint64_t fragments = 0;
+    const auto write = [&](uint32_t px, uint32_t py, float depth) {
+        ++fragments;
+        float& stored = depth_[std::size_t(py) * width_ + px];
+        if (depth < stored) stored = depth;
+        return false;
+    };
     for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count; ++t) {
         const std::size_t c = std::size_t(t) * 3;
-        detail::rasterizeTriangle(
-            toClipVertex(corners_[c]), toClipVertex(corners_[c + 1]),
-            toClipVertex(corners_[c + 2]), width_, height_,
-            [&](uint32_t px, uint32_t py, float depth) {
-                ++fragments;
-                float& stored = depth_[std::size_t(py) * width_ + px];
-                if (depth < stored) stored = depth;
-                return false;
-            });
+        const auto a = toClipVertex(corners_[c]), b = toClipVertex(corners_[c + 1]),
+                   d = toClipVertex(corners_[c + 2]);
+        if (mode_ == RasterMode::exact) {
+            detail::rasterizeTriangle(a, b, d, width_, height_, write);
+        } else {
+            detail::rasterizeTriangleConservative(
+                a, b, d, width_, height_,
+                [&](uint32_t px, uint32_t py, float nearest, float) { return write(px, py, nearest); });
+        }
     }
     stats_.fragments_drawn += fragments;
 }
@@ -73,16 +79,22 @@ bool CpuOracle::anyBehind(uint32_t primitive) {
     const PrimitiveRange range = primitives_[primitive];
     uint64_t fragments = 0;
     bool behind = false;
+    const auto test = [&](uint32_t px, uint32_t py, float depth) {
+        ++fragments;
+        return depth > depth_[std::size_t(py) * width_ + px] + kDepthTolerance;
+    };
     for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count && !behind;
          ++t) {
         const std::size_t c = std::size_t(t) * 3;
-        behind = detail::rasterizeTriangle(
-            toClipVertex(corners_[c]), toClipVertex(corners_[c + 1]),
-            toClipVertex(corners_[c + 2]), width_, height_,
-            [&](uint32_t px, uint32_t py, float depth) {
-                ++fragments;
-                return depth > depth_[std::size_t(py) * width_ + px] + kDepthTolerance;
-            });
+        const auto a = toClipVertex(corners_[c]), b = toClipVertex(corners_[c + 1]),
+                   d = toClipVertex(corners_[c + 2]);
+        if (mode_ == RasterMode::exact) {
+            behind = detail::rasterizeTriangle(a, b, d, width_, height_, test);
+        } else {
+            behind = detail::rasterizeTriangleConservative(
+                a, b, d, width_, height_,
+                [&](uint32_t px, uint32_t py, float, float farthest) { return test(px, py, farthest); });
+        }
     }
     stats_.fragments_tested += fragments;
     return behind;

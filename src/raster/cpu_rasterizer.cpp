@@ -28,8 +28,10 @@ ScreenVertex toScreen(const ClipVertex& v, uint32_t width, uint32_t height) {
 
 int64_t snapToFixed(double v) { return std::llround(v * double(kSubpixelScale)); }
 
-bool setupTriangle(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
-                   uint32_t width, uint32_t height, TriangleSetup& s) {
+namespace {
+
+bool setupImpl(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
+               uint32_t width, uint32_t height, bool require_centres, TriangleSetup& s) {
     std::array<ScreenVertex, 3> v{a, b, c};
     const double limit = double(kMaxSnapped) / double(kSubpixelScale);
     for (const ScreenVertex& p : v)
@@ -62,7 +64,7 @@ bool setupTriangle(const ScreenVertex& a, const ScreenVertex& b, const ScreenVer
     s.px_max = std::min<int64_t>(floorToPixels(max_x - half), int64_t(width) - 1);
     s.py_min = std::max<int64_t>(ceilToPixels(min_y - half), 0);
     s.py_max = std::min<int64_t>(floorToPixels(max_y - half), int64_t(height) - 1);
-    if (s.px_min > s.px_max || s.py_min > s.py_max) return false;
+    if (require_centres && (s.px_min > s.px_max || s.py_min > s.py_max)) return false;
 
     // The depth plane goes through the unsnapped vertices: d is affine in screen space for both
     // projections (camera.h), so this is exact up to rounding.
@@ -76,6 +78,18 @@ bool setupTriangle(const ScreenVertex& a, const ScreenVertex& b, const ScreenVer
     s.ddx = det != 0 ? (e1d * e2y - e2d * e1y) / det : 0.0;
     s.ddy = det != 0 ? (e2d * e1x - e1d * e2x) / det : 0.0;
     return true;
+}
+
+} // namespace
+
+bool setupTriangle(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
+                   uint32_t width, uint32_t height, TriangleSetup& setup) {
+    return setupImpl(a, b, c, width, height, true, setup);
+}
+
+bool setupConservative(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
+                       uint32_t width, uint32_t height, TriangleSetup& setup) {
+    return setupImpl(a, b, c, width, height, false, setup);
 }
 
 } // namespace vissort::detail

@@ -83,6 +83,12 @@ int64_t snapToFixed(double v);
 bool setupTriangle(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
                    uint32_t width, uint32_t height, TriangleSetup& setup);
 
+/// setupTriangle for conservative mode: the same snapping, orientation and depth plane, but a
+/// triangle is kept even when its bounding box holds no pixel centre (it may still touch pixel
+/// squares). Returns false only for zero snapped area or out-of-range coordinates.
+bool setupConservative(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
+                       uint32_t width, uint32_t height, TriangleSetup& setup);
+
 /// The edge function of edge i at a 24.8 fixed-point point: positive inside.
 inline int64_t edgeFunction(const TriangleSetup& s, int i, int64_t px, int64_t py) {
     const int j = (i + 1) % 3;
@@ -112,12 +118,50 @@ bool walkTriangle(const TriangleSetup& s, Visit&& visit) {
     return false;
 }
 
-/// Rasterizes one clip-space triangle into a width x height viewport: clips, fans the polygon
-/// out from its first vertex as (p0, p_i, p_i+1), and walks each fan triangle (see walkTriangle).
-/// Returns true when visit stopped the walk.
+/// Conservative walk (cpu_oracle.h): calls visit(px, py, nearest, farthest) for every pixel
+/// whose square the set-up triangle may touch, with the plane's nearest and farthest depth over
+/// that square. Stops, returning true, as soon as visit returns true.
 template <class Visit>
-bool rasterizeTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
-                       uint32_t width, uint32_t height, Visit&& visit) {
+bool walkTriangleConservative(const TriangleSetup& s, uint32_t width, uint32_t height,
+                              Visit&& visit) {
+    // Pixels whose square meets the snapped bounding box (touching counts).
+    const int64_t min_x = std::min({s.x[0], s.x[1], s.x[2]});
+    const int64_t max_x = std::max({s.x[0], s.x[1], s.x[2]});
+    const int64_t min_y = std::min({s.y[0], s.y[1], s.y[2]});
+    const int64_t max_y = std::max({s.y[0], s.y[1], s.y[2]});
+    const int64_t px_min = std::max<int64_t>(((min_x + kSubpixelScale - 1) >> kSubpixelBits) - 1, 0);
+    const int64_t px_max = std::min<int64_t>(max_x >> kSubpixelBits, int64_t(width) - 1);
+    const int64_t py_min = std::max<int64_t>(((min_y + kSubpixelScale - 1) >> kSubpixelBits) - 1, 0);
+    const int64_t py_max = std::min<int64_t>(max_y >> kSubpixelBits, int64_t(height) - 1);
+    // An edge function's largest value over a pixel square: half a pixel along each axis.
+    std::array<int64_t, 3> reach;
+    for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3;
+        reach[i] = (std::abs(s.x[j] - s.x[i]) + std::abs(s.y[j] - s.y[i])) * (kSubpixelScale / 2);
+    }
+    const double spread = std::abs(s.ddx) * 0.5 + std::abs(s.ddy) * 0.5;
+    for (int64_t py = py_min; py <= py_max; ++py) {
+        const int64_t cy = py * kSubpixelScale + kSubpixelScale / 2;
+        for (int64_t px = px_min; px <= px_max; ++px) {
+            const int64_t cx = px * kSubpixelScale + kSubpixelScale / 2;
+            if (edgeFunction(s, 0, cx, cy) + reach[0] < 0) continue;
+            if (edgeFunction(s, 1, cx, cy) + reach[1] < 0) continue;
+            if (edgeFunction(s, 2, cx, cy) + reach[2] < 0) continue;
+            const double centre = s.d0 + s.ddx * ((double(px) + 0.5) - s.x0) +
+                                  s.ddy * ((double(py) + 0.5) - s.y0);
+            if (visit(uint32_t(px), uint32_t(py), float(centre - spread), float(centre + spread)))
+                return true;
+        }
+    }
+    return false;
+}
+
+/// Clips a clip-space triangle, fans the polygon out from its first vertex as (p0, p_i, p_i+1)
+/// and calls walk(setup) for each fan triangle that set up (setupTriangle, or setupConservative
+/// when conservative). Returns true as soon as walk does.
+template <class Walk>
+bool forEachFanTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
+                        uint32_t width, uint32_t height, bool conservative, Walk&& walk) {
     std::array<ClipVertex, kMaxPolygonVertices> polygon;
     const int count = clipTriangle(a, b, c, polygon);
     if (count < 3) return false;
@@ -125,10 +169,30 @@ bool rasterizeTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVerte
     for (int i = 0; i < count; ++i) screen[i] = toScreen(polygon[i], width, height);
     TriangleSetup setup;
     for (int i = 1; i + 1 < count; ++i) {
-        if (!setupTriangle(screen[0], screen[i], screen[i + 1], width, height, setup)) continue;
-        if (walkTriangle(setup, visit)) return true;
+        const bool ok =
+            conservative ? setupConservative(screen[0], screen[i], screen[i + 1], width, height, setup)
+                         : setupTriangle(screen[0], screen[i], screen[i + 1], width, height, setup);
+        if (ok && walk(setup)) return true;
     }
     return false;
+}
+
+/// Rasterizes one clip-space triangle into a width x height viewport, visit(px, py, depth) per
+/// covered pixel centre (see walkTriangle). Returns true when visit stopped the walk.
+template <class Visit>
+bool rasterizeTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
+                       uint32_t width, uint32_t height, Visit&& visit) {
+    return forEachFanTriangle(a, b, c, width, height, false,
+                              [&](const TriangleSetup& s) { return walkTriangle(s, visit); });
+}
+
+/// rasterizeTriangle in conservative mode: visit(px, py, nearest, farthest).
+template <class Visit>
+bool rasterizeTriangleConservative(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
+                                   uint32_t width, uint32_t height, Visit&& visit) {
+    return forEachFanTriangle(a, b, c, width, height, true, [&](const TriangleSetup& s) {
+        return walkTriangleConservative(s, width, height, visit);
+    });
 }
 
 } // namespace vissort::detail

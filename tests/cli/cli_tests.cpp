@@ -15,6 +15,8 @@
 #include <regex>
 #include <span>
 #include <sstream>
+#include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -466,6 +468,27 @@ TEST_F(Cli, InfoOnSlabs) {
     EXPECT_GE(std::stoi(match[1]), 12) << r;
 }
 
+// Every rasterizing oracle, every workload, one row each, with plausible values; and the same
+// order from cpu and cpu-reference (identical answers, so identical query counts).
+TEST_F(Cli, BenchOracleMeasuresEveryOracleInOneRun) {
+    const Result r = run({"bench", "oracle", "--repeat", "1", "--frames", "2", "--json", path("bench.json")});
+    ASSERT_EQ(r.code, 0) << r;
+    const json doc = json::parse(readFile(path("bench.json")));
+    ASSERT_TRUE(doc.contains("machine")) << doc.dump();
+    std::map<std::string, std::set<std::string>> oracles_by_workload;
+    std::map<std::string, std::string> bunnies_detail;
+    for (const json& row : doc["rows"]) {
+        EXPECT_GT(row["value"].get<double>(), 0.0) << row.dump();
+        oracles_by_workload[row["workload"]].insert(row["oracle"]);
+        if (row["workload"].get<std::string>().rfind("bunnies", 0) == 0)
+            bunnies_detail[row["oracle"]] = row["detail"];
+    }
+    EXPECT_EQ(oracles_by_workload.size(), 7u);
+    for (const auto& [workload, oracles] : oracles_by_workload)
+        EXPECT_EQ(oracles, (std::set<std::string>{"cpu", "cpu-reference"})) << workload;
+    EXPECT_EQ(bunnies_detail["cpu"], bunnies_detail["cpu-reference"]);
+}
+
 TEST_F(Cli, TopLevelHelpMentionsLevel) {
     const Result r = run({"--help"});
     EXPECT_EQ(r.code, 0) << r;
@@ -587,6 +610,11 @@ TEST_F(Cli, ErrorJsonIntoMissingFolder) {
     const std::string target = path("no/such/folder/out.json");
     expectError({"order", kBunnies, "--size", "32x24", "--json", target}, kFailure, {target});
     EXPECT_FALSE(fs::exists(path("no")));
+}
+
+TEST_F(Cli, BenchRejectsUnknownBenchmarks) {
+    expectError({"bench", "nothing"}, kUsage, {"nothing"});
+    expectError({"bench", "oracle", "--repeat", "0"}, kUsage, {"--repeat"});
 }
 
 } // namespace

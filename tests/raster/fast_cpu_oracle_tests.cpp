@@ -1,12 +1,15 @@
 // FastCpuOracle against the reference CpuOracle: the same answer to every query and the same
 // depth buffer, bit for bit, after the same clears and draws, on random soups, slabs, shared-edge
 // grids and real meshes, through both projections, at many viewport sizes; and the same Vis-sort
-// order.
+// order. Every comparison runs with the AVX2 row walk (where the CPU has it) and with the scalar
+// one; the pass-level batches also with 1, 2 and 3 screen bands, against the default sequential
+// implementations over CpuOracle.
 
 #include "vissort/fast_cpu_oracle.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 #include <random>
@@ -24,14 +27,42 @@ bool sameBits(std::span<const float> a, std::span<const float> b) {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
 }
 
+// The row walks: SIMD allowed (AVX2 where the CPU has it), and the scalar fallback.
+std::vector<FastCpuOracleOptions> rowWalks() {
+    FastCpuOracleOptions simd, scalar;
+    simd.allow_simd = true;
+    scalar.allow_simd = false;
+    simd.threads = scalar.threads = 1;
+    return {simd, scalar};
+}
+
+// Both row walks with 1, 2 and 3 threads, every pass split into bands however small.
+std::vector<FastCpuOracleOptions> rowWalksAndThreads() {
+    std::vector<FastCpuOracleOptions> all;
+    for (FastCpuOracleOptions options : rowWalks())
+        for (uint32_t threads : {1u, 2u, 3u}) {
+            options.threads = threads;
+            options.parallel_threshold = 0;
+            all.push_back(options);
+        }
+    return all;
+}
+
+std::string describe(const FastCpuOracleOptions& options) {
+    return std::string(options.allow_simd ? "simd" : "scalar") + ", " +
+           std::to_string(options.threads) + " threads";
+}
+
 // Random clears, draws and queries, in the same order on both oracles; every answer and, after
 // every draw, the depth buffers compared. Returns how many queries answered true (so that a test
 // can check it exercised both answers); adds the fast oracle's tile counts to totals if given.
-std::size_t compareInterleaving(const TrianglePositions& p, const ViewProjection& view,
-                                std::span<const PrimitiveRange> primitives, uint32_t seed,
-                                int operations, FastCpuOracleStats* totals = nullptr) {
+std::size_t compareInterleavingWith(const FastCpuOracleOptions& options,
+                                    const TrianglePositions& p, const ViewProjection& view,
+                                    std::span<const PrimitiveRange> primitives, uint32_t seed,
+                                    int operations, FastCpuOracleStats* totals) {
+    SCOPED_TRACE(describe(options));
     CpuOracle reference;
-    FastCpuOracle fast;
+    FastCpuOracle fast(options);
     reference.bind(p, view, primitives);
     fast.bind(p, view, primitives);
     EXPECT_EQ(fast.primitiveCount(), reference.primitiveCount());
@@ -77,20 +108,85 @@ std::size_t compareInterleaving(const TrianglePositions& p, const ViewProjection
     return behind;
 }
 
-// Every primitive drawn in order, then every primitive queried: the pass-like access pattern.
+// compareInterleavingWith for both row walks; returns the true answers of the first.
+std::size_t compareInterleaving(const TrianglePositions& p, const ViewProjection& view,
+                                std::span<const PrimitiveRange> primitives, uint32_t seed,
+                                int operations, FastCpuOracleStats* totals = nullptr) {
+    std::size_t behind = 0;
+    bool first = true;
+    for (const FastCpuOracleOptions& options : rowWalks()) {
+        const std::size_t b =
+            compareInterleavingWith(options, p, view, primitives, seed, operations, totals);
+        if (first) behind = b;
+        first = false;
+    }
+    return behind;
+}
+
+// The pass-level batches against the default sequential ones over CpuOracle, with random
+// sequences and query flags: every answer, and the depth buffer after each pass, bit for bit.
+// behind is filled with a marker first, so an entry a pass must not touch is checked too.
+void comparePasses(const TrianglePositions& p, const ViewProjection& view,
+                   std::span<const PrimitiveRange> primitives, uint32_t seed) {
+    if (primitives.empty()) return;
+    CpuOracle reference;
+    reference.bind(p, view, primitives);
+    for (const FastCpuOracleOptions& options : rowWalksAndThreads()) {
+        SCOPED_TRACE(describe(options));
+        FastCpuOracle fast(options);
+        fast.bind(p, view, primitives);
+        std::mt19937 rng(seed);
+        for (int round = 0; round < 6; ++round) {
+            std::vector<uint32_t> sequence(primitives.size());
+            for (uint32_t i = 0; i < sequence.size(); ++i) sequence[i] = i;
+            std::shuffle(sequence.begin(), sequence.end(), rng);
+            sequence.resize(1 + rng() % sequence.size());
+            std::vector<uint8_t> query(sequence.size());
+            for (uint8_t& q : query) q = uint8_t(rng() % 4 != 0);
+            std::vector<uint8_t> expected(sequence.size(), 7), got(sequence.size(), 7);
+            const int kind = round % 3;
+            if (kind == 0) {
+                reference.backToFrontPass(sequence, query, expected);
+                fast.backToFrontPass(sequence, query, got);
+            } else if (kind == 1) {
+                reference.frontToBackPass(sequence, query, expected);
+                fast.frontToBackPass(sequence, query, got);
+            } else {
+                const std::size_t split = rng() % (sequence.size() + 1);
+                const std::span<const uint32_t> occluders(sequence.data(), split);
+                const std::span<const uint32_t> targets(sequence.data() + split,
+                                                        sequence.size() - split);
+                expected.resize(targets.size());
+                got.resize(targets.size());
+                reference.queryAgainst(occluders, targets, expected);
+                fast.queryAgainst(occluders, targets, got);
+            }
+            ASSERT_EQ(got, expected) << "pass kind " << kind << ", round " << round;
+            ASSERT_TRUE(sameBits(fast.depthBuffer(), reference.depthBuffer()))
+                << "pass kind " << kind << ", round " << round;
+        }
+    }
+}
+
+// Every primitive drawn in order, then every primitive queried: the pass-like access pattern;
+// then the pass-level batches.
 void compareDrawAllThenQueryAll(const TrianglePositions& p, const ViewProjection& view,
                                 std::span<const PrimitiveRange> primitives) {
-    CpuOracle reference;
-    FastCpuOracle fast;
-    reference.bind(p, view, primitives);
-    fast.bind(p, view, primitives);
-    for (uint32_t i = 0; i < primitives.size(); ++i) {
-        reference.draw(i);
-        fast.draw(i);
+    for (const FastCpuOracleOptions& options : rowWalks()) {
+        SCOPED_TRACE(describe(options));
+        CpuOracle reference;
+        FastCpuOracle fast(options);
+        reference.bind(p, view, primitives);
+        fast.bind(p, view, primitives);
+        for (uint32_t i = 0; i < primitives.size(); ++i) {
+            reference.draw(i);
+            fast.draw(i);
+        }
+        ASSERT_TRUE(sameBits(fast.depthBuffer(), reference.depthBuffer()));
+        for (uint32_t i = 0; i < primitives.size(); ++i)
+            ASSERT_EQ(fast.anyBehind(i), reference.anyBehind(i)) << "primitive " << i;
     }
-    ASSERT_TRUE(sameBits(fast.depthBuffer(), reference.depthBuffer()));
-    for (uint32_t i = 0; i < primitives.size(); ++i)
-        ASSERT_EQ(fast.anyBehind(i), reference.anyBehind(i)) << "primitive " << i;
+    comparePasses(p, view, primitives, uint32_t(primitives.size()));
 }
 
 // Random triangles in [-1, 1]^3 with legs between min_size and max_size.
@@ -290,8 +386,10 @@ TEST(FastCpuOracle, WholeTilesAreCulledAndAcceptedWithTheReferenceAnswers) {
     b.add({-3, -3, -1});
     b.add({3, 3, 1});
     const ViewProjection view = viewOf(b, Projection::orthographic, 256, 192, {0, 0, 4});
+    for (const FastCpuOracleOptions& options : rowWalks()) {
+    SCOPED_TRACE(describe(options));
     CpuOracle reference;
-    FastCpuOracle fast;
+    FastCpuOracle fast(options);
     reference.bind(p, view, primitives);
     fast.bind(p, view, primitives);
     const auto both_draw = [&](uint32_t id) {
@@ -326,6 +424,7 @@ TEST(FastCpuOracle, WholeTilesAreCulledAndAcceptedWithTheReferenceAnswers) {
     EXPECT_TRUE(both_query(1));
     both_draw(3);
     both_draw(1);
+    }
 }
 
 TEST(FastCpuOracle, EmptyPrimitivesAndRebind) {
@@ -344,6 +443,25 @@ TEST(FastCpuOracle, EmptyPrimitivesAndRebind) {
     EXPECT_EQ(fast.primitiveCount(), 0u);
 }
 
+TEST(FastCpuOracle, OptionsChooseTheRowWalkAndThreads) {
+    FastCpuOracleOptions options;
+    options.allow_simd = false;
+    options.threads = 3;
+    const FastCpuOracle scalar(options);
+    EXPECT_FALSE(scalar.usesSimd());
+    EXPECT_EQ(scalar.threadCount(), 3u);
+    const FastCpuOracle defaults;
+    EXPECT_GE(defaults.threadCount(), 1u);
+}
+
+TEST(FastCpuOracle, PassesOnALargeViewportMatchWithEveryBandCount) {
+    const TrianglePositions p = randomSoup(5, 400, 0.05, 0.8);
+    std::vector<PrimitiveRange> primitives;
+    for (uint32_t t = 0; t < p.triangleCount(); ++t) primitives.push_back({t, 1});
+    for (Projection projection : {Projection::perspective, Projection::orthographic})
+        comparePasses(p, viewOf(p.bounds(), projection, 803, 611), primitives, 17);
+}
+
 TEST(FastCpuOracle, VisSortOrderMatchesReferenceOnBunnies) {
     const Loaded<Scene> loaded = loadScene("builtin:bunnies?n=6");
     ASSERT_TRUE(loaded) << loaded.error;
@@ -356,16 +474,23 @@ TEST(FastCpuOracle, VisSortOrderMatchesReferenceOnBunnies) {
         std::vector<uint32_t> start(triangles.size());
         for (uint32_t i = 0; i < start.size(); ++i) start[i] = uint32_t(start.size()) - 1 - i;
         CpuOracle reference;
-        FastCpuOracle fast;
         reference.bind(scene.positions, view, triangles);
-        fast.bind(scene.positions, view, triangles);
         const VisibilityOrder expected = visSort(reference, start);
-        const VisibilityOrder got = visSort(fast, start);
-        EXPECT_EQ(got.order, expected.order);
-        EXPECT_EQ(got.cycles, expected.cycles);
-        EXPECT_EQ(got.stats.queries, expected.stats.queries);
-        EXPECT_EQ(got.stats.iterations, expected.stats.iterations);
-        EXPECT_TRUE(sameBits(fast.depthBuffer(), reference.depthBuffer()));
+        // Determinism: the same order, cycles, counts and final buffer for every row walk and
+        // thread count.
+        for (const FastCpuOracleOptions& options : rowWalksAndThreads()) {
+            SCOPED_TRACE(describe(options));
+            FastCpuOracle fast(options);
+            fast.bind(scene.positions, view, triangles);
+            const VisibilityOrder got = visSort(fast, start);
+            EXPECT_EQ(got.order, expected.order);
+            EXPECT_EQ(got.cycles, expected.cycles);
+            EXPECT_EQ(got.stats.queries, expected.stats.queries);
+            EXPECT_EQ(got.stats.iterations, expected.stats.iterations);
+            EXPECT_EQ(fast.stats().queries, reference.stats().queries);
+            EXPECT_EQ(fast.stats().draws, reference.stats().draws);
+            EXPECT_TRUE(sameBits(fast.depthBuffer(), reference.depthBuffer()));
+        }
     }
 }
 

@@ -1,0 +1,58 @@
+#pragma once
+// The per-pixel walk of one depth tile for FastCpuOracle (fast_cpu_oracle.h): edge tests, rule 6's
+// depth expression and the depth test, a row of the tile at a time. Two implementations give the
+// same bits: a portable scalar loop, and 8 lanes with AVX2 (fast_rows_avx2.cpp) that is only ever
+// called where the CPU reports AVX2 (selectRowKernels).
+//
+// Number formats: edge functions are exact int64_t values in 24.8 fixed point (cpu_rasterizer.h),
+// covered iff E + bias > 0 on all three edges; depths are the double expression
+// (d0 + ddx ((px + 0.5) - x0)) + ddy ((py + 0.5) - y0), rounded to float to nearest.
+
+#include <cstddef>
+#include <cstdint>
+
+namespace vissort::detail {
+
+/// The pixels of one tile that a fan triangle's bounding box overlaps. Lane k is column vx0 + k.
+struct TileWalk {
+    float* origin;           // depth of pixel (vx0, y0): the tile's first column, first row walked
+    std::size_t stride;      // floats per depth buffer row
+    int32_t vx0, y0;         // column of lane 0; first row walked
+    int32_t lane_first;      // walked lanes [lane_first, lane_last], within [0, lanes)
+    int32_t lane_last;
+    int32_t lanes;           // columns of the tile inside the viewport: 8, less at the right edge
+    int32_t rows;            // rows walked, y0 .. y0 + rows - 1
+    bool all_covered;        // every walked pixel is inside all three edges: no edge tests
+    int64_t edge[3];         // E_e + bias_e at pixel (vx0 + lane_first, y0)
+    int64_t step_x[3];       // change of E_e from column px to px + 1
+    int64_t step_y[3];       // change of E_e from row py to py + 1
+    double d0, ddx, ddy, x0, y0_plane;  // the depth plane (TriangleSetup's d0, ddx, ddy, x0, y0)
+};
+
+/// What a draw did to its tile: the least depth it wrote (+infinity if none) and the greatest
+/// stored depth it saw at a covered pixel after the test (-infinity if none).
+struct TileDraw {
+    float written_min, stored_max;
+};
+
+/// Draws the covered pixels with depth test LESS, writes on.
+using DrawTileFn = void (*)(const TileWalk& walk, TileDraw& out);
+/// True when some covered pixel's fragment exceeds the stored depth + kDepthTolerance.
+using QueryTileFn = bool (*)(const TileWalk& walk);
+
+struct RowKernels {
+    DrawTileFn draw;
+    QueryTileFn query;
+};
+
+/// The portable loops.
+RowKernels scalarRowKernels();
+/// AVX2 loops when allowed and the CPU has AVX2 (checked once per process), else the scalar ones.
+RowKernels selectRowKernels(bool allow_simd, bool& uses_simd);
+
+/// The AVX2 loops (fast_rows_avx2.cpp): only to be called on a CPU with AVX2. Null where the
+/// compiler or the target cannot build them.
+DrawTileFn avx2DrawTile();
+QueryTileFn avx2QueryTile();
+
+} // namespace vissort::detail
