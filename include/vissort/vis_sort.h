@@ -18,6 +18,8 @@ struct VisSortStats {
     uint64_t clears = 0;      // depth buffer clears (one per pass or group test)
     uint32_t iterations = 0;  // Vis-sort iterations (pass 1 + pass 2)
     uint32_t stuck_iterations = 0;  // iterations that output nothing (a cycle was met)
+    uint64_t cycle_queries = 0;     // of queries, those spent finding cycles
+    uint64_t cycle_draws = 0;       // of draws, those spent finding cycles
 };
 
 struct VisibilityOrder {
@@ -32,7 +34,7 @@ struct VisibilityOrder {
 /// Scratch memory for visSort, owned by the caller and reused across frames, so that a frame
 /// allocates nothing in steady state. Contents between calls are unspecified.
 struct VisSortWorkspace {
-    std::vector<uint32_t> unsorted, outside, candidates;
+    std::vector<uint32_t> unsorted, outside, candidates, position;
     std::vector<uint8_t> in_monotone_run, query, behind, in_cycle;
     std::vector<int32_t> path_index;
 };

@@ -23,6 +23,8 @@ nlohmann::json frameRecord(const FrameOrder& frame, bool back_to_front) {
               {"clears", frame.stats.clears},
               {"iterations", frame.stats.iterations},
               {"stuck_iterations", frame.stats.stuck_iterations},
+              {"cycle_queries", frame.stats.cycle_queries},
+              {"cycle_draws", frame.stats.cycle_draws},
               {"ms", frame.milliseconds}}}};
 }
 

@@ -21,6 +21,8 @@ public:
         stats_.clears += 1;
         stats_.draws += occluders.size();
         stats_.queries += targets.size();
+        stats_.cycle_draws += occluders.size();
+        stats_.cycle_queries += targets.size();
     }
 
     /// One member of candidates that occludes target, given that the whole set does.
@@ -45,13 +47,37 @@ private:
     VisSortStats& stats_;
 };
 
+constexpr int32_t kNotOnPath = -1;
+
+// Adds an occluder of the path's top component: a new component on the path, or, when it is
+// already on the path, the merge of the cycle it closes. Returns true when it pushed.
+bool extendPath(std::vector<std::vector<uint32_t>>& path, std::vector<int32_t>& path_index,
+                uint32_t occluder) {
+    const auto top = static_cast<int32_t>(path.size() - 1);
+    const int32_t found_at = path_index[occluder];
+    if (found_at == kNotOnPath) {
+        path.push_back({occluder});
+        path_index[occluder] = top + 1;
+        return true;
+    }
+    // occluder -> path[top] -> ... -> path[found_at] ∋ occluder closes a cycle: merge.
+    for (int32_t k = found_at + 1; k <= top; ++k) {
+        for (uint32_t p : path[k]) {
+            path_index[p] = found_at;
+            path[found_at].push_back(p);
+        }
+    }
+    path.resize(found_at + 1);
+    return false;
+}
+
 } // namespace
 
 std::vector<uint32_t> findSourceCycle(OcclusionOracle& oracle, std::span<const uint32_t> stuck,
+                                      std::span<const uint8_t> in_monotone_run,
                                       VisSortStats& stats, VisSortWorkspace& scratch) {
-    assert(!stuck.empty());
+    assert(!stuck.empty() && in_monotone_run.size() == stuck.size());
     GroupTester tester(oracle, stats);
-    constexpr int32_t kNotOnPath = -1;
     // Every entry is kNotOnPath between calls; only the stuck primitives' entries are touched.
     std::vector<int32_t>& path_index = scratch.path_index;
     path_index.resize(oracle.primitiveCount(), kNotOnPath);
@@ -61,9 +87,29 @@ std::vector<uint32_t> findSourceCycle(OcclusionOracle& oracle, std::span<const u
 
     std::vector<uint32_t>& outside = scratch.outside;
     std::vector<uint8_t>& behind = scratch.behind;
+    std::vector<uint32_t>& position = scratch.position;  // in stuck, valid for stuck primitives
+    position.resize(oracle.primitiveCount());
+    for (std::size_t i = 0; i < stuck.size(); ++i) position[stuck[i]] = uint32_t(i);
     for (;;) {
         const auto top = static_cast<int32_t>(path.size() - 1);
         const std::vector<uint32_t>& component = path.back();
+        if (component.size() == 1) {
+            // A lone primitive is occluded by another stuck one, on the side of the list the
+            // passes found it behind: search that side only, with no test of the whole rest.
+            const uint32_t target = component.front();
+            const uint32_t at = position[target];
+            scratch.candidates.clear();
+            if (in_monotone_run[at])
+                scratch.candidates.assign(stuck.begin(), stuck.begin() + at);
+            else
+                scratch.candidates.assign(stuck.begin() + at + 1, stuck.end());
+            if (!scratch.candidates.empty()) {
+                const uint32_t occluder = tester.findOccluder(scratch.candidates, target);
+                extendPath(path, path_index, occluder);
+                continue;
+            }
+            // An empty side means the oracle contradicted itself; fall back to the full test.
+        }
         outside.clear();
         for (uint32_t p : stuck)
             if (path_index[p] != top) outside.push_back(p);
@@ -81,21 +127,7 @@ std::vector<uint32_t> findSourceCycle(OcclusionOracle& oracle, std::span<const u
         }
         const uint32_t target = component[occluded - behind.begin()];
         scratch.candidates.assign(outside.begin(), outside.end());
-        const uint32_t occluder = tester.findOccluder(scratch.candidates, target);
-        const int32_t found_at = path_index[occluder];
-        if (found_at == kNotOnPath) {
-            path.push_back({occluder});
-            path_index[occluder] = top + 1;
-            continue;
-        }
-        // occluder -> path[top] -> ... -> path[found_at] ∋ occluder closes a cycle: merge.
-        for (int32_t k = found_at + 1; k <= top; ++k) {
-            for (uint32_t p : path[k]) {
-                path_index[p] = found_at;
-                path[found_at].push_back(p);
-            }
-        }
-        path.resize(found_at + 1);
+        extendPath(path, path_index, tester.findOccluder(scratch.candidates, target));
     }
 }
 

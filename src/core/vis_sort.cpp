@@ -125,7 +125,7 @@ private:
     // cycle-breaking rule) and go on; M stays valid because primitives are only removed.
     void outputSourceCycle() {
         std::vector<uint32_t> cycle =
-            detail::findSourceCycle(oracle_, unsorted_, result_.stats, workspace_);
+            detail::findSourceCycle(oracle_, unsorted_, in_monotone_run_, result_.stats, workspace_);
         for (uint32_t p : cycle) {
             in_cycle_[p] = 1;
             result_.order.push_back(p);

@@ -16,6 +16,8 @@ void addStats(VisSortStats& total, const VisSortStats& part) {
     total.clears += part.clears;
     total.iterations += part.iterations;
     total.stuck_iterations += part.stuck_iterations;
+    total.cycle_queries += part.cycle_queries;
+    total.cycle_draws += part.cycle_draws;
 }
 
 } // namespace
