@@ -13,9 +13,9 @@
 //  - queries stop at the first fragment behind; draws and queries allocate nothing;
 //  - the pixels of a tile are walked a row at a time, 8 lanes wide with AVX2 where the CPU has it
 //    (chosen once at run time; the scalar loop is the portable fallback, same bits);
-//  - backToFrontPass and queryAgainst split the tile rows into screen bands (a few per thread,
+//  - backToFrontPass and queryAgainst can split the tile rows into screen bands (one per thread,
 //    claimed in turn): each band runs the whole sequence on its own tiles, and the answers are
-//    OR-ed across bands.
+//    OR-ed across bands. Off by default (FastCpuOracleOptions::threads).
 
 #include <cstdint>
 #include <memory>
