@@ -75,10 +75,18 @@ bool isFinite(const ClipVertex& v) {
 
 int clipTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, Polygon& out) {
     if (!isFinite(a) || !isFinite(b) || !isFinite(c)) return 0;
-    Polygon scratch;
     out[0] = a;
     out[1] = b;
     out[2] = c;
+    // Most triangles lie inside every plane: each pass below would then keep the three vertices
+    // as they are, in order, so the result is the same without the passes.
+    bool inside_all = true;
+    for (Plane plane : {Plane::near, Plane::far, Plane::left, Plane::right, Plane::bottom,
+                        Plane::top})
+        inside_all = inside_all && signedDistance(a, plane) >= 0 &&
+                     signedDistance(b, plane) >= 0 && signedDistance(c, plane) >= 0;
+    if (inside_all) return a.w > 0 && b.w > 0 && c.w > 0 ? 3 : 0;
+    Polygon scratch;
     int count = 3;
     // Ping-pong between out and scratch; six planes, so the result ends up back in out.
     Polygon* from = &out;
