@@ -127,6 +127,11 @@ private:
     /// Walks the tiles of s in tile rows [ty_begin, ty_end); counts into stats.
     template <bool kDraw>
     bool rasterize(const Setup& s, int32_t ty_begin, int32_t ty_end, FastCpuOracleStats& stats);
+    /// rasterize for a triangle whose pixel bounds lie in one tile (most triangles of a detailed
+    /// mesh): the same per-pixel rules with none of the per-tile analysis, which costs more than
+    /// the few pixels it could save.
+    template <bool kDraw>
+    bool rasterizeInOneTile(const Setup& s, std::size_t tile, FastCpuOracleStats& stats);
     /// Runs band(b, stats of b) for b = 0..bands-1 on the calling thread and the workers (each
     /// claims the next band when done); then adds the bands' tile counts to stats_.
     template <class Band>

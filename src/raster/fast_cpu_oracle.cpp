@@ -161,6 +161,10 @@ bool FastCpuOracle::rasterize(const Setup& s, int32_t ty_begin, int32_t ty_end,
     const int32_t ty_first = std::max(s.py_min >> kTileShift, ty_begin);
     const int32_t ty_last = std::min(s.py_max >> kTileShift, ty_end - 1);
     if (ty_first > ty_last) return false;  // outside the band
+    // One tile of the triangle's own bounds (not of the band-clamped ones), in this band.
+    if (tx_first == tx_last && (s.py_min >> kTileShift) == (s.py_max >> kTileShift))
+        return rasterizeInOneTile<kDraw>(s, std::size_t(ty_first) * tiles_x_ + std::size_t(tx_first),
+                                         stats);
     const int32_t last_x = int32_t(width_) - 1, last_y = int32_t(height_) - 1;
     detail::TileWalk walk;
     walk.stride = width_;
@@ -273,6 +277,46 @@ bool FastCpuOracle::rasterize(const Setup& s, int32_t ty_begin, int32_t ty_end,
             }
         }
     }
+    return false;
+}
+
+template <bool kDraw>
+bool FastCpuOracle::rasterizeInOneTile(const Setup& s, std::size_t tile, FastCpuOracleStats& stats) {
+    ++stats.tiles_visited;
+    if (tile_epoch_[tile] != epoch_) {
+        if constexpr (!kDraw) {
+            ++stats.tiles_culled;  // cleared since last touched: nothing behind +infinity
+            return false;
+        }
+        clearTile(tile);
+    }
+    float written_min = kInfinity;
+    for (int32_t py = s.py_min; py <= s.py_max; ++py) {
+        // Rule 6 in the reference's order: (d0 + ddx (cx - x0)) + ddy (cy - y0).
+        const double row_term = s.ddy * ((double(py) + 0.5) - s.y0);
+        float* row = depth_.data() + std::size_t(py) * width_;
+        int64_t e0 = s.edge_at_origin[0] + int64_t(s.px_min) * s.edge_step_x[0] + int64_t(py) * s.edge_step_y[0];
+        int64_t e1 = s.edge_at_origin[1] + int64_t(s.px_min) * s.edge_step_x[1] + int64_t(py) * s.edge_step_y[1];
+        int64_t e2 = s.edge_at_origin[2] + int64_t(s.px_min) * s.edge_step_x[2] + int64_t(py) * s.edge_step_y[2];
+        for (int32_t px = s.px_min; px <= s.px_max; ++px) {
+            const bool covered = (e0 > 0) & (e1 > 0) & (e2 > 0);
+            e0 += s.edge_step_x[0];
+            e1 += s.edge_step_x[1];
+            e2 += s.edge_step_x[2];
+            if (!covered) continue;
+            const float frag = float(s.d0 + s.ddx * ((double(px) + 0.5) - s.x0) + row_term);
+            if constexpr (kDraw) {
+                if (frag < row[px]) {
+                    row[px] = frag;
+                    written_min = std::min(written_min, frag);
+                }
+            } else {
+                if (frag > row[px] + kDepthTolerance) return true;
+            }
+        }
+    }
+    // Stored depths only fall, so tile_max_ stays a bound; tile_min_ follows the writes.
+    if constexpr (kDraw) tile_min_[tile] = std::min(tile_min_[tile], written_min);
     return false;
 }
 
