@@ -35,7 +35,7 @@ struct VisibilityOrder {
 /// allocates nothing in steady state. Contents between calls are unspecified.
 struct VisSortWorkspace {
     std::vector<uint32_t> unsorted, outside, candidates, position;
-    std::vector<uint8_t> in_monotone_run, query, behind, in_cycle;
+    std::vector<uint8_t> in_monotone_run, query, behind, in_cycle, walk_state;
     std::vector<int32_t> path_index;
 };
 

@@ -73,62 +73,87 @@ bool extendPath(std::vector<std::vector<uint32_t>>& path, std::vector<int32_t>& 
 
 } // namespace
 
-std::vector<uint32_t> findSourceCycle(OcclusionOracle& oracle, std::span<const uint32_t> stuck,
-                                      std::span<const uint8_t> in_monotone_run,
-                                      VisSortStats& stats, VisSortWorkspace& scratch) {
-    assert(!stuck.empty() && in_monotone_run.size() == stuck.size());
+std::vector<std::vector<uint32_t>> findSourceCycles(OcclusionOracle& oracle,
+                                                    std::span<const uint32_t> stuck,
+                                                    std::span<const uint8_t> in_monotone_run,
+                                                    uint32_t max_walks, VisSortStats& stats,
+                                                    VisSortWorkspace& scratch) {
+    assert(!stuck.empty() && in_monotone_run.size() == stuck.size() && max_walks >= 1);
     GroupTester tester(oracle, stats);
-    // Every entry is kNotOnPath between calls; only the stuck primitives' entries are touched.
+    // Every entry is kNotOnPath (path_index) or kUnknown (walk_state) between calls; only the
+    // stuck primitives' entries are touched, and they are reset before returning.
     std::vector<int32_t>& path_index = scratch.path_index;
     path_index.resize(oracle.primitiveCount(), kNotOnPath);
-    // path[k + 1] holds an occluder of a member of path[k]; each entry is strongly connected.
-    std::vector<std::vector<uint32_t>> path{{stuck.front()}};
-    path_index[stuck.front()] = 0;
-
-    std::vector<uint32_t>& outside = scratch.outside;
-    std::vector<uint8_t>& behind = scratch.behind;
+    enum : uint8_t { kUnknown = 0, kInSource = 1, kDownstream = 2 };
+    std::vector<uint8_t>& walk_state = scratch.walk_state;
+    walk_state.resize(oracle.primitiveCount(), kUnknown);
     std::vector<uint32_t>& position = scratch.position;  // in stuck, valid for stuck primitives
     position.resize(oracle.primitiveCount());
     for (std::size_t i = 0; i < stuck.size(); ++i) position[stuck[i]] = uint32_t(i);
-    for (;;) {
-        const auto top = static_cast<int32_t>(path.size() - 1);
-        const std::vector<uint32_t>& component = path.back();
-        if (component.size() == 1) {
-            // A lone primitive is occluded by another stuck one, on the side of the list the
-            // passes found it behind: search that side only, with no test of the whole rest.
-            const uint32_t target = component.front();
-            const uint32_t at = position[target];
-            scratch.candidates.clear();
-            if (in_monotone_run[at])
-                scratch.candidates.assign(stuck.begin(), stuck.begin() + at);
-            else
-                scratch.candidates.assign(stuck.begin() + at + 1, stuck.end());
-            if (!scratch.candidates.empty()) {
-                const uint32_t occluder = tester.findOccluder(scratch.candidates, target);
-                extendPath(path, path_index, occluder);
-                continue;
+    std::vector<uint32_t>& outside = scratch.outside;
+    std::vector<uint8_t>& behind = scratch.behind;
+
+    std::vector<std::vector<uint32_t>> sources;
+    std::size_t next_start = 0;
+    for (uint32_t walk = 0; walk < max_walks; ++walk) {
+        while (next_start < stuck.size() && walk_state[stuck[next_start]] != kUnknown) ++next_start;
+        if (next_start == stuck.size()) break;
+        // path[k + 1] holds an occluder of a member of path[k]; each entry is strongly connected.
+        std::vector<std::vector<uint32_t>> path{{stuck[next_start]}};
+        path_index[stuck[next_start]] = 0;
+        bool found_source = false;
+        for (;;) {
+            const auto top = static_cast<int32_t>(path.size() - 1);
+            const std::vector<uint32_t>& component = path.back();
+            uint32_t occluder = 0;
+            bool have_occluder = false;
+            if (component.size() == 1) {
+                // A lone primitive is occluded by another stuck one, on the side of the list the
+                // passes found it behind: search that side only, with no test of the whole rest.
+                const uint32_t target = component.front();
+                const uint32_t at = position[target];
+                if (in_monotone_run[at])
+                    scratch.candidates.assign(stuck.begin(), stuck.begin() + at);
+                else
+                    scratch.candidates.assign(stuck.begin() + at + 1, stuck.end());
+                if (!scratch.candidates.empty()) {
+                    occluder = tester.findOccluder(scratch.candidates, target);
+                    have_occluder = true;
+                }
+                // An empty side means the oracle contradicted itself: fall back to the full test.
             }
-            // An empty side means the oracle contradicted itself; fall back to the full test.
+            if (!have_occluder) {
+                outside.clear();
+                for (uint32_t p : stuck)
+                    if (path_index[p] != top) outside.push_back(p);
+                behind.assign(component.size(), 0);
+                if (!outside.empty()) tester.test(outside, component, behind);
+                const auto occluded = std::find(behind.begin(), behind.end(), 1);
+                if (occluded == behind.end()) {
+                    // Nothing else that is stuck occludes the component: a source. Stuck order.
+                    std::vector<uint32_t> members;
+                    for (uint32_t p : stuck)
+                        if (path_index[p] == top) members.push_back(p);
+                    sources.push_back(std::move(members));
+                    found_source = true;
+                    break;
+                }
+                scratch.candidates.assign(outside.begin(), outside.end());
+                occluder = tester.findOccluder(scratch.candidates, component[occluded - behind.begin()]);
+            }
+            // Reaching a found source, or what lies behind one, puts the whole path behind it.
+            if (walk_state[occluder] != kUnknown) break;
+            extendPath(path, path_index, occluder);
         }
-        outside.clear();
-        for (uint32_t p : stuck)
-            if (path_index[p] != top) outside.push_back(p);
-        behind.assign(component.size(), 0);
-        if (!outside.empty()) tester.test(outside, component, behind);
-        const auto occluded = std::find(behind.begin(), behind.end(), 1);
-        if (occluded == behind.end()) {
-            // Nothing outside occludes the component: it is a source. List it in stuck order.
-            std::vector<uint32_t> members;
-            for (uint32_t p : stuck) {
-                if (path_index[p] == top) members.push_back(p);
+        const uint8_t state = found_source ? kInSource : kDownstream;
+        for (const auto& component : path)
+            for (uint32_t p : component) {
+                walk_state[p] = state;
                 path_index[p] = kNotOnPath;
             }
-            return members;
-        }
-        const uint32_t target = component[occluded - behind.begin()];
-        scratch.candidates.assign(outside.begin(), outside.end());
-        extendPath(path, path_index, tester.findOccluder(scratch.candidates, target));
     }
+    for (uint32_t p : stuck) walk_state[p] = kUnknown;
+    return sources;
 }
 
 } // namespace vissort::detail

@@ -15,15 +15,18 @@ namespace vissort::detail {
 /// after that iteration: a primitive in M is occluded by one before it in the list (pass 2 found
 /// it behind those), any other by one after it (pass 1). The search uses that to halve its work.
 ///
-/// Finds a set C of primitives from `stuck` that is strongly connected in the occlusion graph
+/// Finds sets of primitives from `stuck` that are strongly connected in the occlusion graph
 /// (edge q -> p when q lies in front of p at some pixel) and that nothing else in `stuck`
-/// occludes: a source component. Precondition: every primitive of `stuck` is occluded by another
-/// one of `stuck` (Vis-sort made no progress), so C has two or more members.
-/// Uses group tests only (draw a set, query members) and counts them in stats; scratch's
-/// path_index must hold -1 for every primitive (it does again on return).
-/// Returns C's members in the order they have in `stuck`.
-std::vector<uint32_t> findSourceCycle(OcclusionOracle& oracle, std::span<const uint32_t> stuck,
-                                      std::span<const uint8_t> in_monotone_run,
-                                      VisSortStats& stats, VisSortWorkspace& scratch);
+/// occludes: source components. Precondition: every primitive of `stuck` is occluded by another
+/// one of `stuck` (Vis-sort made no progress), so each has two or more members, and there is at
+/// least one. Up to max_walks walks, each from the front-most primitive not yet known to be in a
+/// source or behind one; a walk that reaches such a primitive ends without a new source.
+/// Uses group tests only (draw a set, query members) and counts them in stats. Each source lists
+/// its members in the order they have in `stuck`.
+std::vector<std::vector<uint32_t>> findSourceCycles(OcclusionOracle& oracle,
+                                                    std::span<const uint32_t> stuck,
+                                                    std::span<const uint8_t> in_monotone_run,
+                                                    uint32_t max_walks, VisSortStats& stats,
+                                                    VisSortWorkspace& scratch);
 
 } // namespace vissort::detail

@@ -14,6 +14,10 @@
 namespace vissort {
 namespace {
 
+// Walks for source cycles in one stuck iteration. Every other cycle found then saves a stuck
+// iteration and the iteration that follows it, each a pass over everything still unsorted.
+constexpr uint32_t kWalksPerStuckIteration = 8;
+
 bool isPermutation(std::span<const uint32_t> ids, uint32_t n) {
     if (ids.size() != n) return false;
     std::vector<uint8_t> seen(n, 0);
@@ -48,7 +52,7 @@ public:
             buildMonotoneRun();
             if (moveSortedToOutput() == 0) {
                 ++result_.stats.stuck_iterations;
-                outputSourceCycle();
+                outputSourceCycles();
             }
         }
     }
@@ -121,27 +125,32 @@ private:
     }
 
     // No progress: every unsorted primitive is occluded by another unsorted one, so the occlusion
-    // graph among them has a cycle. Output a source component whole (members in list order: the
-    // cycle-breaking rule) and go on; M stays valid because primitives are only removed.
-    void outputSourceCycle() {
-        std::vector<uint32_t> cycle =
-            detail::findSourceCycle(oracle_, unsorted_, in_monotone_run_, result_.stats, workspace_);
-        for (uint32_t p : cycle) {
-            in_cycle_[p] = 1;
-            result_.order.push_back(p);
-        }
+    // graph among them has a cycle. Output source components whole (members in list order: the
+    // cycle-breaking rule), several per stuck iteration when the walks find them, and go on; M
+    // stays valid because primitives are only removed.
+    void outputSourceCycles() {
+        std::vector<std::vector<uint32_t>> sources = detail::findSourceCycles(
+            oracle_, unsorted_, in_monotone_run_, kWalksPerStuckIteration, result_.stats,
+            workspace_);
+        for (const auto& cycle : sources)
+            for (uint32_t p : cycle) {
+                in_cycle_[p] = 1;
+                result_.order.push_back(p);
+            }
         std::size_t kept = 0;
         for (std::size_t i = 0; i < unsorted_.size(); ++i) {
             if (in_cycle_[unsorted_[i]]) continue;
             unsorted_[kept] = unsorted_[i];
             in_monotone_run_[kept++] = in_monotone_run_[i];
         }
-        for (uint32_t p : cycle) in_cycle_[p] = 0;
         unsorted_.resize(kept);
         in_monotone_run_.resize(kept);
-        if (cycle.size() > 1) {
-            std::sort(cycle.begin(), cycle.end());
-            result_.cycles.push_back(std::move(cycle));
+        for (auto& cycle : sources) {
+            for (uint32_t p : cycle) in_cycle_[p] = 0;
+            if (cycle.size() > 1) {
+                std::sort(cycle.begin(), cycle.end());
+                result_.cycles.push_back(std::move(cycle));
+            }
         }
     }
 
