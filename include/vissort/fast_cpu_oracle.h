@@ -17,6 +17,7 @@
 //    claimed in turn): each band runs the whole sequence on its own tiles, and the answers are
 //    OR-ed across bands. Off by default (FastCpuOracleOptions::threads).
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -141,18 +142,31 @@ private:
     uint32_t bandsFor(std::size_t count) const;
     /// Tile rows of band b of bands: [first, last).
     void bandRows(uint32_t b, uint32_t bands, int32_t& first, int32_t& last) const;
+    /// Clips, snaps and sets up triangle t, appending its fan triangles to setups_; clip is the
+    /// projection times the view (detail::Matrix4).
+    void addSetups(const TrianglePositions& positions, const std::array<double, 16>& clip,
+                   std::size_t t);
+    /// The depths of one tile, kTileSize rows of kTileSize floats (fast_rows.h).
+    float* tileDepths(std::size_t tile) const { return depth_.data() + tile * kTileSize * kTileSize; }
+    /// Where pixel (x, y) is stored.
+    float* pixel(uint32_t x, uint32_t y) const {
+        return tileDepths(std::size_t(y / kTileSize) * tiles_x_ + x / kTileSize) +
+               (y % kTileSize) * kTileSize + x % kTileSize;
+    }
     /// Writes out the pending clear of one tile: its pixels +infinity, bounds +infinity.
     void clearTile(std::size_t tile) const;
 
     uint32_t width_ = 0, height_ = 0;
     uint32_t tiles_x_ = 0, tiles_y_ = 0;
     std::vector<PrimitiveRange> primitives_;
-    std::vector<uint32_t> first_setup_;  // per triangle, plus one past the end: its fan triangles
+    // Primitive p's fan triangles are setups_[primitive_setups_[p], primitive_setups_[p + 1]).
+    std::vector<uint32_t> primitive_setups_;
     std::vector<Setup> setups_;
     // Clearing is lazy: clear() starts a new epoch, and a tile whose tile_epoch_ is older holds
     // only +infinity, whatever its pixels say, until clearTile writes that out (on its first draw,
     // or in depthBuffer(), which is why these are mutable: the logical contents never change).
-    mutable std::vector<float> depth_;
+    mutable std::vector<float> depth_;      // tile by tile (fast_rows.h), padded to whole tiles
+    mutable std::vector<float> row_major_;  // depthBuffer()'s copy
     // Per tile: tile_min_ is the least stored depth (exact); tile_max_ is an upper bound on every
     // stored depth (exact after clear and after a draw that covers the whole tile, otherwise left
     // as it was: stored depths only decrease, so it stays an upper bound).

@@ -39,6 +39,8 @@ namespace {
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 constexpr int kTileShift = 3;  // kTileSize = 8
 static_assert(FastCpuOracle::kTileSize == 1u << kTileShift);
+static_assert(FastCpuOracle::kTileSize == detail::kTileRowFloats);
+constexpr std::size_t kTilePixels = std::size_t(detail::kTileRowFloats) * detail::kTileRowFloats;
 
 // Relative bound on the rounding of the depth expression (about 8 ulps of the summed magnitudes,
 // with a wide safety factor on the 4 roundings it takes).
@@ -81,68 +83,74 @@ void FastCpuOracle::bind(const TrianglePositions& positions, const ViewProjectio
         assert(uint64_t(range.first_triangle) + range.triangle_count <=
                positions.triangleCount());
 
+    // Set-ups are laid out in primitive order (a primitive's fan triangles are contiguous), so a
+    // walk over primitives in id order reads memory forward; triangles of no primitive are never
+    // set up, those of several are set up once each.
     const detail::Matrix4 m = detail::multiply(view.projection_matrix, view.view);
-    const std::size_t triangle_count = positions.triangleCount();
-    first_setup_.resize(triangle_count + 1);
+    primitive_setups_.resize(primitives_.size() + 1);
     setups_.clear();
-    setups_.reserve(triangle_count);
-    std::array<detail::ClipVertex, 3> corners;
-    std::array<detail::ClipVertex, detail::kMaxPolygonVertices> polygon;
-    std::array<detail::ScreenVertex, detail::kMaxPolygonVertices> screen;
-    detail::TriangleSetup ts;
-    for (std::size_t t = 0; t < triangle_count; ++t) {
-        first_setup_[t] = uint32_t(setups_.size());
-        for (int k = 0; k < 3; ++k) {
-            const std::size_t i = 3 * t + std::size_t(k);
-            corners[k] = detail::toClipSpace(m, positions.x[i], positions.y[i], positions.z[i]);
-        }
-        // Rules 2-4 and the set-up of rules 5-6, by the reference's own functions.
-        const int count = detail::clipTriangle(corners[0], corners[1], corners[2], polygon);
-        if (count < 3) continue;
-        for (int i = 0; i < count; ++i) screen[i] = detail::toScreen(polygon[i], width_, height_);
-        for (int i = 1; i + 1 < count; ++i) {
-            if (!detail::setupTriangle(screen[0], screen[i], screen[i + 1], width_, height_, ts))
-                continue;
-            Setup s;
-            constexpr int64_t half = detail::kSubpixelScale / 2;
-            for (int e = 0; e < 3; ++e) {
-                const int j = (e + 1) % 3;
-                const int64_t dx = ts.x[j] - ts.x[e], dy = ts.y[j] - ts.y[e];
-                // E_e at the centre of pixel (0, 0), (128, 128) in 24.8 fixed point: below 2^61.
-                s.edge_at_origin[e] = dx * (half - ts.y[e]) - dy * (half - ts.x[e]) + ts.bias[e];
-                s.edge_step_x[e] = -dy * detail::kSubpixelScale;
-                s.edge_step_y[e] = dx * detail::kSubpixelScale;
-            }
-            s.x0 = ts.x0;
-            s.y0 = ts.y0;
-            s.d0 = ts.d0;
-            s.ddx = ts.ddx;
-            s.ddy = ts.ddy;
-            s.px_min = int32_t(ts.px_min);
-            s.px_max = int32_t(ts.px_max);
-            s.py_min = int32_t(ts.py_min);
-            s.py_max = int32_t(ts.py_max);
-            setups_.push_back(s);
-        }
+    std::size_t triangle_total = 0;
+    for (const PrimitiveRange& range : primitives_) triangle_total += range.triangle_count;
+    setups_.reserve(triangle_total);
+    for (std::size_t p = 0; p < primitives_.size(); ++p) {
+        primitive_setups_[p] = uint32_t(setups_.size());
+        const PrimitiveRange range = primitives_[p];
+        for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count; ++t)
+            addSetups(positions, m, t);
     }
-    first_setup_[triangle_count] = uint32_t(setups_.size());
+    primitive_setups_[primitives_.size()] = uint32_t(setups_.size());
 
-    depth_.resize(std::size_t(width_) * height_);
+    depth_.resize(std::size_t(tiles_x_) * tiles_y_ * kTilePixels);
     tile_min_.resize(std::size_t(tiles_x_) * tiles_y_);
     tile_max_.resize(tile_min_.size());
     tile_epoch_.assign(tile_min_.size(), 0);
     epoch_ = 1;  // every tile pending a clear
 }
 
+void FastCpuOracle::addSetups(const TrianglePositions& positions, const detail::Matrix4& clip,
+                              std::size_t t) {
+    std::array<detail::ClipVertex, 3> corners;
+    std::array<detail::ClipVertex, detail::kMaxPolygonVertices> polygon;
+    std::array<detail::ScreenVertex, detail::kMaxPolygonVertices> screen;
+    for (int k = 0; k < 3; ++k) {
+        const std::size_t i = 3 * t + std::size_t(k);
+        corners[k] = detail::toClipSpace(clip, positions.x[i], positions.y[i], positions.z[i]);
+    }
+    // Rules 2-4 and the set-up of rules 5-6, by the reference's own functions.
+    const int count = detail::clipTriangle(corners[0], corners[1], corners[2], polygon);
+    if (count < 3) return;
+    for (int i = 0; i < count; ++i) screen[i] = detail::toScreen(polygon[i], width_, height_);
+    detail::TriangleSetup ts;
+    for (int i = 1; i + 1 < count; ++i) {
+        if (!detail::setupTriangle(screen[0], screen[i], screen[i + 1], width_, height_, ts))
+            continue;
+        Setup s;
+        constexpr int64_t half = detail::kSubpixelScale / 2;
+        for (int e = 0; e < 3; ++e) {
+            const int j = (e + 1) % 3;
+            const int64_t dx = ts.x[j] - ts.x[e], dy = ts.y[j] - ts.y[e];
+            // E_e at the centre of pixel (0, 0), (128, 128) in 24.8 fixed point: below 2^61.
+            s.edge_at_origin[e] = dx * (half - ts.y[e]) - dy * (half - ts.x[e]) + ts.bias[e];
+            s.edge_step_x[e] = -dy * detail::kSubpixelScale;
+            s.edge_step_y[e] = dx * detail::kSubpixelScale;
+        }
+        s.x0 = ts.x0;
+        s.y0 = ts.y0;
+        s.d0 = ts.d0;
+        s.ddx = ts.ddx;
+        s.ddy = ts.ddy;
+        s.px_min = int32_t(ts.px_min);
+        s.px_max = int32_t(ts.px_max);
+        s.py_min = int32_t(ts.py_min);
+        s.py_max = int32_t(ts.py_max);
+        setups_.push_back(s);
+    }
+}
+
 void FastCpuOracle::clear() { ++epoch_; }
 
 void FastCpuOracle::clearTile(std::size_t tile) const {
-    const uint32_t tx = uint32_t(tile % tiles_x_), ty = uint32_t(tile / tiles_x_);
-    const uint32_t x0 = tx * kTileSize, x1 = std::min(x0 + kTileSize, width_);
-    const uint32_t y0 = ty * kTileSize, y1 = std::min(y0 + kTileSize, height_);
-    for (uint32_t y = y0; y < y1; ++y)
-        std::fill(depth_.begin() + std::ptrdiff_t(std::size_t(y) * width_ + x0),
-                  depth_.begin() + std::ptrdiff_t(std::size_t(y) * width_ + x1), kInfinity);
+    std::fill_n(depth_.begin() + std::ptrdiff_t(tile * kTilePixels), kTilePixels, kInfinity);
     tile_min_[tile] = kInfinity;
     tile_max_[tile] = kInfinity;
     tile_epoch_[tile] = epoch_;
@@ -151,7 +159,11 @@ void FastCpuOracle::clearTile(std::size_t tile) const {
 std::span<const float> FastCpuOracle::depthBuffer() const {
     for (std::size_t tile = 0; tile < tile_epoch_.size(); ++tile)
         if (tile_epoch_[tile] != epoch_) clearTile(tile);
-    return depth_;
+    row_major_.resize(std::size_t(width_) * height_);
+    for (uint32_t y = 0; y < height_; ++y)
+        for (uint32_t x = 0; x < width_; ++x)
+            row_major_[std::size_t(y) * width_ + x] = *pixel(x, y);
+    return row_major_;
 }
 
 template <bool kDraw>
@@ -167,7 +179,6 @@ bool FastCpuOracle::rasterize(const Setup& s, int32_t ty_begin, int32_t ty_end,
                                          stats);
     const int32_t last_x = int32_t(width_) - 1, last_y = int32_t(height_) - 1;
     detail::TileWalk walk;
-    walk.stride = width_;
     for (int e = 0; e < 3; ++e) {
         walk.step_x[e] = s.edge_step_x[e];
         walk.step_y[e] = s.edge_step_y[e];
@@ -257,12 +268,11 @@ bool FastCpuOracle::rasterize(const Setup& s, int32_t ty_begin, int32_t ty_end,
             }
 
             // Per pixel (fast_rows.h): rule 6's expression, (d0 + ddx (cx - x0)) + ddy (cy - y0).
-            walk.origin = depth_.data() + std::size_t(y0) * width_ + std::size_t(vx0);
+            walk.origin = tileDepths(tile) + std::size_t(y0 - vy0) * kTileSize;
             walk.vx0 = vx0;
             walk.y0 = y0;
             walk.lane_first = x0 - vx0;
             walk.lane_last = x1 - vx0;
-            walk.lanes = vx1 - vx0 + 1;
             walk.rows = y1 - y0 + 1;
             walk.all_covered = inside_all;
             for (int e = 0; e < 3; ++e) walk.edge[e] = edge_row[e];
@@ -291,10 +301,11 @@ bool FastCpuOracle::rasterizeInOneTile(const Setup& s, std::size_t tile, FastCpu
         clearTile(tile);
     }
     float written_min = kInfinity;
+    const int32_t vx0 = s.px_min & ~int32_t(kTileSize - 1), vy0 = s.py_min & ~int32_t(kTileSize - 1);
     for (int32_t py = s.py_min; py <= s.py_max; ++py) {
         // Rule 6 in the reference's order: (d0 + ddx (cx - x0)) + ddy (cy - y0).
         const double row_term = s.ddy * ((double(py) + 0.5) - s.y0);
-        float* row = depth_.data() + std::size_t(py) * width_;
+        float* row = tileDepths(tile) + std::size_t(py - vy0) * kTileSize;  // row[px - vx0]
         int64_t e0 = s.edge_at_origin[0] + int64_t(s.px_min) * s.edge_step_x[0] + int64_t(py) * s.edge_step_y[0];
         int64_t e1 = s.edge_at_origin[1] + int64_t(s.px_min) * s.edge_step_x[1] + int64_t(py) * s.edge_step_y[1];
         int64_t e2 = s.edge_at_origin[2] + int64_t(s.px_min) * s.edge_step_x[2] + int64_t(py) * s.edge_step_y[2];
@@ -306,12 +317,12 @@ bool FastCpuOracle::rasterizeInOneTile(const Setup& s, std::size_t tile, FastCpu
             if (!covered) continue;
             const float frag = float(s.d0 + s.ddx * ((double(px) + 0.5) - s.x0) + row_term);
             if constexpr (kDraw) {
-                if (frag < row[px]) {
-                    row[px] = frag;
+                if (frag < row[px - vx0]) {
+                    row[px - vx0] = frag;
                     written_min = std::min(written_min, frag);
                 }
             } else {
-                if (frag > row[px] + kDepthTolerance) return true;
+                if (frag > row[px - vx0] + kDepthTolerance) return true;
             }
         }
     }
@@ -323,18 +334,14 @@ bool FastCpuOracle::rasterizeInOneTile(const Setup& s, std::size_t tile, FastCpu
 void FastCpuOracle::draw(uint32_t primitive) {
     assert(primitive < primitives_.size());
     ++stats_.draws;
-    const PrimitiveRange range = primitives_[primitive];
-    const uint32_t first = first_setup_[range.first_triangle];
-    const uint32_t last = first_setup_[range.first_triangle + range.triangle_count];
+    const uint32_t first = primitive_setups_[primitive], last = primitive_setups_[primitive + 1];
     for (uint32_t i = first; i < last; ++i) rasterize<true>(setups_[i], 0, int32_t(tiles_y_), stats_);
 }
 
 bool FastCpuOracle::anyBehind(uint32_t primitive) {
     assert(primitive < primitives_.size());
     ++stats_.queries;
-    const PrimitiveRange range = primitives_[primitive];
-    const uint32_t first = first_setup_[range.first_triangle];
-    const uint32_t last = first_setup_[range.first_triangle + range.triangle_count];
+    const uint32_t first = primitive_setups_[primitive], last = primitive_setups_[primitive + 1];
     for (uint32_t i = first; i < last; ++i)
         if (rasterize<false>(setups_[i], 0, int32_t(tiles_y_), stats_)) return true;
     return false;
@@ -413,9 +420,8 @@ void FastCpuOracle::backToFrontPass(std::span<const uint32_t> sequence,
         int32_t first_row, last_row;
         bandRows(b, bands, first_row, last_row);
         for (std::size_t i = sequence.size(); i-- > 0;) {
-            const PrimitiveRange range = primitives_[sequence[i]];
-            const uint32_t first = first_setup_[range.first_triangle];
-            const uint32_t last = first_setup_[range.first_triangle + range.triangle_count];
+            const uint32_t first = primitive_setups_[sequence[i]];
+            const uint32_t last = primitive_setups_[sequence[i] + 1];
             if (query[i]) {
                 std::atomic_ref<uint8_t> answer(behind[i]);
                 if (answer.load(std::memory_order_relaxed) == 0)
@@ -450,18 +456,16 @@ void FastCpuOracle::queryAgainst(std::span<const uint32_t> occluders,
         bandRows(b, bands, first_row, last_row);
         for (uint32_t p : occluders) {
             assert(p < primitives_.size());
-            const PrimitiveRange range = primitives_[p];
-            const uint32_t last = first_setup_[range.first_triangle + range.triangle_count];
-            for (uint32_t k = first_setup_[range.first_triangle]; k < last; ++k)
+            const uint32_t last = primitive_setups_[p + 1];
+            for (uint32_t k = primitive_setups_[p]; k < last; ++k)
                 rasterize<true>(setups_[k], first_row, last_row, stats);
         }
         for (std::size_t i = 0; i < targets.size(); ++i) {
             assert(targets[i] < primitives_.size());
             std::atomic_ref<uint8_t> answer(behind[i]);
             if (answer.load(std::memory_order_relaxed) != 0) continue;
-            const PrimitiveRange range = primitives_[targets[i]];
-            const uint32_t last = first_setup_[range.first_triangle + range.triangle_count];
-            for (uint32_t k = first_setup_[range.first_triangle]; k < last; ++k)
+            const uint32_t last = primitive_setups_[targets[i] + 1];
+            for (uint32_t k = primitive_setups_[targets[i]]; k < last; ++k)
                 if (rasterize<false>(setups_[k], first_row, last_row, stats)) {
                     answer.store(1, std::memory_order_relaxed);
                     break;

@@ -26,7 +26,7 @@ void drawTileScalar(const TileWalk& w, TileDraw& out) {
     int64_t edge_row[3] = {w.edge[0], w.edge[1], w.edge[2]};
     for (int32_t r = 0; r < w.rows; ++r) {
         const double row_term = w.ddy * ((double(w.y0 + r) + 0.5) - w.y0_plane);
-        float* row = w.origin + std::size_t(r) * w.stride;
+        float* row = w.origin + std::size_t(r) * kTileRowFloats;
         int64_t e0 = edge_row[0], e1 = edge_row[1], e2 = edge_row[2];
         for (int32_t k = w.lane_first; k <= w.lane_last; ++k) {
             const bool covered = w.all_covered || ((e0 > 0) & (e1 > 0) & (e2 > 0));
@@ -52,7 +52,7 @@ bool queryTileScalar(const TileWalk& w) {
     int64_t edge_row[3] = {w.edge[0], w.edge[1], w.edge[2]};
     for (int32_t r = 0; r < w.rows; ++r) {
         const double row_term = w.ddy * ((double(w.y0 + r) + 0.5) - w.y0_plane);
-        const float* row = w.origin + std::size_t(r) * w.stride;
+        const float* row = w.origin + std::size_t(r) * kTileRowFloats;
         int64_t e0 = edge_row[0], e1 = edge_row[1], e2 = edge_row[2];
         for (int32_t k = w.lane_first; k <= w.lane_last; ++k) {
             const bool covered = w.all_covered || ((e0 > 0) & (e1 > 0) & (e2 > 0));

@@ -13,14 +13,18 @@
 
 namespace vissort::detail {
 
+/// Depths are stored a tile at a time: a tile's rows of kTileRowFloats floats follow each other
+/// (a tile at the viewport's right or bottom edge is padded to full size; its padding is never
+/// walked, so it keeps whatever a clear wrote). Why: a tile then spans 4 cache lines of one page,
+/// where a row-major buffer put each of its rows on a different page.
+constexpr int32_t kTileRowFloats = 8;
+
 /// The pixels of one tile that a fan triangle's bounding box overlaps. Lane k is column vx0 + k.
 struct TileWalk {
     float* origin;           // depth of pixel (vx0, y0): the tile's first column, first row walked
-    std::size_t stride;      // floats per depth buffer row
     int32_t vx0, y0;         // column of lane 0; first row walked
-    int32_t lane_first;      // walked lanes [lane_first, lane_last], within [0, lanes)
+    int32_t lane_first;      // walked lanes [lane_first, lane_last], within the viewport
     int32_t lane_last;
-    int32_t lanes;           // columns of the tile inside the viewport: 8, less at the right edge
     int32_t rows;            // rows walked, y0 .. y0 + rows - 1
     bool all_covered;        // every walked pixel is inside all three edges: no edge tests
     int64_t edge[3];         // E_e + bias_e at pixel (vx0 + lane_first, y0)

@@ -6,8 +6,8 @@
 //    the same order as the reference; _mm256_cvtpd_ps rounds to float by MXCSR, to nearest, as the
 //    scalar conversion does. No FMA: the functions target AVX2 only, and the file is compiled with
 //    -ffp-contract=off.
-//  - Depth test: masked float compare, blend and store; columns past the viewport's right edge
-//    (a partial tile) are never read or written (masked load and store).
+//  - Depth test: float compare, blend and store of a whole tile row; lanes not walked (outside the
+//    bounding box, or the padding of a tile at the viewport's edge) are stored back unchanged.
 // Only the functions below carry the AVX2 target, and they call nothing outside this file but
 // intrinsics, so no AVX2 code can be shared with (or picked by the linker for) portable callers.
 
@@ -103,22 +103,17 @@ VISSORT_AVX2 inline float horizontalMax(__m256 v) {
 VISSORT_AVX2 void drawTileAvx2(const TileWalk& w, TileDraw& out) {
     Avx2Row a;
     start(w, a);
-    const bool partial = w.lanes < 8;
     const __m256 infinity = _mm256_set1_ps(std::numeric_limits<float>::infinity());
     const __m256 minus_infinity = _mm256_set1_ps(-std::numeric_limits<float>::infinity());
     __m256 written_min = infinity, stored_max = minus_infinity;
     float* row = w.origin;
-    for (int32_t r = 0; r < w.rows; ++r, row += w.stride) {
+    for (int32_t r = 0; r < w.rows; ++r, row += kTileRowFloats) {
         const __m256 covered = coverage(w, a);
         const __m256 frag = fragments(w, a, r);
-        // Lanes past the viewport are outside lanes_walked, so never read or written.
-        const __m256 stored = partial ? _mm256_maskload_ps(row, a.lanes_walked) : _mm256_loadu_ps(row);
+        const __m256 stored = _mm256_loadu_ps(row);
         const __m256 pass = _mm256_and_ps(_mm256_cmp_ps(frag, stored, _CMP_LT_OQ), covered);
         const __m256 now = _mm256_blendv_ps(stored, frag, pass);
-        if (partial)
-            _mm256_maskstore_ps(row, _mm256_castps_si256(pass), frag);
-        else
-            _mm256_storeu_ps(row, now);
+        _mm256_storeu_ps(row, now);
         written_min = _mm256_min_ps(written_min, _mm256_blendv_ps(infinity, frag, pass));
         stored_max = _mm256_max_ps(stored_max, _mm256_blendv_ps(minus_infinity, now, covered));
     }
@@ -128,13 +123,12 @@ VISSORT_AVX2 void drawTileAvx2(const TileWalk& w, TileDraw& out) {
 VISSORT_AVX2 bool queryTileAvx2(const TileWalk& w) {
     Avx2Row a;
     start(w, a);
-    const bool partial = w.lanes < 8;
     const __m256 tolerance = _mm256_set1_ps(kDepthTolerance);
     const float* row = w.origin;
-    for (int32_t r = 0; r < w.rows; ++r, row += w.stride) {
+    for (int32_t r = 0; r < w.rows; ++r, row += kTileRowFloats) {
         const __m256 covered = coverage(w, a);
         const __m256 frag = fragments(w, a, r);
-        const __m256 stored = partial ? _mm256_maskload_ps(row, a.lanes_walked) : _mm256_loadu_ps(row);
+        const __m256 stored = _mm256_loadu_ps(row);
         const __m256 behind =
             _mm256_and_ps(_mm256_cmp_ps(frag, _mm256_add_ps(stored, tolerance), _CMP_GT_OQ), covered);
         if (_mm256_movemask_ps(behind) != 0) return true;
