@@ -57,6 +57,11 @@ private:
     void sortPrimitives(const TrianglePositions& positions, const ViewProjection& view,
                         std::span<const PrimitiveRange> primitives,
                         std::span<const uint32_t> previous_order, VisibilityOrder& into);
+    /// Vis-sort of primitives from the list `start` (a permutation of their indices), with the
+    /// oracle bound to them in that order and the answer mapped back to indices of primitives.
+    void sortFrom(const TrianglePositions& positions, const ViewProjection& view,
+                  std::span<const PrimitiveRange> primitives, std::span<const uint32_t> start,
+                  VisibilityOrder& into);
 
     const Scene& scene_;
     OrderLevel level_;
@@ -69,6 +74,8 @@ private:
     VisibilityOrder sorted_, group_sorted_;
     std::vector<PrimitiveRange> group_;
     std::vector<uint32_t> group_start_;
+    std::vector<PrimitiveRange> bound_;      // primitives in start order, as bound
+    std::vector<uint32_t> identity_;         // 0..n-1: the start list of the bound primitives
 };
 
 } // namespace vissort

@@ -51,13 +51,35 @@ SceneOrderer::SceneOrderer(const Scene& scene, OrderLevel level, GeometryOracle&
 void SceneOrderer::sortPrimitives(const TrianglePositions& positions, const ViewProjection& view,
                                   std::span<const PrimitiveRange> primitives,
                                   std::span<const uint32_t> previous_order, VisibilityOrder& into) {
-    oracle_.bind(positions, view, primitives);
     if (previous_order.size() == primitives.size()) {
-        visSort(oracle_, previous_order, into, workspace_);
+        sortFrom(positions, view, primitives, previous_order, into);
         return;
     }
     const std::vector<uint32_t> start = depthKeyOrder(positions, view, primitives);
-    visSort(oracle_, start, into, workspace_);
+    sortFrom(positions, view, primitives, start, into);
+}
+
+// Why bind in start order: Vis-sort visits primitives in list order, the list stays close to the
+// start (coherence), and a fast oracle lays out each primitive's set-up in bind order, so the
+// visits read memory forward instead of jumping across megabytes of set-ups. The relabelling
+// changes nothing else: Vis-sort depends on list positions and answers, never on id values.
+void SceneOrderer::sortFrom(const TrianglePositions& positions, const ViewProjection& view,
+                            std::span<const PrimitiveRange> primitives,
+                            std::span<const uint32_t> start, VisibilityOrder& into) {
+    const std::size_t n = primitives.size();
+    bound_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) bound_[i] = primitives[start[i]];
+    if (identity_.size() != n) {
+        identity_.resize(n);
+        std::iota(identity_.begin(), identity_.end(), 0u);
+    }
+    oracle_.bind(positions, view, bound_);
+    visSort(oracle_, identity_, into, workspace_);
+    for (uint32_t& p : into.order) p = start[p];
+    for (std::vector<uint32_t>& cycle : into.cycles) {
+        for (uint32_t& p : cycle) p = start[p];
+        std::sort(cycle.begin(), cycle.end());
+    }
 }
 
 FrameOrder SceneOrderer::orderFrame(const TrianglePositions& positions, const ViewProjection& view) {
@@ -113,7 +135,6 @@ FrameOrder SceneOrderer::orderMultistage(const TrianglePositions& positions,
             for (uint32_t t = 0; t < object.triangle_count; ++t)
                 group.push_back({object.first_triangle + t, 1});
         }
-        oracle_.bind(positions, view, group);
         if (have_ranks) {
             // Coherence: the group's triangles in last frame's order.
             group_start.resize(group.size());
@@ -126,7 +147,7 @@ FrameOrder SceneOrderer::orderMultistage(const TrianglePositions& positions,
             group_start = depthKeyOrder(positions, view, group);
         }
         VisibilityOrder& triangles = group_sorted_;
-        visSort(oracle_, group_start, triangles, workspace_);
+        sortFrom(positions, view, group, group_start, triangles);
         addStats(frame.stats, triangles.stats);
         for (uint32_t local : triangles.order) {
             rank[group[local].first_triangle] = uint32_t(frame.order.size());
