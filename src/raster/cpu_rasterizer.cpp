@@ -26,7 +26,16 @@ ScreenVertex toScreen(const ClipVertex& v, uint32_t width, uint32_t height) {
             v.z / v.w};
 }
 
-int64_t snapToFixed(double v) { return std::llround(v * double(kSubpixelScale)); }
+// std::llround (half away from zero), without the library call that cost 1.6% of a bunnies
+// frame: callers keep |v| * kSubpixelScale within kMaxSnapped, far inside int64_t, so the
+// truncation is exact and so is the fraction left (a double minus its integer part).
+int64_t snapToFixed(double v) {
+    const double scaled = v * double(kSubpixelScale);
+    int64_t whole = int64_t(scaled);
+    const double fraction = scaled - double(whole);
+    whole += int64_t(fraction >= 0.5) - int64_t(fraction <= -0.5);
+    return whole;
+}
 
 namespace {
 

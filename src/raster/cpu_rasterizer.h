@@ -75,7 +75,8 @@ struct TriangleSetup {
 /// sy = (1 - y / w) * 0.5 * height, d = z / w.
 ScreenVertex toScreen(const ClipVertex& v, uint32_t width, uint32_t height);
 
-/// Round to nearest (halves away from zero) in 24.8 fixed point: llround(v * 256).
+/// Round to nearest (halves away from zero) in 24.8 fixed point: llround(v * 256). |v * 256|
+/// must be at most kMaxSnapped (setupTriangle checks before snapping).
 int64_t snapToFixed(double v);
 
 /// Snaps, orients and sets up one screen triangle. Returns false when it can cover no pixel

@@ -25,6 +25,14 @@ double signedDistance(const ClipVertex& v, Plane plane) {
     return 0;
 }
 
+// signedDistance(v, plane) >= 0 for all six planes, the same expressions without the branches
+// (the test runs for every triangle of every bind).
+bool insideAllPlanes(const ClipVertex& v) {
+    const double guard = kGuardBand * v.w;
+    return (v.z >= 0) & (v.w - v.z >= 0) & (guard + v.x >= 0) & (guard - v.x >= 0) &
+           (guard + v.y >= 0) & (guard - v.y >= 0);
+}
+
 bool lexicographicallyLess(const ClipVertex& a, const ClipVertex& b) {
     if (a.x != b.x) return a.x < b.x;
     if (a.y != b.y) return a.y < b.y;
@@ -80,12 +88,7 @@ int clipTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, 
     out[2] = c;
     // Most triangles lie inside every plane: each pass below would then keep the three vertices
     // as they are, in order, so the result is the same without the passes.
-    bool inside_all = true;
-    for (Plane plane : {Plane::near, Plane::far, Plane::left, Plane::right, Plane::bottom,
-                        Plane::top})
-        inside_all = inside_all && signedDistance(a, plane) >= 0 &&
-                     signedDistance(b, plane) >= 0 && signedDistance(c, plane) >= 0;
-    if (inside_all) return a.w > 0 && b.w > 0 && c.w > 0 ? 3 : 0;
+    if (insideAllPlanes(a) & insideAllPlanes(b) & insideAllPlanes(c)) return a.w > 0 && b.w > 0 && c.w > 0 ? 3 : 0;
     Polygon scratch;
     int count = 3;
     // Ping-pong between out and scratch; six planes, so the result ends up back in out.

@@ -395,5 +395,22 @@ TEST(CpuRasterizer, VisitCanStopEarly) {
     EXPECT_EQ(visits, 5);
 }
 
+// snapToFixed is llround(v * 256) done inline: the same integers on halves (both signs), values
+// next to halves, zero, the limits and random values over the whole allowed range.
+TEST(CpuRasterizer, SnapToFixedRoundsLikeLlround) {
+    const double limit = double(detail::kMaxSnapped) / double(detail::kSubpixelScale);
+    std::vector<double> values = {0.0, -0.0, limit, -limit, 1.0 / 512, -1.0 / 512, 3.0 / 512,
+                                  -3.0 / 512, 1000.5 / 256, -1000.5 / 256};
+    for (double half : {0.5, 1.5, 2.5, 12345.5, -0.5, -1.5, -2.5, -12345.5}) {
+        const double v = half / 256;
+        values.insert(values.end(), {v, std::nextafter(v, 0.0), std::nextafter(v, 2 * v)});
+    }
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> any(-limit, limit), small(-4, 4);
+    for (int i = 0; i < 100000; ++i) values.push_back(i % 2 ? any(rng) : small(rng));
+    for (double v : values)
+        ASSERT_EQ(detail::snapToFixed(v), std::llround(v * double(detail::kSubpixelScale))) << v;
+}
+
 } // namespace
 } // namespace vissort
