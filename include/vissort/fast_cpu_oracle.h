@@ -167,9 +167,11 @@ private:
     // or in depthBuffer(), which is why these are mutable: the logical contents never change).
     mutable std::vector<float> depth_;      // tile by tile (fast_rows.h), padded to whole tiles
     mutable std::vector<float> row_major_;  // depthBuffer()'s copy
-    // Per tile: tile_min_ is the least stored depth (exact); tile_max_ is an upper bound on every
-    // stored depth (exact after clear and after a draw that covers the whole tile, otherwise left
-    // as it was: stored depths only decrease, so it stays an upper bound).
+    // Per tile: tile_min_ is a lower bound on every stored depth (exact after a depth-tested
+    // draw; after a draw whose fragments all pass, the float below that draw's depth bounds);
+    // tile_max_ is an upper bound on every stored depth (exact after clear and after a depth-
+    // tested draw that covers the whole tile, the float above the depth bounds after a passing
+    // draw that covers it, otherwise left as it was: stored depths only decrease).
     mutable std::vector<float> tile_min_, tile_max_;
     mutable std::vector<uint64_t> tile_epoch_;
     uint64_t epoch_ = 1;
@@ -179,6 +181,7 @@ private:
     // The per-tile pixel walk (src/raster/fast_rows.h): AVX2 or scalar, chosen at construction.
     void (*draw_tile_)(const detail::TileWalk&, detail::TileDraw&) = nullptr;
     bool (*query_tile_)(const detail::TileWalk&) = nullptr;
+    void (*fill_tile_)(const detail::TileWalk&) = nullptr;
     uint32_t threads_ = 1;
     uint32_t parallel_threshold_ = 0;
     std::unique_ptr<detail::FastWorkerPool> pool_;  // started on the first parallel pass

@@ -46,6 +46,16 @@ constexpr std::size_t kTilePixels = std::size_t(detail::kTileRowFloats) * detail
 // with a wide safety factor on the 4 roundings it takes).
 constexpr double kDepthMargin = 0x1p-48;
 
+// The greatest float <= v and the least float >= v (v finite).
+float floatBelow(double v) {
+    const float f = float(v);
+    return double(f) > v ? std::nextafter(f, -kInfinity) : f;
+}
+float floatAbove(double v) {
+    const float f = float(v);
+    return double(f) < v ? std::nextafter(f, kInfinity) : f;
+}
+
 } // namespace
 
 FastCpuOracle::FastCpuOracle() : FastCpuOracle(Options{}) {}
@@ -57,6 +67,7 @@ FastCpuOracle::FastCpuOracle(const Options& options) {
     const detail::RowKernels kernels = detail::selectRowKernels(allow_simd, use_simd_);
     draw_tile_ = kernels.draw;
     query_tile_ = kernels.query;
+    fill_tile_ = kernels.fill;
     threads_ = options.threads;
     if (threads_ == 0) {
         const char* env = std::getenv("VISSORT_THREADS");
@@ -241,16 +252,17 @@ bool FastCpuOracle::rasterize(const Setup& s, int32_t ty_begin, int32_t ty_end,
                 highest = s.d0 + std::max(ax0, ax1) + std::max(by0, by1) + margin;
             };
             double lowest, highest;
+            bool all_pass = false;
             if constexpr (kDraw) {
-                // Every fragment >= tile_max_ >= every stored depth: none passes LESS. A tile with
-                // no finite bound (the common case back to front) is not worth the bounds.
-                if (tile_max_[tile] != kInfinity) {
-                    depthBounds(lowest, highest);
-                    if (lowest >= double(tile_max_[tile])) {
-                        ++stats.tiles_culled;
-                        continue;
-                    }
+                depthBounds(lowest, highest);
+                // Every fragment >= tile_max_ >= every stored depth: none passes LESS.
+                if (lowest >= double(tile_max_[tile])) {
+                    ++stats.tiles_culled;
+                    continue;
                 }
+                // Every fragment < the float below tile_min_ (so, rounded, < tile_min_ <= every
+                // stored depth): all pass, no depth test needed (the common case back to front).
+                all_pass = highest < double(std::nextafter(tile_min_[tile], -kInfinity));
             } else {
                 depthBounds(lowest, highest);
                 // Every fragment <= tile_min_ + tolerance <= stored + tolerance: none behind.
@@ -277,6 +289,14 @@ bool FastCpuOracle::rasterize(const Setup& s, int32_t ty_begin, int32_t ty_end,
             walk.all_covered = inside_all;
             for (int e = 0; e < 3; ++e) walk.edge[e] = edge_row[e];
             if constexpr (kDraw) {
+                if (all_pass) {
+                    fill_tile_(walk);
+                    // Bounds from the depth bounds instead of the pixels: every fragment written
+                    // lies in [lowest, highest], rounded outward to floats.
+                    tile_min_[tile] = std::min(tile_min_[tile], floatBelow(lowest));
+                    if (full_tile) tile_max_[tile] = floatAbove(highest);
+                    continue;
+                }
                 detail::TileDraw result;
                 draw_tile_(walk, result);
                 tile_min_[tile] = std::min(tile_min_[tile], result.written_min);

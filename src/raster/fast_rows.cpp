@@ -46,6 +46,25 @@ void drawTileScalar(const TileWalk& w, TileDraw& out) {
     out = {written_min, stored_max};
 }
 
+void fillTileScalar(const TileWalk& w) {
+    double column[8];
+    columnTerms(w, column);
+    int64_t edge_row[3] = {w.edge[0], w.edge[1], w.edge[2]};
+    for (int32_t r = 0; r < w.rows; ++r) {
+        const double row_term = w.ddy * ((double(w.y0 + r) + 0.5) - w.y0_plane);
+        float* row = w.origin + std::size_t(r) * kTileRowFloats;
+        int64_t e0 = edge_row[0], e1 = edge_row[1], e2 = edge_row[2];
+        for (int32_t k = w.lane_first; k <= w.lane_last; ++k) {
+            const bool covered = w.all_covered || ((e0 > 0) & (e1 > 0) & (e2 > 0));
+            e0 += w.step_x[0];
+            e1 += w.step_x[1];
+            e2 += w.step_x[2];
+            if (covered) row[k] = float(column[k] + row_term);
+        }
+        for (int e = 0; e < 3; ++e) edge_row[e] += w.step_y[e];
+    }
+}
+
 bool queryTileScalar(const TileWalk& w) {
     double column[8];
     columnTerms(w, column);
@@ -77,16 +96,17 @@ bool cpuHasAvx2() {
 
 } // namespace
 
-RowKernels scalarRowKernels() { return {drawTileScalar, queryTileScalar}; }
+RowKernels scalarRowKernels() { return {drawTileScalar, queryTileScalar, fillTileScalar}; }
 
 RowKernels selectRowKernels(bool allow_simd, bool& uses_simd) {
     uses_simd = false;
     if (!allow_simd || !cpuHasAvx2()) return scalarRowKernels();
     const DrawTileFn draw = avx2DrawTile();
     const QueryTileFn query = avx2QueryTile();
-    if (draw == nullptr || query == nullptr) return scalarRowKernels();
+    const FillTileFn fill = avx2FillTile();
+    if (draw == nullptr || query == nullptr || fill == nullptr) return scalarRowKernels();
     uses_simd = true;
-    return {draw, query};
+    return {draw, query, fill};
 }
 
 } // namespace vissort::detail

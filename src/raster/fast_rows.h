@@ -43,10 +43,14 @@ struct TileDraw {
 using DrawTileFn = void (*)(const TileWalk& walk, TileDraw& out);
 /// True when some covered pixel's fragment exceeds the stored depth + kDepthTolerance.
 using QueryTileFn = bool (*)(const TileWalk& walk);
+/// Draws the covered pixels when the caller has shown that every fragment passes LESS (all lie
+/// before the tile's least stored depth): the same stores as DrawTileFn, without the depth test.
+using FillTileFn = void (*)(const TileWalk& walk);
 
 struct RowKernels {
     DrawTileFn draw;
     QueryTileFn query;
+    FillTileFn fill;
 };
 
 /// The portable loops.
@@ -58,5 +62,6 @@ RowKernels selectRowKernels(bool allow_simd, bool& uses_simd);
 /// compiler or the target cannot build them.
 DrawTileFn avx2DrawTile();
 QueryTileFn avx2QueryTile();
+FillTileFn avx2FillTile();
 
 } // namespace vissort::detail

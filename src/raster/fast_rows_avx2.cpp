@@ -120,6 +120,21 @@ VISSORT_AVX2 void drawTileAvx2(const TileWalk& w, TileDraw& out) {
     out = {horizontalMin(written_min), horizontalMax(stored_max)};
 }
 
+VISSORT_AVX2 void fillTileAvx2(const TileWalk& w) {
+    Avx2Row a;
+    start(w, a);
+    const bool whole_rows = w.all_covered && w.lane_first == 0 && w.lane_last == 7;
+    float* row = w.origin;
+    for (int32_t r = 0; r < w.rows; ++r, row += kTileRowFloats) {
+        const __m256 covered = coverage(w, a);
+        const __m256 frag = fragments(w, a, r);
+        if (whole_rows)
+            _mm256_storeu_ps(row, frag);
+        else
+            _mm256_storeu_ps(row, _mm256_blendv_ps(_mm256_loadu_ps(row), frag, covered));
+    }
+}
+
 VISSORT_AVX2 bool queryTileAvx2(const TileWalk& w) {
     Avx2Row a;
     start(w, a);
@@ -140,6 +155,7 @@ VISSORT_AVX2 bool queryTileAvx2(const TileWalk& w) {
 
 DrawTileFn avx2DrawTile() { return drawTileAvx2; }
 QueryTileFn avx2QueryTile() { return queryTileAvx2; }
+FillTileFn avx2FillTile() { return fillTileAvx2; }
 
 } // namespace vissort::detail
 
@@ -148,6 +164,7 @@ QueryTileFn avx2QueryTile() { return queryTileAvx2; }
 namespace vissort::detail {
 DrawTileFn avx2DrawTile() { return nullptr; }
 QueryTileFn avx2QueryTile() { return nullptr; }
+FillTileFn avx2FillTile() { return nullptr; }
 } // namespace vissort::detail
 
 #endif
