@@ -1,7 +1,8 @@
 // The AVX2 per-tile walk of FastCpuOracle (fast_rows.h): a row of 8 pixels per step, bit for bit
 // the scalar loop's results.
-//  - Edge tests: the three int64_t edge functions of 8 lanes in two 4-lane halves, compared with
-//    _mm256_cmpgt_epi64 (exact, as in the reference); the 64-bit masks are packed to 8 x 32 bits.
+//  - Edge tests: the three edge functions of 8 lanes as 8 x int32_t when every walked value fits
+//    (exact; almost always), else as int64_t in two 4-lane halves compared with
+//    _mm256_cmpgt_epi64 (exact, as in the reference), the masks packed to 8 x 32 bits.
 //  - Depth: per lane, in double, (d0 + ddx ((px + 0.5) - x0)) + row_term, the same operations in
 //    the same order as the reference; _mm256_cvtpd_ps rounds to float by MXCSR, to nearest, as the
 //    scalar conversion does. No FMA: the functions target AVX2 only, and the file is compiled with
@@ -17,6 +18,7 @@
 
 #include <immintrin.h>
 
+#include <cstdint>
 #include <limits>
 
 #include "vissort/geometry_oracle.h"
@@ -30,8 +32,23 @@ struct Avx2Row {
     __m256d column_lo, column_hi;  // d0 + ddx ((px + 0.5) - x0) of lanes 0-3 and 4-7
     __m256i edge_lo[3], edge_hi[3];  // E_e + bias_e of lanes 0-3 and 4-7, current row
     __m256i step_y[3];
+    // When every walked value of every edge fits in int32_t (almost always: a tile is 8 pixels
+    // and a crossing edge is near zero there), the same tests on 8 x 32-bit lanes. Lanes and rows
+    // not walked may wrap around; wrapping is arithmetic modulo 2^32, so the walked values are
+    // exact, and the others are masked out.
+    bool narrow;
+    __m256i edge32[3], step_y32[3];
     __m256i lanes_walked;  // 32-bit lanes: all ones on [lane_first, lane_last]
 };
+
+// Does every walked value of edge e fit in int32_t? Bounded by its value at the first walked
+// pixel plus the steps to the farthest one (no overflow: steps are below 2^40).
+inline bool fitsInt32(const TileWalk& w, int e) {
+    const auto magnitude = [](int64_t v) { return v < 0 ? -v : v; };
+    const int64_t reach = magnitude(w.edge[e]) + int64_t(w.lane_last - w.lane_first) * magnitude(w.step_x[e]) +
+                          int64_t(w.rows - 1) * magnitude(w.step_y[e]);
+    return reach <= INT32_MAX;
+}
 
 VISSORT_AVX2 inline void start(const TileWalk& w, Avx2Row& a) {
     const __m256d half = _mm256_set1_pd(0.5);
@@ -42,16 +59,26 @@ VISSORT_AVX2 inline void start(const TileWalk& w, Avx2Row& a) {
     const __m256d px_hi = _mm256_add_pd(px_lo, _mm256_set1_pd(4.0));  // exact: small integers
     a.column_lo = _mm256_add_pd(d0, _mm256_mul_pd(ddx, _mm256_sub_pd(_mm256_add_pd(px_lo, half), x0)));
     a.column_hi = _mm256_add_pd(d0, _mm256_mul_pd(ddx, _mm256_sub_pd(_mm256_add_pd(px_hi, half), x0)));
-    for (int e = 0; e < 3; ++e) {
-        const int64_t s = w.step_x[e];
-        // E at lane 0: exact, as every lane's value is (the walked lanes are the scalar loop's).
-        const int64_t lane0 = w.edge[e] - int64_t(w.lane_first) * s;
-        const __m256i base = _mm256_set1_epi64x(lane0);
-        a.edge_lo[e] = _mm256_add_epi64(base, _mm256_setr_epi64x(0, s, 2 * s, 3 * s));
-        a.edge_hi[e] = _mm256_add_epi64(base, _mm256_setr_epi64x(4 * s, 5 * s, 6 * s, 7 * s));
-        a.step_y[e] = _mm256_set1_epi64x(w.step_y[e]);
-    }
     const __m256i index = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    a.narrow = !w.all_covered && fitsInt32(w, 0) && fitsInt32(w, 1) && fitsInt32(w, 2);
+    if (!w.all_covered)
+        for (int e = 0; e < 3; ++e) {
+            const int64_t s = w.step_x[e];
+            // E at lane 0: exact, as every lane's value is (the walked lanes are the scalar loop's).
+            const int64_t lane0 = w.edge[e] - int64_t(w.lane_first) * s;
+            if (a.narrow) {
+                // lane0 + k s modulo 2^32, from both truncated to 32 bits.
+                const __m256i s32 = _mm256_set1_epi32(int32_t(uint32_t(uint64_t(s))));
+                a.edge32[e] = _mm256_add_epi32(_mm256_set1_epi32(int32_t(uint32_t(uint64_t(lane0)))),
+                                               _mm256_mullo_epi32(index, s32));
+                a.step_y32[e] = _mm256_set1_epi32(int32_t(uint32_t(uint64_t(w.step_y[e]))));
+            } else {
+                const __m256i base = _mm256_set1_epi64x(lane0);
+                a.edge_lo[e] = _mm256_add_epi64(base, _mm256_setr_epi64x(0, s, 2 * s, 3 * s));
+                a.edge_hi[e] = _mm256_add_epi64(base, _mm256_setr_epi64x(4 * s, 5 * s, 6 * s, 7 * s));
+                a.step_y[e] = _mm256_set1_epi64x(w.step_y[e]);
+            }
+        }
     a.lanes_walked = _mm256_and_si256(_mm256_cmpgt_epi32(index, _mm256_set1_epi32(w.lane_first - 1)),
                                       _mm256_cmpgt_epi32(_mm256_set1_epi32(w.lane_last + 1), index));
 }
@@ -60,6 +87,13 @@ VISSORT_AVX2 inline void start(const TileWalk& w, Avx2Row& a) {
 VISSORT_AVX2 inline __m256 coverage(const TileWalk& w, Avx2Row& a) {
     if (w.all_covered) return _mm256_castsi256_ps(a.lanes_walked);
     const __m256i zero = _mm256_setzero_si256();
+    if (a.narrow) {
+        __m256i in = _mm256_and_si256(_mm256_cmpgt_epi32(a.edge32[0], zero),
+                                      _mm256_cmpgt_epi32(a.edge32[1], zero));
+        in = _mm256_and_si256(in, _mm256_cmpgt_epi32(a.edge32[2], zero));
+        for (int e = 0; e < 3; ++e) a.edge32[e] = _mm256_add_epi32(a.edge32[e], a.step_y32[e]);
+        return _mm256_castsi256_ps(_mm256_and_si256(in, a.lanes_walked));
+    }
     __m256i lo = _mm256_cmpgt_epi64(a.edge_lo[0], zero);
     __m256i hi = _mm256_cmpgt_epi64(a.edge_hi[0], zero);
     lo = _mm256_and_si256(lo, _mm256_cmpgt_epi64(a.edge_lo[1], zero));
