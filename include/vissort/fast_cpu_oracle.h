@@ -16,8 +16,14 @@
 //  - backToFrontPass and queryAgainst can split the tile rows into screen bands (one per thread,
 //    claimed in turn): each band runs the whole sequence on its own tiles, and the answers are
 //    OR-ed across bands. Off by default (FastCpuOracleOptions::threads).
+// Conservative mode (FastCpuOracleOptions::mode, for collision culling) matches
+// CpuOracle(RasterMode::conservative) the same way: each edge's bias grows to its rise over half a
+// pixel, the pixel range to every square the snapped bounding box touches, and each fragment
+// moves by the plane's spread over the pixel (nearer for draws, farther for queries) before it is
+// rounded; the tile shortcuts then hold unchanged.
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -39,6 +45,9 @@ struct FastCpuOracleStats {
 
 /// How FastCpuOracle may use the machine. The answers and the depth buffer never depend on it.
 struct FastCpuOracleOptions {
+    /// Exact or conservative sampling, with CpuOracle's rules for each (cpu_oracle.h): the same
+    /// answers and depth buffer as CpuOracle(mode).
+    RasterMode mode = RasterMode::exact;
     /// Walk rows 8 pixels at a time with AVX2 when the CPU supports it (checked once). The
     /// environment variable VISSORT_SIMD=0 also turns it off (for benchmarks of the fallback).
     bool allow_simd = true;
@@ -125,6 +134,17 @@ private:
         int32_t px_min, px_max, py_min, py_max;  // inclusive, clamped to the viewport
     };
 
+    /// Conservative mode: how far the plane moves within half a pixel on each axis, computed as
+    /// the reference does (|ddx| / 2 + |ddy| / 2). Exact mode: 0.
+    double spreadOf(const Setup& s) const {
+        return conservative_ ? std::abs(s.ddx) * 0.5 + std::abs(s.ddy) * 0.5 : 0.0;
+    }
+    /// What a draw (nearest depth over the pixel) or a query (farthest) adds to each fragment's
+    /// double value before rounding; -0.0 in exact mode, which changes no value (fast_rows.h).
+    template <bool kDraw>
+    double fragmentOffset(double spread) const {
+        return conservative_ ? (kDraw ? -spread : spread) : -0.0;
+    }
     /// Walks the tiles of s in tile rows [ty_begin, ty_end); counts into stats.
     template <bool kDraw>
     bool rasterize(const Setup& s, int32_t ty_begin, int32_t ty_end, FastCpuOracleStats& stats);
@@ -177,6 +197,7 @@ private:
     uint64_t epoch_ = 1;
     FastCpuOracleStats stats_;
 
+    bool conservative_ = false;
     bool use_simd_ = false;
     // The per-tile pixel walk (src/raster/fast_rows.h): AVX2 or scalar, chosen at construction.
     void (*draw_tile_)(const detail::TileWalk&, detail::TileDraw&) = nullptr;

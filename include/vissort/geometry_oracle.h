@@ -49,7 +49,9 @@ enum class OracleKind {
 bool parseOracleKind(const std::string& name, OracleKind& kind);
 const char* oracleName(OracleKind kind);
 
-std::unique_ptr<GeometryOracle> makeOracle(OracleKind kind);
+/// The oracle of that kind sampling in that mode. The exact oracle ray-casts pixel centres and
+/// has no conservative mode: asking for one throws std::invalid_argument.
+std::unique_ptr<GeometryOracle> makeOracle(OracleKind kind, RasterMode mode = RasterMode::exact);
 
 /// The rasterizing oracles that `vissort bench oracle` compares (the exact oracle ray-casts every
 /// pixel when bound, so it is a reference, not a contender).

@@ -3,6 +3,8 @@
 #include "vissort/fast_cpu_oracle.h"
 #include "vissort/geometry_oracle.h"
 
+#include <stdexcept>
+
 namespace vissort {
 
 bool parseOracleKind(const std::string& name, OracleKind& kind) {
@@ -22,11 +24,18 @@ const char* oracleName(OracleKind kind) {
     return "?";
 }
 
-std::unique_ptr<GeometryOracle> makeOracle(OracleKind kind) {
+std::unique_ptr<GeometryOracle> makeOracle(OracleKind kind, RasterMode mode) {
     switch (kind) {
-    case OracleKind::cpu: return std::make_unique<FastCpuOracle>();
-    case OracleKind::cpu_reference: return std::make_unique<CpuOracle>();
-    case OracleKind::exact: return std::make_unique<ExactOracle>();
+    case OracleKind::cpu: {
+        FastCpuOracleOptions options;
+        options.mode = mode;
+        return std::make_unique<FastCpuOracle>(options);
+    }
+    case OracleKind::cpu_reference: return std::make_unique<CpuOracle>(mode);
+    case OracleKind::exact:
+        if (mode != RasterMode::exact)
+            throw std::invalid_argument("the exact oracle has no conservative mode (use cpu)");
+        return std::make_unique<ExactOracle>();
     }
     return nullptr;
 }

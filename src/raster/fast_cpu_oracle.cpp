@@ -60,7 +60,8 @@ float floatAbove(double v) {
 
 FastCpuOracle::FastCpuOracle() : FastCpuOracle(Options{}) {}
 
-FastCpuOracle::FastCpuOracle(const Options& options) {
+FastCpuOracle::FastCpuOracle(const Options& options)
+    : conservative_(options.mode == RasterMode::conservative) {
     bool allow_simd = options.allow_simd;
     if (const char* simd = std::getenv("VISSORT_SIMD"); simd != nullptr && std::strcmp(simd, "0") == 0)
         allow_simd = false;
@@ -133,15 +134,24 @@ void FastCpuOracle::addSetups(const TrianglePositions& positions, const detail::
     for (int i = 0; i < count; ++i) screen[i] = detail::toScreen(polygon[i], width_, height_);
     detail::TriangleSetup ts;
     for (int i = 1; i + 1 < count; ++i) {
-        if (!detail::setupTriangle(screen[0], screen[i], screen[i + 1], width_, height_, ts))
-            continue;
+        const auto& a = screen[0];
+        const auto& b = screen[i];
+        const auto& c = screen[i + 1];
+        const bool set_up = conservative_
+                                ? detail::setupConservative(a, b, c, width_, height_, ts)
+                                : detail::setupTriangle(a, b, c, width_, height_, ts);
+        if (!set_up) continue;
         Setup s;
         constexpr int64_t half = detail::kSubpixelScale / 2;
         for (int e = 0; e < 3; ++e) {
             const int j = (e + 1) % 3;
             const int64_t dx = ts.x[j] - ts.x[e], dy = ts.y[j] - ts.y[e];
+            // Conservative: covered when E + reach >= 0, reach = the edge function's rise over
+            // half a pixel on each axis (cpu_oracle.h), i.e. E + reach + 1 > 0. Below 2^39.
+            const int64_t bias =
+                conservative_ ? (std::abs(dx) + std::abs(dy)) * half + 1 : ts.bias[e];
             // E_e at the centre of pixel (0, 0), (128, 128) in 24.8 fixed point: below 2^61.
-            s.edge_at_origin[e] = dx * (half - ts.y[e]) - dy * (half - ts.x[e]) + ts.bias[e];
+            s.edge_at_origin[e] = dx * (half - ts.y[e]) - dy * (half - ts.x[e]) + bias;
             s.edge_step_x[e] = -dy * detail::kSubpixelScale;
             s.edge_step_y[e] = dx * detail::kSubpixelScale;
         }
@@ -154,6 +164,20 @@ void FastCpuOracle::addSetups(const TrianglePositions& positions, const detail::
         s.px_max = int32_t(ts.px_max);
         s.py_min = int32_t(ts.py_min);
         s.py_max = int32_t(ts.py_max);
+        if (conservative_) {
+            // Pixels whose square meets the snapped bounding box, as the reference walks them.
+            const int64_t min_x = std::min({ts.x[0], ts.x[1], ts.x[2]});
+            const int64_t max_x = std::max({ts.x[0], ts.x[1], ts.x[2]});
+            const int64_t min_y = std::min({ts.y[0], ts.y[1], ts.y[2]});
+            const int64_t max_y = std::max({ts.y[0], ts.y[1], ts.y[2]});
+            constexpr int64_t one = detail::kSubpixelScale;
+            constexpr int bits = detail::kSubpixelBits;
+            s.px_min = int32_t(std::max<int64_t>(((min_x + one - 1) >> bits) - 1, 0));
+            s.px_max = int32_t(std::min<int64_t>(max_x >> bits, int64_t(width_) - 1));
+            s.py_min = int32_t(std::max<int64_t>(((min_y + one - 1) >> bits) - 1, 0));
+            s.py_max = int32_t(std::min<int64_t>(max_y >> bits, int64_t(height_) - 1));
+            if (s.px_min > s.px_max || s.py_min > s.py_max) continue;  // off screen
+        }
         setups_.push_back(s);
     }
 }
@@ -199,6 +223,8 @@ bool FastCpuOracle::rasterize(const Setup& s, int32_t ty_begin, int32_t ty_end,
     walk.ddy = s.ddy;
     walk.x0 = s.x0;
     walk.y0_plane = s.y0;
+    const double spread = spreadOf(s);
+    walk.offset = fragmentOffset<kDraw>(spread);
     for (int32_t ty = ty_first; ty <= ty_last; ++ty) {
         // Rows of the tile within the viewport, then within the triangle's bounding box.
         const int32_t vy0 = ty << kTileShift, vy1 = std::min(vy0 + int32_t(kTileSize) - 1, last_y);
@@ -245,11 +271,12 @@ bool FastCpuOracle::rasterize(const Setup& s, int32_t ty_begin, int32_t ty_end,
                 const double ax1 = s.ddx * ((double(x1) + 0.5) - s.x0);
                 const double by0 = s.ddy * ((double(y0) + 0.5) - s.y0);
                 const double by1 = s.ddy * ((double(y1) + 0.5) - s.y0);
+                // The offset moves every fragment alike; its rounding is within the margin.
                 const double margin =
                     kDepthMargin * (std::abs(s.d0) + std::max(std::abs(ax0), std::abs(ax1)) +
-                                    std::max(std::abs(by0), std::abs(by1)));
-                lowest = s.d0 + std::min(ax0, ax1) + std::min(by0, by1) - margin;
-                highest = s.d0 + std::max(ax0, ax1) + std::max(by0, by1) + margin;
+                                    std::max(std::abs(by0), std::abs(by1)) + spread);
+                lowest = s.d0 + std::min(ax0, ax1) + std::min(by0, by1) + walk.offset - margin;
+                highest = s.d0 + std::max(ax0, ax1) + std::max(by0, by1) + walk.offset + margin;
             };
             double lowest, highest;
             bool all_pass = false;
@@ -321,6 +348,7 @@ bool FastCpuOracle::rasterizeInOneTile(const Setup& s, std::size_t tile, FastCpu
         clearTile(tile);
     }
     float written_min = kInfinity;
+    const double offset = fragmentOffset<kDraw>(spreadOf(s));
     const int32_t vx0 = s.px_min & ~int32_t(kTileSize - 1), vy0 = s.py_min & ~int32_t(kTileSize - 1);
     for (int32_t py = s.py_min; py <= s.py_max; ++py) {
         // Rule 6 in the reference's order: (d0 + ddx (cx - x0)) + ddy (cy - y0).
@@ -335,7 +363,8 @@ bool FastCpuOracle::rasterizeInOneTile(const Setup& s, std::size_t tile, FastCpu
             e1 += s.edge_step_x[1];
             e2 += s.edge_step_x[2];
             if (!covered) continue;
-            const float frag = float(s.d0 + s.ddx * ((double(px) + 0.5) - s.x0) + row_term);
+            const float frag =
+                float(s.d0 + s.ddx * ((double(px) + 0.5) - s.x0) + row_term + offset);
             if constexpr (kDraw) {
                 if (frag < row[px - vx0]) {
                     row[px - vx0] = frag;

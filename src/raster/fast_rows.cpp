@@ -14,8 +14,8 @@ constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 // Calls pixel(depth, fragment) for every covered pixel of the walk, row by row, until it returns
 // true; returns whether it did. The fragment is rule 6's float: the column term
-// d0 + ddx ((px + 0.5) - x0), shared by every row, plus the row term added last, as in the
-// reference.
+// d0 + ddx ((px + 0.5) - x0), shared by every row, plus the row term, as in the reference, plus
+// the walk's offset last.
 template <class Pixel>
 bool forEachCovered(const TileWalk& w, Pixel&& pixel) {
     double column[8];
@@ -31,7 +31,7 @@ bool forEachCovered(const TileWalk& w, Pixel&& pixel) {
             e0 += w.step_x[0];
             e1 += w.step_x[1];
             e2 += w.step_x[2];
-            if (covered && pixel(row[k], float(column[k] + row_term))) return true;
+            if (covered && pixel(row[k], float((column[k] + row_term) + w.offset))) return true;
         }
         for (int e = 0; e < 3; ++e) edge_row[e] += w.step_y[e];
     }

@@ -6,7 +6,7 @@
 //
 // Number formats: edge functions are exact int64_t values in 24.8 fixed point (cpu_rasterizer.h),
 // covered iff E + bias > 0 on all three edges; depths are the double expression
-// (d0 + ddx ((px + 0.5) - x0)) + ddy ((py + 0.5) - y0), rounded to float to nearest.
+// ((d0 + ddx ((px + 0.5) - x0)) + ddy ((py + 0.5) - y0)) + offset, rounded to float to nearest.
 
 #include <cstddef>
 #include <cstdint>
@@ -31,6 +31,10 @@ struct TileWalk {
     int64_t step_x[3];       // change of E_e from column px to px + 1
     int64_t step_y[3];       // change of E_e from row py to py + 1
     double d0, ddx, ddy, x0, y0_plane;  // the depth plane (TriangleSetup's d0, ddx, ddy, x0, y0)
+    // Added to each fragment's double value before rounding: -0.0 in exact mode (adding it
+    // changes no value, not even a zero's sign); in conservative mode -spread for draws and
+    // +spread for queries (cpu_oracle.h).
+    double offset;
 };
 
 /// What a draw did to its tile: the least depth it wrote (+infinity if none) and the greatest

@@ -3,10 +3,10 @@
 //  - Edge tests: the three edge functions of 8 lanes as 8 x int32_t when every walked value fits
 //    (exact; almost always), else as int64_t in two 4-lane halves compared with
 //    _mm256_cmpgt_epi64 (exact, as in the reference), the masks packed to 8 x 32 bits.
-//  - Depth: per lane, in double, (d0 + ddx ((px + 0.5) - x0)) + row_term, the same operations in
-//    the same order as the reference; _mm256_cvtpd_ps rounds to float by MXCSR, to nearest, as the
-//    scalar conversion does. No FMA: the functions target AVX2 only, and the file is compiled with
-//    -ffp-contract=off.
+//  - Depth: per lane, in double, ((d0 + ddx ((px + 0.5) - x0)) + row_term) + offset, the same
+//    operations in the same order as the reference; _mm256_cvtpd_ps rounds to float by MXCSR, to
+//    nearest, as the scalar conversion does. No FMA: the functions target AVX2 only, and the file
+//    is compiled with -ffp-contract=off.
 //  - Depth test: float compare, blend and store of a whole tile row; lanes not walked (outside the
 //    bounding box, or the padding of a tile at the viewport's edge) are stored back unchanged.
 // Only the functions below carry the AVX2 target, and they call nothing outside this file but
@@ -112,11 +112,12 @@ VISSORT_AVX2 inline __m256 coverage(const TileWalk& w, Avx2Row& a) {
     return _mm256_and_ps(ordered, _mm256_castsi256_ps(a.lanes_walked));
 }
 
-// Rule 6 for the 8 lanes of row py: the row term added last, then rounded to float.
+// Rule 6 for the 8 lanes of row py: the row term added, then the offset, then rounded to float.
 VISSORT_AVX2 inline __m256 fragments(const TileWalk& w, const Avx2Row& a, int32_t r) {
     const __m256d row_term = _mm256_set1_pd(w.ddy * ((double(w.y0 + r) + 0.5) - w.y0_plane));
-    const __m128 lo = _mm256_cvtpd_ps(_mm256_add_pd(a.column_lo, row_term));
-    const __m128 hi = _mm256_cvtpd_ps(_mm256_add_pd(a.column_hi, row_term));
+    const __m256d offset = _mm256_set1_pd(w.offset);
+    const __m128 lo = _mm256_cvtpd_ps(_mm256_add_pd(_mm256_add_pd(a.column_lo, row_term), offset));
+    const __m128 hi = _mm256_cvtpd_ps(_mm256_add_pd(_mm256_add_pd(a.column_hi, row_term), offset));
     return _mm256_insertf128_ps(_mm256_castps128_ps256(lo), hi, 1);
 }
 

@@ -190,5 +190,36 @@ TEST(SceneOrderer, MultistageOutputsEveryTriangleOnce) {
     for (uint32_t i = 0; i < frame.order.size(); ++i) ASSERT_EQ(frame.order[i], i);
 }
 
+TEST(MakeOracle, ConservativeModeAddsBehindAnswersAndExactOracleRefusesIt) {
+    // Every pair of the 36 tilted slabs: the conservative cpu oracles answer "behind" wherever
+    // the exact ones do, and more often (a pixel's farthest depth on a sloped face lies behind
+    // the nearest depth drawn there, and edges reach every pixel they touch).
+    const Scene scene = load("tests/data/scenes/stack.json");
+    const ViewProjection view = frameCamera(*scene.camera, scene.positions.bounds(), 64, 64);
+    const auto primitives = primitivesOf(scene, OrderLevel::object);
+    for (OracleKind kind : {OracleKind::cpu, OracleKind::cpu_reference}) {
+        SCOPED_TRACE(oracleName(kind));
+        auto exact = makeOracle(kind);
+        auto conservative = makeOracle(kind, RasterMode::conservative);
+        exact->bind(scene.positions, view, primitives);
+        conservative->bind(scene.positions, view, primitives);
+        uint32_t exact_behind = 0, conservative_behind = 0;
+        for (uint32_t a = 0; a < primitives.size(); ++a) {
+            exact->clear();
+            conservative->clear();
+            exact->draw(a);
+            conservative->draw(a);
+            for (uint32_t b = 0; b < primitives.size(); ++b) {
+                const bool e = exact->anyBehind(b), c = conservative->anyBehind(b);
+                EXPECT_TRUE(!e || c) << a << " then " << b;  // a superset
+                exact_behind += e;
+                conservative_behind += c;
+            }
+        }
+        EXPECT_GT(conservative_behind, exact_behind);
+    }
+    EXPECT_THROW(makeOracle(OracleKind::exact, RasterMode::conservative), std::invalid_argument);
+}
+
 } // namespace
 } // namespace vissort

@@ -68,6 +68,8 @@ RandomWalk makeWalk(std::mt19937_64& rng, EdgeScale scale) {
     w.ddy = (unit(rng) - 0.5) * 0.02;
     w.x0 = w.vx0 + 8 * unit(rng);
     w.y0_plane = w.y0 + 8 * unit(rng);
+    // Exact mode's -0.0, or a conservative spread either way.
+    w.offset = unit(rng) < 0.5 ? -0.0 : (unit(rng) - 0.5) * 0.01;
     return r;
 }
 
