@@ -3,7 +3,8 @@
 // (cpu_oracle.h), and leaves the same depth buffer, bit for bit: the same clipping, snapping,
 // int64_t edge functions with the top-left rule, and the same double depth expression rounded to
 // float (rules 1-7 of cpu_oracle.h). What differs is only how much work it takes:
-//  - every triangle is clipped, snapped and set up once per bind, not once per draw or query;
+//  - every triangle is clipped, snapped and set up once per bind, not once per draw or query,
+//    four at a time with AVX2 where the CPU has it (the scalar set-up finishes the rest);
 //  - the depth buffer is divided into 8 x 8 pixel tiles, each with bounds on its stored depths,
 //    so that whole tiles are skipped (a query that cannot find a fragment behind, a draw that
 //    cannot pass the depth test) or accepted (a query that must find one) without per-pixel work;
@@ -69,6 +70,8 @@ namespace detail {
 class FastWorkerPool;
 struct TileWalk;
 struct TileDraw;
+struct FastSetup;
+enum class LaneSetup : uint8_t;
 } // namespace detail
 
 class FastCpuOracle final : public GeometryOracle {
@@ -118,41 +121,22 @@ public:
     uint32_t width() const { return width_; }
     uint32_t height() const { return height_; }
     /// Fan triangles set up by the last bind (clipping may split or drop triangles).
-    std::size_t setupCount() const { return setups_.size(); }
+    std::size_t setupCount() const;
 
     const FastCpuOracleStats& stats() const { return stats_; }
     void resetStats() { stats_ = {}; }
 
 private:
-    /// One fan triangle, ready to walk. Edge functions are exact int64_t values in 24.8 fixed
-    /// point (cpu_rasterizer.h); covered iff edge + bias > 0 for all three edges.
-    struct Setup {
-        int64_t edge_at_origin[3];  // E_i + bias_i at the centre of pixel (0, 0)
-        int64_t edge_step_x[3];     // change of E_i from pixel px to px + 1
-        int64_t edge_step_y[3];     // change of E_i from row py to py + 1
-        double x0, y0, d0, ddx, ddy;  // depth plane, as in detail::TriangleSetup
-        int32_t px_min, px_max, py_min, py_max;  // inclusive, clamped to the viewport
-    };
-
-    /// Conservative mode: how far the plane moves within half a pixel on each axis, computed as
-    /// the reference does (|ddx| / 2 + |ddy| / 2). Exact mode: 0.
-    double spreadOf(const Setup& s) const {
-        return conservative_ ? std::abs(s.ddx) * 0.5 + std::abs(s.ddy) * 0.5 : 0.0;
-    }
-    /// What a draw (nearest depth over the pixel) or a query (farthest) adds to each fragment's
-    /// double value before rounding; -0.0 in exact mode, which changes no value (fast_rows.h).
-    template <bool kDraw>
-    double fragmentOffset(double spread) const {
-        return conservative_ ? (kDraw ? -spread : spread) : -0.0;
-    }
     /// Walks the tiles of s in tile rows [ty_begin, ty_end); counts into stats.
     template <bool kDraw>
-    bool rasterize(const Setup& s, int32_t ty_begin, int32_t ty_end, FastCpuOracleStats& stats);
+    bool rasterize(const detail::FastSetup& s, int32_t ty_begin, int32_t ty_end,
+                   FastCpuOracleStats& stats);
     /// rasterize for a triangle whose pixel bounds lie in one tile (most triangles of a detailed
     /// mesh): the same per-pixel rules with none of the per-tile analysis, which costs more than
     /// the few pixels it could save.
     template <bool kDraw>
-    bool rasterizeInOneTile(const Setup& s, std::size_t tile, FastCpuOracleStats& stats);
+    bool rasterizeInOneTile(const detail::FastSetup& s, std::size_t tile,
+                            FastCpuOracleStats& stats);
     /// Runs band(b, stats of b) for b = 0..bands-1 on the calling thread and the workers (each
     /// claims the next band when done); then adds the bands' tile counts to stats_.
     template <class Band>
@@ -162,10 +146,6 @@ private:
     uint32_t bandsFor(std::size_t count) const;
     /// Tile rows of band b of bands: [first, last).
     void bandRows(uint32_t b, uint32_t bands, int32_t& first, int32_t& last) const;
-    /// Clips, snaps and sets up triangle t, appending its fan triangles to setups_; clip is the
-    /// projection times the view (detail::Matrix4).
-    void addSetups(const TrianglePositions& positions, const std::array<double, 16>& clip,
-                   std::size_t t);
     /// The depths of one tile, kTileSize rows of kTileSize floats (fast_rows.h).
     float* tileDepths(std::size_t tile) const { return depth_.data() + tile * kTileSize * kTileSize; }
     /// Where pixel (x, y) is stored.
@@ -181,19 +161,25 @@ private:
     std::vector<PrimitiveRange> primitives_;
     // Primitive p's fan triangles are setups_[primitive_setups_[p], primitive_setups_[p + 1]).
     std::vector<uint32_t> primitive_setups_;
-    std::vector<Setup> setups_;
-    // Clearing is lazy: clear() starts a new epoch, and a tile whose tile_epoch_ is older holds
-    // only +infinity, whatever its pixels say, until clearTile writes that out (on its first draw,
-    // or in depthBuffer(), which is why these are mutable: the logical contents never change).
+    std::vector<detail::FastSetup> setups_;
+    std::vector<uint32_t> bind_triangles_;  // the triangles of every primitive, in bind order
+    // Per tile, in one struct so that a tile's bounds and epoch share a cache line (the tiles a
+    // pass touches are scattered over a buffer larger than the caches: one miss, not three).
+    // Clearing is lazy: clear() starts a new epoch, and a tile whose epoch is older holds only
+    // +infinity, whatever its pixels say, until clearTile writes that out (on its first draw, or
+    // in depthBuffer(), which is why the states are mutable: the logical contents never change).
+    // min is a lower bound on every stored depth (exact after a depth-tested draw; after a draw
+    // whose fragments all pass, the float below that draw's depth bounds); max is an upper bound
+    // on every stored depth (exact after clear and after a depth-tested draw that covers the
+    // whole tile, the float above the depth bounds after a passing draw that covers it, otherwise
+    // left as it was: stored depths only decrease).
+    struct TileState {
+        float min, max;
+        uint64_t epoch;
+    };
     mutable std::vector<float> depth_;      // tile by tile (fast_rows.h), padded to whole tiles
     mutable std::vector<float> row_major_;  // depthBuffer()'s copy
-    // Per tile: tile_min_ is a lower bound on every stored depth (exact after a depth-tested
-    // draw; after a draw whose fragments all pass, the float below that draw's depth bounds);
-    // tile_max_ is an upper bound on every stored depth (exact after clear and after a depth-
-    // tested draw that covers the whole tile, the float above the depth bounds after a passing
-    // draw that covers it, otherwise left as it was: stored depths only decrease).
-    mutable std::vector<float> tile_min_, tile_max_;
-    mutable std::vector<uint64_t> tile_epoch_;
+    mutable std::vector<TileState> tiles_;
     uint64_t epoch_ = 1;
     FastCpuOracleStats stats_;
 
@@ -203,6 +189,10 @@ private:
     void (*draw_tile_)(const detail::TileWalk&, detail::TileDraw&) = nullptr;
     bool (*query_tile_)(const detail::TileWalk&) = nullptr;
     void (*fill_tile_)(const detail::TileWalk&) = nullptr;
+    // The batch set-up (src/raster/fast_setup.h): AVX2, or null for the scalar one only.
+    void (*setup_quad_)(const std::array<double, 16>&, const float*, const float*, const float*,
+                        const uint32_t*, uint32_t, uint32_t, detail::FastSetup*,
+                        detail::LaneSetup*) = nullptr;
     uint32_t threads_ = 1;
     uint32_t parallel_threshold_ = 0;
     std::unique_ptr<detail::FastWorkerPool> pool_;  // started on the first parallel pass

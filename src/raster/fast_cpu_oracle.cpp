@@ -31,6 +31,8 @@
 
 #include "raster/cpu_rasterizer.h"
 #include "raster/fast_rows.h"
+#include "raster/fast_setup.h"
+#include "raster/float_steps.h"
 #include "raster/fast_worker_pool.h"
 
 namespace vissort {
@@ -49,11 +51,24 @@ constexpr double kDepthMargin = 0x1p-48;
 // The greatest float <= v and the least float >= v (v finite).
 float floatBelow(double v) {
     const float f = float(v);
-    return double(f) > v ? std::nextafter(f, -kInfinity) : f;
+    return double(f) > v ? detail::nextDown(f) : f;
 }
 float floatAbove(double v) {
     const float f = float(v);
-    return double(f) < v ? std::nextafter(f, kInfinity) : f;
+    return double(f) < v ? detail::nextUp(f) : f;
+}
+
+// Conservative mode: how far the plane moves within half a pixel on each axis, computed as the
+// reference does (|ddx| / 2 + |ddy| / 2). Exact mode: 0.
+double spreadOf(const detail::FastSetup& s, bool conservative) {
+    return conservative ? std::abs(s.ddx) * 0.5 + std::abs(s.ddy) * 0.5 : 0.0;
+}
+
+// What a draw (nearest depth over the pixel) or a query (farthest) adds to each fragment's double
+// value before rounding; -0.0 in exact mode, which changes no value (fast_rows.h).
+template <bool kDraw>
+double fragmentOffset(double spread, bool conservative) {
+    return conservative ? (kDraw ? -spread : spread) : -0.0;
 }
 
 } // namespace
@@ -69,6 +84,7 @@ FastCpuOracle::FastCpuOracle(const Options& options)
     draw_tile_ = kernels.draw;
     query_tile_ = kernels.query;
     fill_tile_ = kernels.fill;
+    if (use_simd_) setup_quad_ = detail::avx2SetupQuad();  // the same AVX2 check
     threads_ = options.threads;
     if (threads_ == 0) {
         const char* env = std::getenv("VISSORT_THREADS");
@@ -99,101 +115,64 @@ void FastCpuOracle::bind(const TrianglePositions& positions, const ViewProjectio
     // walk over primitives in id order reads memory forward; triangles of no primitive are never
     // set up, those of several are set up once each.
     const detail::Matrix4 m = detail::multiply(view.projection_matrix, view.view);
+    bind_triangles_.clear();
+    for (const PrimitiveRange& range : primitives_)
+        for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count; ++t)
+            bind_triangles_.push_back(t);
+    const std::size_t n = bind_triangles_.size();
     primitive_setups_.resize(primitives_.size() + 1);
     setups_.clear();
-    std::size_t triangle_total = 0;
-    for (const PrimitiveRange& range : primitives_) triangle_total += range.triangle_count;
-    setups_.reserve(triangle_total);
-    for (std::size_t p = 0; p < primitives_.size(); ++p) {
-        primitive_setups_[p] = uint32_t(setups_.size());
-        const PrimitiveRange range = primitives_[p];
-        for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count; ++t)
-            addSetups(positions, m, t);
+    setups_.reserve(n);
+    // Before the set-ups of bind_triangles_[i]: primitives starting there start here.
+    std::size_t next_primitive = 0, next_start = 0;
+    const auto reach = [&](std::size_t i) {
+        while (next_primitive < primitives_.size() && next_start == i) {
+            primitive_setups_[next_primitive] = uint32_t(setups_.size());
+            next_start += primitives_[next_primitive++].triangle_count;
+        }
+    };
+    std::size_t i = 0;
+    if (setup_quad_ != nullptr && !conservative_) {
+        detail::FastSetup quad[4];
+        detail::LaneSetup lanes[4];
+        for (; i + 4 <= n; i += 4) {
+            setup_quad_(m, positions.x.data(), positions.y.data(), positions.z.data(),
+                        &bind_triangles_[i], width_, height_, quad, lanes);
+            for (std::size_t l = 0; l < 4; ++l) {
+                reach(i + l);
+                if (lanes[l] == detail::LaneSetup::ready)
+                    setups_.push_back(quad[l]);
+                else if (lanes[l] == detail::LaneSetup::scalar)
+                    detail::appendFastSetups(m, positions, bind_triangles_[i + l], width_, height_,
+                                             conservative_, setups_);
+            }
+        }
     }
+    for (; i < n; ++i) {
+        reach(i);
+        detail::appendFastSetups(m, positions, bind_triangles_[i], width_, height_, conservative_,
+                                 setups_);
+    }
+    reach(n);
     primitive_setups_[primitives_.size()] = uint32_t(setups_.size());
 
     depth_.resize(std::size_t(tiles_x_) * tiles_y_ * kTilePixels);
-    tile_min_.resize(std::size_t(tiles_x_) * tiles_y_);
-    tile_max_.resize(tile_min_.size());
-    tile_epoch_.assign(tile_min_.size(), 0);
+    tiles_.assign(std::size_t(tiles_x_) * tiles_y_, TileState{kInfinity, kInfinity, 0});
     epoch_ = 1;  // every tile pending a clear
 }
 
-void FastCpuOracle::addSetups(const TrianglePositions& positions, const detail::Matrix4& clip,
-                              std::size_t t) {
-    std::array<detail::ClipVertex, 3> corners;
-    std::array<detail::ClipVertex, detail::kMaxPolygonVertices> polygon;
-    std::array<detail::ScreenVertex, detail::kMaxPolygonVertices> screen;
-    for (int k = 0; k < 3; ++k) {
-        const std::size_t i = 3 * t + std::size_t(k);
-        corners[k] = detail::toClipSpace(clip, positions.x[i], positions.y[i], positions.z[i]);
-    }
-    // Rules 2-4 and the set-up of rules 5-6, by the reference's own functions.
-    const int count = detail::clipTriangle(corners[0], corners[1], corners[2], polygon);
-    if (count < 3) return;
-    for (int i = 0; i < count; ++i) screen[i] = detail::toScreen(polygon[i], width_, height_);
-    detail::TriangleSetup ts;
-    for (int i = 1; i + 1 < count; ++i) {
-        const auto& a = screen[0];
-        const auto& b = screen[i];
-        const auto& c = screen[i + 1];
-        const bool set_up = conservative_
-                                ? detail::setupConservative(a, b, c, width_, height_, ts)
-                                : detail::setupTriangle(a, b, c, width_, height_, ts);
-        if (!set_up) continue;
-        Setup s;
-        constexpr int64_t half = detail::kSubpixelScale / 2;
-        for (int e = 0; e < 3; ++e) {
-            const int j = (e + 1) % 3;
-            const int64_t dx = ts.x[j] - ts.x[e], dy = ts.y[j] - ts.y[e];
-            // Conservative: covered when E + reach >= 0, reach = the edge function's rise over
-            // half a pixel on each axis (cpu_oracle.h), i.e. E + reach + 1 > 0. Below 2^39.
-            const int64_t bias =
-                conservative_ ? (std::abs(dx) + std::abs(dy)) * half + 1 : ts.bias[e];
-            // E_e at the centre of pixel (0, 0), (128, 128) in 24.8 fixed point: below 2^61.
-            s.edge_at_origin[e] = dx * (half - ts.y[e]) - dy * (half - ts.x[e]) + bias;
-            s.edge_step_x[e] = -dy * detail::kSubpixelScale;
-            s.edge_step_y[e] = dx * detail::kSubpixelScale;
-        }
-        s.x0 = ts.x0;
-        s.y0 = ts.y0;
-        s.d0 = ts.d0;
-        s.ddx = ts.ddx;
-        s.ddy = ts.ddy;
-        s.px_min = int32_t(ts.px_min);
-        s.px_max = int32_t(ts.px_max);
-        s.py_min = int32_t(ts.py_min);
-        s.py_max = int32_t(ts.py_max);
-        if (conservative_) {
-            // Pixels whose square meets the snapped bounding box, as the reference walks them.
-            const int64_t min_x = std::min({ts.x[0], ts.x[1], ts.x[2]});
-            const int64_t max_x = std::max({ts.x[0], ts.x[1], ts.x[2]});
-            const int64_t min_y = std::min({ts.y[0], ts.y[1], ts.y[2]});
-            const int64_t max_y = std::max({ts.y[0], ts.y[1], ts.y[2]});
-            constexpr int64_t one = detail::kSubpixelScale;
-            constexpr int bits = detail::kSubpixelBits;
-            s.px_min = int32_t(std::max<int64_t>(((min_x + one - 1) >> bits) - 1, 0));
-            s.px_max = int32_t(std::min<int64_t>(max_x >> bits, int64_t(width_) - 1));
-            s.py_min = int32_t(std::max<int64_t>(((min_y + one - 1) >> bits) - 1, 0));
-            s.py_max = int32_t(std::min<int64_t>(max_y >> bits, int64_t(height_) - 1));
-            if (s.px_min > s.px_max || s.py_min > s.py_max) continue;  // off screen
-        }
-        setups_.push_back(s);
-    }
-}
+std::size_t FastCpuOracle::setupCount() const { return setups_.size(); }
 
 void FastCpuOracle::clear() { ++epoch_; }
 
 void FastCpuOracle::clearTile(std::size_t tile) const {
     std::fill_n(depth_.begin() + std::ptrdiff_t(tile * kTilePixels), kTilePixels, kInfinity);
-    tile_min_[tile] = kInfinity;
-    tile_max_[tile] = kInfinity;
-    tile_epoch_[tile] = epoch_;
+    tiles_[tile] = {kInfinity, kInfinity, epoch_};
 }
 
 std::span<const float> FastCpuOracle::depthBuffer() const {
-    for (std::size_t tile = 0; tile < tile_epoch_.size(); ++tile)
-        if (tile_epoch_[tile] != epoch_) clearTile(tile);
+    for (std::size_t tile = 0; tile < tiles_.size(); ++tile)
+        if (tiles_[tile].epoch != epoch_) clearTile(tile);
     row_major_.resize(std::size_t(width_) * height_);
     for (uint32_t y = 0; y < height_; ++y)
         for (uint32_t x = 0; x < width_; ++x)
@@ -202,7 +181,7 @@ std::span<const float> FastCpuOracle::depthBuffer() const {
 }
 
 template <bool kDraw>
-bool FastCpuOracle::rasterize(const Setup& s, int32_t ty_begin, int32_t ty_end,
+bool FastCpuOracle::rasterize(const detail::FastSetup& s, int32_t ty_begin, int32_t ty_end,
                               FastCpuOracleStats& stats) {
     const int32_t tx_first = s.px_min >> kTileShift, tx_last = s.px_max >> kTileShift;
     const int32_t ty_first = std::max(s.py_min >> kTileShift, ty_begin);
@@ -223,8 +202,8 @@ bool FastCpuOracle::rasterize(const Setup& s, int32_t ty_begin, int32_t ty_end,
     walk.ddy = s.ddy;
     walk.x0 = s.x0;
     walk.y0_plane = s.y0;
-    const double spread = spreadOf(s);
-    walk.offset = fragmentOffset<kDraw>(spread);
+    const double spread = spreadOf(s, conservative_);
+    walk.offset = fragmentOffset<kDraw>(spread, conservative_);
     for (int32_t ty = ty_first; ty <= ty_last; ++ty) {
         // Rows of the tile within the viewport, then within the triangle's bounding box.
         const int32_t vy0 = ty << kTileShift, vy1 = std::min(vy0 + int32_t(kTileSize) - 1, last_y);
@@ -255,7 +234,7 @@ bool FastCpuOracle::rasterize(const Setup& s, int32_t ty_begin, int32_t ty_end,
                 ++stats.tiles_culled;
                 continue;
             }
-            if (tile_epoch_[tile] != epoch_) {
+            if (tiles_[tile].epoch != epoch_) {
                 // Cleared since last touched: a query finds nothing behind +infinity.
                 if constexpr (!kDraw) {
                     ++stats.tiles_culled;
@@ -282,25 +261,25 @@ bool FastCpuOracle::rasterize(const Setup& s, int32_t ty_begin, int32_t ty_end,
             bool all_pass = false;
             if constexpr (kDraw) {
                 depthBounds(lowest, highest);
-                // Every fragment >= tile_max_ >= every stored depth: none passes LESS.
-                if (lowest >= double(tile_max_[tile])) {
+                // Every fragment >= the tile's max >= every stored depth: none passes LESS.
+                if (lowest >= double(tiles_[tile].max)) {
                     ++stats.tiles_culled;
                     continue;
                 }
-                // Every fragment < the float below tile_min_ (so, rounded, < tile_min_ <= every
+                // Every fragment < the float below the tile's min (so, rounded, < min <= every
                 // stored depth): all pass, no depth test needed (the common case back to front).
-                all_pass = highest < double(std::nextafter(tile_min_[tile], -kInfinity));
+                all_pass = highest < double(detail::nextDown(tiles_[tile].min));
             } else {
                 depthBounds(lowest, highest);
-                // Every fragment <= tile_min_ + tolerance <= stored + tolerance: none behind.
-                if (highest <= double(tile_min_[tile] + kDepthTolerance)) {
+                // Every fragment <= the tile's min + tolerance <= stored + tolerance: none behind.
+                if (highest <= double(tiles_[tile].min + kDepthTolerance)) {
                     ++stats.tiles_culled;
                     continue;
                 }
-                // Every pixel covered, every fragment > tile_max_ + tolerance: behind somewhere.
-                const float limit = tile_max_[tile] + kDepthTolerance;
+                // Every pixel covered, every fragment > the tile's max + tolerance: behind somewhere.
+                const float limit = tiles_[tile].max + kDepthTolerance;
                 if (full_tile && std::isfinite(limit) &&
-                    lowest >= double(std::nextafter(limit, kInfinity))) {
+                    lowest >= double(detail::nextUp(limit))) {
                     ++stats.tiles_accepted;
                     return true;
                 }
@@ -320,15 +299,15 @@ bool FastCpuOracle::rasterize(const Setup& s, int32_t ty_begin, int32_t ty_end,
                     fill_tile_(walk);
                     // Bounds from the depth bounds instead of the pixels: every fragment written
                     // lies in [lowest, highest], rounded outward to floats.
-                    tile_min_[tile] = std::min(tile_min_[tile], floatBelow(lowest));
-                    if (full_tile) tile_max_[tile] = floatAbove(highest);
+                    tiles_[tile].min = std::min(tiles_[tile].min, floatBelow(lowest));
+                    if (full_tile) tiles_[tile].max = floatAbove(highest);
                     continue;
                 }
                 detail::TileDraw result;
                 draw_tile_(walk, result);
-                tile_min_[tile] = std::min(tile_min_[tile], result.written_min);
+                tiles_[tile].min = std::min(tiles_[tile].min, result.written_min);
                 // A draw covering the whole tile visited every stored depth: the bound is exact.
-                if (full_tile) tile_max_[tile] = result.stored_max;
+                if (full_tile) tiles_[tile].max = result.stored_max;
             } else {
                 if (query_tile_(walk)) return true;
             }
@@ -338,9 +317,9 @@ bool FastCpuOracle::rasterize(const Setup& s, int32_t ty_begin, int32_t ty_end,
 }
 
 template <bool kDraw>
-bool FastCpuOracle::rasterizeInOneTile(const Setup& s, std::size_t tile, FastCpuOracleStats& stats) {
+bool FastCpuOracle::rasterizeInOneTile(const detail::FastSetup& s, std::size_t tile, FastCpuOracleStats& stats) {
     ++stats.tiles_visited;
-    if (tile_epoch_[tile] != epoch_) {
+    if (tiles_[tile].epoch != epoch_) {
         if constexpr (!kDraw) {
             ++stats.tiles_culled;  // cleared since last touched: nothing behind +infinity
             return false;
@@ -348,7 +327,7 @@ bool FastCpuOracle::rasterizeInOneTile(const Setup& s, std::size_t tile, FastCpu
         clearTile(tile);
     }
     float written_min = kInfinity;
-    const double offset = fragmentOffset<kDraw>(spreadOf(s));
+    const double offset = fragmentOffset<kDraw>(spreadOf(s, conservative_), conservative_);
     const int32_t vx0 = s.px_min & ~int32_t(kTileSize - 1), vy0 = s.py_min & ~int32_t(kTileSize - 1);
     for (int32_t py = s.py_min; py <= s.py_max; ++py) {
         // Rule 6 in the reference's order: (d0 + ddx (cx - x0)) + ddy (cy - y0).
@@ -375,8 +354,8 @@ bool FastCpuOracle::rasterizeInOneTile(const Setup& s, std::size_t tile, FastCpu
             }
         }
     }
-    // Stored depths only fall, so tile_max_ stays a bound; tile_min_ follows the writes.
-    if constexpr (kDraw) tile_min_[tile] = std::min(tile_min_[tile], written_min);
+    // Stored depths only fall, so max stays a bound; min follows the writes.
+    if constexpr (kDraw) tiles_[tile].min = std::min(tiles_[tile].min, written_min);
     return false;
 }
 

@@ -1,0 +1,244 @@
+// The AVX2 set-up of FastCpuOracle (fast_setup.h): four triangles at a time, one per 64-bit lane,
+// bit for bit what the scalar set-up computes, because every step is the reference's operation in
+// the reference's order (cpu_oracle.h, rules 1-6):
+//  - rule 1 in double: ((((0 + m_r x) + m_r+4 y) + m_r+8 z) + m_r+12 * 1), no FMA (the file is
+//    compiled with -ffp-contract=off and the functions target AVX2 only);
+//  - rule 2 only as its shortcut: a triangle with every corner finite, inside every plane and at
+//    w > 0 is its own polygon; any other triangle goes back to the scalar set-up, which clips;
+//  - rule 4: the perspective divide in double, and the snap as snapToFixed does it (truncate,
+//    then step by the fraction), exact in 32-bit integers: clipped screen coordinates stay far
+//    below the 2^29 the set-up allows (cpu_rasterizer.h, kMaxSnapped); larger ones go back too;
+//  - rule 5: differences of snapped coordinates fit in 31 bits, so every product is an exact
+//    _mm256_mul_epi32 and every edge function an exact int64_t, as in the scalar code;
+//  - rule 6: the depth plane from the unsnapped vertices in double, the same expressions.
+// Only the function below carries the AVX2 target, and it calls nothing outside this file but
+// intrinsics, so no AVX2 code can be shared with (or picked by the linker for) portable callers.
+
+#include "raster/fast_setup.h"
+
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+
+#include <immintrin.h>
+
+#include <cstdint>
+
+#define VISSORT_AVX2 __attribute__((target("avx2")))
+
+namespace vissort::detail {
+namespace {
+
+// A 64-bit lane mask as 32-bit lanes (lane i of the result is lane i of the mask).
+VISSORT_AVX2 inline __m128i narrowMask(__m256i mask) {
+    return _mm256_castsi256_si128(
+        _mm256_permutevar8x32_epi32(mask, _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6)));
+}
+
+// Exact products of 32-bit lanes as 64-bit lanes.
+VISSORT_AVX2 inline __m256i product(__m128i a, __m128i b) {
+    return _mm256_mul_epi32(_mm256_cvtepi32_epi64(a), _mm256_cvtepi32_epi64(b));
+}
+
+// snapToFixed (cpu_rasterizer.cpp) for |v * 256| below 2^31: truncate, then add 1 when the
+// fraction left is >= 0.5 and subtract 1 when it is <= -0.5.
+VISSORT_AVX2 inline __m128i snap(__m256d v) {
+    const __m256d scaled = _mm256_mul_pd(v, _mm256_set1_pd(double(kSubpixelScale)));
+    const __m256d whole = _mm256_cvtepi32_pd(_mm256_cvttpd_epi32(scaled));
+    const __m256d fraction = _mm256_sub_pd(scaled, whole);
+    const __m256d one = _mm256_set1_pd(1.0);
+    const __m256d up = _mm256_and_pd(_mm256_cmp_pd(fraction, _mm256_set1_pd(0.5), _CMP_GE_OQ), one);
+    const __m256d down =
+        _mm256_and_pd(_mm256_cmp_pd(fraction, _mm256_set1_pd(-0.5), _CMP_LE_OQ), one);
+    // Small integers: every sum is exact, and so is the conversion back.
+    return _mm256_cvttpd_epi32(_mm256_sub_pd(_mm256_add_pd(whole, up), down));
+}
+
+// ceilToPixels(v - 128) and floorToPixels(v - 128) of cpu_rasterizer.cpp: the first and last pixel
+// whose centre (256 p + 128) is >= v, <= v. Arithmetic shifts, as there.
+VISSORT_AVX2 inline __m128i firstCentreFrom(__m128i v) {
+    const __m128i half = _mm_set1_epi32(int32_t(kSubpixelScale / 2));
+    return _mm_sub_epi32(_mm_setzero_si128(), _mm_srai_epi32(_mm_sub_epi32(half, v), kSubpixelBits));
+}
+VISSORT_AVX2 inline __m128i lastCentreTo(__m128i v) {
+    const __m128i half = _mm_set1_epi32(int32_t(kSubpixelScale / 2));
+    return _mm_srai_epi32(_mm_sub_epi32(v, half), kSubpixelBits);
+}
+
+VISSORT_AVX2 void setupQuadAvx2(const Matrix4& m, const float* x, const float* y, const float* z,
+                                const uint32_t* triangles, uint32_t width, uint32_t height,
+                                FastSetup* out, LaneSetup* lanes) {
+    const __m256d zero = _mm256_setzero_pd();
+    const __m256d one = _mm256_set1_pd(1.0);
+    const __m256d sign = _mm256_set1_pd(-0.0);
+    const __m256d limit = _mm256_set1_pd(double(kMaxSnapped) / double(kSubpixelScale));
+    __m256d ok = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+    __m256d sx[3], sy[3], sd[3];  // screen vertices (rule 4), corner k of the four triangles
+    for (int k = 0; k < 3; ++k) {
+        alignas(32) double in[3][4];
+        for (int l = 0; l < 4; ++l) {
+            const std::size_t i = 3 * std::size_t(triangles[l]) + std::size_t(k);
+            in[0][l] = x[i];
+            in[1][l] = y[i];
+            in[2][l] = z[i];
+        }
+        const __m256d px = _mm256_load_pd(in[0]), py = _mm256_load_pd(in[1]),
+                      pz = _mm256_load_pd(in[2]);
+        __m256d clip[4];
+        for (int r = 0; r < 4; ++r) {
+            __m256d sum = zero;
+            sum = _mm256_add_pd(sum, _mm256_mul_pd(_mm256_set1_pd(m[r]), px));
+            sum = _mm256_add_pd(sum, _mm256_mul_pd(_mm256_set1_pd(m[4 + r]), py));
+            sum = _mm256_add_pd(sum, _mm256_mul_pd(_mm256_set1_pd(m[8 + r]), pz));
+            clip[r] = _mm256_add_pd(sum, _mm256_mul_pd(_mm256_set1_pd(m[12 + r]), one));
+        }
+        const __m256d cx = clip[0], cy = clip[1], cz = clip[2], cw = clip[3];
+        // Finite (v - v is 0 only then), inside every plane, and w > 0: clipping keeps it whole.
+        for (__m256d v : {cx, cy, cz, cw})
+            ok = _mm256_and_pd(ok, _mm256_cmp_pd(_mm256_sub_pd(v, v), zero, _CMP_EQ_OQ));
+        const __m256d guard = _mm256_mul_pd(_mm256_set1_pd(kGuardBand), cw);
+        ok = _mm256_and_pd(ok, _mm256_cmp_pd(cz, zero, _CMP_GE_OQ));
+        ok = _mm256_and_pd(ok, _mm256_cmp_pd(_mm256_sub_pd(cw, cz), zero, _CMP_GE_OQ));
+        ok = _mm256_and_pd(ok, _mm256_cmp_pd(_mm256_add_pd(guard, cx), zero, _CMP_GE_OQ));
+        ok = _mm256_and_pd(ok, _mm256_cmp_pd(_mm256_sub_pd(guard, cx), zero, _CMP_GE_OQ));
+        ok = _mm256_and_pd(ok, _mm256_cmp_pd(_mm256_add_pd(guard, cy), zero, _CMP_GE_OQ));
+        ok = _mm256_and_pd(ok, _mm256_cmp_pd(_mm256_sub_pd(guard, cy), zero, _CMP_GE_OQ));
+        ok = _mm256_and_pd(ok, _mm256_cmp_pd(cw, zero, _CMP_GT_OQ));
+        // toScreen: ((x / w + 1) * 0.5) * width, ((1 - y / w) * 0.5) * height, z / w.
+        const __m256d half = _mm256_set1_pd(0.5);
+        sx[k] = _mm256_mul_pd(_mm256_mul_pd(_mm256_add_pd(_mm256_div_pd(cx, cw), one), half),
+                              _mm256_set1_pd(double(width)));
+        sy[k] = _mm256_mul_pd(_mm256_mul_pd(_mm256_sub_pd(one, _mm256_div_pd(cy, cw)), half),
+                              _mm256_set1_pd(double(height)));
+        sd[k] = _mm256_div_pd(cz, cw);
+        ok = _mm256_and_pd(ok, _mm256_cmp_pd(_mm256_andnot_pd(sign, sx[k]), limit, _CMP_LE_OQ));
+        ok = _mm256_and_pd(ok, _mm256_cmp_pd(_mm256_andnot_pd(sign, sy[k]), limit, _CMP_LE_OQ));
+    }
+
+    // Rule 5: snap, and orient for a positive doubled area (swap vertices 1 and 2 otherwise).
+    __m128i fx[3], fy[3];
+    for (int k = 0; k < 3; ++k) {
+        fx[k] = snap(sx[k]);
+        fy[k] = snap(sy[k]);
+    }
+    const __m256i area = _mm256_sub_epi64(product(_mm_sub_epi32(fx[1], fx[0]), _mm_sub_epi32(fy[2], fy[0])),
+                                          product(_mm_sub_epi32(fy[1], fy[0]), _mm_sub_epi32(fx[2], fx[0])));
+    const __m256i zero64 = _mm256_setzero_si256();
+    const __m256i no_area = _mm256_cmpeq_epi64(area, zero64);
+    const __m256i negative = _mm256_cmpgt_epi64(zero64, area);
+    const __m128i swap32 = narrowMask(negative);
+    const __m256d swap64 = _mm256_castsi256_pd(negative);
+    {
+        const __m128i x1 = fx[1], y1 = fy[1];
+        fx[1] = _mm_blendv_epi8(x1, fx[2], swap32);
+        fx[2] = _mm_blendv_epi8(fx[2], x1, swap32);
+        fy[1] = _mm_blendv_epi8(y1, fy[2], swap32);
+        fy[2] = _mm_blendv_epi8(fy[2], y1, swap32);
+        for (__m256d* v : {sx, sy, sd}) {
+            const __m256d v1 = v[1];
+            v[1] = _mm256_blendv_pd(v1, v[2], swap64);
+            v[2] = _mm256_blendv_pd(v[2], v1, swap64);
+        }
+    }
+
+    // Edge functions at the centre of pixel (0, 0) with the top-left bias, and their steps.
+    const __m128i zero32 = _mm_setzero_si128();
+    const __m128i half32 = _mm_set1_epi32(int32_t(kSubpixelScale / 2));
+    __m256i edge[3], step_x[3], step_y[3];
+    for (int e = 0; e < 3; ++e) {
+        const int j = (e + 1) % 3;
+        const __m128i dx = _mm_sub_epi32(fx[j], fx[e]), dy = _mm_sub_epi32(fy[j], fy[e]);
+        // Top edge (dy == 0, dx > 0) or left edge (dy < 0): 1, else 0.
+        const __m128i top_left = _mm_or_si128(
+            _mm_and_si128(_mm_cmpeq_epi32(dy, zero32), _mm_cmpgt_epi32(dx, zero32)),
+            _mm_cmpgt_epi32(zero32, dy));
+        const __m128i bias = _mm_and_si128(top_left, _mm_set1_epi32(1));
+        edge[e] = _mm256_add_epi64(_mm256_sub_epi64(product(dx, _mm_sub_epi32(half32, fy[e])),
+                                                    product(dy, _mm_sub_epi32(half32, fx[e]))),
+                                   _mm256_cvtepi32_epi64(bias));
+        step_x[e] = _mm256_slli_epi64(_mm256_cvtepi32_epi64(_mm_sub_epi32(zero32, dy)), kSubpixelBits);
+        step_y[e] = _mm256_slli_epi64(_mm256_cvtepi32_epi64(dx), kSubpixelBits);
+    }
+
+    // Pixels whose centres the snapped bounding box may hold: ceil and floor of (v - 128) / 256.
+    const __m128i min_x = _mm_min_epi32(_mm_min_epi32(fx[0], fx[1]), fx[2]);
+    const __m128i max_x = _mm_max_epi32(_mm_max_epi32(fx[0], fx[1]), fx[2]);
+    const __m128i min_y = _mm_min_epi32(_mm_min_epi32(fy[0], fy[1]), fy[2]);
+    const __m128i max_y = _mm_max_epi32(_mm_max_epi32(fy[0], fy[1]), fy[2]);
+    const __m128i px_min = _mm_max_epi32(firstCentreFrom(min_x), zero32);
+    const __m128i px_max = _mm_min_epi32(lastCentreTo(max_x), _mm_set1_epi32(int32_t(width) - 1));
+    const __m128i py_min = _mm_max_epi32(firstCentreFrom(min_y), zero32);
+    const __m128i py_max = _mm_min_epi32(lastCentreTo(max_y), _mm_set1_epi32(int32_t(height) - 1));
+    const __m128i no_centres =
+        _mm_or_si128(_mm_cmpgt_epi32(px_min, px_max), _mm_cmpgt_epi32(py_min, py_max));
+
+    // Rule 6: the depth plane through the unsnapped vertices (ddx = ddy = 0 where det == 0).
+    const __m256d e1x = _mm256_sub_pd(sx[1], sx[0]), e1y = _mm256_sub_pd(sy[1], sy[0]),
+                  e1d = _mm256_sub_pd(sd[1], sd[0]);
+    const __m256d e2x = _mm256_sub_pd(sx[2], sx[0]), e2y = _mm256_sub_pd(sy[2], sy[0]),
+                  e2d = _mm256_sub_pd(sd[2], sd[0]);
+    const __m256d det = _mm256_sub_pd(_mm256_mul_pd(e1x, e2y), _mm256_mul_pd(e2x, e1y));
+    const __m256d has_det = _mm256_cmp_pd(det, zero, _CMP_NEQ_UQ);
+    const __m256d ddx = _mm256_and_pd(
+        has_det, _mm256_div_pd(_mm256_sub_pd(_mm256_mul_pd(e1d, e2y), _mm256_mul_pd(e2d, e1y)), det));
+    const __m256d ddy = _mm256_and_pd(
+        has_det, _mm256_div_pd(_mm256_sub_pd(_mm256_mul_pd(e2d, e1x), _mm256_mul_pd(e1d, e2x)), det));
+
+    alignas(32) int64_t edge_out[3][4], step_x_out[3][4], step_y_out[3][4];
+    alignas(32) double plane[5][4];
+    alignas(16) int32_t bounds[4][4], empty[4], okay[4];
+    for (int e = 0; e < 3; ++e) {
+        _mm256_store_si256(reinterpret_cast<__m256i*>(edge_out[e]), edge[e]);
+        _mm256_store_si256(reinterpret_cast<__m256i*>(step_x_out[e]), step_x[e]);
+        _mm256_store_si256(reinterpret_cast<__m256i*>(step_y_out[e]), step_y[e]);
+    }
+    _mm256_store_pd(plane[0], sx[0]);
+    _mm256_store_pd(plane[1], sy[0]);
+    _mm256_store_pd(plane[2], sd[0]);
+    _mm256_store_pd(plane[3], ddx);
+    _mm256_store_pd(plane[4], ddy);
+    _mm_store_si128(reinterpret_cast<__m128i*>(bounds[0]), px_min);
+    _mm_store_si128(reinterpret_cast<__m128i*>(bounds[1]), px_max);
+    _mm_store_si128(reinterpret_cast<__m128i*>(bounds[2]), py_min);
+    _mm_store_si128(reinterpret_cast<__m128i*>(bounds[3]), py_max);
+    _mm_store_si128(reinterpret_cast<__m128i*>(empty), _mm_or_si128(narrowMask(no_area), no_centres));
+    _mm_store_si128(reinterpret_cast<__m128i*>(okay), narrowMask(_mm256_castpd_si256(ok)));
+    for (int l = 0; l < 4; ++l) {
+        if (okay[l] == 0) {
+            lanes[l] = LaneSetup::scalar;
+            continue;
+        }
+        if (empty[l] != 0) {
+            lanes[l] = LaneSetup::empty;
+            continue;
+        }
+        lanes[l] = LaneSetup::ready;
+        FastSetup& s = out[l];
+        for (int e = 0; e < 3; ++e) {
+            s.edge_at_origin[e] = edge_out[e][l];
+            s.edge_step_x[e] = step_x_out[e][l];
+            s.edge_step_y[e] = step_y_out[e][l];
+        }
+        s.x0 = plane[0][l];
+        s.y0 = plane[1][l];
+        s.d0 = plane[2][l];
+        s.ddx = plane[3][l];
+        s.ddy = plane[4][l];
+        s.px_min = bounds[0][l];
+        s.px_max = bounds[1][l];
+        s.py_min = bounds[2][l];
+        s.py_max = bounds[3][l];
+    }
+}
+
+} // namespace
+
+SetupQuadFn avx2SetupQuad() { return setupQuadAvx2; }
+
+} // namespace vissort::detail
+
+#else
+
+namespace vissort::detail {
+SetupQuadFn avx2SetupQuad() { return nullptr; }
+} // namespace vissort::detail
+
+#endif

@@ -1,0 +1,122 @@
+// The AVX2 batch set-up against the scalar one (fast_setup.h), bit for bit, on random triangles of
+// every kind: inside the view, crossing the near plane and the guard band, behind the eye,
+// sub-pixel, degenerate, with non-finite corners; both projections; viewports from 1 x 1 to the
+// largest allowed. The scalar set-up is itself the reference's (checked against ray casting in
+// cpu_rasterizer_tests.cpp), and FastCpuOracle's answers against CpuOracle's in
+// fast_cpu_oracle_tests.cpp.
+
+#include "raster/fast_setup.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "raster/fast_rows.h"
+#include "vissort/camera.h"
+
+namespace vissort::detail {
+namespace {
+
+enum class Kind { inside, crossing, tiny, degenerate, non_finite };
+
+// Appends one triangle of that kind around a unit cube seen from the camera below.
+void addTriangle(TrianglePositions& p, std::mt19937_64& rng, Kind kind) {
+    std::uniform_real_distribution<double> unit(-1, 1);
+    Vec3 c[3];
+    for (Vec3& v : c) v = {unit(rng), unit(rng), unit(rng)};
+    switch (kind) {
+    case Kind::inside: break;
+    case Kind::crossing:
+        // Far outside the frame on every side, and through the eye's plane.
+        for (Vec3& v : c) v = {v.x * 300, v.y * 300, v.z * 8};
+        break;
+    case Kind::tiny:
+        for (int k = 1; k < 3; ++k)
+            c[k] = {c[0].x + unit(rng) * 1e-3, c[0].y + unit(rng) * 1e-3, c[0].z + unit(rng) * 1e-3};
+        break;
+    case Kind::degenerate:
+        c[2] = {0.5 * (c[0].x + c[1].x), 0.5 * (c[0].y + c[1].y), 0.5 * (c[0].z + c[1].z)};
+        if (unit(rng) < 0) c[1] = c[0];
+        break;
+    case Kind::non_finite: {
+        const double bad[] = {std::numeric_limits<double>::quiet_NaN(),
+                              std::numeric_limits<double>::infinity(),
+                              -std::numeric_limits<double>::infinity()};
+        c[std::size_t(unit(rng) < 0)].y = bad[std::size_t(3 * (unit(rng) + 1) / 2) % 3];
+        break;
+    }
+    }
+    for (const Vec3& v : c) {
+        p.x.push_back(float(v.x));
+        p.y.push_back(float(v.y));
+        p.z.push_back(float(v.z));
+    }
+}
+
+TEST(FastSetup, Avx2QuadsMatchTheScalarSetup) {
+    bool uses_simd = false;
+    selectRowKernels(true, uses_simd);  // the same run-time check FastCpuOracle makes
+    if (!uses_simd || avx2SetupQuad() == nullptr)
+        GTEST_SKIP() << "this CPU has no AVX2: only the scalar set-up runs here";
+    const SetupQuadFn quad = avx2SetupQuad();
+    std::mt19937_64 rng(7);
+    TrianglePositions p;
+    const Kind kinds[] = {Kind::inside, Kind::crossing, Kind::tiny, Kind::degenerate, Kind::non_finite};
+    for (int i = 0; i < 4000; ++i) addTriangle(p, rng, kinds[i % 5]);
+    Bounds bounds;
+    bounds.add({-1, -1, -1});
+    bounds.add({1, 1, 1});
+    const uint32_t sizes[][2] = {{1, 1}, {3, 5}, {17, 13}, {640, 480}, {1920, 1080}, {65536, 65536}};
+    std::size_t ready = 0, empty = 0, scalar_by_kind[5] = {};
+    for (Projection projection : {Projection::perspective, Projection::orthographic})
+        for (const auto& size : sizes) {
+            CameraSpec spec;
+            spec.projection = projection;
+            spec.eye = {0.4, 0.3, 2.5};  // inside the crossing triangles' depth range
+            spec.ortho_direction = {-0.2, -0.1, -1};
+            const ViewProjection view = frameCamera(spec, bounds, size[0], size[1]);
+            const Matrix4 m = multiply(view.projection_matrix, view.view);
+            std::uniform_int_distribution<uint32_t> pick(0, uint32_t(p.triangleCount()) - 1);
+            for (int q = 0; q < 2000; ++q) {
+                const uint32_t triangles[4] = {pick(rng), pick(rng), pick(rng), pick(rng)};
+                FastSetup out[4];
+                LaneSetup lanes[4];
+                quad(m, p.x.data(), p.y.data(), p.z.data(), triangles, size[0], size[1], out, lanes);
+                for (int l = 0; l < 4; ++l) {
+                    SCOPED_TRACE("triangle " + std::to_string(triangles[l]) + ", " +
+                                 std::to_string(size[0]) + "x" + std::to_string(size[1]));
+                    std::vector<FastSetup> expected;
+                    appendFastSetups(m, p, triangles[l], size[0], size[1], false, expected);
+                    switch (lanes[l]) {
+                    case LaneSetup::ready:
+                        ++ready;
+                        ASSERT_EQ(expected.size(), 1u);
+                        ASSERT_EQ(std::memcmp(&expected[0], &out[l], sizeof(FastSetup)), 0);
+                        break;
+                    case LaneSetup::empty:
+                        ++empty;
+                        ASSERT_TRUE(expected.empty());
+                        break;
+                    case LaneSetup::scalar: ++scalar_by_kind[triangles[l] % 5]; break;
+                    }
+                }
+            }
+        }
+    // Every outcome happened; the batch finished every triangle that needs no clipping (triangle
+    // i is of kind i % 5) and handed back the ones that do.
+    EXPECT_GT(ready, 20000u);
+    EXPECT_GT(empty, 20000u);
+    EXPECT_EQ(scalar_by_kind[int(Kind::inside)], 0u);
+    EXPECT_EQ(scalar_by_kind[int(Kind::tiny)], 0u);
+    EXPECT_EQ(scalar_by_kind[int(Kind::degenerate)], 0u);
+    EXPECT_GT(scalar_by_kind[int(Kind::crossing)], 10000u);
+    EXPECT_GT(scalar_by_kind[int(Kind::non_finite)], 10000u);
+}
+
+} // namespace
+} // namespace vissort::detail
