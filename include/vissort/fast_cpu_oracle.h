@@ -70,6 +70,8 @@ namespace detail {
 class FastWorkerPool;
 struct TileWalk;
 struct TileDraw;
+struct SmallWalk;
+struct SmallDraw;
 struct FastSetup;
 enum class LaneSetup : uint8_t;
 } // namespace detail
@@ -131,12 +133,14 @@ private:
     template <bool kDraw>
     bool rasterize(const detail::FastSetup& s, int32_t ty_begin, int32_t ty_end,
                    FastCpuOracleStats& stats);
-    /// rasterize for a triangle whose pixel bounds lie in one tile (most triangles of a detailed
-    /// mesh): the same per-pixel rules with none of the per-tile analysis, which costs more than
-    /// the few pixels it could save.
+    /// rasterize for a triangle whose pixel bounds span at most detail::kSmallTiles tiles each
+    /// way (most triangles of a detailed mesh): one walk over its bounds (fast_rows.h), the tiles
+    /// cleared and culled beforehand, their bounds updated after, none of the per-tile set-up that
+    /// costs more than the few pixels a small triangle has in each tile. Rows of tile rows
+    /// [ty_first, ty_last] only.
     template <bool kDraw>
-    bool rasterizeInOneTile(const detail::FastSetup& s, std::size_t tile,
-                            FastCpuOracleStats& stats);
+    bool rasterizeSmall(const detail::FastSetup& s, int32_t ty_first, int32_t ty_last,
+                        FastCpuOracleStats& stats);
     /// Runs band(b, stats of b) for b = 0..bands-1 on the calling thread and the workers (each
     /// claims the next band when done); then adds the bands' tile counts to stats_.
     template <class Band>
@@ -185,10 +189,12 @@ private:
 
     bool conservative_ = false;
     bool use_simd_ = false;
-    // The per-tile pixel walk (src/raster/fast_rows.h): AVX2 or scalar, chosen at construction.
+    // The pixel walks (src/raster/fast_rows.h): AVX2 or scalar, chosen at construction.
     void (*draw_tile_)(const detail::TileWalk&, detail::TileDraw&) = nullptr;
     bool (*query_tile_)(const detail::TileWalk&) = nullptr;
     void (*fill_tile_)(const detail::TileWalk&) = nullptr;
+    void (*draw_small_)(const detail::SmallWalk&, detail::SmallDraw&) = nullptr;
+    bool (*query_small_)(const detail::SmallWalk&) = nullptr;
     // The batch set-up (src/raster/fast_setup.h): AVX2, or null for the scalar one only.
     void (*setup_quad_)(const std::array<double, 16>&, const float*, const float*, const float*,
                         const uint32_t*, uint32_t, uint32_t, detail::FastSetup*,

@@ -27,6 +27,8 @@ struct TileWalk {
     int32_t lane_last;
     int32_t rows;            // rows walked, y0 .. y0 + rows - 1
     bool all_covered;        // every walked pixel is inside all three edges: no edge tests
+    bool narrow;             // every walked value of every edge fits in int32_t (set by the
+                             // caller for the whole triangle; the AVX2 walks test on 32 bits)
     int64_t edge[3];         // E_e + bias_e at pixel (vx0 + lane_first, y0)
     int64_t step_x[3];       // change of E_e from column px to px + 1
     int64_t step_y[3];       // change of E_e from row py to py + 1
@@ -51,10 +53,45 @@ using QueryTileFn = bool (*)(const TileWalk& walk);
 /// before the tile's least stored depth): the same stores as DrawTileFn, without the depth test.
 using FillTileFn = void (*)(const TileWalk& walk);
 
+/// Tiles on a side of the largest triangle walked whole (SmallWalk): 3 x 3 tiles hold every
+/// triangle whose pixel bounds are at most 17 pixels on a side.
+constexpr int32_t kSmallTiles = 3;
+
+/// A small triangle walked whole, row by row over its pixel bounds, in 8-pixel chunks aligned to
+/// the tiles (chunk c of a row lies in tile column (px_min >> 3) + c): no per-tile set-up, which
+/// costs more than the few pixels a small triangle has in each tile. The caller has cleared the
+/// tiles it touches and decided which ones to walk.
+struct SmallWalk {
+    float* depth;                     // the tile-major depth buffer
+    std::size_t tiles_x;              // tiles per row of the buffer
+    int32_t px_min, px_max;           // pixels walked, inclusive, within kSmallTiles tile columns
+    int32_t py_min, py_max;           // rows walked, inclusive, within kSmallTiles tile rows
+    bool live[kSmallTiles][kSmallTiles];  // [tile row][tile column], from the first: walk it
+    bool narrow;             // every edge value over the walked pixels fits in int32_t
+    int64_t edge[3];         // E_e + bias_e at pixel (px_min, py_min); covered iff all > 0
+    int64_t step_x[3];       // change of E_e from column px to px + 1
+    int64_t step_y[3];       // change of E_e from row py to py + 1
+    double d0, ddx, ddy, x0, y0_plane;  // the depth plane
+    double offset;           // as TileWalk::offset
+};
+
+/// What a small draw did: the least depth it wrote in each tile (+infinity where none).
+struct SmallDraw {
+    float written_min[kSmallTiles][kSmallTiles];
+};
+
+/// Draws the covered pixels of the live tiles with depth test LESS, writes on.
+using DrawSmallFn = void (*)(const SmallWalk& walk, SmallDraw& out);
+/// True when some covered pixel of a live tile lies behind the stored depth + kDepthTolerance.
+using QuerySmallFn = bool (*)(const SmallWalk& walk);
+
 struct RowKernels {
     DrawTileFn draw;
     QueryTileFn query;
     FillTileFn fill;
+    // The AVX2 small walks need SmallWalk::narrow; the scalar ones take any walk.
+    DrawSmallFn draw_small;
+    QuerySmallFn query_small;
 };
 
 /// The portable loops.
@@ -67,5 +104,7 @@ RowKernels selectRowKernels(bool allow_simd, bool& uses_simd);
 DrawTileFn avx2DrawTile();
 QueryTileFn avx2QueryTile();
 FillTileFn avx2FillTile();
+DrawSmallFn avx2DrawSmall();
+QuerySmallFn avx2QuerySmall();
 
 } // namespace vissort::detail

@@ -1,7 +1,7 @@
 // The AVX2 per-tile walk of FastCpuOracle (fast_rows.h): a row of 8 pixels per step, bit for bit
 // the scalar loop's results.
 //  - Edge tests: the three edge functions of 8 lanes as 8 x int32_t when every walked value fits
-//    (exact; almost always), else as int64_t in two 4-lane halves compared with
+//    (TileWalk::narrow: exact; almost always), else as int64_t in two 4-lane halves compared with
 //    _mm256_cmpgt_epi64 (exact, as in the reference), the masks packed to 8 x 32 bits.
 //  - Depth: per lane, in double, ((d0 + ddx ((px + 0.5) - x0)) + row_term) + offset, the same
 //    operations in the same order as the reference; _mm256_cvtpd_ps rounds to float by MXCSR, to
@@ -18,6 +18,7 @@
 
 #include <immintrin.h>
 
+#include <bit>
 #include <cstdint>
 #include <limits>
 
@@ -30,37 +31,37 @@ namespace {
 
 struct Avx2Row {
     __m256d column_lo, column_hi;  // d0 + ddx ((px + 0.5) - x0) of lanes 0-3 and 4-7
+    alignas(32) double row_term[8];  // ddy ((py + 0.5) - y0) of the tile's rows y0 .. y0 + 7
     __m256i edge_lo[3], edge_hi[3];  // E_e + bias_e of lanes 0-3 and 4-7, current row
     __m256i step_y[3];
-    // When every walked value of every edge fits in int32_t (almost always: a tile is 8 pixels
-    // and a crossing edge is near zero there), the same tests on 8 x 32-bit lanes. Lanes and rows
-    // not walked may wrap around; wrapping is arithmetic modulo 2^32, so the walked values are
-    // exact, and the others are masked out.
+    // When every walked value of every edge fits in int32_t (TileWalk::narrow; almost always: a
+    // crossing edge is near zero over a small triangle), the same tests on 8 x 32-bit lanes.
+    // Lanes and rows not walked may wrap around; wrapping is arithmetic modulo 2^32, so the walked
+    // values are exact, and the others are masked out.
     bool narrow;
     __m256i edge32[3], step_y32[3];
     __m256i lanes_walked;  // 32-bit lanes: all ones on [lane_first, lane_last]
 };
 
-// Does every walked value of edge e fit in int32_t? Bounded by its value at the first walked
-// pixel plus the steps to the farthest one (no overflow: steps are below 2^40).
-inline bool fitsInt32(const TileWalk& w, int e) {
-    const auto magnitude = [](int64_t v) { return v < 0 ? -v : v; };
-    const int64_t reach = magnitude(w.edge[e]) + int64_t(w.lane_last - w.lane_first) * magnitude(w.step_x[e]) +
-                          int64_t(w.rows - 1) * magnitude(w.step_y[e]);
-    return reach <= INT32_MAX;
-}
-
 VISSORT_AVX2 inline void start(const TileWalk& w, Avx2Row& a) {
     const __m256d half = _mm256_set1_pd(0.5);
+    const __m256d four = _mm256_set1_pd(4.0);
     const __m256d x0 = _mm256_set1_pd(w.x0), ddx = _mm256_set1_pd(w.ddx);
     const __m256d d0 = _mm256_set1_pd(w.d0);
-    const __m256d px_lo = _mm256_setr_pd(double(w.vx0), double(w.vx0 + 1), double(w.vx0 + 2),
-                                         double(w.vx0 + 3));
-    const __m256d px_hi = _mm256_add_pd(px_lo, _mm256_set1_pd(4.0));  // exact: small integers
+    // Small integers: every sum below is exact.
+    const __m256d px_lo = _mm256_add_pd(_mm256_set1_pd(double(w.vx0)), _mm256_setr_pd(0, 1, 2, 3));
+    const __m256d px_hi = _mm256_add_pd(px_lo, four);
     a.column_lo = _mm256_add_pd(d0, _mm256_mul_pd(ddx, _mm256_sub_pd(_mm256_add_pd(px_lo, half), x0)));
     a.column_hi = _mm256_add_pd(d0, _mm256_mul_pd(ddx, _mm256_sub_pd(_mm256_add_pd(px_hi, half), x0)));
+    // Each row's term as the scalar loop computes it, eight rows in two vectors.
+    const __m256d y0 = _mm256_set1_pd(w.y0_plane), ddy = _mm256_set1_pd(w.ddy);
+    const __m256d py_lo = _mm256_add_pd(_mm256_set1_pd(double(w.y0)), _mm256_setr_pd(0, 1, 2, 3));
+    const __m256d py_hi = _mm256_add_pd(py_lo, four);
+    _mm256_store_pd(a.row_term, _mm256_mul_pd(ddy, _mm256_sub_pd(_mm256_add_pd(py_lo, half), y0)));
+    _mm256_store_pd(a.row_term + 4,
+                    _mm256_mul_pd(ddy, _mm256_sub_pd(_mm256_add_pd(py_hi, half), y0)));
     const __m256i index = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
-    a.narrow = !w.all_covered && fitsInt32(w, 0) && fitsInt32(w, 1) && fitsInt32(w, 2);
+    a.narrow = !w.all_covered && w.narrow;
     if (!w.all_covered)
         for (int e = 0; e < 3; ++e) {
             const int64_t s = w.step_x[e];
@@ -112,13 +113,25 @@ VISSORT_AVX2 inline __m256 coverage(const TileWalk& w, Avx2Row& a) {
     return _mm256_and_ps(ordered, _mm256_castsi256_ps(a.lanes_walked));
 }
 
-// Rule 6 for the 8 lanes of row py: the row term added, then the offset, then rounded to float.
+// Rule 6 for the 8 lanes of row y0 + r: the row term added, then (kOffset) the offset, then
+// rounded to float. Without kOffset the offset is -0.0, whose addition changes no value.
+template <bool kOffset>
 VISSORT_AVX2 inline __m256 fragments(const TileWalk& w, const Avx2Row& a, int32_t r) {
-    const __m256d row_term = _mm256_set1_pd(w.ddy * ((double(w.y0 + r) + 0.5) - w.y0_plane));
-    const __m256d offset = _mm256_set1_pd(w.offset);
-    const __m128 lo = _mm256_cvtpd_ps(_mm256_add_pd(_mm256_add_pd(a.column_lo, row_term), offset));
-    const __m128 hi = _mm256_cvtpd_ps(_mm256_add_pd(_mm256_add_pd(a.column_hi, row_term), offset));
-    return _mm256_insertf128_ps(_mm256_castps128_ps256(lo), hi, 1);
+    const __m256d row_term = _mm256_broadcast_sd(&a.row_term[r]);
+    __m256d lo = _mm256_add_pd(a.column_lo, row_term), hi = _mm256_add_pd(a.column_hi, row_term);
+    if constexpr (kOffset) {
+        const __m256d offset = _mm256_set1_pd(w.offset);
+        lo = _mm256_add_pd(lo, offset);
+        hi = _mm256_add_pd(hi, offset);
+    }
+    return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm256_cvtpd_ps(lo)), _mm256_cvtpd_ps(hi), 1);
+}
+
+// Whether the walk's offset differs from exact mode's -0.0, bit for bit (adding +0.0 would turn a
+// -0.0 into +0.0).
+template <class Walk>
+inline bool hasOffset(const Walk& w) {
+    return std::bit_cast<uint64_t>(w.offset) != std::bit_cast<uint64_t>(-0.0);
 }
 
 VISSORT_AVX2 inline float horizontalMin(__m256 v) {
@@ -135,7 +148,8 @@ VISSORT_AVX2 inline float horizontalMax(__m256 v) {
     return _mm_cvtss_f32(m);
 }
 
-VISSORT_AVX2 void drawTileAvx2(const TileWalk& w, TileDraw& out) {
+template <bool kOffset>
+VISSORT_AVX2 void drawTile(const TileWalk& w, TileDraw& out) {
     Avx2Row a;
     start(w, a);
     const __m256 infinity = _mm256_set1_ps(std::numeric_limits<float>::infinity());
@@ -144,7 +158,7 @@ VISSORT_AVX2 void drawTileAvx2(const TileWalk& w, TileDraw& out) {
     float* row = w.origin;
     for (int32_t r = 0; r < w.rows; ++r, row += kTileRowFloats) {
         const __m256 covered = coverage(w, a);
-        const __m256 frag = fragments(w, a, r);
+        const __m256 frag = fragments<kOffset>(w, a, r);
         const __m256 stored = _mm256_loadu_ps(row);
         const __m256 pass = _mm256_and_ps(_mm256_cmp_ps(frag, stored, _CMP_LT_OQ), covered);
         const __m256 now = _mm256_blendv_ps(stored, frag, pass);
@@ -155,14 +169,15 @@ VISSORT_AVX2 void drawTileAvx2(const TileWalk& w, TileDraw& out) {
     out = {horizontalMin(written_min), horizontalMax(stored_max)};
 }
 
-VISSORT_AVX2 void fillTileAvx2(const TileWalk& w) {
+template <bool kOffset>
+VISSORT_AVX2 void fillTile(const TileWalk& w) {
     Avx2Row a;
     start(w, a);
     const bool whole_rows = w.all_covered && w.lane_first == 0 && w.lane_last == 7;
     float* row = w.origin;
     for (int32_t r = 0; r < w.rows; ++r, row += kTileRowFloats) {
         const __m256 covered = coverage(w, a);
-        const __m256 frag = fragments(w, a, r);
+        const __m256 frag = fragments<kOffset>(w, a, r);
         if (whole_rows)
             _mm256_storeu_ps(row, frag);
         else
@@ -170,14 +185,15 @@ VISSORT_AVX2 void fillTileAvx2(const TileWalk& w) {
     }
 }
 
-VISSORT_AVX2 bool queryTileAvx2(const TileWalk& w) {
+template <bool kOffset>
+VISSORT_AVX2 bool queryTile(const TileWalk& w) {
     Avx2Row a;
     start(w, a);
     const __m256 tolerance = _mm256_set1_ps(kDepthTolerance);
     const float* row = w.origin;
     for (int32_t r = 0; r < w.rows; ++r, row += kTileRowFloats) {
         const __m256 covered = coverage(w, a);
-        const __m256 frag = fragments(w, a, r);
+        const __m256 frag = fragments<kOffset>(w, a, r);
         const __m256 stored = _mm256_loadu_ps(row);
         const __m256 behind =
             _mm256_and_ps(_mm256_cmp_ps(frag, _mm256_add_ps(stored, tolerance), _CMP_GT_OQ), covered);
@@ -186,11 +202,164 @@ VISSORT_AVX2 bool queryTileAvx2(const TileWalk& w) {
     return false;
 }
 
+// A small triangle's walk (fast_rows.h) over kChunks tile columns: per chunk, the column terms,
+// the edge functions of its 8 lanes on 32 bits (SmallWalk::narrow) and the lanes within the pixel
+// bounds, set up once; then per row and chunk, the edge tests, and for a live tile with a covered
+// lane, rule 6's fragments and visit(row of depths, fragments, covered lanes, chunk), which returns
+// true to stop the walk. after_tile_row(tile row) runs after each tile row's last row. kChunks is
+// a template argument so that the loops over chunks unroll and their state stays in registers.
+template <int32_t kChunks, bool kOffset, class Visit, class AfterTileRow>
+VISSORT_AVX2 inline bool walkSmall(const SmallWalk& w, Visit&& visit, AfterTileRow&& after_tile_row) {
+    const int32_t cx0 = w.px_min & ~int32_t(7), ty0 = w.py_min >> 3;
+    const __m256i index = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    const __m256d half = _mm256_set1_pd(0.5), four = _mm256_set1_pd(4.0);
+    __m256i edge[kChunks][3], step_y[3];
+    __m256i lanes[kChunks];
+    __m256d column_lo[kChunks], column_hi[kChunks];
+    for (int e = 0; e < 3; ++e) step_y[e] = _mm256_set1_epi32(int32_t(uint32_t(uint64_t(w.step_y[e]))));
+    for (int32_t c = 0; c < kChunks; ++c) {
+        const int32_t cx = cx0 + 8 * c;
+        for (int e = 0; e < 3; ++e) {
+            // Lane k of the chunk: E at (px_min, py_min) + (cx + k - px_min) step_x, modulo 2^32
+            // (exact on the walked lanes, which fit; the others are masked out).
+            const int64_t lane0 = w.edge[e] + int64_t(cx - w.px_min) * w.step_x[e];
+            const __m256i s32 = _mm256_set1_epi32(int32_t(uint32_t(uint64_t(w.step_x[e]))));
+            edge[c][e] = _mm256_add_epi32(_mm256_set1_epi32(int32_t(uint32_t(uint64_t(lane0)))),
+                                          _mm256_mullo_epi32(index, s32));
+        }
+        const int32_t first = w.px_min > cx ? w.px_min - cx : 0;
+        const int32_t last = w.px_max - cx < 7 ? w.px_max - cx : 7;
+        lanes[c] = _mm256_and_si256(_mm256_cmpgt_epi32(index, _mm256_set1_epi32(first - 1)),
+                                    _mm256_cmpgt_epi32(_mm256_set1_epi32(last + 1), index));
+        // Small integers: exact sums.
+        const __m256d px_lo = _mm256_add_pd(_mm256_set1_pd(double(cx)), _mm256_setr_pd(0, 1, 2, 3));
+        const __m256d px_hi = _mm256_add_pd(px_lo, four);
+        const __m256d x0 = _mm256_set1_pd(w.x0), ddx = _mm256_set1_pd(w.ddx), d0 = _mm256_set1_pd(w.d0);
+        column_lo[c] = _mm256_add_pd(d0, _mm256_mul_pd(ddx, _mm256_sub_pd(_mm256_add_pd(px_lo, half), x0)));
+        column_hi[c] = _mm256_add_pd(d0, _mm256_mul_pd(ddx, _mm256_sub_pd(_mm256_add_pd(px_hi, half), x0)));
+    }
+    // Row py of chunk c: the tile (ty0 + tile_row, (cx0 >> 3) + c), row py & 7; tiles are stored
+    // one after another, kTileRowFloats rows of kTileRowFloats floats each.
+    constexpr std::size_t kTileFloats = kTileRowFloats * kTileRowFloats;
+    float* row = w.depth + (std::size_t(ty0) * w.tiles_x + std::size_t(cx0 >> 3)) * kTileFloats +
+                 std::size_t(w.py_min & 7) * kTileRowFloats;
+    const __m256i zero = _mm256_setzero_si256();
+    for (int32_t py = w.py_min;; ++py) {
+        const int32_t tile_row = (py >> 3) - ty0;
+        const __m256d row_term = _mm256_set1_pd(w.ddy * ((double(py) + 0.5) - w.y0_plane));
+        for (int32_t c = 0; c < kChunks; ++c) {
+            __m256i in = _mm256_and_si256(_mm256_cmpgt_epi32(edge[c][0], zero),
+                                          _mm256_cmpgt_epi32(edge[c][1], zero));
+            in = _mm256_and_si256(in, _mm256_cmpgt_epi32(edge[c][2], zero));
+            in = _mm256_and_si256(in, lanes[c]);
+            for (int e = 0; e < 3; ++e) edge[c][e] = _mm256_add_epi32(edge[c][e], step_y[e]);
+            if (_mm256_testz_si256(in, in) || !w.live[tile_row][c]) continue;
+            __m256d lo = _mm256_add_pd(column_lo[c], row_term);
+            __m256d hi = _mm256_add_pd(column_hi[c], row_term);
+            if constexpr (kOffset) {
+                const __m256d offset = _mm256_set1_pd(w.offset);
+                lo = _mm256_add_pd(lo, offset);
+                hi = _mm256_add_pd(hi, offset);
+            }
+            const __m256 frag =
+                _mm256_insertf128_ps(_mm256_castps128_ps256(_mm256_cvtpd_ps(lo)), _mm256_cvtpd_ps(hi), 1);
+            if (visit(row + std::size_t(c) * kTileFloats, frag, _mm256_castsi256_ps(in), c))
+                return true;
+        }
+        const bool last_row = py == w.py_max;
+        if ((py & 7) == 7 || last_row) after_tile_row(tile_row);
+        if (last_row) return false;
+        // The next row: in the same tiles, or the first row of the tile row below (one row of
+        // tiles on, back 7 rows).
+        row += (py & 7) == 7 ? w.tiles_x * kTileFloats - 7 * kTileRowFloats : kTileRowFloats;
+    }
+}
+
+template <int32_t kChunks, bool kOffset>
+VISSORT_AVX2 void drawSmall(const SmallWalk& w, SmallDraw& out) {
+    const __m256 infinity = _mm256_set1_ps(std::numeric_limits<float>::infinity());
+    __m256 written_min[kChunks];
+    for (int32_t c = 0; c < kChunks; ++c) written_min[c] = infinity;
+    walkSmall<kChunks, kOffset>(
+        w,
+        [&](float* row, __m256 frag, __m256 covered, int32_t c) VISSORT_AVX2 {
+            const __m256 stored = _mm256_loadu_ps(row);
+            const __m256 pass = _mm256_and_ps(_mm256_cmp_ps(frag, stored, _CMP_LT_OQ), covered);
+            _mm256_storeu_ps(row, _mm256_blendv_ps(stored, frag, pass));
+            written_min[c] = _mm256_min_ps(written_min[c], _mm256_blendv_ps(infinity, frag, pass));
+            return false;
+        },
+        [&](int32_t tile_row) VISSORT_AVX2 {
+            for (int32_t c = 0; c < kChunks; ++c) {
+                out.written_min[tile_row][c] = horizontalMin(written_min[c]);
+                written_min[c] = infinity;
+            }
+        });
+}
+
+template <int32_t kChunks, bool kOffset>
+VISSORT_AVX2 bool querySmall(const SmallWalk& w) {
+    const __m256 tolerance = _mm256_set1_ps(kDepthTolerance);
+    return walkSmall<kChunks, kOffset>(
+        w,
+        [&](float* row, __m256 frag, __m256 covered, int32_t) VISSORT_AVX2 {
+            const __m256 stored = _mm256_loadu_ps(row);
+            const __m256 behind = _mm256_and_ps(
+                _mm256_cmp_ps(frag, _mm256_add_ps(stored, tolerance), _CMP_GT_OQ), covered);
+            return _mm256_movemask_ps(behind) != 0;
+        },
+        [](int32_t) {});
+}
+
+// Tile columns of a small walk: 1 to kSmallTiles.
+inline int32_t chunksOf(const SmallWalk& w) { return ((w.px_max - (w.px_min & ~int32_t(7))) >> 3) + 1; }
+
+template <bool kOffset>
+VISSORT_AVX2 void drawSmallWith(const SmallWalk& w, SmallDraw& out) {
+    switch (chunksOf(w)) {
+    case 1: drawSmall<1, kOffset>(w, out); break;
+    case 2: drawSmall<2, kOffset>(w, out); break;
+    default: drawSmall<3, kOffset>(w, out); break;
+    }
+}
+
+template <bool kOffset>
+VISSORT_AVX2 bool querySmallWith(const SmallWalk& w) {
+    switch (chunksOf(w)) {
+    case 1: return querySmall<1, kOffset>(w);
+    case 2: return querySmall<2, kOffset>(w);
+    default: return querySmall<3, kOffset>(w);
+    }
+}
+
+VISSORT_AVX2 void drawSmallAvx2(const SmallWalk& w, SmallDraw& out) {
+    static_assert(kSmallTiles == 3, "drawSmallWith and querySmallWith dispatch 1 to 3 chunks");
+    // Tiles of rows the walk never reaches keep +infinity (the caller reads only walked ones).
+    for (auto& row : out.written_min)
+        for (float& least : row) least = std::numeric_limits<float>::infinity();
+    hasOffset(w) ? drawSmallWith<true>(w, out) : drawSmallWith<false>(w, out);
+}
+VISSORT_AVX2 bool querySmallAvx2(const SmallWalk& w) {
+    return hasOffset(w) ? querySmallWith<true>(w) : querySmallWith<false>(w);
+}
+
+VISSORT_AVX2 void drawTileAvx2(const TileWalk& w, TileDraw& out) {
+    hasOffset(w) ? drawTile<true>(w, out) : drawTile<false>(w, out);
+}
+VISSORT_AVX2 void fillTileAvx2(const TileWalk& w) {
+    hasOffset(w) ? fillTile<true>(w) : fillTile<false>(w);
+}
+VISSORT_AVX2 bool queryTileAvx2(const TileWalk& w) {
+    return hasOffset(w) ? queryTile<true>(w) : queryTile<false>(w);
+}
+
 } // namespace
 
 DrawTileFn avx2DrawTile() { return drawTileAvx2; }
 QueryTileFn avx2QueryTile() { return queryTileAvx2; }
 FillTileFn avx2FillTile() { return fillTileAvx2; }
+DrawSmallFn avx2DrawSmall() { return drawSmallAvx2; }
+QuerySmallFn avx2QuerySmall() { return querySmallAvx2; }
 
 } // namespace vissort::detail
 
@@ -200,6 +369,8 @@ namespace vissort::detail {
 DrawTileFn avx2DrawTile() { return nullptr; }
 QueryTileFn avx2QueryTile() { return nullptr; }
 FillTileFn avx2FillTile() { return nullptr; }
+DrawSmallFn avx2DrawSmall() { return nullptr; }
+QuerySmallFn avx2QuerySmall() { return nullptr; }
 } // namespace vissort::detail
 
 #endif

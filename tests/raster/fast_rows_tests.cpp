@@ -12,6 +12,9 @@
 #include <cstring>
 #include <limits>
 #include <random>
+#include <vector>
+#include <algorithm>
+#include <string>
 
 namespace vissort::detail {
 namespace {
@@ -68,8 +71,17 @@ RandomWalk makeWalk(std::mt19937_64& rng, EdgeScale scale) {
     w.ddy = (unit(rng) - 0.5) * 0.02;
     w.x0 = w.vx0 + 8 * unit(rng);
     w.y0_plane = w.y0 + 8 * unit(rng);
-    // Exact mode's -0.0, or a conservative spread either way.
-    w.offset = unit(rng) < 0.5 ? -0.0 : (unit(rng) - 0.5) * 0.01;
+    // Exact mode's -0.0, or a conservative spread either way (+0.0 included: it is not -0.0).
+    const double offsets[] = {-0.0, 0.0, (unit(rng) - 0.5) * 0.01};
+    w.offset = offsets[between(0, 2)];
+    // The caller's promise that every walked edge value fits in int32_t, made where it holds (the
+    // 64-bit lanes must give the same results where it is not made).
+    bool fits = true;
+    for (int e = 0; e < 3; ++e)
+        fits &= std::abs(w.edge[e]) + int64_t(w.lane_last - w.lane_first) * std::abs(w.step_x[e]) +
+                    int64_t(w.rows - 1) * std::abs(w.step_y[e]) <=
+                INT32_MAX;
+    w.narrow = fits && unit(rng) < 0.8;
     return r;
 }
 
@@ -116,6 +128,84 @@ TEST(FastRows, Avx2WalksMatchThePortableOnes) {
         EXPECT_GT(queries_behind, 100u);
         EXPECT_GT(pixels_written, 1000u);
     }
+}
+
+// A small walk over a 5 x 4 tile buffer: bounds within kSmallTiles tiles each way, random live
+// tiles, edge functions whose walked values fit in int32_t (the AVX2 walk's condition).
+struct RandomSmallWalk {
+    static constexpr std::size_t kTilesX = 5, kTilesY = 4;
+    std::vector<float> depths;
+    SmallWalk walk;
+};
+
+RandomSmallWalk makeSmallWalk(std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> unit(0, 1);
+    const auto between = [&](int64_t lo, int64_t hi) {
+        return std::uniform_int_distribution<int64_t>(lo, hi)(rng);
+    };
+    RandomSmallWalk r;
+    r.depths.resize(RandomSmallWalk::kTilesX * RandomSmallWalk::kTilesY * 64);
+    for (float& d : r.depths)
+        d = unit(rng) < 0.2 ? std::numeric_limits<float>::infinity() : float(0.3 + 0.4 * unit(rng));
+    SmallWalk& w = r.walk;
+    w.depth = nullptr;  // set by the caller to its copy of the depths
+    w.tiles_x = RandomSmallWalk::kTilesX;
+    const int32_t tx = int32_t(between(0, 2)), ty = int32_t(between(0, 1));
+    const int32_t tiles_wide = int32_t(between(1, kSmallTiles)), tiles_high = int32_t(between(1, 3));
+    w.px_min = int32_t(8 * tx + between(0, 7));
+    w.px_max = int32_t(std::max<int64_t>(w.px_min, 8 * (tx + tiles_wide) - 1 - between(0, 7)));
+    w.py_min = int32_t(8 * ty + between(0, 7));
+    w.py_max = int32_t(std::max<int64_t>(w.py_min, 8 * (ty + tiles_high) - 1 - between(0, 7)));
+    for (auto& row : w.live)
+        for (bool& live : row) live = unit(rng) < 0.8;
+    w.narrow = true;
+    const int64_t span = int64_t(w.px_max - w.px_min) + (w.py_max - w.py_min);
+    for (int e = 0; e < 3; ++e) {
+        w.step_x[e] = between(-(1 << 20), 1 << 20);
+        w.step_y[e] = between(-(1 << 20), 1 << 20);
+        const int64_t reach = span * (1 << 20);  // at most 24 * 2^20 < 2^25
+        w.edge[e] = between(-(int64_t(INT32_MAX) - reach), int64_t(INT32_MAX) - reach) >>
+                    between(0, 8);
+    }
+    w.d0 = 0.2 + 0.6 * unit(rng);
+    w.ddx = (unit(rng) - 0.5) * 0.02;
+    w.ddy = (unit(rng) - 0.5) * 0.02;
+    w.x0 = w.px_min + 8 * unit(rng);
+    w.y0_plane = w.py_min + 8 * unit(rng);
+    const double offsets[] = {-0.0, 0.0, (unit(rng) - 0.5) * 0.01};
+    w.offset = offsets[between(0, 2)];
+    return r;
+}
+
+TEST(FastRows, Avx2SmallWalksMatchThePortableOnes) {
+    bool uses_simd = false;
+    const RowKernels simd = selectRowKernels(true, uses_simd);
+    if (!uses_simd) GTEST_SKIP() << "this CPU has no AVX2: only the portable walks run here";
+    const RowKernels scalar = scalarRowKernels();
+    std::mt19937_64 rng(43);
+    std::size_t queries_behind = 0, pixels_written = 0;
+    for (int i = 0; i < 20000; ++i) {
+        SCOPED_TRACE("walk " + std::to_string(i));
+        RandomSmallWalk r = makeSmallWalk(rng);
+        std::vector<float> a = r.depths, b = r.depths;
+        SmallWalk wa = r.walk, wb = r.walk;
+        wa.depth = a.data();
+        wb.depth = b.data();
+
+        const bool behind = scalar.query_small(wa);
+        ASSERT_EQ(simd.query_small(wb), behind);
+        queries_behind += behind;
+
+        SmallDraw da{}, db{};
+        scalar.draw_small(wa, da);
+        simd.draw_small(wb, db);
+        ASSERT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(float)), 0);
+        ASSERT_EQ(std::memcmp(&da, &db, sizeof(SmallDraw)), 0);
+        for (std::size_t k = 0; k < a.size(); ++k) pixels_written += a[k] != r.depths[k];
+    }
+    // Both answers and real writes were exercised.
+    EXPECT_GT(queries_behind, 1000u);
+    EXPECT_GT(pixels_written, 10000u);
 }
 
 } // namespace
