@@ -71,23 +71,6 @@ double fragmentOffset(double spread, bool conservative) {
     return conservative ? (kDraw ? -spread : spread) : -0.0;
 }
 
-// Whether every edge function of s fits in int32_t over pixels [x0, x1] x [y0, y1]: an edge
-// function is affine, so its extremes over a rectangle are at the corners (no overflow: every
-// term is below 2^62).
-bool edgesFitInt32(const detail::FastSetup& s, int32_t x0, int32_t x1, int32_t y0, int32_t y1) {
-    bool fit = true;
-    for (int e = 0; e < 3; ++e) {
-        const int64_t corner = s.edge_at_origin[e] + int64_t(x0) * s.edge_step_x[e] +
-                               int64_t(y0) * s.edge_step_y[e];
-        const int64_t span_x = int64_t(x1 - x0) * s.edge_step_x[e];
-        const int64_t span_y = int64_t(y1 - y0) * s.edge_step_y[e];
-        const int64_t lowest = corner + std::min<int64_t>(span_x, 0) + std::min<int64_t>(span_y, 0);
-        const int64_t highest = corner + std::max<int64_t>(span_x, 0) + std::max<int64_t>(span_y, 0);
-        fit &= lowest >= -int64_t(INT32_MAX) && highest <= int64_t(INT32_MAX);
-    }
-    return fit;
-}
-
 // Bounds on the double depth value v of every fragment over pixels [x0, x1] x [y0, y1] (see the
 // file comment), offset included (its rounding is within the margin, spread its size). Inlined:
 // it runs once per tile a triangle visits, and a call with results through memory cost 7% of
@@ -175,8 +158,10 @@ void FastCpuOracle::bind(const TrianglePositions& positions, const ViewProjectio
                         &bind_triangles_[i], width_, height_, quad, lanes);
             for (std::size_t l = 0; l < 4; ++l) {
                 reach(i + l);
-                if (lanes[l] == detail::LaneSetup::ready)
+                if (lanes[l] == detail::LaneSetup::ready) {
+                    quad[l].narrow = detail::edgesFitInt32(quad[l]);
                     setups_.push_back(quad[l]);
+                }
                 else if (lanes[l] == detail::LaneSetup::scalar)
                     detail::appendFastSetups(m, positions, bind_triangles_[i + l], width_, height_,
                                              conservative_, setups_);
@@ -237,7 +222,7 @@ bool FastCpuOracle::rasterize(const detail::FastSetup& s, int32_t ty_begin, int3
     walk.y0_plane = s.y0;
     const double spread = spreadOf(s, conservative_);
     walk.offset = fragmentOffset<kDraw>(spread, conservative_);
-    walk.narrow = edgesFitInt32(s, s.px_min, s.px_max, s.py_min, s.py_max);
+    walk.narrow = s.narrow;
     for (int32_t ty = ty_first; ty <= ty_last; ++ty) {
         // Rows of the tile within the viewport, then within the triangle's bounding box.
         const int32_t vy0 = ty << kTileShift, vy1 = std::min(vy0 + int32_t(kTileSize) - 1, last_y);
@@ -360,7 +345,7 @@ bool FastCpuOracle::rasterizeSmall(const detail::FastSetup& s, int32_t ty_first,
     walk.y0_plane = s.y0;
     const double spread = spreadOf(s, conservative_);
     walk.offset = fragmentOffset<kDraw>(spread, conservative_);
-    walk.narrow = edgesFitInt32(s, walk.px_min, walk.px_max, walk.py_min, walk.py_max);
+    walk.narrow = s.narrow;  // over the whole bounds, so over the band's rows too
     double lowest, highest;
     depthBounds(s, walk.px_min, walk.px_max, walk.py_min, walk.py_max, walk.offset, spread, lowest,
                 highest);

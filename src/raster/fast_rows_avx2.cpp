@@ -202,35 +202,39 @@ VISSORT_AVX2 bool queryTile(const TileWalk& w) {
     return false;
 }
 
-// A small triangle's walk (fast_rows.h) over kChunks tile columns: per chunk, the column terms,
-// the edge functions of its 8 lanes on 32 bits (SmallWalk::narrow) and the lanes within the pixel
-// bounds, set up once; then per row and chunk, the edge tests, and for a live tile with a covered
-// lane, rule 6's fragments and visit(row of depths, fragments, covered lanes, chunk), which returns
-// true to stop the walk. after_tile_row(tile row) runs after each tile row's last row. kChunks is
-// a template argument so that the loops over chunks unroll and their state stays in registers.
+// A small triangle's walk (fast_rows.h) over kChunks tile columns (a template argument, so that
+// the loops over chunks unroll and their state stays in registers). Set up once: per chunk, the
+// column terms and the edge functions of its 8 lanes on 32 bits (SmallWalk::narrow) less 1, so
+// that a lane is covered iff the sign bit of E0 - 1 | E1 - 1 | E2 - 1 is clear; per walk, every
+// row's term. Per tile row, each chunk's blocked lanes (outside the bounds, or the whole chunk
+// when its tile is not live), OR-ed into the same sign bits. Then per row and chunk with a
+// covered lane: rule 6's fragments and visit(row of depths, fragments, uncovered lanes' sign bits,
+// chunk), which returns true to stop the walk; after_tile_row(tile row) after each tile row.
 template <int32_t kChunks, bool kOffset, class Visit, class AfterTileRow>
 VISSORT_AVX2 inline bool walkSmall(const SmallWalk& w, Visit&& visit, AfterTileRow&& after_tile_row) {
     const int32_t cx0 = w.px_min & ~int32_t(7), ty0 = w.py_min >> 3;
     const __m256i index = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    const __m256i ones = _mm256_set1_epi32(-1);
     const __m256d half = _mm256_set1_pd(0.5), four = _mm256_set1_pd(4.0);
     __m256i edge[kChunks][3], step_y[3];
-    __m256i lanes[kChunks];
+    __m256i outside[kChunks], blocked[kChunks];
     __m256d column_lo[kChunks], column_hi[kChunks];
     for (int e = 0; e < 3; ++e) step_y[e] = _mm256_set1_epi32(int32_t(uint32_t(uint64_t(w.step_y[e]))));
     for (int32_t c = 0; c < kChunks; ++c) {
         const int32_t cx = cx0 + 8 * c;
         for (int e = 0; e < 3; ++e) {
-            // Lane k of the chunk: E at (px_min, py_min) + (cx + k - px_min) step_x, modulo 2^32
-            // (exact on the walked lanes, which fit; the others are masked out).
-            const int64_t lane0 = w.edge[e] + int64_t(cx - w.px_min) * w.step_x[e];
+            // Lane k of the chunk: E at (px_min, py_min) + (cx + k - px_min) step_x - 1, modulo
+            // 2^32: exact on the walked lanes, whose E lies in [-INT32_MAX, INT32_MAX]; the others
+            // are blocked.
+            const int64_t lane0 = w.edge[e] + int64_t(cx - w.px_min) * w.step_x[e] - 1;
             const __m256i s32 = _mm256_set1_epi32(int32_t(uint32_t(uint64_t(w.step_x[e]))));
             edge[c][e] = _mm256_add_epi32(_mm256_set1_epi32(int32_t(uint32_t(uint64_t(lane0)))),
                                           _mm256_mullo_epi32(index, s32));
         }
         const int32_t first = w.px_min > cx ? w.px_min - cx : 0;
         const int32_t last = w.px_max - cx < 7 ? w.px_max - cx : 7;
-        lanes[c] = _mm256_and_si256(_mm256_cmpgt_epi32(index, _mm256_set1_epi32(first - 1)),
-                                    _mm256_cmpgt_epi32(_mm256_set1_epi32(last + 1), index));
+        outside[c] = _mm256_or_si256(_mm256_cmpgt_epi32(_mm256_set1_epi32(first), index),
+                                     _mm256_cmpgt_epi32(index, _mm256_set1_epi32(last)));
         // Small integers: exact sums.
         const __m256d px_lo = _mm256_add_pd(_mm256_set1_pd(double(cx)), _mm256_setr_pd(0, 1, 2, 3));
         const __m256d px_hi = _mm256_add_pd(px_lo, four);
@@ -238,22 +242,32 @@ VISSORT_AVX2 inline bool walkSmall(const SmallWalk& w, Visit&& visit, AfterTileR
         column_lo[c] = _mm256_add_pd(d0, _mm256_mul_pd(ddx, _mm256_sub_pd(_mm256_add_pd(px_lo, half), x0)));
         column_hi[c] = _mm256_add_pd(d0, _mm256_mul_pd(ddx, _mm256_sub_pd(_mm256_add_pd(px_hi, half), x0)));
     }
+    // Each row's term as the scalar walk computes it, four rows at a time.
+    alignas(32) double row_terms[kSmallTiles * 8];
+    {
+        const __m256d y0 = _mm256_set1_pd(w.y0_plane), ddy = _mm256_set1_pd(w.ddy);
+        __m256d py = _mm256_add_pd(_mm256_set1_pd(double(w.py_min)), _mm256_setr_pd(0, 1, 2, 3));
+        for (int32_t i = 0; i <= w.py_max - w.py_min; i += 4, py = _mm256_add_pd(py, four))
+            _mm256_store_pd(row_terms + i, _mm256_mul_pd(ddy, _mm256_sub_pd(_mm256_add_pd(py, half), y0)));
+    }
     // Row py of chunk c: the tile (ty0 + tile_row, (cx0 >> 3) + c), row py & 7; tiles are stored
     // one after another, kTileRowFloats rows of kTileRowFloats floats each.
     constexpr std::size_t kTileFloats = kTileRowFloats * kTileRowFloats;
     float* row = w.depth + (std::size_t(ty0) * w.tiles_x + std::size_t(cx0 >> 3)) * kTileFloats +
                  std::size_t(w.py_min & 7) * kTileRowFloats;
-    const __m256i zero = _mm256_setzero_si256();
+    const auto block = [&](int32_t tile_row) VISSORT_AVX2 {
+        for (int32_t c = 0; c < kChunks; ++c) blocked[c] = w.live[tile_row][c] ? outside[c] : ones;
+    };
+    block(0);
     for (int32_t py = w.py_min;; ++py) {
         const int32_t tile_row = (py >> 3) - ty0;
-        const __m256d row_term = _mm256_set1_pd(w.ddy * ((double(py) + 0.5) - w.y0_plane));
+        if ((py & 7) == 0) block(tile_row);
+        const __m256d row_term = _mm256_broadcast_sd(&row_terms[py - w.py_min]);
         for (int32_t c = 0; c < kChunks; ++c) {
-            __m256i in = _mm256_and_si256(_mm256_cmpgt_epi32(edge[c][0], zero),
-                                          _mm256_cmpgt_epi32(edge[c][1], zero));
-            in = _mm256_and_si256(in, _mm256_cmpgt_epi32(edge[c][2], zero));
-            in = _mm256_and_si256(in, lanes[c]);
+            const __m256i uncovered = _mm256_or_si256(
+                _mm256_or_si256(edge[c][0], edge[c][1]), _mm256_or_si256(edge[c][2], blocked[c]));
             for (int e = 0; e < 3; ++e) edge[c][e] = _mm256_add_epi32(edge[c][e], step_y[e]);
-            if (_mm256_testz_si256(in, in) || !w.live[tile_row][c]) continue;
+            if (_mm256_movemask_ps(_mm256_castsi256_ps(uncovered)) == 0xFF) continue;
             __m256d lo = _mm256_add_pd(column_lo[c], row_term);
             __m256d hi = _mm256_add_pd(column_hi[c], row_term);
             if constexpr (kOffset) {
@@ -263,7 +277,7 @@ VISSORT_AVX2 inline bool walkSmall(const SmallWalk& w, Visit&& visit, AfterTileR
             }
             const __m256 frag =
                 _mm256_insertf128_ps(_mm256_castps128_ps256(_mm256_cvtpd_ps(lo)), _mm256_cvtpd_ps(hi), 1);
-            if (visit(row + std::size_t(c) * kTileFloats, frag, _mm256_castsi256_ps(in), c))
+            if (visit(row + std::size_t(c) * kTileFloats, frag, _mm256_castsi256_ps(uncovered), c))
                 return true;
         }
         const bool last_row = py == w.py_max;
@@ -282,9 +296,10 @@ VISSORT_AVX2 void drawSmall(const SmallWalk& w, SmallDraw& out) {
     for (int32_t c = 0; c < kChunks; ++c) written_min[c] = infinity;
     walkSmall<kChunks, kOffset>(
         w,
-        [&](float* row, __m256 frag, __m256 covered, int32_t c) VISSORT_AVX2 {
+        [&](float* row, __m256 frag, __m256 uncovered, int32_t c) VISSORT_AVX2 {
+            // blendv and movemask read sign bits only: pass = covered and frag < stored.
             const __m256 stored = _mm256_loadu_ps(row);
-            const __m256 pass = _mm256_and_ps(_mm256_cmp_ps(frag, stored, _CMP_LT_OQ), covered);
+            const __m256 pass = _mm256_andnot_ps(uncovered, _mm256_cmp_ps(frag, stored, _CMP_LT_OQ));
             _mm256_storeu_ps(row, _mm256_blendv_ps(stored, frag, pass));
             written_min[c] = _mm256_min_ps(written_min[c], _mm256_blendv_ps(infinity, frag, pass));
             return false;
@@ -302,10 +317,10 @@ VISSORT_AVX2 bool querySmall(const SmallWalk& w) {
     const __m256 tolerance = _mm256_set1_ps(kDepthTolerance);
     return walkSmall<kChunks, kOffset>(
         w,
-        [&](float* row, __m256 frag, __m256 covered, int32_t) VISSORT_AVX2 {
+        [&](float* row, __m256 frag, __m256 uncovered, int32_t) VISSORT_AVX2 {
             const __m256 stored = _mm256_loadu_ps(row);
-            const __m256 behind = _mm256_and_ps(
-                _mm256_cmp_ps(frag, _mm256_add_ps(stored, tolerance), _CMP_GT_OQ), covered);
+            const __m256 behind = _mm256_andnot_ps(
+                uncovered, _mm256_cmp_ps(frag, _mm256_add_ps(stored, tolerance), _CMP_GT_OQ));
             return _mm256_movemask_ps(behind) != 0;
         },
         [](int32_t) {});

@@ -6,9 +6,25 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cstdlib>
 
 namespace vissort::detail {
+
+bool edgesFitInt32(const FastSetup& s) {
+    bool fit = true;
+    for (int e = 0; e < 3; ++e) {
+        // Every term is below 2^62: no overflow.
+        const int64_t corner = s.edge_at_origin[e] + int64_t(s.px_min) * s.edge_step_x[e] +
+                               int64_t(s.py_min) * s.edge_step_y[e];
+        const int64_t span_x = int64_t(s.px_max - s.px_min) * s.edge_step_x[e];
+        const int64_t span_y = int64_t(s.py_max - s.py_min) * s.edge_step_y[e];
+        const int64_t lowest = corner + std::min<int64_t>(span_x, 0) + std::min<int64_t>(span_y, 0);
+        const int64_t highest = corner + std::max<int64_t>(span_x, 0) + std::max<int64_t>(span_y, 0);
+        fit &= lowest >= -int64_t(INT32_MAX) && highest <= int64_t(INT32_MAX);
+    }
+    return fit;
+}
 
 void appendFastSetups(const Matrix4& clip, const TrianglePositions& positions, std::size_t t,
                       uint32_t width, uint32_t height, bool conservative,
@@ -69,6 +85,7 @@ void appendFastSetups(const Matrix4& clip, const TrianglePositions& positions, s
             s.py_max = int32_t(std::min<int64_t>(max_y >> bits, int64_t(height) - 1));
             if (s.px_min > s.px_max || s.py_min > s.py_max) continue;  // off screen
         }
+        s.narrow = edgesFitInt32(s);
         out.push_back(s);
     }
 }

@@ -26,7 +26,14 @@ struct FastSetup {
     int64_t edge_step_y[3];     // change of E_i from row py to py + 1
     double x0, y0, d0, ddx, ddy;  // depth plane, as in TriangleSetup
     int32_t px_min, px_max, py_min, py_max;  // inclusive, clamped to the viewport
+    // Every edge function fits in int32_t over the pixel bounds (edgesFitInt32), so the AVX2
+    // walks may test edges on 32-bit lanes. Decided once per bind, not per draw or query.
+    bool narrow;
 };
+
+/// Whether every edge function of s (edge_at_origin, steps, pixel bounds) fits in int32_t over
+/// the pixel bounds: an edge function is affine, so its extremes are at the bounds' corners.
+bool edgesFitInt32(const FastSetup& s);
 
 /// Clips, snaps and sets up triangle t of positions (corners 3t .. 3t + 2) for a width x height
 /// viewport, clip being projection * view (rule 1); appends its fan triangles to out (none when
@@ -44,7 +51,7 @@ enum class LaneSetup : uint8_t {
 
 /// Exact-mode set-up of the four triangles triangles[0..3] (ids into the corner arrays x, y, z of
 /// a TrianglePositions) as appendFastSetups would do it, for those that lie inside every clipping
-/// plane; out[i] is written where lanes[i] is ready.
+/// plane; out[i] is written where lanes[i] is ready, all but its narrow flag (edgesFitInt32).
 using SetupQuadFn = void (*)(const Matrix4& clip, const float* x, const float* y, const float* z,
                              const uint32_t* triangles, uint32_t width, uint32_t height,
                              FastSetup* out, LaneSetup* lanes);

@@ -226,6 +226,7 @@ VISSORT_AVX2 void setupQuadAvx2(const Matrix4& m, const float* x, const float* y
         s.px_max = bounds[1][l];
         s.py_min = bounds[2][l];
         s.py_max = bounds[3][l];
+        s.narrow = false;  // the caller's (edgesFitInt32)
     }
 }
 
