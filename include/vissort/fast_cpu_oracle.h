@@ -173,10 +173,10 @@ private:
     // +infinity, whatever its pixels say, until clearTile writes that out (on its first draw, or
     // in depthBuffer(), which is why the states are mutable: the logical contents never change).
     // min is a lower bound on every stored depth (exact after a depth-tested draw; after a draw
-    // whose fragments all pass, the float below that draw's depth bounds); max is an upper bound
-    // on every stored depth (exact after clear and after a depth-tested draw that covers the
-    // whole tile, the float above the depth bounds after a passing draw that covers it, otherwise
-    // left as it was: stored depths only decrease).
+    // whose fragments all pass, its depth bounds' lower end rounded to float); max is an upper
+    // bound on every stored depth (exact after clear and after a depth-tested draw that covers
+    // the whole tile, the upper end rounded after a passing draw that covers it, otherwise left
+    // as it was: stored depths only decrease).
     struct TileState {
         float min, max;
         uint64_t epoch;

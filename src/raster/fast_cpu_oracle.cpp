@@ -32,7 +32,6 @@
 #include "raster/cpu_rasterizer.h"
 #include "raster/fast_rows.h"
 #include "raster/fast_setup.h"
-#include "raster/float_steps.h"
 #include "raster/fast_worker_pool.h"
 
 namespace vissort {
@@ -48,16 +47,6 @@ constexpr std::size_t kTilePixels = std::size_t(detail::kTileRowFloats) * detail
 // with a wide safety factor on the 4 roundings it takes).
 constexpr double kDepthMargin = 0x1p-48;
 
-// The greatest float <= v and the least float >= v (v finite).
-float floatBelow(double v) {
-    const float f = float(v);
-    return double(f) > v ? detail::nextDown(f) : f;
-}
-float floatAbove(double v) {
-    const float f = float(v);
-    return double(f) < v ? detail::nextUp(f) : f;
-}
-
 // Conservative mode: how far the plane moves within half a pixel on each axis, computed as the
 // reference does (|ddx| / 2 + |ddy| / 2). Exact mode: 0.
 double spreadOf(const detail::FastSetup& s, bool conservative) {
@@ -71,16 +60,17 @@ double fragmentOffset(double spread, bool conservative) {
     return conservative ? (kDraw ? -spread : spread) : -0.0;
 }
 
-// Bounds on the double depth value v of every fragment over pixels [x0, x1] x [y0, y1] (see the
-// file comment), offset included (its rounding is within the margin, spread its size). Inlined:
-// it runs once per tile a triangle visits, and a call with results through memory cost 7% of
-// tile-culled queries.
-[[gnu::always_inline]] inline void depthBounds(const detail::FastSetup& s, int32_t x0, int32_t x1, int32_t y0, int32_t y1,
-                 double offset, double spread, double& lowest, double& highest) {
-    const double ax0 = s.ddx * ((double(x0) + 0.5) - s.x0);
-    const double ax1 = s.ddx * ((double(x1) + 0.5) - s.x0);
-    const double by0 = s.ddy * ((double(y0) + 0.5) - s.y0);
-    const double by1 = s.ddy * ((double(y1) + 0.5) - s.y0);
+// The plane's column and row terms of rule 6: ddx ((x + 0.5) - x0) and ddy ((y + 0.5) - y0).
+double columnTerm(const detail::FastSetup& s, int32_t x) { return s.ddx * ((double(x) + 0.5) - s.x0); }
+double rowTerm(const detail::FastSetup& s, int32_t y) { return s.ddy * ((double(y) + 0.5) - s.y0); }
+
+// Bounds on the double depth value v of every fragment over a rectangle whose corner columns have
+// terms ax0, ax1 and corner rows by0, by1 (see the file comment), offset included (its rounding
+// is within the margin, spread its size). Inlined: it runs once per tile a triangle visits, and a
+// call with results through memory cost 7% of tile-culled queries.
+[[gnu::always_inline]] inline void depthBounds(const detail::FastSetup& s, double ax0, double ax1,
+                                               double by0, double by1, double offset,
+                                               double spread, double& lowest, double& highest) {
     const double margin = kDepthMargin * (std::abs(s.d0) + std::max(std::abs(ax0), std::abs(ax1)) +
                                           std::max(std::abs(by0), std::abs(by1)) + spread);
     lowest = s.d0 + std::min(ax0, ax1) + std::min(by0, by1) + offset - margin;
@@ -227,6 +217,18 @@ bool FastCpuOracle::rasterize(const detail::FastSetup& s, int32_t ty_begin, int3
         // Rows of the tile within the viewport, then within the triangle's bounding box.
         const int32_t vy0 = ty << kTileShift, vy1 = std::min(vy0 + int32_t(kTileSize) - 1, last_y);
         const int32_t y0 = std::max(vy0, s.py_min), y1 = std::min(vy1, s.py_max);
+        const bool whole_rows = y0 == vy0 && y1 == vy1;
+        // What the tiles of this row share: each edge at (px_min, y0) and its least and greatest
+        // change over the rows, and the depth plane's row terms.
+        int64_t edge_at_row[3], rise_low[3], rise_high[3];
+        for (int e = 0; e < 3; ++e) {
+            edge_at_row[e] = s.edge_at_origin[e] + int64_t(s.px_min) * s.edge_step_x[e] +
+                             int64_t(y0) * s.edge_step_y[e];
+            const int64_t span_y = int64_t(y1 - y0) * s.edge_step_y[e];
+            rise_low[e] = std::min<int64_t>(span_y, 0);
+            rise_high[e] = std::max<int64_t>(span_y, 0);
+        }
+        const double by0 = rowTerm(s, y0), by1 = rowTerm(s, y1);
         for (int32_t tx = tx_first; tx <= tx_last; ++tx) {
             ++stats.tiles_visited;
             const int32_t vx0 = tx << kTileShift;
@@ -237,14 +239,10 @@ bool FastCpuOracle::rasterize(const detail::FastSetup& s, int32_t ty_begin, int3
             int64_t edge_row[3];
             bool inside_all = true, outside_one = false;
             for (int e = 0; e < 3; ++e) {
-                edge_row[e] = s.edge_at_origin[e] + int64_t(x0) * s.edge_step_x[e] +
-                              int64_t(y0) * s.edge_step_y[e];
+                edge_row[e] = edge_at_row[e] + int64_t(x0 - s.px_min) * s.edge_step_x[e];
                 const int64_t span_x = int64_t(x1 - x0) * s.edge_step_x[e];
-                const int64_t span_y = int64_t(y1 - y0) * s.edge_step_y[e];
-                const int64_t lowest = edge_row[e] + std::min<int64_t>(span_x, 0) +
-                                       std::min<int64_t>(span_y, 0);
-                const int64_t highest = edge_row[e] + std::max<int64_t>(span_x, 0) +
-                                        std::max<int64_t>(span_y, 0);
+                const int64_t lowest = edge_row[e] + std::min<int64_t>(span_x, 0) + rise_low[e];
+                const int64_t highest = edge_row[e] + std::max<int64_t>(span_x, 0) + rise_high[e];
                 outside_one |= highest <= 0;
                 inside_all &= lowest > 0;
             }
@@ -253,7 +251,8 @@ bool FastCpuOracle::rasterize(const detail::FastSetup& s, int32_t ty_begin, int3
                 ++stats.tiles_culled;
                 continue;
             }
-            if (tiles_[tile].epoch != epoch_) {
+            TileState& state = tiles_[tile];
+            if (state.epoch != epoch_) {
                 // Cleared since last touched: a query finds nothing behind +infinity.
                 if constexpr (!kDraw) {
                     ++stats.tiles_culled;
@@ -261,30 +260,31 @@ bool FastCpuOracle::rasterize(const detail::FastSetup& s, int32_t ty_begin, int3
                 }
                 clearTile(tile);
             }
-            const bool full_tile = inside_all && x0 == vx0 && x1 == vx1 && y0 == vy0 && y1 == vy1;
+            const bool full_tile = inside_all && whole_rows && x0 == vx0 && x1 == vx1;
 
+            // Rounding to float is monotone: every fragment lies in [float(lowest),
+            // float(highest)], and these decide every comparison with a float exactly.
             double lowest, highest;
-            depthBounds(s, x0, x1, y0, y1, walk.offset, spread, lowest, highest);
+            depthBounds(s, columnTerm(s, x0), columnTerm(s, x1), by0, by1, walk.offset, spread,
+                        lowest, highest);
             bool all_pass = false;
             if constexpr (kDraw) {
                 // Every fragment >= the tile's max >= every stored depth: none passes LESS.
-                if (lowest >= double(tiles_[tile].max)) {
+                if (float(lowest) >= state.max) {
                     ++stats.tiles_culled;
                     continue;
                 }
-                // Every fragment < the float below the tile's min (so, rounded, < min <= every
-                // stored depth): all pass, no depth test needed (the common case back to front).
-                all_pass = highest < double(detail::nextDown(tiles_[tile].min));
+                // Every fragment < the tile's min <= every stored depth: all pass, no depth test
+                // needed (the common case back to front).
+                all_pass = float(highest) < state.min;
             } else {
                 // Every fragment <= the tile's min + tolerance <= stored + tolerance: none behind.
-                if (highest <= double(tiles_[tile].min + kDepthTolerance)) {
+                if (float(highest) <= state.min + kDepthTolerance) {
                     ++stats.tiles_culled;
                     continue;
                 }
                 // Every pixel covered, every fragment > the tile's max + tolerance: behind somewhere.
-                const float limit = tiles_[tile].max + kDepthTolerance;
-                if (full_tile && std::isfinite(limit) &&
-                    lowest >= double(detail::nextUp(limit))) {
+                if (full_tile && float(lowest) > state.max + kDepthTolerance) {
                     ++stats.tiles_accepted;
                     return true;
                 }
@@ -303,16 +303,16 @@ bool FastCpuOracle::rasterize(const detail::FastSetup& s, int32_t ty_begin, int3
                 if (all_pass) {
                     fill_tile_(walk);
                     // Bounds from the depth bounds instead of the pixels: every fragment written
-                    // lies in [lowest, highest], rounded outward to floats.
-                    tiles_[tile].min = std::min(tiles_[tile].min, floatBelow(lowest));
-                    if (full_tile) tiles_[tile].max = floatAbove(highest);
+                    // lies in [float(lowest), float(highest)].
+                    state.min = std::min(state.min, float(lowest));
+                    if (full_tile) state.max = float(highest);
                     continue;
                 }
                 detail::TileDraw result;
                 draw_tile_(walk, result);
-                tiles_[tile].min = std::min(tiles_[tile].min, result.written_min);
+                state.min = std::min(state.min, result.written_min);
                 // A draw covering the whole tile visited every stored depth: the bound is exact.
-                if (full_tile) tiles_[tile].max = result.stored_max;
+                if (full_tile) state.max = result.stored_max;
             } else {
                 if (query_tile_(walk)) return true;
             }
@@ -347,8 +347,8 @@ bool FastCpuOracle::rasterizeSmall(const detail::FastSetup& s, int32_t ty_first,
     walk.offset = fragmentOffset<kDraw>(spread, conservative_);
     walk.narrow = s.narrow;  // over the whole bounds, so over the band's rows too
     double lowest, highest;
-    depthBounds(s, walk.px_min, walk.px_max, walk.py_min, walk.py_max, walk.offset, spread, lowest,
-                highest);
+    depthBounds(s, columnTerm(s, walk.px_min), columnTerm(s, walk.px_max), rowTerm(s, walk.py_min),
+                rowTerm(s, walk.py_max), walk.offset, spread, lowest, highest);
 
     // Which tiles to walk, decided as the tile walk decides (rasterize), with the triangle's
     // depth bounds for each tile's.

@@ -173,15 +173,17 @@ template <bool kOffset>
 VISSORT_AVX2 void fillTile(const TileWalk& w) {
     Avx2Row a;
     start(w, a);
-    const bool whole_rows = w.all_covered && w.lane_first == 0 && w.lane_last == 7;
     float* row = w.origin;
+    if (w.all_covered && w.lane_first == 0 && w.lane_last == 7) {
+        // Whole rows (the inside of a large triangle): stores only.
+        for (int32_t r = 0; r < w.rows; ++r, row += kTileRowFloats)
+            _mm256_storeu_ps(row, fragments<kOffset>(w, a, r));
+        return;
+    }
     for (int32_t r = 0; r < w.rows; ++r, row += kTileRowFloats) {
         const __m256 covered = coverage(w, a);
         const __m256 frag = fragments<kOffset>(w, a, r);
-        if (whole_rows)
-            _mm256_storeu_ps(row, frag);
-        else
-            _mm256_storeu_ps(row, _mm256_blendv_ps(_mm256_loadu_ps(row), frag, covered));
+        _mm256_storeu_ps(row, _mm256_blendv_ps(_mm256_loadu_ps(row), frag, covered));
     }
 }
 
