@@ -14,6 +14,10 @@
 //  - queries stop at the first fragment behind; draws and queries allocate nothing;
 //  - the pixels of a tile are walked a row at a time, 8 lanes wide with AVX2 where the CPU has it
 //    (chosen once at run time; the scalar loop is the portable fallback, same bits);
+//  - a small triangle (pixel bounds within 3 x 3 tiles: most triangles of a detailed mesh) is
+//    walked whole, row by row in tile-aligned chunks of 8 pixels, its tiles cleared and culled
+//    before and their bounds updated after, without the per-tile set-up that costs more than
+//    the few pixels it has in each tile;
 //  - backToFrontPass and queryAgainst can split the tile rows into screen bands (one per thread,
 //    claimed in turn): each band runs the whole sequence on its own tiles, and the answers are
 //    OR-ed across bands. Off by default (FastCpuOracleOptions::threads).
