@@ -60,6 +60,24 @@ double fragmentOffset(double spread, bool conservative) {
     return conservative ? (kDraw ? -spread : spread) : -0.0;
 }
 
+// What every walk of s shares (fast_rows.h), for a draw or a query.
+template <bool kDraw>
+detail::TriangleWalk triangleWalk(const detail::FastSetup& s, double spread, bool conservative) {
+    detail::TriangleWalk walk;
+    walk.narrow = s.narrow;
+    for (int e = 0; e < 3; ++e) {
+        walk.step_x[e] = s.edge_step_x[e];
+        walk.step_y[e] = s.edge_step_y[e];
+    }
+    walk.d0 = s.d0;
+    walk.ddx = s.ddx;
+    walk.ddy = s.ddy;
+    walk.x0 = s.x0;
+    walk.y0_plane = s.y0;
+    walk.offset = fragmentOffset<kDraw>(spread, conservative);
+    return walk;
+}
+
 // The plane's column and row terms of rule 6: ddx ((x + 0.5) - x0) and ddy ((y + 0.5) - y0).
 double columnTerm(const detail::FastSetup& s, int32_t x) { return s.ddx * ((double(x) + 0.5) - s.x0); }
 double rowTerm(const detail::FastSetup& s, int32_t y) { return s.ddy * ((double(y) + 0.5) - s.y0); }
@@ -201,18 +219,8 @@ bool FastCpuOracle::rasterize(const detail::FastSetup& s, int32_t ty_begin, int3
         return rasterizeSmall<kDraw>(s, ty_first, ty_last, stats);
     const int32_t last_x = int32_t(width_) - 1, last_y = int32_t(height_) - 1;
     detail::TileWalk walk;
-    for (int e = 0; e < 3; ++e) {
-        walk.step_x[e] = s.edge_step_x[e];
-        walk.step_y[e] = s.edge_step_y[e];
-    }
-    walk.d0 = s.d0;
-    walk.ddx = s.ddx;
-    walk.ddy = s.ddy;
-    walk.x0 = s.x0;
-    walk.y0_plane = s.y0;
     const double spread = spreadOf(s, conservative_);
-    walk.offset = fragmentOffset<kDraw>(spread, conservative_);
-    walk.narrow = s.narrow;
+    static_cast<detail::TriangleWalk&>(walk) = triangleWalk<kDraw>(s, spread, conservative_);
     for (int32_t ty = ty_first; ty <= ty_last; ++ty) {
         // Rows of the tile within the viewport, then within the triangle's bounding box.
         const int32_t vy0 = ty << kTileShift, vy1 = std::min(vy0 + int32_t(kTileSize) - 1, last_y);
@@ -332,20 +340,12 @@ bool FastCpuOracle::rasterizeSmall(const detail::FastSetup& s, int32_t ty_first,
     // The rows of the band.
     walk.py_min = std::max(s.py_min, ty_first << kTileShift);
     walk.py_max = std::min(s.py_max, (ty_last << kTileShift) + int32_t(kTileSize) - 1);
-    for (int e = 0; e < 3; ++e) {
+    for (int e = 0; e < 3; ++e)
         walk.edge[e] = s.edge_at_origin[e] + int64_t(walk.px_min) * s.edge_step_x[e] +
                        int64_t(walk.py_min) * s.edge_step_y[e];
-        walk.step_x[e] = s.edge_step_x[e];
-        walk.step_y[e] = s.edge_step_y[e];
-    }
-    walk.d0 = s.d0;
-    walk.ddx = s.ddx;
-    walk.ddy = s.ddy;
-    walk.x0 = s.x0;
-    walk.y0_plane = s.y0;
+    // narrow holds over the whole bounds, so over the band's rows too.
     const double spread = spreadOf(s, conservative_);
-    walk.offset = fragmentOffset<kDraw>(spread, conservative_);
-    walk.narrow = s.narrow;  // over the whole bounds, so over the band's rows too
+    static_cast<detail::TriangleWalk&>(walk) = triangleWalk<kDraw>(s, spread, conservative_);
     double lowest, highest;
     depthBounds(s, columnTerm(s, walk.px_min), columnTerm(s, walk.px_max), rowTerm(s, walk.py_min),
                 rowTerm(s, walk.py_max), walk.offset, spread, lowest, highest);

@@ -28,6 +28,19 @@ struct RandomWalk {
     TileDepths depths;
 };
 
+// A depth plane through a point near pixel (x, y), and exact mode's -0.0 offset or a
+// conservative spread either way (+0.0 included: it is not -0.0).
+void randomPlane(std::mt19937_64& rng, int32_t x, int32_t y, TriangleWalk& w) {
+    std::uniform_real_distribution<double> unit(0, 1);
+    w.d0 = 0.2 + 0.6 * unit(rng);
+    w.ddx = (unit(rng) - 0.5) * 0.02;
+    w.ddy = (unit(rng) - 0.5) * 0.02;
+    w.x0 = x + 8 * unit(rng);
+    w.y0_plane = y + 8 * unit(rng);
+    const double offsets[] = {-0.0, 0.0, (unit(rng) - 0.5) * 0.01};
+    w.offset = offsets[std::uniform_int_distribution<int>(0, 2)(rng)];
+}
+
 RandomWalk makeWalk(std::mt19937_64& rng, EdgeScale scale) {
     std::uniform_real_distribution<double> unit(0, 1);
     const auto between = [&](int64_t lo, int64_t hi) {
@@ -66,14 +79,7 @@ RandomWalk makeWalk(std::mt19937_64& rng, EdgeScale scale) {
             break;
         }
     }
-    w.d0 = 0.2 + 0.6 * unit(rng);
-    w.ddx = (unit(rng) - 0.5) * 0.02;
-    w.ddy = (unit(rng) - 0.5) * 0.02;
-    w.x0 = w.vx0 + 8 * unit(rng);
-    w.y0_plane = w.y0 + 8 * unit(rng);
-    // Exact mode's -0.0, or a conservative spread either way (+0.0 included: it is not -0.0).
-    const double offsets[] = {-0.0, 0.0, (unit(rng) - 0.5) * 0.01};
-    w.offset = offsets[between(0, 2)];
+    randomPlane(rng, w.vx0, w.y0, w);
     // The caller's promise that every walked edge value fits in int32_t, made where it holds (the
     // 64-bit lanes must give the same results where it is not made).
     bool fits = true;
@@ -167,13 +173,7 @@ RandomSmallWalk makeSmallWalk(std::mt19937_64& rng) {
         w.edge[e] = between(-(int64_t(INT32_MAX) - reach), int64_t(INT32_MAX) - reach) >>
                     between(0, 8);
     }
-    w.d0 = 0.2 + 0.6 * unit(rng);
-    w.ddx = (unit(rng) - 0.5) * 0.02;
-    w.ddy = (unit(rng) - 0.5) * 0.02;
-    w.x0 = w.px_min + 8 * unit(rng);
-    w.y0_plane = w.py_min + 8 * unit(rng);
-    const double offsets[] = {-0.0, 0.0, (unit(rng) - 0.5) * 0.01};
-    w.offset = offsets[between(0, 2)];
+    randomPlane(rng, w.px_min, w.py_min, w);
     return r;
 }
 
