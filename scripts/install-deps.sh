@@ -12,6 +12,10 @@ packages=(
   nlohmann-json3-dev         # JSON scenes and --json output
   libcli11-dev               # command-line parsing
   libembree-dev              # ray casting for the exact oracle and the ground truth
+  libegl-dev libopengl-dev   # headless OpenGL: EGL and glvnd's libOpenGL (the gl oracle)
+  libgl-dev                  # the OpenGL 4.5 core headers (GL/glcorearb.h)
+  libegl-mesa0               # Mesa's EGL: the surfaceless platform, and the device platform
+  libgl1-mesa-dri            # llvmpipe: OpenGL on the CPU, where there is no GPU driver
   libgtest-dev               # the test suite
   libbenchmark-dev           # the Google Benchmark suite (built by the test script, not run)
 )

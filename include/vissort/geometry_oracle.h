@@ -43,14 +43,17 @@ enum class OracleKind {
     cpu_reference,  // "cpu-reference": the plain rasterizer that defines the cpu answers
                     // (cpu_oracle.h); cpu gives identical answers, faster
     exact,          // "exact": ray casting at pixel centres in double (exact_oracle.h)
+    gl,             // "gl": OpenGL occlusion queries through headless EGL (gl_oracle.h)
 };
 
-/// Parses "cpu", "cpu-reference" or "exact"; returns false when the name is unknown.
+/// Parses "cpu", "cpu-reference", "exact" or "gl"; returns false when the name is unknown.
 bool parseOracleKind(const std::string& name, OracleKind& kind);
 const char* oracleName(OracleKind kind);
 
-/// The oracle of that kind sampling in that mode. The exact oracle ray-casts pixel centres and
-/// has no conservative mode: asking for one throws std::invalid_argument.
+/// The oracle of that kind sampling in that mode. The exact and gl oracles have no conservative
+/// mode: asking for one throws std::invalid_argument. The gl oracle uses the process's shared
+/// context (GlContext::shared); when there is none, or vissort was built without OpenGL, it
+/// throws std::runtime_error with a one-line message naming what is missing.
 std::unique_ptr<GeometryOracle> makeOracle(OracleKind kind, RasterMode mode = RasterMode::exact);
 
 /// The rasterizing oracles that `vissort bench oracle` compares (the exact oracle ray-casts every

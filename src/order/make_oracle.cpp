@@ -5,12 +5,17 @@
 
 #include <stdexcept>
 
+#if VISSORT_WITH_GL
+#include "vissort/gl_oracle.h"
+#endif
+
 namespace vissort {
 
 bool parseOracleKind(const std::string& name, OracleKind& kind) {
     if (name == "cpu") kind = OracleKind::cpu;
     else if (name == "cpu-reference") kind = OracleKind::cpu_reference;
     else if (name == "exact") kind = OracleKind::exact;
+    else if (name == "gl") kind = OracleKind::gl;
     else return false;
     return true;
 }
@@ -20,6 +25,7 @@ const char* oracleName(OracleKind kind) {
     case OracleKind::cpu: return "cpu";
     case OracleKind::cpu_reference: return "cpu-reference";
     case OracleKind::exact: return "exact";
+    case OracleKind::gl: return "gl";
     }
     return "?";
 }
@@ -36,6 +42,17 @@ std::unique_ptr<GeometryOracle> makeOracle(OracleKind kind, RasterMode mode) {
         if (mode != RasterMode::exact)
             throw std::invalid_argument("the exact oracle has no conservative mode (use cpu)");
         return std::make_unique<ExactOracle>();
+    case OracleKind::gl: {
+        if (mode != RasterMode::exact)
+            throw std::invalid_argument("the gl oracle has no conservative mode (use cpu)");
+#if VISSORT_WITH_GL
+        Loaded<std::shared_ptr<GlContext>> context = GlContext::shared();
+        if (!context) throw std::runtime_error(context.error);
+        return std::make_unique<GlOracle>(*context.value);
+#else
+        throw std::runtime_error("this vissort was built without OpenGL (VISSORT_WITH_GL=OFF)");
+#endif
+    }
     }
     return nullptr;
 }

@@ -8,20 +8,13 @@
 #include <gtest/gtest.h>
 
 #include "ground_truth.h"
+#include "test_scene_loading.h"
 #include "tarjan_scc.h"
 #include "vissort/scene_library.h"
 #include "vissort/scene_orderer.h"
 
 namespace vissort {
 namespace {
-
-Scene load(const std::string& spec) {
-    const std::string path =
-        spec.rfind("builtin:", 0) == 0 ? spec : std::string(VISSORT_SOURCE_DIR) + "/" + spec;
-    Loaded<Scene> loaded = loadScene(path);
-    EXPECT_TRUE(loaded) << loaded.error;
-    return loaded ? std::move(*loaded.value) : Scene{};
-}
 
 struct Case {
     std::string scene;
@@ -74,7 +67,7 @@ class OrderAgainstGroundTruth : public testing::TestWithParam<Case> {};
 
 TEST_P(OrderAgainstGroundTruth, NoOcclusionIsOrderedBackwards) {
     const Case& c = GetParam();
-    const Scene scene = load(c.scene);
+    const Scene scene = test::loadTestScene(c.scene);
     ASSERT_FALSE(scene.objects.empty());
     const ViewProjection view = viewOf(scene, c);
     auto oracle = makeOracle(c.oracle);
@@ -134,7 +127,7 @@ const Case kCases[] = {
 INSTANTIATE_TEST_SUITE_P(Scenes, OrderAgainstGroundTruth, testing::ValuesIn(kCases), caseName);
 
 TEST(SceneOrderer, StackHasDepthComplexityOver30) {
-    const Scene scene = load("tests/data/scenes/stack.json");
+    const Scene scene = test::loadTestScene("tests/data/scenes/stack.json");
     const ViewProjection view =
         frameCamera(*scene.camera, scene.positions.bounds(), 64, 64);
     const auto primitives = primitivesOf(scene, OrderLevel::object);
@@ -148,7 +141,7 @@ TEST(SceneOrderer, StackHasDepthComplexityOver30) {
 }
 
 TEST(SceneOrderer, ThreeSticksFormOneCycleOfThree) {
-    const Scene scene = load("tests/data/scenes/three_sticks.json");
+    const Scene scene = test::loadTestScene("tests/data/scenes/three_sticks.json");
     const ViewProjection view = frameCamera(*scene.camera, scene.positions.bounds(), 128, 128);
     auto oracle = makeOracle(OracleKind::cpu);
     SceneOrderer orderer(scene, OrderLevel::object, *oracle);
@@ -158,7 +151,7 @@ TEST(SceneOrderer, ThreeSticksFormOneCycleOfThree) {
 }
 
 TEST(SceneOrderer, CoherentFramesCostAboutLinearQueries) {
-    const Scene scene = load("builtin:bunnies?n=8&seed=5");
+    const Scene scene = test::loadTestScene("builtin:bunnies?n=8&seed=5");
     ASSERT_TRUE(scene.isDynamic());
     auto oracle = makeOracle(OracleKind::cpu);
     SceneOrderer orderer(scene, OrderLevel::object, *oracle);
@@ -180,7 +173,7 @@ TEST(SceneOrderer, CoherentFramesCostAboutLinearQueries) {
 }
 
 TEST(SceneOrderer, MultistageOutputsEveryTriangleOnce) {
-    const Scene scene = load("tests/data/scenes/interpenetrating.json");
+    const Scene scene = test::loadTestScene("tests/data/scenes/interpenetrating.json");
     const ViewProjection view = frameCamera(*scene.camera, scene.positions.bounds(), 64, 64);
     auto oracle = makeOracle(OracleKind::cpu);
     SceneOrderer orderer(scene, OrderLevel::multistage, *oracle);
@@ -194,7 +187,7 @@ TEST(MakeOracle, ConservativeModeAddsBehindAnswersAndExactOracleRefusesIt) {
     // Every pair of the 36 tilted slabs: the conservative cpu oracles answer "behind" wherever
     // the exact ones do, and more often (a pixel's farthest depth on a sloped face lies behind
     // the nearest depth drawn there, and edges reach every pixel they touch).
-    const Scene scene = load("tests/data/scenes/stack.json");
+    const Scene scene = test::loadTestScene("tests/data/scenes/stack.json");
     const ViewProjection view = frameCamera(*scene.camera, scene.positions.bounds(), 64, 64);
     const auto primitives = primitivesOf(scene, OrderLevel::object);
     for (OracleKind kind : {OracleKind::cpu, OracleKind::cpu_reference}) {

@@ -1,0 +1,13 @@
+#pragma once
+// Compiles and links the GLSL programs of everything that renders (the oracle, the renderer).
+
+#include "gl/gl_objects.h"
+
+namespace vissort::detail {
+
+/// Links a program from vertex and fragment shader sources; throws std::runtime_error with the
+/// driver's log when a stage does not compile or the program does not link. Needs a current
+/// context.
+GlProgram linkProgram(const char* vertex_source, const char* fragment_source);
+
+} // namespace vissort::detail
