@@ -22,6 +22,7 @@ int runOrder(const OrderOptions& options);
 struct InfoOptions {
     std::string scene;
     ViewOptions view;
+    bool gl = false;
 };
 CLI::App* addInfoCommand(CLI::App& app, InfoOptions& options);
 int runInfo(const InfoOptions& options);
@@ -30,6 +31,7 @@ struct BenchOptions {
     std::string what;
     int repeat = 3;
     int frames = 11;
+    int gl_frames = 5;
     std::string json_path;
 };
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options);

@@ -4,6 +4,7 @@
 
 #include "cli/commands.h"
 #include "exact/ray_caster.h"
+#include "vissort/gl_context.h"
 
 namespace vissort::cli {
 namespace {
@@ -18,13 +19,37 @@ CLI::App* addInfoCommand(CLI::App& app, InfoOptions& options) {
     CLI::App* command = app.add_subcommand("info", "Describe a scene: objects, triangles, bounds, "
                                                    "depth complexity from a view");
     command->add_option("scene", options.scene,
-                        "Mesh file, JSON scene, or builtin:NAME?key=value&...")
-        ->required();
+                        "Mesh file, JSON scene, or builtin:NAME?key=value&... (optional with --gl)");
+    command->add_flag("--gl", options.gl,
+                      "Print the OpenGL context's EGL platform, vendor, renderer and version "
+                      "(VISSORT_GL_PLATFORM=auto|device|surfaceless picks the platform)");
     addViewOptions(*command, options.view);
     return command;
 }
 
+namespace {
+
+int printGlInfo() {
+    Loaded<std::shared_ptr<GlContext>> context = GlContext::shared();
+    if (!context) return fail(kExitFailure, context.error);
+    const GlContextInfo& info = (*context.value)->info();
+    std::cout << "OpenGL: " << info.version << '\n'
+              << "  renderer: " << info.renderer << '\n'
+              << "  vendor: " << info.vendor << '\n'
+              << "  EGL platform: " << info.platform
+              << (info.device.empty() ? "" : " (" + info.device + ")") << '\n';
+    return kExitOk;
+}
+
+} // namespace
+
 int runInfo(const InfoOptions& options) {
+    if (options.gl) {
+        if (const int code = printGlInfo(); code != kExitOk) return code;
+        if (options.scene.empty()) return kExitOk;
+    } else if (options.scene.empty()) {
+        return fail(kExitUsage, "info needs a scene, or --gl (run 'vissort info --help')");
+    }
     std::optional<Scene> scene = loadSceneOrReport(options.scene);
     if (!scene) return kExitInput;
     ResolvedView view;

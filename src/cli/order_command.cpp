@@ -64,7 +64,10 @@ CLI::App* addOrderCommand(CLI::App& app, OrderOptions& options) {
     addViewOptions(*command, options.view);
     command->add_option("--level", options.level, "object, triangle or multistage")
         ->capture_default_str();
-    command->add_option("--oracle", options.oracle, "cpu, cpu-reference or exact")->capture_default_str();
+    command->add_option("--oracle", options.oracle,
+                        "cpu, cpu-reference, exact or gl (OpenGL through headless EGL; "
+                        "VISSORT_GL_PLATFORM=auto|device|surfaceless picks the EGL platform)")
+        ->capture_default_str();
     command->add_flag("--back-to-front", options.back_to_front,
                       "Output back to front (default front to back)");
     command->add_option("--json", options.json_path, "Write the order and statistics as JSON");
@@ -80,7 +83,8 @@ int runOrder(const OrderOptions& options) {
                                     options.level + "'");
     OracleKind oracle_kind;
     if (!parseOracleKind(options.oracle, oracle_kind))
-        return fail(kExitUsage, "--oracle must be cpu, cpu-reference or exact, got '" + options.oracle + "'");
+        return fail(kExitUsage, "--oracle must be cpu, cpu-reference, exact or gl, got '" +
+                                    options.oracle + "'");
     std::optional<Scene> scene = loadSceneOrReport(options.scene);
     if (!scene) return kExitInput;
     ResolvedView view;

@@ -468,25 +468,42 @@ TEST_F(Cli, InfoOnSlabs) {
     EXPECT_GE(std::stoi(match[1]), 12) << r;
 }
 
-// Every rasterizing oracle, every workload, one row each, with plausible values; and the same
-// order from cpu and cpu-reference (identical answers, so identical query counts).
+// Every rasterizing oracle, every workload, one row each, with plausible values: the CPU
+// rasterizers on the synthetic workloads, and OpenGL beside them on the real ones; the same
+// queries per frame from cpu and cpu-reference (identical answers), frame for frame.
 TEST_F(Cli, BenchOracleMeasuresEveryOracleInOneRun) {
     const Result r = run({"bench", "oracle", "--repeat", "1", "--frames", "2", "--json", path("bench.json")});
     ASSERT_EQ(r.code, 0) << r;
+    EXPECT_NE(r.out.find("gl: "), std::string::npos) << r;
     const json doc = json::parse(readFile(path("bench.json")));
     ASSERT_TRUE(doc.contains("machine")) << doc.dump();
     std::map<std::string, std::set<std::string>> oracles_by_workload;
-    std::map<std::string, std::string> bunnies_detail;
+    std::map<std::string, std::map<std::string, std::string>> counts;  // workload, oracle
     for (const json& row : doc["rows"]) {
         EXPECT_GT(row["value"].get<double>(), 0.0) << row.dump();
-        oracles_by_workload[row["workload"]].insert(row["oracle"]);
-        if (row["workload"].get<std::string>().rfind("bunnies", 0) == 0)
-            bunnies_detail[row["oracle"]] = row["detail"];
+        const std::string workload = row["workload"], oracle = row["oracle"];
+        oracles_by_workload[workload].insert(oracle);
+        const std::string detail = row["detail"];
+        counts[workload][oracle] = detail.substr(0, detail.find(';'));
     }
-    EXPECT_EQ(oracles_by_workload.size(), 9u);  // 3 setup-bound, 2 x 2 fill-bound, bunnies
-    for (const auto& [workload, oracles] : oracles_by_workload)
-        EXPECT_EQ(oracles, (std::set<std::string>{"cpu", "cpu-reference"})) << workload;
-    EXPECT_EQ(bunnies_detail["cpu"], bunnies_detail["cpu-reference"]);
+    // 4 setup-bound rows (bind, bind + draws, draws, queries), 2 x 2 fill-bound, 2 real.
+    EXPECT_EQ(oracles_by_workload.size(), 10u);
+    for (const auto& [workload, oracles] : oracles_by_workload) {
+        const bool real = workload.rfind("bunnies", 0) == 0 || workload.rfind("slabs", 0) == 0;
+        const std::set<std::string> expected =
+            real ? std::set<std::string>{"cpu", "cpu-reference", "gl"}
+                 : std::set<std::string>{"cpu", "cpu-reference"};
+        EXPECT_EQ(oracles, expected) << workload;
+        if (real) {
+            EXPECT_EQ(counts[workload]["cpu"], counts[workload]["cpu-reference"]) << workload;
+        }
+    }
+}
+
+TEST_F(Cli, ErrorBenchGlFrames) {
+    const Result r = run({"bench", "oracle", "--gl-frames", "1"});
+    EXPECT_EQ(r.code, 2) << r;
+    EXPECT_NE(r.err.find("--gl-frames"), std::string::npos) << r;
 }
 
 TEST_F(Cli, TopLevelHelpMentionsLevel) {
@@ -494,6 +511,28 @@ TEST_F(Cli, TopLevelHelpMentionsLevel) {
     EXPECT_EQ(r.code, 0) << r;
     EXPECT_NE(r.out.find("order"), std::string::npos) << r;
     EXPECT_NE(r.out.find("--level"), std::string::npos) << "help should mention --level" << r;
+}
+
+// The gl oracle gives the cpu oracle's order (tests/gl checks why they agree), named in the JSON.
+TEST_F(Cli, GlOracleOrdersAsCpu) {
+    const json cpu = orderJson({kBunnies, "--size", "64x48"}, "cpu.json");
+    const json gl = orderJson({kBunnies, "--size", "64x48", "--oracle", "gl"}, "gl.json");
+    EXPECT_EQ(gl.value("oracle", json()), "gl");
+    EXPECT_EQ(gl["order"], cpu["order"]);
+    EXPECT_EQ(gl["cycles"], cpu["cycles"]);
+    EXPECT_EQ(gl["stats"]["queries"], cpu["stats"]["queries"]);
+}
+
+TEST_F(Cli, InfoGlNamesTheDriver) {
+    const Result r = run({"info", "--gl"});
+    ASSERT_EQ(r.code, 0) << r;
+    for (const char* field : {"OpenGL: 4.", "renderer: ", "vendor: ", "EGL platform: "})
+        EXPECT_NE(r.out.find(field), std::string::npos) << field << r;
+    // With a scene too: both reports.
+    const Result both = run({"info", "--gl", kBunnies});
+    ASSERT_EQ(both.code, 0) << both;
+    EXPECT_NE(both.out.find("renderer: "), std::string::npos) << both;
+    EXPECT_NE(both.out.find("triangles: "), std::string::npos) << both;
 }
 
 TEST_F(Cli, OrderHelpMentionsLevel) {
@@ -507,6 +546,18 @@ TEST_F(Cli, OrderHelpMentionsLevel) {
 // Errors: the documented exit code and one line "vissort: error: ..." naming the problem
 
 constexpr int kUsage = 2, kInput = 3, kFailure = 1;
+
+// No OpenGL context (here: an EGL platform that does not exist): one line naming the problem for
+// every command that needs one, and the cpu oracle still works.
+TEST_F(Cli, ErrorNoGlContext) {
+    ASSERT_EQ(setenv("VISSORT_GL_PLATFORM", "wayland", 1), 0);
+    expectError({"order", kBunnies, "--size", "32x32", "--oracle", "gl"}, kFailure,
+                {"VISSORT_GL_PLATFORM", "wayland"});
+    expectError({"info", "--gl"}, kFailure, {"VISSORT_GL_PLATFORM", "wayland"});
+    const Result cpu = run({"order", kBunnies, "--size", "32x32"});
+    unsetenv("VISSORT_GL_PLATFORM");
+    EXPECT_EQ(cpu.code, 0) << cpu;
+}
 
 TEST_F(Cli, ErrorMissingFile) {
     const std::string missing = path("no_such_scene.obj");
@@ -591,6 +642,7 @@ TEST_F(Cli, ErrorOrthoDir) {
 TEST_F(Cli, ErrorLevelAndOracle) {
     expectError({"order", kBunnies, "--level", "bogus"}, kUsage, {"--level", "bogus"});
     expectError({"order", kBunnies, "--oracle", "bogus"}, kUsage, {"--oracle", "bogus"});
+    expectError({"info"}, kUsage, {"scene", "--gl"});
 }
 
 TEST_F(Cli, ErrorFramesAndPath) {
