@@ -44,6 +44,9 @@ struct DeleteFramebuffer {
 struct DeleteRenderbuffer {
     void operator()(GLuint name) const { glDeleteRenderbuffers(1, &name); }
 };
+struct DeleteTexture {
+    void operator()(GLuint name) const { glDeleteTextures(1, &name); }
+};
 struct DeleteProgram {
     void operator()(GLuint name) const { glDeleteProgram(name); }
 };
@@ -55,6 +58,7 @@ using GlBuffer = GlObject<DeleteBuffer>;
 using GlVertexArray = GlObject<DeleteVertexArray>;
 using GlFramebuffer = GlObject<DeleteFramebuffer>;
 using GlRenderbuffer = GlObject<DeleteRenderbuffer>;
+using GlTexture = GlObject<DeleteTexture>;
 using GlProgram = GlObject<DeleteProgram>;
 using GlShader = GlObject<DeleteShader>;
 

@@ -126,7 +126,14 @@ struct GlOracle::Impl {
         glUseProgram(program.get());
         glBindVertexArray(vertex_array.get());
         glViewport(0, 0, GLsizei(width), GLsizei(height));
-        mode = Mode::unset;  // another user of the context may have changed the state
+        // Every call: another user of the shared context (the renderer) may have changed these.
+        // Depth d of camera.h in window z, clipping to 0 <= z <= w, row 0 at the top.
+        glClipControl(GL_UPPER_LEFT, GL_ZERO_TO_ONE);
+        glEnable(GL_DEPTH_TEST);
+        glDisable(GL_BLEND);
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        glClearDepth(1.0);
+        mode = Mode::unset;
     }
 
     void clearDepth() {
@@ -171,11 +178,6 @@ GlOracle::GlOracle(std::shared_ptr<GlContext> context) : impl_(std::make_unique<
         glVertexArrayAttribFormat(impl_->vertex_array.get(), attribute, 1, GL_FLOAT, GL_FALSE, 0);
         glVertexArrayAttribBinding(impl_->vertex_array.get(), attribute, attribute);
     }
-    // Depth d of camera.h in window z, clipping to 0 <= z <= w, row 0 at the top.
-    glClipControl(GL_UPPER_LEFT, GL_ZERO_TO_ONE);
-    glEnable(GL_DEPTH_TEST);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glClearDepth(1.0);
 }
 
 GlOracle::~GlOracle() {
