@@ -24,7 +24,8 @@
 //     (px + 0.5, py + 0.5): float(d0 + ddx (cx - x0) + ddy (cy - y0)), all in double. No clamping.
 //  7. Depth buffer: one float per pixel, row-major from the top row, cleared to +infinity.
 //     draw writes a fragment when frag < stored. anyBehind is true when some fragment has
-//     frag > stored + kDepthTolerance (float sum), so +infinity pixels never count.
+//     frag > stored + tolerance (float sum; the oracle's depthTolerance(), kDepthTolerance unless
+//     set), so +infinity pixels never count.
 //
 // Conservative mode (RasterMode::conservative) changes rules 5 and 6 only: pixel (px, py) is
 // covered when its square [px, px + 1] x [py, py + 1] lies in the snapped bounding box grown to
@@ -64,7 +65,7 @@ public:
     void clear() override;
     /// Depth test LESS, writes on. primitive must be < primitiveCount().
     void draw(uint32_t primitive) override;
-    /// True when a fragment lies behind the stored depth by more than kDepthTolerance.
+    /// True when a fragment lies behind the stored depth by more than depthTolerance().
     /// primitive must be < primitiveCount(). Leaves the buffer unchanged.
     bool anyBehind(uint32_t primitive) override;
 

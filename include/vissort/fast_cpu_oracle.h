@@ -102,7 +102,7 @@ public:
     void clear() override;
     /// Depth test LESS, writes on. primitive must be < primitiveCount().
     void draw(uint32_t primitive) override;
-    /// True when a fragment lies behind the stored depth by more than kDepthTolerance.
+    /// True when a fragment lies behind the stored depth by more than depthTolerance().
     /// primitive must be < primitiveCount(). Leaves the buffer unchanged.
     bool anyBehind(uint32_t primitive) override;
 

@@ -14,8 +14,15 @@ namespace vissort {
 
 /// Depth tolerance, in units of the depth d (camera.h): a fragment is "behind" only when its
 /// depth exceeds the stored depth by more than this, so coplanar, touching and shared-edge
-/// surfaces never count as occluding each other.
+/// surfaces never count as occluding each other. Every oracle's default.
 inline constexpr float kDepthTolerance = 1.0f / (1 << 20);
+
+/// The tolerance for exact blending (transparency_renderer.h): negative, so that a fragment
+/// counts as behind unless it is in front by more than 2^-16. Surfaces whose depths come that
+/// close anywhere then occlude each other both ways: a cycle, which the renderer composites per
+/// pixel with the GPU's own depths. The order is thus exact wherever the oracle's depths and the
+/// GPU's differ by less than 2^-16, where near ties of the default tolerance could swap layers.
+inline constexpr float kBlendingDepthTolerance = -1.0f / (1 << 16);
 
 /// How a rasterizing oracle samples a triangle.
 enum class RasterMode {
@@ -36,6 +43,15 @@ public:
     /// Also clears the depth buffer. Call again after positions change (a new frame).
     virtual void bind(const TrianglePositions& positions, const ViewProjection& view,
                       std::span<const PrimitiveRange> primitives) = 0;
+
+    /// Sets the depth tolerance of later queries: anyBehind is true when some fragment's depth
+    /// exceeds the stored depth + tolerance (a float sum). kDepthTolerance until set; negative
+    /// values make near ties count as occlusion (kBlendingDepthTolerance). Must be finite.
+    void setDepthTolerance(float tolerance) { depth_tolerance_ = tolerance; }
+    float depthTolerance() const { return depth_tolerance_; }
+
+protected:
+    float depth_tolerance_ = kDepthTolerance;
 };
 
 enum class OracleKind {

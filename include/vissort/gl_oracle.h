@@ -20,8 +20,9 @@
 //    farthest depth a clipped fragment can have (the CPU clears to +infinity: the two differ only
 //    for a fragment exactly on an orthographic far plane);
 //  - draw: depth test LESS, writes on. Query: depth test GREATER, writes off, the fragment moved
-//    nearer by kDepthTolerance in the vertex shader (z -= kDepthTolerance * w), so it passes when
-//    d - kDepthTolerance > stored, the CPU's d > stored + kDepthTolerance up to float rounding.
+//    nearer by the tolerance t (depthTolerance(), kDepthTolerance unless set) in the vertex
+//    shader (z -= t * w), so it passes when d - t > stored, the CPU's d > stored + t up to float
+//    rounding.
 //
 // The passes (occlusion_oracle.h), with no CPU round trip per query:
 //  - pass 1 (backToFrontPass): every query is issued (GL_ANY_SAMPLES_PASSED, one query object per

@@ -94,7 +94,7 @@ void ExactOracle::draw(uint32_t primitive) {
 bool ExactOracle::anyBehind(uint32_t primitive) {
     // An empty pixel holds +infinity, and +infinity + tolerance is never exceeded.
     for (const Fragment& fragment : fragments(primitive)) {
-        if (fragment.farthest > depth_buffer_[fragment.pixel] + kDepthTolerance)
+        if (fragment.farthest > depth_buffer_[fragment.pixel] + depth_tolerance_)
             return true;
     }
     return false;

@@ -57,6 +57,7 @@ struct GlOracle::Impl {
     std::vector<GLint> first_corners;
     std::vector<GLsizei> corner_counts;
     enum class Mode { unset, draw, query } mode = Mode::unset;
+    float tolerance = kDepthTolerance;  // the oracle's, taken at every call
     GlOracleStats stats;
 
     void setMode(Mode wanted) {
@@ -65,7 +66,7 @@ struct GlOracle::Impl {
         const bool query = wanted == Mode::query;
         glDepthFunc(query ? GL_GREATER : GL_LESS);
         glDepthMask(query ? GL_FALSE : GL_TRUE);
-        glProgramUniform1f(program.get(), offset_location, query ? -kDepthTolerance : 0.0f);
+        glProgramUniform1f(program.get(), offset_location, query ? -tolerance : 0.0f);
     }
 
     // Queues primitive p's draw (LESS, writes on).
@@ -120,7 +121,8 @@ struct GlOracle::Impl {
         glGenQueries(GLsizei(count - old), queries.data() + old);
     }
 
-    void begin() {
+    void begin(float depth_tolerance) {
+        tolerance = depth_tolerance;
         context->makeCurrent();
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.get());
         glUseProgram(program.get());
@@ -131,6 +133,7 @@ struct GlOracle::Impl {
         glClipControl(GL_UPPER_LEFT, GL_ZERO_TO_ONE);
         glEnable(GL_DEPTH_TEST);
         glDisable(GL_BLEND);
+        glDisable(GL_SCISSOR_TEST);
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         glClearDepth(1.0);
         mode = Mode::unset;
@@ -144,8 +147,8 @@ struct GlOracle::Impl {
     }
 
     // A pass or a group query: an empty depth buffer and query objects for `count` answers.
-    void beginPass(std::size_t count) {
-        begin();
+    void beginPass(std::size_t count, float depth_tolerance) {
+        begin(depth_tolerance);
         clearDepth();
         ensureQueries(count);
     }
@@ -235,27 +238,27 @@ void GlOracle::bind(const TrianglePositions& positions, const ViewProjection& vi
     d.primitives.assign(primitives.begin(), primitives.end());
     for ([[maybe_unused]] const PrimitiveRange& range : d.primitives)
         assert(uint64_t(range.first_triangle) + range.triangle_count <= positions.triangleCount());
-    d.begin();
+    d.begin(depth_tolerance_);
     d.clearDepth();
 }
 
 uint32_t GlOracle::primitiveCount() const { return uint32_t(impl_->primitives.size()); }
 
 void GlOracle::clear() {
-    impl_->begin();
+    impl_->begin(depth_tolerance_);
     impl_->clearDepth();
 }
 
 void GlOracle::draw(uint32_t primitive) {
     Impl& d = *impl_;
-    d.begin();
+    d.begin(depth_tolerance_);
     d.queueDraw(primitive);
     d.flushDraws();
 }
 
 bool GlOracle::anyBehind(uint32_t primitive) {
     Impl& d = *impl_;
-    d.begin();
+    d.begin(depth_tolerance_);
     d.ensureQueries(1);
     d.issueQuery(primitive, d.queries[0]);
     return d.answer(d.queries[0]);
@@ -265,7 +268,7 @@ void GlOracle::backToFrontPass(std::span<const uint32_t> sequence, std::span<con
                                std::span<uint8_t> behind) {
     assert(query.size() == sequence.size() && behind.size() == sequence.size());
     Impl& d = *impl_;
-    d.beginPass(sequence.size());
+    d.beginPass(sequence.size(), depth_tolerance_);
     for (std::size_t i = sequence.size(); i-- > 0;) {
         if (query[i]) d.issueQuery(sequence[i], d.queries[i]);
         d.queueDraw(sequence[i]);
@@ -278,7 +281,7 @@ void GlOracle::frontToBackPass(std::span<const uint32_t> sequence, std::span<con
                                std::span<uint8_t> behind) {
     assert(query.size() == sequence.size() && behind.size() == sequence.size());
     Impl& d = *impl_;
-    d.beginPass(sequence.size());
+    d.beginPass(sequence.size(), depth_tolerance_);
     for (std::size_t i = 0; i < sequence.size(); ++i) {
         if (!query[i]) {
             d.queueDraw(sequence[i]);
@@ -300,7 +303,7 @@ void GlOracle::queryAgainst(std::span<const uint32_t> occluders, std::span<const
                             std::span<uint8_t> behind) {
     assert(behind.size() == targets.size());
     Impl& d = *impl_;
-    d.beginPass(targets.size());
+    d.beginPass(targets.size(), depth_tolerance_);
     for (uint32_t p : occluders) d.queueDraw(p);
     for (std::size_t i = 0; i < targets.size(); ++i) d.issueQuery(targets[i], d.queries[i]);
     d.readAnswers({}, behind);  // every target was queried

@@ -81,7 +81,7 @@ bool CpuOracle::anyBehind(uint32_t primitive) {
     bool behind = false;
     const auto test = [&](uint32_t px, uint32_t py, float depth) {
         ++fragments;
-        return depth > depth_[std::size_t(py) * width_ + px] + kDepthTolerance;
+        return depth > depth_[std::size_t(py) * width_ + px] + depth_tolerance_;
     };
     for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count && !behind;
          ++t) {

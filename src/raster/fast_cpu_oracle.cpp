@@ -62,8 +62,10 @@ double fragmentOffset(double spread, bool conservative) {
 
 // What every walk of s shares (fast_rows.h), for a draw or a query.
 template <bool kDraw>
-detail::TriangleWalk triangleWalk(const detail::FastSetup& s, double spread, bool conservative) {
+detail::TriangleWalk triangleWalk(const detail::FastSetup& s, double spread, bool conservative,
+                                  float tolerance) {
     detail::TriangleWalk walk;
+    walk.tolerance = tolerance;
     walk.narrow = s.narrow;
     for (int e = 0; e < 3; ++e) {
         walk.step_x[e] = s.edge_step_x[e];
@@ -220,7 +222,7 @@ bool FastCpuOracle::rasterize(const detail::FastSetup& s, int32_t ty_begin, int3
     const int32_t last_x = int32_t(width_) - 1, last_y = int32_t(height_) - 1;
     detail::TileWalk walk;
     const double spread = spreadOf(s, conservative_);
-    static_cast<detail::TriangleWalk&>(walk) = triangleWalk<kDraw>(s, spread, conservative_);
+    static_cast<detail::TriangleWalk&>(walk) = triangleWalk<kDraw>(s, spread, conservative_, depth_tolerance_);
     for (int32_t ty = ty_first; ty <= ty_last; ++ty) {
         // Rows of the tile within the viewport, then within the triangle's bounding box.
         const int32_t vy0 = ty << kTileShift, vy1 = std::min(vy0 + int32_t(kTileSize) - 1, last_y);
@@ -287,12 +289,12 @@ bool FastCpuOracle::rasterize(const detail::FastSetup& s, int32_t ty_begin, int3
                 all_pass = float(highest) < state.min;
             } else {
                 // Every fragment <= the tile's min + tolerance <= stored + tolerance: none behind.
-                if (float(highest) <= state.min + kDepthTolerance) {
+                if (float(highest) <= state.min + depth_tolerance_) {
                     ++stats.tiles_culled;
                     continue;
                 }
                 // Every pixel covered, every fragment > the tile's max + tolerance: behind somewhere.
-                if (full_tile && float(lowest) > state.max + kDepthTolerance) {
+                if (full_tile && float(lowest) > state.max + depth_tolerance_) {
                     ++stats.tiles_accepted;
                     return true;
                 }
@@ -345,7 +347,7 @@ bool FastCpuOracle::rasterizeSmall(const detail::FastSetup& s, int32_t ty_first,
                        int64_t(walk.py_min) * s.edge_step_y[e];
     // narrow holds over the whole bounds, so over the band's rows too.
     const double spread = spreadOf(s, conservative_);
-    static_cast<detail::TriangleWalk&>(walk) = triangleWalk<kDraw>(s, spread, conservative_);
+    static_cast<detail::TriangleWalk&>(walk) = triangleWalk<kDraw>(s, spread, conservative_, depth_tolerance_);
     double lowest, highest;
     depthBounds(s, columnTerm(s, walk.px_min), columnTerm(s, walk.px_max), rowTerm(s, walk.py_min),
                 rowTerm(s, walk.py_max), walk.offset, spread, lowest, highest);
@@ -367,7 +369,7 @@ bool FastCpuOracle::rasterizeSmall(const detail::FastSetup& s, int32_t ty_first,
                 // Cleared since last touched (nothing is behind +infinity), or every fragment
                 // <= the tile's min + tolerance <= stored + tolerance: none behind.
                 live = tiles_[tile].epoch == epoch_ &&
-                       highest > double(tiles_[tile].min + kDepthTolerance);
+                       highest > double(tiles_[tile].min + depth_tolerance_);
             }
             stats.tiles_culled += live ? 0 : 1;
             any |= live;

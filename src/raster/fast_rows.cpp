@@ -59,7 +59,8 @@ void fillTileScalar(const TileWalk& w) {
 }
 
 bool queryTileScalar(const TileWalk& w) {
-    return forEachCovered(w, [](float depth, float frag) { return frag > depth + kDepthTolerance; });
+    const float tolerance = w.tolerance;
+    return forEachCovered(w, [tolerance](float depth, float frag) { return frag > depth + tolerance; });
 }
 
 // Calls pixel(depth, fragment) for every covered pixel of the live tiles of a small walk, row by
@@ -105,8 +106,9 @@ void drawSmallScalar(const SmallWalk& w, SmallDraw& out) {
 }
 
 bool querySmallScalar(const SmallWalk& w) {
-    return forEachSmallCovered(w, [](float depth, float frag, int32_t, int32_t) {
-        return frag > depth + kDepthTolerance;
+    const float tolerance = w.tolerance;
+    return forEachSmallCovered(w, [tolerance](float depth, float frag, int32_t, int32_t) {
+        return frag > depth + tolerance;
     });
 }
 

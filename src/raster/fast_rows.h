@@ -30,6 +30,7 @@ struct TriangleWalk {
     // changes no value, not even a zero's sign); in conservative mode -spread for draws and
     // +spread for queries (cpu_oracle.h).
     double offset;
+    float tolerance;         // the oracle's depth tolerance: behind iff frag > stored + tolerance
 };
 
 /// The pixels of one tile that a fan triangle's bounding box overlaps. Lane k is column vx0 + k.
@@ -51,7 +52,7 @@ struct TileDraw {
 
 /// Draws the covered pixels with depth test LESS, writes on.
 using DrawTileFn = void (*)(const TileWalk& walk, TileDraw& out);
-/// True when some covered pixel's fragment exceeds the stored depth + kDepthTolerance.
+/// True when some covered pixel's fragment exceeds the stored depth + walk.tolerance.
 using QueryTileFn = bool (*)(const TileWalk& walk);
 /// Draws the covered pixels when the caller has shown that every fragment passes LESS (all lie
 /// before the tile's least stored depth): the same stores as DrawTileFn, without the depth test.
@@ -81,7 +82,7 @@ struct SmallDraw {
 
 /// Draws the covered pixels of the live tiles with depth test LESS, writes on.
 using DrawSmallFn = void (*)(const SmallWalk& walk, SmallDraw& out);
-/// True when some covered pixel of a live tile lies behind the stored depth + kDepthTolerance.
+/// True when some covered pixel of a live tile lies behind the stored depth + walk.tolerance.
 using QuerySmallFn = bool (*)(const SmallWalk& walk);
 
 struct RowKernels {

@@ -191,7 +191,7 @@ template <bool kOffset>
 VISSORT_AVX2 bool queryTile(const TileWalk& w) {
     Avx2Row a;
     start(w, a);
-    const __m256 tolerance = _mm256_set1_ps(kDepthTolerance);
+    const __m256 tolerance = _mm256_set1_ps(w.tolerance);
     const float* row = w.origin;
     for (int32_t r = 0; r < w.rows; ++r, row += kTileRowFloats) {
         const __m256 covered = coverage(w, a);
@@ -316,7 +316,7 @@ VISSORT_AVX2 void drawSmall(const SmallWalk& w, SmallDraw& out) {
 
 template <int32_t kChunks, bool kOffset>
 VISSORT_AVX2 bool querySmall(const SmallWalk& w) {
-    const __m256 tolerance = _mm256_set1_ps(kDepthTolerance);
+    const __m256 tolerance = _mm256_set1_ps(w.tolerance);
     return walkSmall<kChunks, kOffset>(
         w,
         [&](float* row, __m256 frag, __m256 uncovered, int32_t) VISSORT_AVX2 {

@@ -157,6 +157,48 @@ TEST_P(CpuOracleSemantics, DepthsBeyondTheToleranceOcclude) {
     EXPECT_TRUE(oracle.anyBehind(2));
 }
 
+TEST_P(CpuOracleSemantics, BlendingToleranceMakesNearTiesOccludeBothWays) {
+    // Coplanar quads: with the default tolerance neither occludes the other. Quads a quarter of
+    // the blending tolerance apart (4 default tolerances): the back one is behind, only. With the
+    // blending tolerance both pairs occlude each other both ways (a cycle, composited per
+    // pixel); quads clearly apart keep one direction only.
+    TrianglePositions p;
+    std::vector<PrimitiveRange> primitives;
+    primitives.push_back(addQuad(p, -1, -1, 1, 1, 0));
+    CameraSpec spec;
+    spec.projection = GetParam();
+    spec.eye = {0, 0, 6};
+    spec.ortho_direction = {0, 0, -1};
+    const ViewProjection vp = frameCamera(spec, p.bounds(), 32, 24);
+    const double slope = (vp.depthOf({0, 0, -1e-3}) - vp.depthOf({0, 0, 0})) / 1e-3;
+    primitives.push_back(addQuad(p, -0.5, -0.5, 1.5, 1.5, 0));  // 1: coplanar with 0
+    primitives.push_back(addQuad(p, -1, -1, 1, 1, 0.25 * kBlendingDepthTolerance / slope));  // 2
+    ASSERT_GT(0.25 * -kBlendingDepthTolerance, 2 * kDepthTolerance);
+    primitives.push_back(addQuad(p, -1, -1, 1, 1, -0.1));  // 3: clearly behind 0
+    CpuOracle oracle;
+    oracle.bind(p, vp, primitives);
+    const auto behind = [&](uint32_t drawn, uint32_t queried) {
+        oracle.clear();
+        oracle.draw(drawn);
+        return oracle.anyBehind(queried);
+    };
+    EXPECT_EQ(oracle.depthTolerance(), kDepthTolerance);
+    EXPECT_FALSE(behind(0, 1));
+    EXPECT_FALSE(behind(1, 0));
+    EXPECT_TRUE(behind(0, 2));
+    EXPECT_FALSE(behind(2, 0));
+    oracle.setDepthTolerance(kBlendingDepthTolerance);
+    for (uint32_t other : {1u, 2u}) {
+        EXPECT_TRUE(behind(0, other)) << other;
+        EXPECT_TRUE(behind(other, 0)) << other;
+    }
+    EXPECT_TRUE(behind(0, 3));
+    EXPECT_FALSE(behind(3, 0));
+    // An empty pixel holds +infinity: never behind it, whatever the tolerance.
+    oracle.clear();
+    EXPECT_FALSE(oracle.anyBehind(0));
+}
+
 INSTANTIATE_TEST_SUITE_P(BothProjections, CpuOracleSemantics,
                          ::testing::Values(Projection::perspective, Projection::orthographic));
 

@@ -66,10 +66,13 @@ std::string describe(const FastCpuOracleOptions& options) {
 std::size_t compareInterleavingWith(const FastCpuOracleOptions& options,
                                     const TrianglePositions& p, const ViewProjection& view,
                                     std::span<const PrimitiveRange> primitives, uint32_t seed,
-                                    int operations, FastCpuOracleStats* totals) {
-    SCOPED_TRACE(describe(options));
+                                    int operations, FastCpuOracleStats* totals,
+                                    float tolerance = kDepthTolerance) {
+    SCOPED_TRACE(describe(options) + ", tolerance " + std::to_string(tolerance));
     CpuOracle reference(options.mode);
     FastCpuOracle fast(options);
+    reference.setDepthTolerance(tolerance);
+    fast.setDepthTolerance(tolerance);
     reference.bind(p, view, primitives);
     fast.bind(p, view, primitives);
     EXPECT_EQ(fast.primitiveCount(), reference.primitiveCount());
@@ -115,18 +118,20 @@ std::size_t compareInterleavingWith(const FastCpuOracleOptions& options,
     return behind;
 }
 
-// compareInterleavingWith for both row walks; returns the true answers of the first.
+// compareInterleavingWith for both row walks, with the default tolerance and the blending one
+// (negative: the tile shortcuts must hold for both signs); returns the true answers of the first.
 std::size_t compareInterleaving(const TrianglePositions& p, const ViewProjection& view,
                                 std::span<const PrimitiveRange> primitives, uint32_t seed,
                                 int operations, FastCpuOracleStats* totals = nullptr) {
     std::size_t behind = 0;
     bool first = true;
-    for (const FastCpuOracleOptions& options : rowWalks()) {
-        const std::size_t b =
-            compareInterleavingWith(options, p, view, primitives, seed, operations, totals);
-        if (first) behind = b;
-        first = false;
-    }
+    for (float tolerance : {kDepthTolerance, kBlendingDepthTolerance})
+        for (const FastCpuOracleOptions& options : rowWalks()) {
+            const std::size_t b = compareInterleavingWith(options, p, view, primitives, seed,
+                                                          operations, totals, tolerance);
+            if (first) behind = b;
+            first = false;
+        }
     return behind;
 }
 

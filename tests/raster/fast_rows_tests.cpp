@@ -16,6 +16,8 @@
 #include <algorithm>
 #include <string>
 
+#include "vissort/geometry_oracle.h"
+
 namespace vissort::detail {
 namespace {
 
@@ -28,8 +30,8 @@ struct RandomWalk {
     TileDepths depths;
 };
 
-// A depth plane through a point near pixel (x, y), and exact mode's -0.0 offset or a
-// conservative spread either way (+0.0 included: it is not -0.0).
+// A depth plane through a point near pixel (x, y), exact mode's -0.0 offset or a conservative
+// spread either way (+0.0 included: it is not -0.0), and the default or the blending tolerance.
 void randomPlane(std::mt19937_64& rng, int32_t x, int32_t y, TriangleWalk& w) {
     std::uniform_real_distribution<double> unit(0, 1);
     w.d0 = 0.2 + 0.6 * unit(rng);
@@ -39,6 +41,7 @@ void randomPlane(std::mt19937_64& rng, int32_t x, int32_t y, TriangleWalk& w) {
     w.y0_plane = y + 8 * unit(rng);
     const double offsets[] = {-0.0, 0.0, (unit(rng) - 0.5) * 0.01};
     w.offset = offsets[std::uniform_int_distribution<int>(0, 2)(rng)];
+    w.tolerance = unit(rng) < 0.5 ? kDepthTolerance : kBlendingDepthTolerance;
 }
 
 RandomWalk makeWalk(std::mt19937_64& rng, EdgeScale scale) {
