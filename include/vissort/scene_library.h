@@ -26,6 +26,8 @@ std::vector<BuiltinSceneInfo> builtinScenes();
 ///   bunnies: n (18), seed (1): the paper's dynamic scene of deforming, bouncing bunnies.
 ///   slabs:   layers (8), seed (1): a stack of large, slightly tilted quads; acyclic.
 ///   soup:    n (1000), seed (1): random non-intersecting triangles.
+///   plant:   layers (8), seed (1): CAD-like rows of pipes, tanks and steel, opaque and
+///            transparent; depth complexity about 2 layers.
 Loaded<Scene> makeBuiltinScene(const std::string& name, const SceneParameters& parameters);
 
 } // namespace vissort

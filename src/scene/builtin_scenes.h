@@ -65,6 +65,8 @@ private:
 
 /// n (18), seed (1): the paper's dynamic scene, bouncing and deforming Stanford bunnies.
 Loaded<Scene> makeBunniesScene(const SceneParameters &parameters);
+/// layers (8), seed (1): rows of pipe racks, tanks and steel; depth complexity about 2 layers.
+Loaded<Scene> makePlantScene(const SceneParameters &parameters);
 /// layers (8), seed (1): a stack of tilted, non-intersecting quads along z.
 Loaded<Scene> makeSlabsScene(const SceneParameters &parameters);
 /// n (1000), seed (1): random triangles, one per cell of a jittered grid, never intersecting.

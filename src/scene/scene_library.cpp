@@ -18,6 +18,10 @@ constexpr BuiltinScene kBuiltinScenes[] = {
      "n (18, 1..10000), seed (1): the paper's dynamic scene, n deforming Stanford bunnies "
      "bouncing in a cube",
      detail::makeBunniesScene},
+    {"plant",
+     "layers (8, 1..1000), seed (1): rows of pipe racks, tanks, pumps and steel on a floor, "
+     "transparent pipes and tanks, opaque steel; max depth complexity about 2 layers",
+     detail::makePlantScene},
     {"slabs",
      "layers (8, 1..100000), seed (1): a stack of 4x4 quads along z, slightly tilted, "
      "non-intersecting, acyclic; depth complexity = layers",

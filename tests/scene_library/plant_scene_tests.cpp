@@ -1,0 +1,420 @@
+// Tests of the `plant` scene: parameters, determinism, closed outward meshes, the gaps between
+// parts (against a brute-force triangle distance), the default camera, and the depth complexity
+// it sees (against an independent ray-triangle test and the all-hits ray caster).
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <set>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "exact/ray_caster.h"
+#include "vissort/scene_library.h"
+
+namespace vissort_test {
+using Triangle = std::array<vissort::Vec3, 3>;
+bool trianglesIntersect(const Triangle& a, const Triangle& b); // triangle_intersection_tests.cpp
+} // namespace vissort_test
+
+namespace vissort {
+namespace {
+
+using vissort_test::Triangle;
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr std::size_t kObjectsPerRow = 22; // 4 pipes, 8 columns, 8 beams, a pump, a tank
+constexpr double kSmallestGap = 0.05; // the scene's gap between the floor and what stands on it
+
+Scene makePlant(int layers, int seed = 1) {
+    Loaded<Scene> scene = makeBuiltinScene(
+        "plant", {{"layers", std::to_string(layers)}, {"seed", std::to_string(seed)}});
+    EXPECT_TRUE(scene) << scene.error;
+    return scene ? std::move(*scene.value) : Scene{};
+}
+
+Triangle triangleOf(const Scene& scene, std::size_t t) {
+    return {scene.positions.corner(3 * t), scene.positions.corner(3 * t + 1),
+            scene.positions.corner(3 * t + 2)};
+}
+
+Vec3 sub(const Vec3& a, const Vec3& b) {
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+Vec3 add(const Vec3& a, const Vec3& b) {
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+Vec3 scale(const Vec3& a, double s) {
+    return {a.x * s, a.y * s, a.z * s};
+}
+double dot(const Vec3& a, const Vec3& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+Vec3 cross(const Vec3& a, const Vec3& b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+Vec3 normalized(const Vec3& a) {
+    return scale(a, 1 / std::sqrt(dot(a, a)));
+}
+double distance2(const Vec3& a, const Vec3& b) {
+    return dot(sub(a, b), sub(a, b));
+}
+
+bool hasPart(const std::string& name, const std::string& part) {
+    return name.find(part) != std::string::npos;
+}
+
+// Squared distance between segments p1q1 and p2q2 of non-zero length (Ericson, "Real-Time
+// Collision Detection", 5.1.9).
+double segmentDistance2(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2) {
+    const Vec3 d1 = sub(q1, p1), d2 = sub(q2, p2), r = sub(p1, p2);
+    const double a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r);
+    const double b = dot(d1, d2), c = dot(d1, r), denominator = a * e - b * b;
+    double s = denominator > 0 ? std::clamp((b * f - c * e) / denominator, 0.0, 1.0) : 0.0;
+    double t = (b * s + f) / e;
+    if (t < 0) {
+        t = 0;
+        s = std::clamp(-c / a, 0.0, 1.0);
+    } else if (t > 1) {
+        t = 1;
+        s = std::clamp((b - c) / a, 0.0, 1.0);
+    }
+    return distance2(add(p1, scale(d1, s)), add(p2, scale(d2, t)));
+}
+
+// The point of triangle abc closest to p (Ericson 5.1.5: by Voronoi regions).
+Vec3 closestOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+    const Vec3 ab = sub(b, a), ac = sub(c, a), ap = sub(p, a);
+    const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+    if (d1 <= 0 && d2 <= 0)
+        return a;
+    const Vec3 bp = sub(p, b);
+    const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3)
+        return b;
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0)
+        return add(a, scale(ab, d1 / (d1 - d3)));
+    const Vec3 cp = sub(p, c);
+    const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6)
+        return c;
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0)
+        return add(a, scale(ac, d2 / (d2 - d6)));
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
+        return add(b, scale(sub(c, b), (d4 - d3) / ((d4 - d3) + (d5 - d6))));
+    const double denominator = 1 / (va + vb + vc);
+    return add(a, add(scale(ab, vb * denominator), scale(ac, vc * denominator)));
+}
+
+// Distance between two closed triangles: 0 when they meet, else it is reached between two edges
+// or between a corner and the other triangle.
+double triangleDistance(const Triangle& a, const Triangle& b) {
+    if (vissort_test::trianglesIntersect(a, b))
+        return 0;
+    double best = 1e300;
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j)
+            best = std::min(best, segmentDistance2(a[i], a[(i + 1) % 3], b[j], b[(j + 1) % 3]));
+        best = std::min(best, distance2(a[i], closestOnTriangle(a[i], b[0], b[1], b[2])));
+        best = std::min(best, distance2(b[i], closestOnTriangle(b[i], a[0], a[1], a[2])));
+    }
+    return std::sqrt(best);
+}
+
+Bounds boundsOf(const Scene& scene, const SceneObject& object) {
+    Bounds bounds;
+    for (uint32_t t = object.first_triangle; t < object.first_triangle + object.triangle_count; ++t)
+        for (int corner = 0; corner < 3; ++corner)
+            bounds.add(scene.positions.corner(3 * std::size_t{t} + corner));
+    return bounds;
+}
+
+Bounds boundsOf(const Triangle& triangle) {
+    Bounds bounds;
+    for (const Vec3& p : triangle)
+        bounds.add(p);
+    return bounds;
+}
+
+// Distance between boxes: a lower bound of the distance between anything inside them.
+double boxDistance(const Bounds& a, const Bounds& b) {
+    const double dx = std::max({0.0, a.min.x - b.max.x, b.min.x - a.max.x});
+    const double dy = std::max({0.0, a.min.y - b.max.y, b.min.y - a.max.y});
+    const double dz = std::max({0.0, a.min.z - b.max.z, b.min.z - a.max.z});
+    return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+// Moeller-Trumbore, both sides, hits at distance > 0.
+bool rayHits(const Vec3& o, const Vec3& d, const Triangle& t) {
+    const Vec3 e1 = sub(t[1], t[0]), e2 = sub(t[2], t[0]);
+    const Vec3 p = cross(d, e2);
+    const double det = dot(e1, p);
+    if (std::abs(det) < 1e-15)
+        return false;
+    const Vec3 s = sub(o, t[0]);
+    const double u = dot(s, p) / det;
+    const Vec3 q = cross(s, e1);
+    const double v = dot(d, q) / det;
+    return u >= 0 && v >= 0 && u + v <= 1 && dot(e2, q) / det > 0;
+}
+
+TEST(PlantScene, DefaultsAreEightLayersAndSeedOne) {
+    const Loaded<Scene> defaults = makeBuiltinScene("plant", {});
+    ASSERT_TRUE(defaults) << defaults.error;
+    const Scene explicit_scene = makePlant(8, 1);
+    EXPECT_EQ(defaults.value->name, "builtin:plant");
+    EXPECT_EQ(defaults.value->objects.size(), 1 + 8 * kObjectsPerRow);
+    EXPECT_EQ(defaults.value->positions.x, explicit_scene.positions.x);
+    EXPECT_EQ(defaults.value->positions.z, explicit_scene.positions.z);
+    EXPECT_FALSE(defaults.value->isDynamic());
+    EXPECT_EQ(validateScene(*defaults.value), "");
+}
+
+TEST(PlantScene, BadParametersAreOneLineErrorsNamingTheKey) {
+    const struct {
+        SceneParameters parameters;
+        const char* expected;
+    } cases[] = {
+        {{{"layers", "0"}},
+         "builtin:plant: parameter layers=0 is out of range (allowed 1 to 1000)"},
+        {{{"layers", "1001"}}, "builtin:plant: parameter layers=1001 is out of range"},
+        {{{"layers", "-3"}}, "builtin:plant: parameter layers=-3 is out of range"},
+        {{{"layers", "2.5"}}, "builtin:plant: parameter layers='2.5' is not an integer"},
+        {{{"seed", "-1"}}, "builtin:plant: parameter seed='-1' is not a non-negative integer"},
+        {{{"n", "3"}}, "builtin:plant: unknown parameter 'n' (accepted: layers, seed)"},
+    };
+    for (const auto& c : cases) {
+        const Loaded<Scene> scene = makeBuiltinScene("plant", c.parameters);
+        EXPECT_FALSE(scene) << c.expected;
+        EXPECT_NE(scene.error.find(c.expected), std::string::npos) << scene.error;
+        EXPECT_EQ(scene.error.find('\n'), std::string::npos);
+    }
+    EXPECT_TRUE(makeBuiltinScene("plant", {{"layers", "1000"}, {"seed", "18446744073709551615"}}));
+}
+
+TEST(PlantScene, SameSeedSameBitsOtherSeedOtherPlant) {
+    const Scene a = makePlant(6, 7), b = makePlant(6, 7), c = makePlant(6, 8);
+    EXPECT_EQ(a.positions.x, b.positions.x);
+    EXPECT_EQ(a.positions.y, b.positions.y);
+    EXPECT_EQ(a.positions.z, b.positions.z);
+    ASSERT_EQ(a.objects.size(), b.objects.size());
+    for (std::size_t i = 0; i < a.objects.size(); ++i) {
+        EXPECT_EQ(a.objects[i].name, b.objects[i].name);
+        EXPECT_EQ(a.objects[i].colour.r, b.objects[i].colour.r);
+        EXPECT_EQ(a.objects[i].colour.a, b.objects[i].colour.a);
+    }
+    EXPECT_NE(a.positions.x, c.positions.x);
+    ASSERT_TRUE(a.camera && b.camera);
+    EXPECT_EQ(a.camera->eye.z, b.camera->eye.z);
+}
+
+TEST(PlantScene, EveryRowHasItsNamedPartsAndModerateTriangleCounts) {
+    std::size_t previous_triangles = 0;
+    for (const int layers : {1, 2, 5, 12}) {
+        const Scene scene = makePlant(layers);
+        ASSERT_EQ(scene.objects.size(), 1 + layers * kObjectsPerRow);
+        EXPECT_EQ(validateScene(scene), "");
+        EXPECT_EQ(scene.objects[0].name, "floor");
+        EXPECT_GT(scene.triangleCount(), previous_triangles);
+        previous_triangles = scene.triangleCount();
+        for (int row = 0; row < layers; ++row) {
+            const std::string prefix = "row" + std::to_string(row) + "_";
+            std::set<std::string> expected = {prefix + "pump", prefix + "tank"};
+            for (int i = 0; i < 4; ++i)
+                expected.insert(prefix + "pipe_" + std::to_string(i));
+            for (int i = 0; i < 8; ++i) {
+                expected.insert(prefix + "column_" + std::to_string(i));
+                expected.insert(prefix + "beam_" + std::to_string(i));
+            }
+            std::set<std::string> names;
+            std::size_t row_triangles = 0;
+            for (std::size_t i = 0; i < kObjectsPerRow; ++i) {
+                const SceneObject& object = scene.objects[1 + row * kObjectsPerRow + i];
+                names.insert(object.name);
+                row_triangles += object.triangle_count;
+            }
+            EXPECT_EQ(names, expected) << "row " << row;
+            EXPECT_GE(row_triangles, 2000u) << "row " << row;
+            EXPECT_LE(row_triangles, 6000u) << "row " << row;
+        }
+    }
+}
+
+TEST(PlantScene, PipesAndTanksAreTransparentSteelAndConcreteOpaque) {
+    const Scene scene = makePlant(10, 3);
+    std::size_t transparent = 0, opaque = 0;
+    for (const SceneObject& object : scene.objects) {
+        const bool equipment = hasPart(object.name, "_pipe_") || hasPart(object.name, "_tank");
+        EXPECT_EQ(object.transparent, equipment) << object.name;
+        if (object.transparent) {
+            ++transparent;
+            EXPECT_GE(object.colour.a, 0.3f) << object.name;
+            EXPECT_LE(object.colour.a, 0.6f) << object.name;
+        } else {
+            ++opaque;
+            EXPECT_EQ(object.colour.a, 1.0f) << object.name;
+        }
+    }
+    EXPECT_EQ(transparent, 10u * 5);
+    EXPECT_EQ(opaque, 1 + 10u * 17);
+}
+
+TEST(PlantScene, EveryObjectIsClosedWoundOutwardsWithoutDegenerateTriangles) {
+    for (const int seed : {1, 2}) {
+        const Scene scene = makePlant(3, seed);
+        for (const SceneObject& object : scene.objects) {
+            // Weld identical positions; then every directed edge must be used once and its
+            // reverse once: each edge has exactly two triangles, wound consistently.
+            std::map<std::tuple<float, float, float>, int> ids;
+            std::map<std::pair<int, int>, int> directed;
+            double volume = 0, smallest_area = 1e300;
+            for (uint32_t t = object.first_triangle;
+                 t < object.first_triangle + object.triangle_count; ++t) {
+                int corner_id[3];
+                for (int c = 0; c < 3; ++c) {
+                    const std::size_t i = 3 * std::size_t{t} + c;
+                    const auto key = std::make_tuple(scene.positions.x[i], scene.positions.y[i],
+                                                     scene.positions.z[i]);
+                    corner_id[c] = ids.emplace(key, static_cast<int>(ids.size())).first->second;
+                }
+                for (int c = 0; c < 3; ++c)
+                    ++directed[{corner_id[c], corner_id[(c + 1) % 3]}];
+                const Triangle tri = triangleOf(scene, t);
+                const Vec3 n = cross(sub(tri[1], tri[0]), sub(tri[2], tri[0]));
+                smallest_area = std::min(smallest_area, std::sqrt(dot(n, n)) / 2);
+                volume += dot(tri[0], cross(tri[1], tri[2])) / 6; // divergence theorem
+            }
+            std::size_t unmatched = 0;
+            for (const auto& [edge, count] : directed)
+                unmatched += count != 1 || !directed.count({edge.second, edge.first}) ||
+                             directed.at({edge.second, edge.first}) != 1;
+            EXPECT_EQ(unmatched, 0u) << object.name;
+            EXPECT_GT(smallest_area, 1e-4) << object.name;
+            EXPECT_GT(volume, 0.0) << object.name << ": wound inwards";
+        }
+    }
+}
+
+TEST(PlantScene, PartsNeverTouchAndKeepTheSmallestGapApart) {
+    for (const int seed : {1, 4, 9}) {
+        const Scene scene = makePlant(2, seed);
+        const std::size_t objects = scene.objects.size();
+        std::vector<Bounds> bounds;
+        for (const SceneObject& object : scene.objects)
+            bounds.push_back(boundsOf(scene, object));
+        // Boxes farther apart than the gap cannot hold closer triangles: only near pairs are
+        // checked triangle by triangle.
+        const double reach = 2 * kSmallestGap;
+        double closest = 1e300;
+        std::size_t pairs_checked = 0;
+        for (std::size_t i = 0; i < objects; ++i) {
+            for (std::size_t j = i + 1; j < objects; ++j) {
+                if (boxDistance(bounds[i], bounds[j]) >= reach)
+                    continue;
+                const SceneObject &a = scene.objects[i], &b = scene.objects[j];
+                for (uint32_t s = a.first_triangle; s < a.first_triangle + a.triangle_count; ++s) {
+                    const Triangle ts = triangleOf(scene, s);
+                    const Bounds bs = boundsOf(ts);
+                    if (boxDistance(bs, bounds[j]) >= reach)
+                        continue;
+                    for (uint32_t t = b.first_triangle; t < b.first_triangle + b.triangle_count;
+                         ++t) {
+                        const Triangle tt = triangleOf(scene, t);
+                        if (boxDistance(bs, boundsOf(tt)) >= reach)
+                            continue;
+                        ++pairs_checked;
+                        const double d = triangleDistance(ts, tt);
+                        closest = std::min(closest, d);
+                        EXPECT_GT(d, 0.98 * kSmallestGap)
+                            << a.name << " and " << b.name << " (seed " << seed << ")";
+                    }
+                }
+            }
+        }
+        EXPECT_GT(pairs_checked, 0u);
+        // Parts rest on each other: the gap is reached, so the check above looked at them.
+        EXPECT_LT(closest, 1.02 * kSmallestGap) << "seed " << seed;
+    }
+}
+
+TEST(PlantScene, DefaultCameraFramesThePlantFromTheFrontAtTheHeadersHeight) {
+    for (const int layers : {1, 8, 40}) {
+        const Scene scene = makePlant(layers);
+        ASSERT_TRUE(scene.camera.has_value());
+        const CameraSpec& camera = *scene.camera;
+        EXPECT_EQ(camera.projection, Projection::perspective);
+        EXPECT_EQ(validateCamera(camera), "");
+        const Bounds bounds = scene.positions.bounds();
+        EXPECT_GT(camera.eye.z, bounds.max.z); // in front of the first row
+        EXPECT_EQ(camera.eye.x, 0.0);
+        EXPECT_EQ(camera.target.x, 0.0);
+        EXPECT_GT(camera.eye.y, camera.target.y); // slightly from above
+        EXPECT_GT(camera.eye.y, 0.5 * bounds.max.y);
+        // The eye is at the height of every header's axis: inside each header's height range.
+        for (const SceneObject& object : scene.objects) {
+            if (!hasPart(object.name, "_pipe_3"))
+                continue;
+            const Bounds header = boundsOf(scene, object);
+            EXPECT_GT(camera.eye.y, header.min.y + 0.3) << object.name;
+            EXPECT_LT(camera.eye.y, header.max.y - 0.3) << object.name;
+            EXPECT_LT(header.min.x, -2.0) << object.name;
+            EXPECT_GT(header.max.x, 2.0) << object.name;
+        }
+        // Every corner of the plant inside a square image's field of view.
+        const Vec3 forward = normalized(sub(camera.target, camera.eye));
+        const Vec3 right = normalized(cross(forward, camera.up));
+        const Vec3 up = cross(right, forward);
+        const double reach = std::tan(camera.fov_degrees / 2 * kPi / 180);
+        for (std::size_t i = 0; i < scene.positions.x.size(); ++i) {
+            const Vec3 d = sub(scene.positions.corner(i), camera.eye);
+            const double depth = dot(d, forward);
+            ASSERT_GT(depth, 0.0);
+            EXPECT_LT(std::abs(dot(d, right)), depth * reach);
+            EXPECT_LT(std::abs(dot(d, up)), depth * reach);
+        }
+    }
+}
+
+TEST(PlantScene, RayAlongTheRowsAtTheEyesHeightCrossesEveryHeaderAndNothingElse) {
+    for (const int layers : {1, 7, 20}) {
+        const Scene scene = makePlant(layers, 5);
+        // Off the axis by a little, so that the ray passes no triangle edge exactly.
+        const Vec3 origin = add(scene.camera->eye, {0.013, 0.037, 0});
+        const Vec3 direction{0, 0, -1};
+        std::map<std::string, int> hits;
+        for (std::size_t t = 0; t < scene.triangleCount(); ++t)
+            if (rayHits(origin, direction, triangleOf(scene, t)))
+                ++hits[scene.objects[scene.objectOfTriangle(static_cast<uint32_t>(t))].name];
+        ASSERT_EQ(hits.size(), std::size_t(layers));
+        for (int row = 0; row < layers; ++row)
+            EXPECT_EQ(hits["row" + std::to_string(row) + "_pipe_3"], 2) << "row " << row;
+    }
+}
+
+TEST(PlantScene, MaximumDepthComplexityIsAboutTwiceTheLayers) {
+    // What `vissort info` measures: all hits through 256 x 256 pixel centres of the default view.
+    std::size_t previous = 0;
+    for (const int layers : {4, 8, 16}) {
+        const Scene scene = makePlant(layers);
+        const Bounds bounds = scene.positions.bounds();
+        const ViewProjection view = frameCamera(*scene.camera, bounds, 256, 256);
+        const detail::AllHits hits = detail::castAllHits(scene.positions, view);
+        std::size_t most = 0;
+        for (std::size_t p = 0; p < hits.pixelCount(); ++p)
+            most = std::max<std::size_t>(most, hits.endHit(p) - hits.firstHit(p));
+        EXPECT_GE(double(most), 0.7 * 2 * layers) << "layers " << layers;
+        EXPECT_LE(double(most), 1.3 * 2 * layers) << "layers " << layers;
+        EXPECT_GT(most, previous);
+        previous = most;
+    }
+}
+
+} // namespace
+} // namespace vissort
