@@ -16,6 +16,7 @@ packages=(
   libgl-dev                  # the OpenGL 4.5 core headers (GL/glcorearb.h)
   libegl-mesa0               # Mesa's EGL: the surfaceless platform, and the device platform
   libgl1-mesa-dri            # llvmpipe: OpenGL on the CPU, where there is no GPU driver
+  libstb-dev                 # PNG output of the renderer (stb_image_write)
   libgtest-dev               # the test suite
   libbenchmark-dev           # the Google Benchmark suite (built by the test script, not run)
 )

@@ -37,4 +37,22 @@ struct BenchOptions {
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options);
 int runBench(const BenchOptions& options);
 
+struct RenderOptions {
+    std::string scene;
+    ViewOptions view;
+    std::string method = "vissort";
+    std::string level = "object";
+    std::string oracle = "cpu";
+    std::string output;
+    std::string json_path;
+    bool all_transparent = false;
+    double alpha = 0.5;
+    std::string reference;
+    std::string error_map;
+    std::string shading = "lit";
+    double list_memory_mib = 3072;
+};
+CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options);
+int runRender(const RenderOptions& options);
+
 } // namespace vissort::cli

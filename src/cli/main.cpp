@@ -16,6 +16,8 @@ int main(int argc, char** argv) {
     CLI::App* info_command = addInfoCommand(app, info);
     BenchOptions bench;
     CLI::App* bench_command = addBenchCommand(app, bench);
+    RenderOptions render;
+    CLI::App* render_command = addRenderCommand(app, render);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -30,6 +32,7 @@ int main(int argc, char** argv) {
         if (order_command->parsed()) return runOrder(order);
         if (info_command->parsed()) return runInfo(info);
         if (bench_command->parsed()) return runBench(bench);
+        if (render_command->parsed()) return runRender(render);
     } catch (const std::bad_alloc&) {
         return fail(kExitFailure, "out of memory (try a smaller --size or scene)");
     } catch (const std::exception& e) {

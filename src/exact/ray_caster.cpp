@@ -149,33 +149,38 @@ struct PixelHit {
 struct RowBlock {
     std::vector<uint32_t> hit_counts; // one per pixel of the block
     std::vector<PixelHit> hits;
+    std::vector<uint8_t> near_edge;   // one per pixel of the block
 };
 
 class BlockCaster {
 public:
-    BlockCaster(RTCScene scene, const TrianglePositions& positions, const ViewProjection& view)
-        : scene_(scene), positions_(positions), view_(view), depth_of_(view) {}
+    BlockCaster(RTCScene scene, const TrianglePositions& positions, const ViewProjection& view,
+                bool mark_near_edges)
+        : scene_(scene), positions_(positions), view_(view), depth_of_(view),
+          mark_near_edges_(mark_near_edges) {}
 
     void cast(uint32_t first_row, uint32_t end_row, RowBlock& block) {
         block.hit_counts.clear();
         block.hits.clear();
+        block.near_edge.clear();
         for (uint32_t py = first_row; py < end_row; ++py) {
             for (uint32_t px = 0; px < view_.width; ++px) {
                 const std::size_t before = block.hits.size();
-                castPixel(px, py, block.hits);
+                uint8_t near_edge = 0;
+                castPixel(px, py, block.hits, near_edge);
                 block.hit_counts.push_back(uint32_t(block.hits.size() - before));
+                block.near_edge.push_back(near_edge);
             }
         }
     }
 
 private:
-    void castPixel(uint32_t px, uint32_t py, std::vector<PixelHit>& out) {
-        Vec3 origin, direction;
-        view_.pixelRay(px + 0.5, py + 0.5, origin, direction);
-        candidates_.clear();
+    // Every triangle the ray from origin along direction meets, into `into` (cleared first).
+    void collect(const Vec3& origin, const Vec3& direction, std::vector<Candidate>& into) {
+        into.clear();
         CandidateCollector collector;
         rtcInitIntersectContext(&collector.context);
-        collector.candidates = &candidates_;
+        collector.candidates = &into;
 
         RTCRayHit ray_hit{};
         ray_hit.ray.org_x = float(origin.x);
@@ -189,6 +194,31 @@ private:
         ray_hit.ray.mask = ~0u;
         ray_hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
         rtcIntersect1(scene_, &collector.context, &ray_hit);
+    }
+
+    // Is some triangle that the ray through screen point (sx, sy) meets within [0, 1] in depth
+    // missing from the centre ray's candidates?
+    bool meetsAnother(double sx, double sy) {
+        Vec3 origin, direction;
+        view_.pixelRay(sx, sy, origin, direction);
+        collect(origin, direction, corner_candidates_);
+        const DVec3 o{origin.x, origin.y, origin.z};
+        const DVec3 dir{direction.x, direction.y, direction.z};
+        for (const Candidate& corner : corner_candidates_) {
+            const bool at_centre =
+                std::any_of(candidates_.begin(), candidates_.end(),
+                            [&](const Candidate& c) { return c.triangle == corner.triangle; });
+            if (at_centre) continue;
+            const double depth = intersect(corner, o, dir).depth;
+            if (depth >= 0.0 && depth <= 1.0) return true;
+        }
+        return false;
+    }
+
+    void castPixel(uint32_t px, uint32_t py, std::vector<PixelHit>& out, uint8_t& near_edge) {
+        Vec3 origin, direction;
+        view_.pixelRay(px + 0.5, py + 0.5, origin, direction);
+        collect(origin, direction, candidates_);
 
         const std::size_t first = out.size();
         const DVec3 o{origin.x, origin.y, origin.z};
@@ -222,6 +252,11 @@ private:
                                   return a.triangle == b.triangle;
                               }),
                   out.end());
+        if (!mark_near_edges_) return;
+        near_edge = 0;
+        for (int i = 0; i < 4 && !near_edge; ++i)
+            near_edge = meetsAnother(px + 0.5 + ((i & 1) ? kRobustPixelMargin : -kRobustPixelMargin),
+                                     py + 0.5 + ((i & 2) ? kRobustPixelMargin : -kRobustPixelMargin));
     }
 
     bool covers(const Candidate& candidate, DVec3 o, DVec3 dir) const {
@@ -272,7 +307,8 @@ private:
     const TrianglePositions& positions_;
     const ViewProjection& view_;
     DepthFunction depth_of_;
-    std::vector<Candidate> candidates_;
+    bool mark_near_edges_;
+    std::vector<Candidate> candidates_, corner_candidates_;
 };
 
 // Enough rows per block to amortise the scheduling, few enough to balance two to 64 threads.
@@ -283,7 +319,7 @@ constexpr std::size_t kParallelThreshold = 64 * 64;
 } // namespace
 
 AllHits castAllHits(const TrianglePositions& positions, const ViewProjection& view,
-                    unsigned thread_count) {
+                    unsigned thread_count, bool mark_near_edges) {
     assert(positions.x.size() == positions.y.size() && positions.x.size() == positions.z.size());
     assert(positions.x.size() % 3 == 0);
     assert(positions.triangleCount() < std::numeric_limits<uint32_t>::max());
@@ -309,7 +345,7 @@ AllHits castAllHits(const TrianglePositions& positions, const ViewProjection& vi
     std::vector<RowBlock> blocks(block_count);
     std::atomic<uint32_t> next_block{0};
     const auto work = [&] {
-        BlockCaster caster(scene.get(), positions, view);
+        BlockCaster caster(scene.get(), positions, view, mark_near_edges);
         for (uint32_t b = next_block++; b < block_count; b = next_block++) {
             caster.cast(b * kRowsPerBlock, std::min(view.height, (b + 1) * kRowsPerBlock),
                         blocks[b]);
@@ -334,8 +370,12 @@ AllHits castAllHits(const TrianglePositions& positions, const ViewProjection& vi
     result.triangles.reserve(total_hits);
     result.depths.reserve(total_hits);
     result.robust.reserve(total_hits);
+    if (mark_near_edges) result.near_edge.reserve(result.pixelCount());
     std::size_t pixel = 0;
     for (const RowBlock& block : blocks) {
+        if (mark_near_edges)
+            result.near_edge.insert(result.near_edge.end(), block.near_edge.begin(),
+                                    block.near_edge.end());
         for (uint32_t count : block.hit_counts) {
             result.offsets[pixel + 1] = result.offsets[pixel] + count;
             ++pixel;

@@ -30,6 +30,10 @@ struct AllHits {
     std::vector<uint32_t> triangles; // triangle id of each hit
     std::vector<double> depths;      // depth d (camera.h), in [0, 1]
     std::vector<uint8_t> robust;     // 1 when every barycentric coordinate > kRobustBarycentric
+    /// With mark_near_edges, one per pixel: 1 when a triangle the centre's ray misses covers a
+    /// corner of the square of half-side kRobustPixelMargin around it (an edge passes that close:
+    /// a rasterizer may cover the pixel with it); empty otherwise.
+    std::vector<uint8_t> near_edge;
 
     std::size_t pixelCount() const { return std::size_t(width) * height; }
     std::size_t hitCount() const { return triangles.size(); }
@@ -47,8 +51,10 @@ struct AllHits {
 /// (px + 0.5, py + 0.5), row 0 at the top) and records all its hits with 0 <= d <= 1.
 /// Degenerate triangles (zero area, non-finite corners) are never hit.
 /// thread_count 0 uses the hardware concurrency; the result is the same for any thread count.
-/// Throws std::runtime_error when no Embree device can be created.
+/// mark_near_edges also casts the four corner rays of each pixel's margin square (five rays a
+/// pixel) to fill AllHits::near_edge. Throws std::runtime_error when no Embree device can be
+/// created.
 AllHits castAllHits(const TrianglePositions& positions, const ViewProjection& view,
-                    unsigned thread_count = 0);
+                    unsigned thread_count = 0, bool mark_near_edges = false);
 
 } // namespace vissort::detail

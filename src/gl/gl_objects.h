@@ -53,6 +53,9 @@ struct DeleteProgram {
 struct DeleteShader {
     void operator()(GLuint name) const { glDeleteShader(name); }
 };
+struct DeleteQuery {
+    void operator()(GLuint name) const { glDeleteQueries(1, &name); }
+};
 
 using GlBuffer = GlObject<DeleteBuffer>;
 using GlVertexArray = GlObject<DeleteVertexArray>;
@@ -61,5 +64,6 @@ using GlRenderbuffer = GlObject<DeleteRenderbuffer>;
 using GlTexture = GlObject<DeleteTexture>;
 using GlProgram = GlObject<DeleteProgram>;
 using GlShader = GlObject<DeleteShader>;
+using GlQuery = GlObject<DeleteQuery>;
 
 } // namespace vissort::detail

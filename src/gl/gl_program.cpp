@@ -23,8 +23,9 @@ GlShader compile(GLenum stage, const char* source) {
     glShaderSource(shader.get(), 1, &source, nullptr);
     glCompileShader(shader.get());
     requireStatus(shader.get(), GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog,
-                  stage == GL_VERTEX_SHADER ? "OpenGL vertex shader does not compile"
-                                            : "OpenGL fragment shader does not compile");
+                  stage == GL_VERTEX_SHADER     ? "OpenGL vertex shader does not compile"
+                  : stage == GL_COMPUTE_SHADER ? "OpenGL compute shader does not compile"
+                                               : "OpenGL fragment shader does not compile");
     return shader;
 }
 
@@ -36,6 +37,16 @@ GlProgram linkProgram(const char* vertex_source, const char* fragment_source) {
     GlProgram program(glCreateProgram());
     glAttachShader(program.get(), vertex.get());
     glAttachShader(program.get(), fragment.get());
+    glLinkProgram(program.get());
+    requireStatus(program.get(), GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog,
+                  "OpenGL program does not link");
+    return program;
+}
+
+GlProgram linkComputeProgram(const char* compute_source) {
+    const GlShader compute = compile(GL_COMPUTE_SHADER, compute_source);
+    GlProgram program(glCreateProgram());
+    glAttachShader(program.get(), compute.get());
     glLinkProgram(program.get());
     requireStatus(program.get(), GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog,
                   "OpenGL program does not link");

@@ -10,4 +10,7 @@ namespace vissort::detail {
 /// context.
 GlProgram linkProgram(const char* vertex_source, const char* fragment_source);
 
+/// Links a compute program from one compute shader source; throws like linkProgram.
+GlProgram linkComputeProgram(const char* compute_source);
+
 } // namespace vissort::detail

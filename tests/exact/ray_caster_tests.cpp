@@ -109,6 +109,40 @@ TEST(RayCaster, ParallelQuadsOrthographicMatchHandComputedDepths) {
     });
 }
 
+TEST(RayCaster, NearEdgesAreMarkedWhereACentreJustMisses) {
+    // A big quad behind, and in front a rectangle whose right edge passes 0.005 pixels left of the
+    // centre of column 25: that pixel's ray misses the rectangle, but a rasterizer's snapping could
+    // cover it. Columns farther away are clear.
+    const uint32_t width = 40, height = 30;
+    Bounds bounds;
+    bounds.add({-1, -1, 0});
+    bounds.add({1, 1, 0.5});
+    CameraSpec spec;
+    spec.projection = Projection::orthographic;
+    spec.ortho_direction = {0, 0, -1};
+    const ViewProjection view = frameCamera(spec, bounds, width, height);
+    Vec3 origin, direction;
+    view.pixelRay(25.5 - 0.005, 15.5, origin, direction);
+    const double edge = origin.x;
+    TrianglePositions positions;
+    addQuad(positions, 1.0, 0.0);
+    addTriangle(positions, {-0.5, -0.5, 0.5}, {edge, -0.5, 0.5}, {edge, 0.5, 0.5});
+    addTriangle(positions, {-0.5, -0.5, 0.5}, {edge, 0.5, 0.5}, {-0.5, 0.5, 0.5});
+    const AllHits plain = castAllHits(positions, view, 1);
+    EXPECT_TRUE(plain.near_edge.empty());
+    const AllHits hits = castAllHits(positions, view, 1, true);
+    ASSERT_EQ(hits.near_edge.size(), hits.pixelCount());
+    const auto at = [&](uint32_t px) { return std::size_t(15) * width + px; };
+    EXPECT_EQ(hits.endHit(at(25)) - hits.firstHit(at(25)), 1u);  // the quad behind only
+    EXPECT_EQ(hits.near_edge[at(25)], 1);
+    EXPECT_EQ(hits.near_edge[at(28)], 0);
+    EXPECT_EQ(hits.near_edge[at(22)], 0);
+    EXPECT_EQ(hits.endHit(at(22)) - hits.firstHit(at(22)), 2u);
+    // Marking changes no hit.
+    EXPECT_EQ(hits.triangles, plain.triangles);
+    EXPECT_EQ(hits.robust, plain.robust);
+}
+
 TEST(RayCaster, EmptyGeometryGivesNoHits) {
     const TrianglePositions empty;
     Bounds bounds;

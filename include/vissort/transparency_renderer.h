@@ -1,0 +1,123 @@
+#pragma once
+// Order-independent transparency, the paper's first application (Govindaraju, Henson, Lin,
+// Manocha, I3D 2005, section 5): opaque objects first with depth, then the transparent primitives
+// blended back to front in a visibility order, next to the methods it is measured against, all in
+// one OpenGL renderer (headless EGL, gl_context.h) with the same shading.
+//
+// Every method blends into a 32-bit float colour buffer; the image becomes 8 bits once, at the
+// end (Image::toRgba8), so rounding does not accumulate over dozens of layers.
+//
+// Methods (docs/transparency.md):
+//   vissort      blends in the visibility order from a GeometryOracle at a level (scene_orderer.h);
+//                the primitives it cannot separate (those of a cycle, and at object level an
+//                object whose own triangles overlap on screen) are blended per pixel from
+//                fragment lists holding only them, at their place in the order: exact;
+//   unsorted     submission order: the common wrong answer;
+//   centroid     objects (object level) or triangles (otherwise) sorted by the depth of their
+//                centroid, back to front: what most engines do, wrong where they overlap;
+//   peel         depth peeling (Everitt 2001), as many passes as the depth complexity needs;
+//   dual-peel    dual depth peeling (Bavoil and Myers 2008), two layers a pass;
+//   linked-list  per-pixel linked lists of every fragment, sorted per pixel (Yang et al. 2010),
+//                grown and drawn again until no fragment is dropped: the exact reference;
+//   weighted     weighted blended OIT (McGuire and Bavoil 2013): one pass, approximate.
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "vissort/camera.h"
+#include "vissort/geometry_oracle.h"
+#include "vissort/gl_context.h"
+#include "vissort/scene.h"
+#include "vissort/scene_orderer.h"
+
+namespace vissort {
+
+enum class BlendMethod { vissort, unsorted, centroid, peel, dual_peel, linked_list, weighted };
+
+/// Parses a method's name (blendMethodNames()); false when unknown.
+bool parseBlendMethod(const std::string& name, BlendMethod& method);
+const char* blendMethodName(BlendMethod method);
+/// Every method's name, comma-separated, for help and error messages.
+std::string blendMethodNames();
+
+struct RenderSettings {
+    BlendMethod method = BlendMethod::vissort;
+    OrderLevel level = OrderLevel::object; // vissort's ordering level; centroid's unit
+    OracleKind oracle = OracleKind::cpu;   // vissort's oracle
+    bool all_transparent = false;          // every object transparent with alpha below
+    float alpha = 0.5f;                    // with all_transparent, in (0, 1]
+    Rgba background{1.0f, 1.0f, 1.0f, 1.0f};
+    /// Lit: a headlight and a membrane term that makes surfaces seen edge-on more opaque (per
+    /// vertex, as in the paper). Flat: each object's colour and alpha, unlit, so that a ray-cast
+    /// reference can reproduce every pixel.
+    bool flat_shading = false;
+    /// Memory for fragment lists (linked-list, vissort's per-pixel groups), in bytes, 24 per
+    /// fragment; 0: 3 GiB. Never exceeded: more fragments are drawn in bands of rows, one band
+    /// at a time (each band draws the geometry again).
+    uint64_t list_bytes = 0;
+};
+
+/// What one frame cost.
+struct RenderStats {
+    double order_ms = 0;  // computing the order (vissort, centroid); 0 for the others
+    double render_ms = 0; // OpenGL work, up to the colour read back (which waits for it)
+    double total_ms = 0;
+    uint32_t passes = 0;    // geometry passes over the transparent primitives (or some of them)
+    uint64_t fragments = 0; // fragments blended from fragment lists (linked-list, vissort's
+                            // per-pixel groups); 0 for the other methods
+    uint32_t groups = 0;    // vissort: groups composited per pixel (cycles, self-overlapping
+                            // objects)
+    uint64_t group_triangles = 0; // vissort: the triangles in those groups
+    VisSortStats order;           // vissort: the ordering's statistics
+};
+
+/// A rendered frame: linear RGBA floats, row 0 at the top, 4 floats per pixel.
+struct Image {
+    uint32_t width = 0, height = 0;
+    std::vector<float> rgba;
+
+    /// Each channel clamped to [0, 1] and rounded to 8 bits: the one conversion of a frame.
+    std::vector<uint8_t> toRgba8() const;
+};
+
+/// Differences between two 8-bit RGBA images of one size, in 8-bit units over the RGB channels.
+struct ImageError {
+    double rmse = 0;
+    double psnr = 0;              // infinity when the images are identical
+    int max_abs = 0;              // the largest channel difference, 0..255
+    uint64_t pixels_over_one = 0; // pixels with some channel more than 1 apart
+};
+ImageError compareImages(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b);
+
+/// Where two 8-bit images of one size differ, as an 8-bit RGBA picture: pixels within 1/255
+/// show the reference faded to light grey, the others yellow (2/255) through red (64/255 and more).
+std::vector<uint8_t> errorMap(const std::vector<uint8_t>& image,
+                              const std::vector<uint8_t>& reference);
+
+/// Writes 8-bit RGBA as PNG; empty on success, else a one-line message.
+std::string writePng(const std::string& path, uint32_t width, uint32_t height,
+                     const std::vector<uint8_t>& rgba8);
+
+class TransparencyRenderer {
+public:
+    /// A renderer of scene through context. Throws std::invalid_argument for bad settings (alpha
+    /// outside (0, 1]) and std::runtime_error when OpenGL lacks what a method needs.
+    TransparencyRenderer(std::shared_ptr<GlContext> context, const Scene& scene,
+                         const RenderSettings& settings);
+    ~TransparencyRenderer();
+    TransparencyRenderer(const TransparencyRenderer&) = delete;
+    TransparencyRenderer& operator=(const TransparencyRenderer&) = delete;
+
+    /// Renders the scene at `positions` (scene.frame(t)) through view. Successive frames reuse
+    /// the previous order (coherence), as SceneOrderer does.
+    Image render(const TrianglePositions& positions, const ViewProjection& view,
+                 RenderStats& stats);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace vissort

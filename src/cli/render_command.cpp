@@ -1,0 +1,197 @@
+// `vissort render`: transparency through the headless OpenGL renderer, one method per run, with
+// an optional reference method and its error.
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <regex>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.h"
+#include "vissort/transparency_renderer.h"
+
+namespace vissort::cli {
+namespace {
+
+// "frame_%04d.png" and the like: exactly one %d conversion (flags 0-9 only), no other '%'.
+bool isFramePattern(const std::string& path) {
+    static const std::regex pattern(R"([^%]*%0?[0-9]?d[^%]*)");
+    return std::regex_match(path, pattern);
+}
+
+std::string framePath(const std::string& pattern, int frame) {
+    char buffer[4096];
+    std::snprintf(buffer, sizeof(buffer), pattern.c_str(), frame);
+    return buffer;
+}
+
+nlohmann::json statsJson(BlendMethod method, const RenderStats& stats) {
+    return {
+        {"method", blendMethodName(method)},
+        {"ms", {{"order", stats.order_ms}, {"render", stats.render_ms}, {"total", stats.total_ms}}},
+        {"passes", stats.passes},
+        {"fragments", stats.fragments},
+        {"groups", stats.groups}};
+}
+
+} // namespace
+
+CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
+    CLI::App* command =
+        app.add_subcommand("render", "Render a scene's transparent objects, blended by a method");
+    command
+        ->add_option("scene", options.scene, "Mesh file, JSON scene, or builtin:NAME?key=value&...")
+        ->required();
+    addViewOptions(*command, options.view);
+    command->add_option("--method", options.method, blendMethodNames())->capture_default_str();
+    command
+        ->add_option("--level", options.level,
+                     "object, triangle or multistage: vissort's ordering level, centroid's unit")
+        ->capture_default_str();
+    command
+        ->add_option("--oracle", options.oracle,
+                     "vissort's oracle: cpu, cpu-reference, exact or gl")
+        ->capture_default_str();
+    command
+        ->add_option("-o,--output", options.output,
+                     "PNG to write; with --frames N, a pattern such as frame_%04d.png")
+        ->required();
+    command->add_option("--json", options.json_path, "Write the statistics (and error) as JSON");
+    command->add_flag("--all-transparent", options.all_transparent,
+                      "Treat every object as transparent with alpha --alpha");
+    command->add_option("--alpha", options.alpha, "Alpha of --all-transparent, in (0, 1]")
+        ->capture_default_str();
+    command->add_option("--reference", options.reference,
+                        "Also render this method and print RMSE, PSNR and the largest channel "
+                        "error against it");
+    command
+        ->add_option("--shading", options.shading,
+                     "lit (a headlight and a rim term, per vertex) or flat (each object's "
+                     "colour, unlit)")
+        ->capture_default_str();
+    command
+        ->add_option("--list-memory", options.list_memory_mib,
+                     "MiB for per-pixel fragment lists (linked-list, vissort's cycles); more "
+                     "fragments are drawn in bands")
+        ->capture_default_str();
+    command->add_option("--error-map", options.error_map,
+                        "With --reference: write where the two differ as a PNG (a pattern with "
+                        "--frames)");
+    return command;
+}
+
+int runRender(const RenderOptions& options) {
+    RenderSettings settings;
+    if (!parseBlendMethod(options.method, settings.method))
+        return fail(kExitUsage, "--method must be one of " + blendMethodNames() + ", got '" +
+                                    options.method + "'");
+    BlendMethod reference_method{};
+    if (!options.reference.empty() && !parseBlendMethod(options.reference, reference_method))
+        return fail(kExitUsage, "--reference must be one of " + blendMethodNames() + ", got '" +
+                                    options.reference + "'");
+    if (!parseOrderLevel(options.level, settings.level))
+        return fail(kExitUsage,
+                    "--level must be object, triangle or multistage, got '" + options.level + "'");
+    if (!parseOracleKind(options.oracle, settings.oracle))
+        return fail(kExitUsage, "--oracle must be cpu, cpu-reference, exact or gl, got '" +
+                                    options.oracle + "'");
+    if (!(options.alpha > 0.0 && options.alpha <= 1.0))
+        return fail(kExitUsage, "--alpha must be in (0, 1], got " + std::to_string(options.alpha));
+    if (options.shading != "lit" && options.shading != "flat")
+        return fail(kExitUsage, "--shading must be lit or flat, got '" + options.shading + "'");
+    settings.flat_shading = options.shading == "flat";
+    // At least one fragment (24 bytes); at most a petabyte, far beyond any driver.
+    if (!(options.list_memory_mib >= 1.0 / 1024 && options.list_memory_mib <= 1e9))
+        return fail(kExitUsage, "--list-memory must be between 0.001 and 1e9 MiB, got " +
+                                    std::to_string(options.list_memory_mib));
+    settings.list_bytes = uint64_t(options.list_memory_mib * 1024 * 1024);
+    if (!options.error_map.empty() && options.reference.empty())
+        return fail(kExitUsage, "--error-map needs --reference METHOD");
+    settings.all_transparent = options.all_transparent;
+    settings.alpha = float(options.alpha);
+    if (options.view.frames > 1 && !isFramePattern(options.output))
+        return fail(kExitUsage, "with --frames, -o needs one %d (such as frame_%04d.png), got '" +
+                                    options.output + "'");
+    std::optional<Scene> scene = loadSceneOrReport(options.scene);
+    if (!scene)
+        return kExitInput;
+    ResolvedView view;
+    if (auto error = resolveView(options.view, *scene, view); !error.empty())
+        return fail(kExitUsage, error);
+    Loaded<std::shared_ptr<GlContext>> context = GlContext::shared();
+    if (!context)
+        return fail(kExitFailure, context.error);
+
+    TransparencyRenderer renderer(*context.value, *scene, settings);
+    std::unique_ptr<TransparencyRenderer> reference;
+    if (!options.reference.empty()) {
+        RenderSettings reference_settings = settings;
+        reference_settings.method = reference_method;
+        reference =
+            std::make_unique<TransparencyRenderer>(*context.value, *scene, reference_settings);
+    }
+    const Bounds first_bounds = scene->positions.bounds();
+    TrianglePositions positions;
+    nlohmann::json frames = nlohmann::json::array();
+    for (int f = 0; f < view.frames; ++f) {
+        scene->frame(f * kFrameInterval, positions);
+        const CameraSpec camera = cameraOnPath(view.camera, view.path, f, first_bounds);
+        const ViewProjection vp = frameCamera(camera, positions.bounds(), view.width, view.height);
+        RenderStats stats;
+        const std::vector<uint8_t> pixels = renderer.render(positions, vp, stats).toRgba8();
+        const std::string path = view.frames > 1 ? framePath(options.output, f) : options.output;
+        if (auto error = writePng(path, view.width, view.height, pixels); !error.empty())
+            return fail(kExitFailure, error);
+        nlohmann::json record = statsJson(settings.method, stats);
+        std::cout << path << ": " << blendMethodName(settings.method) << ", " << stats.total_ms
+                  << " ms (order " << stats.order_ms << ", render " << stats.render_ms << "), "
+                  << stats.passes << " passes";
+        if (stats.fragments > 0)
+            std::cout << ", " << stats.fragments << " fragments listed";
+        if (settings.method == BlendMethod::vissort)
+            std::cout << ", " << stats.groups << " groups composited per pixel";
+        std::cout << '\n';
+        if (reference) {
+            RenderStats reference_stats;
+            const std::vector<uint8_t> reference_pixels =
+                reference->render(positions, vp, reference_stats).toRgba8();
+            const ImageError error = compareImages(pixels, reference_pixels);
+            if (!options.error_map.empty()) {
+                const std::string map_path =
+                    view.frames > 1 ? framePath(options.error_map, f) : options.error_map;
+                if (auto e = writePng(map_path, view.width, view.height,
+                                      errorMap(pixels, reference_pixels));
+                    !e.empty())
+                    return fail(kExitFailure, e);
+            }
+            std::cout << "  against " << options.reference << ": RMSE " << error.rmse << ", PSNR "
+                      << error.psnr << " dB, max abs " << error.max_abs << "/255, "
+                      << error.pixels_over_one << " pixels off by more than 1\n";
+            record["error"] = {{"rmse", error.rmse},
+                               {"psnr", std::isfinite(error.psnr) ? nlohmann::json(error.psnr)
+                                                                  : nlohmann::json(nullptr)},
+                               {"max_abs", error.max_abs},
+                               {"pixels_over_one", error.pixels_over_one},
+                               {"reference", options.reference}};
+        }
+        frames.push_back(std::move(record));
+    }
+    if (!options.json_path.empty()) {
+        nlohmann::json document = frames.back();
+        document["scene"] = options.scene;
+        document["level"] = orderLevelName(settings.level);
+        document["oracle"] = oracleName(settings.oracle);
+        document["size"] = {view.width, view.height};
+        if (view.frames > 1)
+            document["frames"] = std::move(frames);
+        std::ofstream out(options.json_path);
+        out << document.dump(1) << '\n';
+        if (!out)
+            return fail(kExitFailure, "cannot write " + options.json_path);
+    }
+    return kExitOk;
+}
+
+} // namespace vissort::cli

@@ -1,0 +1,98 @@
+#include "render/draw_sequence.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace vissort::detail {
+
+void DrawSequence::append(std::span<const uint32_t> group, bool per_pixel) {
+    if (group.empty())
+        return;
+    const uint32_t first = uint32_t(triangles.size());
+    triangles.insert(triangles.end(), group.begin(), group.end());
+    if (!per_pixel && !segments.empty() && !segments.back().per_pixel)
+        segments.back().triangle_count += uint32_t(group.size());
+    else
+        segments.push_back({first, uint32_t(group.size()), per_pixel});
+}
+
+void sequenceFromOrder(std::span<const uint32_t> front_to_back,
+                       std::span<const DrawPrimitive> primitives,
+                       std::span<const uint32_t> group_of, DrawSequence& sequence) {
+    sequence.clear();
+    std::vector<uint32_t> group;
+    uint32_t current = kNoGroup;
+    const auto flush = [&] {
+        sequence.append(group, current != kNoGroup);
+        group.clear();
+    };
+    for (std::size_t i = front_to_back.size(); i-- > 0;) {
+        const uint32_t p = front_to_back[i];
+        const uint32_t g = group_of.empty() ? kNoGroup : group_of[p];
+        if (g != current) {
+            flush();
+            current = g;
+        }
+        for (uint32_t t = 0; t < primitives[p].triangle_count; ++t)
+            group.push_back(primitives[p].first_triangle + t);
+    }
+    flush();
+}
+
+std::vector<uint32_t> centroidBackToFront(const TrianglePositions& positions,
+                                          std::span<const DrawPrimitive> primitives,
+                                          const ViewProjection& view) {
+    std::vector<double> depth(primitives.size());
+    for (std::size_t p = 0; p < primitives.size(); ++p) {
+        Vec3 sum{0, 0, 0};
+        const std::size_t first = std::size_t(primitives[p].first_triangle) * 3;
+        const std::size_t count = std::size_t(primitives[p].triangle_count) * 3;
+        for (std::size_t c = first; c < first + count; ++c)
+            sum = {sum.x + positions.x[c], sum.y + positions.y[c], sum.z + positions.z[c]};
+        const double n = double(std::max<std::size_t>(count, 1));
+        // Distance along the view direction: monotone in depth for both projections, and
+        // defined for centroids behind the eye.
+        const Vec3 centroid{sum.x / n, sum.y / n, sum.z / n};
+        depth[p] = (centroid.x - view.eye_position.x) * view.forward.x +
+                   (centroid.y - view.eye_position.y) * view.forward.y +
+                   (centroid.z - view.eye_position.z) * view.forward.z;
+    }
+    std::vector<uint32_t> order(primitives.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](uint32_t a, uint32_t b) { return depth[a] > depth[b]; });
+    return order;
+}
+
+PixelRect screenRectOf(const TrianglePositions& positions, std::span<const uint32_t> triangles,
+                       const ViewProjection& view) {
+    const PixelRect whole{0, 0, view.width, view.height};
+    double low_x = std::numeric_limits<double>::infinity(), low_y = low_x;
+    double high_x = -low_x, high_y = -low_x;
+    for (uint32_t t : triangles)
+        for (std::size_t c = std::size_t(t) * 3; c < std::size_t(t) * 3 + 3; ++c) {
+            const std::array<double, 4> clip = view.toClip(positions.corner(c));
+            if (!(clip[3] > 0))
+                return whole; // the projection wraps: no bound from corners
+            // Screen position as the rasterizers compute it (cpu_oracle.h, rule 4).
+            const double sx = (clip[0] / clip[3] + 1) * 0.5 * view.width;
+            const double sy = (1 - clip[1] / clip[3]) * 0.5 * view.height;
+            low_x = std::min(low_x, sx);
+            high_x = std::max(high_x, sx);
+            low_y = std::min(low_y, sy);
+            high_y = std::max(high_y, sy);
+        }
+    if (!(low_x <= high_x && low_y <= high_y))
+        return {};
+    // A pixel is covered through its centre (px + 0.5): a margin of a pixel covers rounding.
+    const double x0 = std::clamp(std::floor(low_x) - 1, 0.0, double(view.width));
+    const double x1 = std::clamp(std::ceil(high_x) + 1, 0.0, double(view.width));
+    const double y0 = std::clamp(std::floor(low_y) - 1, 0.0, double(view.height));
+    const double y1 = std::clamp(std::ceil(high_y) + 1, 0.0, double(view.height));
+    return {uint32_t(x0), uint32_t(y0), uint32_t(x1 - x0), uint32_t(y1 - y0)};
+}
+
+} // namespace vissort::detail

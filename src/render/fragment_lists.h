@@ -1,0 +1,58 @@
+#pragma once
+// Per-pixel fragment lists (Yang, Hensley, Grün, Thibieroz, "Real-time concurrent linked list
+// construction on the GPU", EGSR 2010): every fragment of a draw is stored in its pixel's list,
+// then each list is sorted by depth and blended back to front. The exact reference method
+// (`linked-list`), and how `vissort` composites the few primitives its order cannot separate.
+//
+// Never drops a fragment: when a draw stores more fragments than the buffers hold, they grow to
+// the count and the draw runs again; past the driver's largest buffer, the rectangle is split
+// into bands of rows drawn one at a time (scissored), each within the buffers.
+
+#include <cstdint>
+#include <functional>
+
+#include "gl/gl_objects.h"
+#include "render/render_target.h"
+
+namespace vissort::detail {
+
+class FragmentLists {
+public:
+    /// Lists that hold at most max_bytes of fragments at once (0: kDefaultMaxBytes), and never
+    /// more than the driver's largest shader storage buffer.
+    explicit FragmentLists(uint64_t max_bytes = 0);
+
+    struct Result {
+        uint64_t fragments = 0; // fragments stored and blended
+        uint32_t passes = 0;    // times draw ran (1, more after growing or splitting)
+    };
+
+    /// Blends every fragment that `draw` produces inside rect onto the target's colour, each
+    /// pixel's fragments back to front by depth (ties: the later stored in front), over what
+    /// the pixel holds. `draw` issues the draws with buildProgram() bound (its view uniforms set
+    /// by the caller); it runs with the target's framebuffer bound, the depth test LESS against
+    /// the target's depth and no depth or colour writes, and may run more than once.
+    /// Throws std::runtime_error when a single pixel has more fragments than the buffers hold.
+    Result composite(const RenderTarget& target, PixelRect rect, const std::function<void()>& draw);
+
+    /// The program `draw` binds: the shading vertex shader, fragments into the lists.
+    GLuint buildProgram() const { return build_program_.get(); }
+
+    static constexpr uint64_t kBytesPerFragment = 24; // colour vec4, depth and link
+    static constexpr uint64_t kDefaultMaxBytes = uint64_t(3) << 30;
+
+private:
+    /// Draws rect's fragments into the lists; returns how many there were (kHuge when the
+    /// counter passed 2^31, where it could wrap).
+    uint64_t build(PixelRect rect, const std::function<void()>& draw);
+    void allocate(uint64_t nodes);
+
+    GlProgram build_program_, resolve_program_;
+    GlTexture heads_;
+    GlBuffer counter_, colours_, links_;
+    uint32_t width_ = 0, height_ = 0;
+    uint64_t capacity_ = 0;  // nodes the buffers hold
+    uint64_t max_nodes_ = 0; // the most nodes the buffers may hold
+};
+
+} // namespace vissort::detail

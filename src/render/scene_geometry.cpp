@@ -1,0 +1,107 @@
+#include "render/scene_geometry.h"
+
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat4x4.hpp>
+
+namespace vissort::detail {
+namespace {
+
+GlBuffer createBuffer() {
+    GLuint name = 0;
+    glCreateBuffers(1, &name);
+    return GlBuffer(name);
+}
+
+} // namespace
+
+SceneGeometry::SceneGeometry(const Scene& scene, std::span<const float> object_colours)
+    : mesh_(scene) {
+    GLuint name = 0;
+    glCreateVertexArrays(1, &name);
+    vertex_array_ = GlVertexArray(name);
+    vertices_ = createBuffer();
+    objects_ = createBuffer();
+    colours_ = createBuffer();
+    elements_ = createBuffer();
+    // Zero-size storage is an error in OpenGL: every buffer gets a few spare bytes.
+    const std::vector<uint32_t>& corner_objects = mesh_.cornerObjects();
+    glNamedBufferStorage(objects_.get(), GLsizeiptr(corner_objects.size() * sizeof(uint32_t) + 4),
+                         nullptr, GL_DYNAMIC_STORAGE_BIT);
+    glNamedBufferSubData(objects_.get(), 0, GLsizeiptr(corner_objects.size() * sizeof(uint32_t)),
+                         corner_objects.data());
+    glNamedBufferStorage(colours_.get(), GLsizeiptr(object_colours.size() * sizeof(float) + 16),
+                         nullptr, GL_DYNAMIC_STORAGE_BIT);
+    glNamedBufferSubData(colours_.get(), 0, GLsizeiptr(object_colours.size() * sizeof(float)),
+                         object_colours.data());
+
+    const GLuint va = vertex_array_.get();
+    glVertexArrayVertexBuffer(va, 0, vertices_.get(), 0, 6 * sizeof(float));
+    glVertexArrayVertexBuffer(va, 1, objects_.get(), 0, sizeof(uint32_t));
+    for (GLuint attribute : {0u, 1u}) { // position, normal
+        glEnableVertexArrayAttrib(va, attribute);
+        glVertexArrayAttribFormat(va, attribute, 3, GL_FLOAT, GL_FALSE,
+                                  attribute * 3 * sizeof(float));
+        glVertexArrayAttribBinding(va, attribute, 0);
+    }
+    glEnableVertexArrayAttrib(va, 2); // object
+    glVertexArrayAttribIFormat(va, 2, 1, GL_UNSIGNED_INT, 0);
+    glVertexArrayAttribBinding(va, 2, 1);
+    glVertexArrayElementBuffer(va, elements_.get());
+}
+
+void SceneGeometry::upload(const TrianglePositions& positions) {
+    mesh_.update(positions, vertex_data_);
+    glNamedBufferData(vertices_.get(), GLsizeiptr(vertex_data_.size() * sizeof(float)),
+                      vertex_data_.data(), GL_STREAM_DRAW);
+}
+
+void SceneGeometry::setTriangles(std::span<const uint32_t> opaque,
+                                 std::span<const uint32_t> transparent) {
+    element_data_.clear();
+    element_data_.reserve((opaque.size() + transparent.size()) * 3);
+    for (std::span<const uint32_t> list : {opaque, transparent})
+        for (uint32_t t : list)
+            for (uint32_t k = 0; k < 3; ++k)
+                element_data_.push_back(t * 3 + k);
+    glNamedBufferData(elements_.get(), GLsizeiptr(element_data_.size() * sizeof(uint32_t)),
+                      element_data_.data(), GL_STREAM_DRAW);
+    opaque_count_ = opaque.size();
+    transparent_count_ = transparent.size();
+}
+
+void SceneGeometry::setView(GLuint program, const ViewProjection& view) const {
+    // The product in double, rounded once: the oracles' transform (cpu_oracle.h, rule 1).
+    const glm::dmat4 matrix =
+        glm::make_mat4(view.projection_matrix.data()) * glm::make_mat4(view.view.data());
+    const glm::mat4 rounded(matrix);
+    glProgramUniformMatrix4fv(program, glGetUniformLocation(program, "view_projection"), 1,
+                              GL_FALSE, glm::value_ptr(rounded));
+    glProgramUniform3f(program, glGetUniformLocation(program, "eye"), float(view.eye_position.x),
+                       float(view.eye_position.y), float(view.eye_position.z));
+    glProgramUniform3f(program, glGetUniformLocation(program, "view_direction"),
+                       float(view.forward.x), float(view.forward.y), float(view.forward.z));
+    glProgramUniform1i(program, glGetUniformLocation(program, "orthographic"),
+                       view.projection == Projection::orthographic ? 1 : 0);
+    glProgramUniform1i(program, glGetUniformLocation(program, "unlit"), flat_ ? 1 : 0);
+}
+
+void SceneGeometry::bind() const {
+    glBindVertexArray(vertex_array_.get());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, colours_.get());
+}
+
+void SceneGeometry::drawOpaque() const {
+    if (opaque_count_ == 0)
+        return;
+    glDrawElements(GL_TRIANGLES, GLsizei(opaque_count_ * 3), GL_UNSIGNED_INT, nullptr);
+}
+
+void SceneGeometry::drawTransparent(std::size_t first, std::size_t count) const {
+    if (count == 0)
+        return;
+    const std::size_t first_corner = (opaque_count_ + first) * 3;
+    glDrawElements(GL_TRIANGLES, GLsizei(count * 3), GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(first_corner * sizeof(uint32_t)));
+}
+
+} // namespace vissort::detail

@@ -1,0 +1,50 @@
+#pragma once
+// The scene on the GPU, shared by every blending method: one vertex stream (position, normal,
+// object per corner, RenderMesh), the objects' colours, and an element buffer holding the opaque
+// triangles and then the transparent ones in the frame's draw order.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "gl/gl_objects.h"
+#include "render/render_mesh.h"
+#include "vissort/camera.h"
+#include "vissort/scene.h"
+
+namespace vissort::detail {
+
+class SceneGeometry {
+public:
+    /// object_colours: 4 floats (r, g, b, alpha) per object of scene, as shaded (shading.h).
+    SceneGeometry(const Scene& scene, std::span<const float> object_colours);
+
+    /// Uploads the vertices of a frame: positions has the scene's triangle count.
+    void upload(const TrianglePositions& positions);
+    /// The triangles to draw (scene triangle ids): opaque ones in any order, transparent ones in
+    /// the order drawTransparent's ranges refer to.
+    void setTriangles(std::span<const uint32_t> opaque, std::span<const uint32_t> transparent);
+
+    /// Sets a program's view and shading uniforms (those of kShadeVertexShader).
+    void setView(GLuint program, const ViewProjection& view) const;
+    /// Flat shading (each object's colour, unlit) instead of the lit default.
+    void setFlat(bool flat) { flat_ = flat; }
+    /// Binds the vertex stream and the colours (SSBO binding 0) for the draws below.
+    void bind() const;
+    /// Draws every opaque triangle with the bound program and state.
+    void drawOpaque() const;
+    /// Draws transparent triangles [first, first + count) of setTriangles' order.
+    void drawTransparent(std::size_t first, std::size_t count) const;
+    std::size_t transparentCount() const { return transparent_count_; }
+
+private:
+    RenderMesh mesh_;
+    GlVertexArray vertex_array_;
+    GlBuffer vertices_, objects_, colours_, elements_;
+    std::vector<float> vertex_data_;
+    std::vector<uint32_t> element_data_;
+    std::size_t opaque_count_ = 0, transparent_count_ = 0;
+    bool flat_ = false;
+};
+
+} // namespace vissort::detail

@@ -1,0 +1,63 @@
+#pragma once
+// The one shading every method uses, so that methods differ only in how they composite: a
+// vertex shader computing each corner's colour (like the paper's vertex shader), and the GLSL
+// pieces the methods' own shaders share.
+
+namespace vissort::detail {
+
+// Per-vertex shading: a headlight, two-sided so that the inner surfaces of transparent objects
+// are lit too, and for transparent objects a membrane term that makes surfaces seen edge-on
+// more opaque (the rim of a soap bubble), as in Govindaraju et al. (I3D 2005), figure 1.
+// Inputs: SceneGeometry's vertex stream (position, unit normal, object) and per-object colours
+// (SSBO binding 0). Output: `shaded`, straight (not premultiplied) colour and alpha. With `unlit`,
+// each object's colour and alpha as they are, unlit: what a ray-cast reference can reproduce.
+inline constexpr const char* kShadeVertexShader = R"(#version 450 core
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+layout(location = 2) in uint object;
+layout(std430, binding = 0) readonly buffer Colours { vec4 colours[]; };
+uniform mat4 view_projection;
+uniform vec3 eye;             // perspective: the eye
+uniform vec3 view_direction;  // orthographic: the direction of view
+uniform bool orthographic;
+uniform bool unlit;
+out vec4 shaded;
+void main() {
+    gl_Position = view_projection * vec4(position, 1.0);
+    if (unlit) {
+        shaded = colours[object];
+        return;
+    }
+    vec3 to_eye = orthographic ? -view_direction : normalize(eye - position);
+    float facing = length(normal) > 0.0 ? abs(dot(normal, to_eye)) : 1.0;
+    vec4 base = colours[object];
+    vec3 rgb = base.rgb * (0.3 + 0.7 * facing);
+    float alpha = base.a;
+    if (alpha < 1.0) alpha = alpha + (1.0 - alpha) * 0.5 * pow(1.0 - facing, 3.0);
+    shaded = vec4(rgb, alpha);
+}
+)";
+
+// Opaque draws and sorted blending: the colour as shaded (blending, when on, does the rest).
+inline constexpr const char* kShadeFragmentShader = R"(#version 450 core
+in vec4 shaded;
+layout(location = 0) out vec4 colour;
+void main() { colour = shaded; }
+)";
+
+// The full-screen compositing steps run as compute shaders over pixel rectangles, one
+// invocation per pixel (runPixelProgram, render_target.h): exact per-pixel work with no
+// rasterization rules in the way. Each program is this header followed by its body.
+inline constexpr const char* kPixelComputeHeader = R"(#version 450 core
+layout(local_size_x = 8, local_size_y = 8) in;
+uniform ivec2 origin;  // the rectangle's top-left pixel
+uniform ivec2 extent;  // its width and height
+// This invocation's pixel; false for the invocations beyond the rectangle's edges.
+bool rectanglePixel(out ivec2 pixel) {
+    pixel = origin + ivec2(gl_GlobalInvocationID.xy);
+    return all(lessThan(gl_GlobalInvocationID.xy, uvec2(extent)));
+}
+)";
+inline constexpr unsigned kPixelGroupSide = 8;
+
+} // namespace vissort::detail

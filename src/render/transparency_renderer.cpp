@@ -1,0 +1,355 @@
+// The transparency renderer (transparency_renderer.h): opaque objects with depth, then the
+// transparent triangles composited by the chosen method onto the same float framebuffer.
+
+#include "vissort/transparency_renderer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+#include <stdexcept>
+
+#include "gl/gl_api.h"
+#include "gl/gl_program.h"
+#include "render/depth_peeling.h"
+#include "render/draw_sequence.h"
+#include "render/dual_depth_peeling.h"
+#include "render/fragment_lists.h"
+#include "render/render_target.h"
+#include "render/scene_geometry.h"
+#include "render/shading.h"
+#include "render/weighted_blended.h"
+
+namespace vissort {
+namespace {
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+void copyCorners(const TrianglePositions& from, std::span<const uint32_t> triangles,
+                 TrianglePositions& to) {
+    to.resize(triangles.size());
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+        for (std::size_t k = 0; k < 3; ++k) {
+            const std::size_t c = std::size_t(triangles[t]) * 3 + k;
+            to.x[t * 3 + k] = from.x[c];
+            to.y[t * 3 + k] = from.y[c];
+            to.z[t * 3 + k] = from.z[c];
+        }
+}
+
+// The transparent objects as a scene of their own, for ordering: their triangles renumbered from
+// 0 in object order, with the map back to the scene's triangle ids. Opaque surfaces hide
+// transparent fragments but never change the order of the visible ones, so they are left out.
+struct TransparentPart {
+    Scene scene;
+    std::vector<uint32_t> scene_triangle; // part triangle -> scene triangle
+};
+
+TransparentPart transparentPart(const Scene& scene, const std::vector<uint8_t>& transparent) {
+    TransparentPart part;
+    part.scene.name = scene.name + " (transparent)";
+    for (uint32_t o = 0; o < scene.objects.size(); ++o) {
+        if (!transparent[o])
+            continue;
+        SceneObject object = scene.objects[o];
+        object.first_triangle = uint32_t(part.scene_triangle.size());
+        for (uint32_t t = 0; t < object.triangle_count; ++t)
+            part.scene_triangle.push_back(scene.objects[o].first_triangle + t);
+        part.scene.objects.push_back(object);
+    }
+    copyCorners(scene.positions, part.scene_triangle, part.scene.positions);
+    return part;
+}
+
+bool ordersPerFrame(BlendMethod method) {
+    return method == BlendMethod::vissort || method == BlendMethod::centroid;
+}
+
+} // namespace
+
+struct TransparencyRenderer::Impl {
+    std::shared_ptr<GlContext> context;
+    RenderSettings settings;
+    uint32_t triangle_count = 0;
+    std::vector<uint32_t> opaque_triangles;
+    TransparentPart part;
+    std::vector<detail::DrawPrimitive> part_objects, part_triangles;
+    // vissort's ordering, over the transparent part only.
+    std::unique_ptr<GeometryOracle> oracle;
+    std::unique_ptr<SceneOrderer> orderer;
+    TrianglePositions part_positions;
+    detail::DrawSequence sequence; // transparent triangles back to front, scene ids
+    bool triangles_uploaded = false;
+
+    std::unique_ptr<detail::SceneGeometry> geometry;
+    detail::GlProgram shade_program;
+    detail::RenderTarget target;
+    // Each method's GL resources, made on first use.
+    std::unique_ptr<detail::FragmentLists> lists;
+    std::unique_ptr<detail::DepthPeeling> peeling;
+    std::unique_ptr<detail::DualDepthPeeling> dual_peeling;
+    std::unique_ptr<detail::WeightedBlended> weighted;
+
+    const std::vector<detail::DrawPrimitive>& orderedPrimitives() const {
+        return settings.level == OrderLevel::object ? part_objects : part_triangles;
+    }
+
+    // This frame's back-to-front sequence of transparent triangles (scene triangle ids), for the
+    // methods that order per frame.
+    void buildSequence(const TrianglePositions& positions, const ViewProjection& view,
+                       RenderStats& stats) {
+        sequence.clear();
+        if (part.scene_triangle.empty())
+            return;
+        copyCorners(positions, part.scene_triangle, part_positions);
+        const std::vector<detail::DrawPrimitive>& primitives = orderedPrimitives();
+        if (settings.method == BlendMethod::centroid) {
+            std::vector<uint32_t> order =
+                detail::centroidBackToFront(part_positions, primitives, view);
+            std::reverse(order.begin(), order.end());
+            detail::sequenceFromOrder(order, primitives, {}, sequence);
+        } else {
+            const FrameOrder frame = orderer->orderFrame(part_positions, view);
+            stats.order = frame.stats;
+            std::vector<uint32_t> group_of(primitives.size(), detail::kNoGroup);
+            for (uint32_t g = 0; g < frame.cycles.size(); ++g)
+                for (uint32_t p : frame.cycles[g])
+                    group_of[p] = g;
+            if (settings.level == OrderLevel::object)
+                markSelfOverlapping(view, group_of);
+            detail::sequenceFromOrder(frame.order, primitives, group_of, sequence);
+        }
+        for (uint32_t& t : sequence.triangles)
+            t = part.scene_triangle[t];
+        for (detail::DrawSegment& segment : sequence.segments) {
+            if (!segment.per_pixel)
+                continue;
+            ++stats.groups;
+            stats.group_triangles += segment.triangle_count;
+            segment.rect =
+                detail::screenRectOf(positions,
+                                     std::span(sequence.triangles)
+                                         .subspan(segment.first_triangle, segment.triangle_count),
+                                     view);
+        }
+    }
+
+    // An object whose own triangles overlap on screen (beyond the depth tolerance) is, alone, a
+    // group to composite per pixel. Found with the oracle: draw the object, then ask whether any
+    // of it lies behind what was drawn.
+    void markSelfOverlapping(const ViewProjection& view, std::vector<uint32_t>& group_of) {
+        const std::vector<PrimitiveRange> ranges = part.scene.objectPrimitives();
+        oracle->bind(part_positions, view, ranges);
+        // The default tolerance here: the blending one would find every object behind itself.
+        // Triangles of one object whose depths nearly tie are neighbours at a fold, where both
+        // take their colours from the shared corners: their order hardly shows.
+        oracle->setDepthTolerance(kDepthTolerance);
+        uint8_t behind = 0;
+        for (uint32_t p = 0; p < ranges.size(); ++p) {
+            if (group_of[p] != detail::kNoGroup)
+                continue;
+            oracle->queryAgainst(std::span(&p, 1), std::span(&p, 1), std::span(&behind, 1));
+            if (behind)
+                group_of[p] = uint32_t(ranges.size()) + p; // distinct from every cycle
+        }
+        oracle->setDepthTolerance(kBlendingDepthTolerance);
+    }
+
+    // Draws transparent triangles [first, first + count) with program, its view set.
+    void drawTransparent(GLuint program, const ViewProjection& view, std::size_t first,
+                         std::size_t count) const {
+        geometry->setView(program, view);
+        glUseProgram(program);
+        geometry->bind();
+        geometry->drawTransparent(first, count);
+    }
+
+    // Sorted blending: runs of triangles blended in sequence, groups from fragment lists.
+    void blendSequence(const ViewProjection& view, RenderStats& stats) {
+        if (!sequence.segments.empty())
+            stats.passes = 1;
+        for (const detail::DrawSegment& segment : sequence.segments) {
+            target.bind();
+            if (!segment.per_pixel) {
+                glEnable(GL_DEPTH_TEST);
+                glDepthFunc(GL_LESS);
+                glDepthMask(GL_FALSE);
+                glEnable(GL_BLEND);
+                glBlendEquation(GL_FUNC_ADD);
+                // Colour: source over destination; the buffer's alpha stays 1 (opaque background).
+                glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+                drawTransparent(shade_program.get(), view, segment.first_triangle,
+                                segment.triangle_count);
+                continue;
+            }
+            const detail::FragmentLists::Result listed =
+                compositeLists(view, segment.rect, segment.first_triangle, segment.triangle_count);
+            stats.fragments += listed.fragments;
+            stats.passes += listed.passes - 1; // a regrown or split group drew again
+        }
+    }
+
+    detail::FragmentLists::Result compositeLists(const ViewProjection& view, detail::PixelRect rect,
+                                                 std::size_t first, std::size_t count) {
+        if (!lists)
+            lists = std::make_unique<detail::FragmentLists>(settings.list_bytes);
+        target.bind();
+        return lists->composite(
+            target, rect, [&] { drawTransparent(lists->buildProgram(), view, first, count); });
+    }
+
+    void compositeTransparent(const ViewProjection& view, RenderStats& stats) {
+        const std::size_t all = geometry->transparentCount();
+        if (all == 0)
+            return;
+        switch (settings.method) {
+        case BlendMethod::unsorted:
+            sequence.clear();
+            sequence.append(part.scene_triangle, false);
+            blendSequence(view, stats);
+            return;
+        case BlendMethod::vissort:
+        case BlendMethod::centroid:
+            blendSequence(view, stats);
+            return;
+        case BlendMethod::linked_list: {
+            const detail::FragmentLists::Result listed =
+                compositeLists(view, target.whole(), 0, all);
+            stats.fragments = listed.fragments;
+            stats.passes = listed.passes;
+            return;
+        }
+        case BlendMethod::peel:
+            if (!peeling)
+                peeling = std::make_unique<detail::DepthPeeling>();
+            stats.passes = peeling->composite(
+                target, [&] { drawTransparent(peeling->program(), view, 0, all); });
+            return;
+        case BlendMethod::dual_peel:
+            if (!dual_peeling)
+                dual_peeling = std::make_unique<detail::DualDepthPeeling>();
+            stats.passes = dual_peeling->composite(
+                target, [&](GLuint program) { drawTransparent(program, view, 0, all); });
+            return;
+        case BlendMethod::weighted:
+            if (!weighted)
+                weighted = std::make_unique<detail::WeightedBlended>();
+            weighted->composite(target,
+                                [&] { drawTransparent(weighted->program(), view, 0, all); });
+            stats.passes = 1;
+            return;
+        }
+    }
+};
+
+TransparencyRenderer::TransparencyRenderer(std::shared_ptr<GlContext> context, const Scene& scene,
+                                           const RenderSettings& settings) {
+    if (!(settings.alpha > 0.0f && settings.alpha <= 1.0f))
+        throw std::invalid_argument("alpha must be in (0, 1], got " +
+                                    std::to_string(settings.alpha));
+    if (context == nullptr)
+        throw std::invalid_argument("no OpenGL context");
+    if (scene.triangleCount() > std::size_t(std::numeric_limits<GLint>::max()) / 3)
+        throw std::runtime_error("the renderer draws at most 715,827,882 triangles");
+    context->makeCurrent();
+    impl_ = std::make_unique<Impl>();
+    Impl& d = *impl_;
+    d.context = std::move(context);
+    d.settings = settings;
+    d.triangle_count = uint32_t(scene.triangleCount());
+
+    std::vector<uint8_t> transparent(scene.objects.size());
+    std::vector<float> colours;
+    for (uint32_t o = 0; o < scene.objects.size(); ++o) {
+        const SceneObject& object = scene.objects[o];
+        const bool is_transparent =
+            settings.all_transparent || (object.transparent && object.colour.a < 1.0f);
+        transparent[o] = is_transparent ? 1 : 0;
+        const float alpha = settings.all_transparent ? settings.alpha
+                            : is_transparent         ? object.colour.a
+                                                     : 1.0f;
+        colours.insert(colours.end(), {object.colour.r, object.colour.g, object.colour.b, alpha});
+        if (!is_transparent)
+            for (uint32_t t = 0; t < object.triangle_count; ++t)
+                d.opaque_triangles.push_back(object.first_triangle + t);
+    }
+    d.part = transparentPart(scene, transparent);
+    for (const SceneObject& object : d.part.scene.objects)
+        d.part_objects.push_back({object.first_triangle, object.triangle_count});
+    d.part_triangles.resize(d.part.scene_triangle.size());
+    for (uint32_t t = 0; t < d.part_triangles.size(); ++t)
+        d.part_triangles[t] = {t, 1};
+    if (settings.method == BlendMethod::vissort && !d.part.scene_triangle.empty()) {
+        d.oracle = makeOracle(settings.oracle);
+        d.oracle->setDepthTolerance(kBlendingDepthTolerance);
+        d.orderer = std::make_unique<SceneOrderer>(d.part.scene, settings.level, *d.oracle);
+        d.context->makeCurrent(); // a gl oracle made it current too; the same context
+    }
+    d.geometry = std::make_unique<detail::SceneGeometry>(scene, colours);
+    d.geometry->setFlat(settings.flat_shading);
+    d.shade_program = detail::linkProgram(detail::kShadeVertexShader, detail::kShadeFragmentShader);
+}
+
+TransparencyRenderer::~TransparencyRenderer() {
+    if (impl_)
+        impl_->context->makeCurrent(); // GL objects are deleted in their context
+}
+
+Image TransparencyRenderer::render(const TrianglePositions& positions, const ViewProjection& view,
+                                   RenderStats& stats) {
+    Impl& d = *impl_;
+    if (positions.triangleCount() != d.triangle_count)
+        throw std::invalid_argument("positions have " + std::to_string(positions.triangleCount()) +
+                                    " triangles, the scene " + std::to_string(d.triangle_count));
+    stats = {};
+    const auto start = std::chrono::steady_clock::now();
+    if (ordersPerFrame(d.settings.method)) {
+        d.buildSequence(positions, view, stats);
+        stats.order_ms = millisecondsSince(start);
+    }
+
+    const auto render_start = std::chrono::steady_clock::now();
+    d.context->makeCurrent();
+    d.geometry->upload(positions);
+    if (ordersPerFrame(d.settings.method)) {
+        d.geometry->setTriangles(d.opaque_triangles, d.sequence.triangles);
+    } else if (!d.triangles_uploaded) { // submission order, every frame the same
+        d.geometry->setTriangles(d.opaque_triangles, d.part.scene_triangle);
+        d.triangles_uploaded = true;
+    }
+
+    d.target.resize(view.width, view.height);
+    d.target.bind();
+    glClipControl(GL_UPPER_LEFT, GL_ZERO_TO_ONE); // the oracles' conventions (gl_oracle.h)
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_SCISSOR_TEST);
+    const float background[4] = {d.settings.background.r, d.settings.background.g,
+                                 d.settings.background.b, 1.0f};
+    d.target.clear(background);
+
+    // Opaque objects: depth written, no blending.
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    d.geometry->setView(d.shade_program.get(), view);
+    glUseProgram(d.shade_program.get());
+    d.geometry->bind();
+    d.geometry->drawOpaque();
+
+    // Transparent ones: tested against the opaque depth, never written.
+    glDepthMask(GL_FALSE);
+    d.compositeTransparent(view, stats);
+
+    Image image;
+    image.width = view.width;
+    image.height = view.height;
+    image.rgba = d.target.readColour(); // waits for the GPU
+    stats.render_ms = millisecondsSince(render_start);
+    stats.total_ms = millisecondsSince(start);
+    return image;
+}
+
+} // namespace vissort

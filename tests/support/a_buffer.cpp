@@ -1,0 +1,85 @@
+// The ray-cast A-buffer (a_buffer.h).
+
+#include "a_buffer.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "exact/ray_caster.h"
+
+namespace vissort::test {
+
+ABuffer rayCastComposite(const TrianglePositions& positions, const ViewProjection& view,
+                         std::span<const Rgba> triangle_colours, Rgba background) {
+    const detail::AllHits hits = detail::castAllHits(positions, view, 0, true);
+    ABuffer out;
+    out.width = hits.width;
+    out.height = hits.height;
+    out.rgb.resize(hits.pixelCount() * 3);
+    out.decided.resize(hits.pixelCount());
+    for (std::size_t pixel = 0; pixel < hits.pixelCount(); ++pixel) {
+        // Hits come sorted by depth: those that show end at the first opaque one.
+        const uint64_t first = hits.firstHit(pixel);
+        uint64_t end = first;
+        while (end < hits.endHit(pixel) && triangle_colours[hits.triangles[end]].a < 1.0f)
+            ++end;
+        const bool opaque_hit = end < hits.endHit(pixel);
+        const uint64_t last = opaque_hit ? end + 1 : end; // shown hits: [first, last)
+        // An edge that passes within the margin of the centre, of a triangle the ray misses, may
+        // cover the pixel in a rasterizer.
+        bool decided = !hits.near_edge[pixel];
+        for (uint64_t h = first; h < last; ++h) {
+            decided = decided && hits.robust[h];
+            if (h + 1 < last)
+                decided = decided && hits.depths[h + 1] - hits.depths[h] > kTieDepth;
+        }
+        // A hit just behind the last shown one may be a tie with it too.
+        if (last < hits.endHit(pixel) && last > first)
+            decided = decided && hits.depths[last] - hits.depths[last - 1] > kTieDepth;
+        out.decided[pixel] = decided;
+        out.max_layers = std::max(out.max_layers, uint32_t(end - first));
+
+        double c[3] = {background.r, background.g, background.b};
+        if (opaque_hit) {
+            const Rgba& o = triangle_colours[hits.triangles[end]];
+            c[0] = o.r;
+            c[1] = o.g;
+            c[2] = o.b;
+        }
+        for (uint64_t h = end; h-- > first;) { // back to front
+            const Rgba& t = triangle_colours[hits.triangles[h]];
+            const double a = t.a;
+            c[0] = a * t.r + (1 - a) * c[0];
+            c[1] = a * t.g + (1 - a) * c[1];
+            c[2] = a * t.b + (1 - a) * c[2];
+        }
+        std::copy(c, c + 3, &out.rgb[pixel * 3]);
+    }
+    return out;
+}
+
+ABufferComparison compareWithABuffer(const std::vector<uint8_t>& rgba8, const ABuffer& reference) {
+    ABufferComparison result;
+    if (rgba8.size() != std::size_t(reference.width) * reference.height * 4) {
+        result.max_abs = 255;
+        return result;
+    }
+    for (std::size_t pixel = 0; pixel < reference.decided.size(); ++pixel) {
+        if (!reference.decided[pixel])
+            continue;
+        ++result.compared;
+        for (int k = 0; k < 3; ++k) {
+            const double v = std::clamp(reference.rgb[pixel * 3 + k], 0.0, 1.0);
+            const int expected = int(std::lround(v * 255));
+            const int difference = std::abs(int(rgba8[pixel * 4 + k]) - expected);
+            if (difference > result.max_abs) {
+                result.max_abs = difference;
+                result.worst_x = uint32_t(pixel % reference.width);
+                result.worst_y = uint32_t(pixel / reference.width);
+            }
+        }
+    }
+    return result;
+}
+
+} // namespace vissort::test
