@@ -57,7 +57,16 @@ struct RenderSettings {
     /// fragment; 0: 3 GiB. Never exceeded: more fragments are drawn in bands of rows, one band
     /// at a time (each band draws the geometry again).
     uint64_t list_bytes = 0;
+    /// Checks every pixel of an ordered blend (vissort, unsorted, centroid) against the GPU's own
+    /// depths and composites again from fragment lists where the order was wrong. Automatic: on
+    /// for vissort (exact even where its oracle's rasterizer and the GPU's disagree on a pixel),
+    /// off for unsorted and centroid (measured as the wrong answers they are). The other methods
+    /// ignore it.
+    enum class OrderCheck { automatic, on, off } check = OrderCheck::automatic;
 };
+
+/// Parses "auto", "on" or "off"; false when unknown.
+bool parseOrderCheck(const std::string& name, RenderSettings::OrderCheck& check);
 
 /// What one frame cost.
 struct RenderStats {
@@ -70,6 +79,8 @@ struct RenderStats {
     uint32_t groups = 0;    // vissort: groups composited per pixel (cycles, self-overlapping
                             // objects)
     uint64_t group_triangles = 0; // vissort: the triangles in those groups
+    uint64_t repaired_pixels = 0; // vissort: pixels where the GPU's depths contradicted the
+                                  // order (near an edge, or a tie), composited again
     VisSortStats order;           // vissort: the ordering's statistics
 };
 

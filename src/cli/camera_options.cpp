@@ -38,6 +38,8 @@ std::string parseVec3(const std::string& option, const std::string& text, Vec3& 
     return {};
 }
 
+} // namespace
+
 std::string parseSize(const std::string& text, uint32_t& width, uint32_t& height) {
     const std::size_t x = text.find('x');
     unsigned long w = 0, h = 0;
@@ -53,8 +55,6 @@ std::string parseSize(const std::string& text, uint32_t& width, uint32_t& height
     height = uint32_t(h);
     return {};
 }
-
-} // namespace
 
 int fail(int code, const std::string& message) {
     std::cerr << "vissort: error: " << message << '\n';

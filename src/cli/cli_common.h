@@ -28,6 +28,9 @@ struct ViewOptions {
     int frames = 1;
 };
 
+/// Parses --size's WxH; empty on success, else a one-line message naming the option.
+std::string parseSize(const std::string& text, uint32_t& width, uint32_t& height);
+
 /// Adds --eye --target --up --fov --ortho-dir --size --frames --path.
 void addViewOptions(CLI::App& command, ViewOptions& options);
 

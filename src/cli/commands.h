@@ -30,12 +30,17 @@ int runInfo(const InfoOptions& options);
 struct BenchOptions {
     std::string what;
     int repeat = 3;
-    int frames = 11;
+    std::optional<int> frames;  // each benchmark has its own default
     int gl_frames = 5;
+    std::string size = "1024x1024";
+    std::string level = "multistage";
+    std::string depths = "2,4,8,16,32,64";
     std::string json_path;
 };
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options);
 int runBench(const BenchOptions& options);
+int runOracleBench(const BenchOptions& options);
+int runTransparencyBench(const BenchOptions& options);
 
 struct RenderOptions {
     std::string scene;
@@ -50,6 +55,7 @@ struct RenderOptions {
     std::string reference;
     std::string error_map;
     std::string shading = "lit";
+    std::string check = "auto";
     double list_memory_mib = 3072;
 };
 CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options);

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
+#include "cli/json_output.h"
 #include "vissort/scene_orderer.h"
 
 namespace vissort::cli {
@@ -139,9 +140,8 @@ int runOrder(const OrderOptions& options) {
         document["back_to_front"] = options.back_to_front;
         document["size"] = {view.width, view.height};
         if (view.frames > 1) document["frames"] = std::move(frames);
-        std::ofstream out(options.json_path);
-        out << document.dump(1) << '\n';
-        if (!out) return fail(kExitFailure, "cannot write " + options.json_path);
+        if (const int code = writeJsonFile(options.json_path, document); code != kExitOk)
+            return code;
     }
     if (!options.dump_path.empty()) {
         const auto primitives = primitivesOf(*scene, level);

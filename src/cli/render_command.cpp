@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
+#include "cli/json_output.h"
 #include "vissort/transparency_renderer.h"
 
 namespace vissort::cli {
@@ -102,6 +103,8 @@ int runRender(const RenderOptions& options) {
     if (options.shading != "lit" && options.shading != "flat")
         return fail(kExitUsage, "--shading must be lit or flat, got '" + options.shading + "'");
     settings.flat_shading = options.shading == "flat";
+    if (!parseOrderCheck(options.check, settings.check))
+        return fail(kExitUsage, "--check must be auto, on or off, got '" + options.check + "'");
     // At least one fragment (24 bytes); at most a petabyte, far beyond any driver.
     if (!(options.list_memory_mib >= 1.0 / 1024 && options.list_memory_mib <= 1e9))
         return fail(kExitUsage, "--list-memory must be between 0.001 and 1e9 MiB, got " +
@@ -114,6 +117,10 @@ int runRender(const RenderOptions& options) {
     if (options.view.frames > 1 && !isFramePattern(options.output))
         return fail(kExitUsage, "with --frames, -o needs one %d (such as frame_%04d.png), got '" +
                                     options.output + "'");
+    if (options.view.frames > 1 && !options.error_map.empty() && !isFramePattern(options.error_map))
+        return fail(kExitUsage, "with --frames, --error-map needs one %d (such as "
+                                "error_%04d.png), got '" +
+                                    options.error_map + "'");
     std::optional<Scene> scene = loadSceneOrReport(options.scene);
     if (!scene)
         return kExitInput;
@@ -152,6 +159,8 @@ int runRender(const RenderOptions& options) {
             std::cout << ", " << stats.fragments << " fragments listed";
         if (settings.method == BlendMethod::vissort)
             std::cout << ", " << stats.groups << " groups composited per pixel";
+        if (stats.repaired_pixels > 0)
+            std::cout << ", " << stats.repaired_pixels << " pixels repaired";
         std::cout << '\n';
         if (reference) {
             RenderStats reference_stats;
@@ -186,10 +195,8 @@ int runRender(const RenderOptions& options) {
         document["size"] = {view.width, view.height};
         if (view.frames > 1)
             document["frames"] = std::move(frames);
-        std::ofstream out(options.json_path);
-        out << document.dump(1) << '\n';
-        if (!out)
-            return fail(kExitFailure, "cannot write " + options.json_path);
+        if (const int code = writeJsonFile(options.json_path, document); code != kExitOk)
+            return code;
     }
     return kExitOk;
 }

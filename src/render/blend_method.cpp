@@ -1,4 +1,4 @@
-// The blending methods' names (transparency_renderer.h).
+// The blending methods' names and the order check's (transparency_renderer.h).
 
 #include <array>
 #include <utility>
@@ -41,6 +41,18 @@ std::string blendMethodNames() {
     for (const auto& [m, n] : kNames)
         names += (names.empty() ? "" : ", ") + std::string(n);
     return names;
+}
+
+bool parseOrderCheck(const std::string& name, RenderSettings::OrderCheck& check) {
+    if (name == "auto")
+        check = RenderSettings::OrderCheck::automatic;
+    else if (name == "on")
+        check = RenderSettings::OrderCheck::on;
+    else if (name == "off")
+        check = RenderSettings::OrderCheck::off;
+    else
+        return false;
+    return true;
 }
 
 } // namespace vissort

@@ -18,10 +18,10 @@ constexpr uint64_t kInitialNodesPerPixel = 4;
 constexpr uint64_t kHuge = uint64_t(1) << 32;
 constexpr GLuint kEnd = 0xFFFFFFFFu;
 
-// Every fragment that passes the opaque depth test (early, so that the test happens before the
-// stores) is pushed on its pixel's list. Past the capacity a fragment is only counted; the
-// caller grows the buffers or splits the rectangle and draws again. `huge` records a count past
-// 2^31, before the 32-bit counter could wrap.
+// Every fragment that passes the depth and stencil tests (early, so that they happen before the
+// stores) and lies in front of the opaque surfaces is pushed on its pixel's list. Past the capacity
+// a fragment is only counted; the caller grows the buffers or splits the rectangle and draws again.
+// `huge` records a count past 2^31, before the 32-bit counter could wrap.
 constexpr const char* kBuildFragmentShader = R"(#version 450 core
 layout(early_fragment_tests) in;
 in vec4 shaded;
@@ -29,8 +29,12 @@ layout(binding = 0, r32ui) uniform coherent uimage2D heads;
 layout(std430, binding = 1) buffer Counter { uint fragment_count; uint huge; };
 layout(std430, binding = 2) writeonly buffer NodeColours { vec4 node_colours[]; };
 layout(std430, binding = 3) writeonly buffer NodeLinks { uvec2 node_links[]; };  // depth, next
+layout(binding = 1) uniform sampler2D opaque_depth;
+uniform bool test_opaque;  // the framebuffer's depth is not the opaque one: test here
 uniform uint capacity;
 void main() {
+    if (test_opaque && gl_FragCoord.z >= texelFetch(opaque_depth, ivec2(gl_FragCoord.xy), 0).r)
+        discard;
     uint node = atomicAdd(fragment_count, 1u);
     if (node >= 0x80000000u) huge = 1u;
     if (node >= capacity) return;
@@ -145,7 +149,8 @@ void FragmentLists::allocate(uint64_t nodes) {
     capacity_ = nodes;
 }
 
-uint64_t FragmentLists::build(PixelRect rect, const std::function<void()>& draw) {
+uint64_t FragmentLists::build(PixelRect rect, GLuint opaque_depth,
+                              const std::function<void()>& draw) {
     const GLuint end = kEnd;
     const GLuint zero[2] = {0, 0};
     glClearTexSubImage(heads_.get(), 0, GLint(rect.x), GLint(rect.y), 0, GLsizei(rect.width),
@@ -157,12 +162,15 @@ uint64_t FragmentLists::build(PixelRect rect, const std::function<void()>& draw)
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, links_.get());
     glProgramUniform1ui(build_program_.get(),
                         glGetUniformLocation(build_program_.get(), "capacity"), GLuint(capacity_));
+    glProgramUniform1i(build_program_.get(),
+                       glGetUniformLocation(build_program_.get(), "test_opaque"),
+                       opaque_depth != 0);
+    if (opaque_depth != 0)
+        glBindTextureUnit(1, opaque_depth);
     glEnable(GL_SCISSOR_TEST);
     glScissor(GLint(rect.x), GLint(rect.y), GLsizei(rect.width), GLsizei(rect.height));
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glDepthMask(GL_FALSE);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
     draw();
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -175,6 +183,7 @@ uint64_t FragmentLists::build(PixelRect rect, const std::function<void()>& draw)
 }
 
 FragmentLists::Result FragmentLists::composite(const RenderTarget& target, PixelRect rect,
+                                               GLuint opaque_depth,
                                                const std::function<void()>& draw) {
     Result result;
     if (rect.empty())
@@ -191,7 +200,7 @@ FragmentLists::Result FragmentLists::composite(const RenderTarget& target, Pixel
     while (!pending.empty()) {
         const PixelRect r = pending.back();
         pending.pop_back();
-        const uint64_t stored = build(r, draw);
+        const uint64_t stored = build(r, opaque_depth, draw);
         ++result.passes;
         if (stored <= capacity_) {
             glBindImageTexture(0, heads_.get(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);

@@ -30,10 +30,13 @@ public:
     /// Blends every fragment that `draw` produces inside rect onto the target's colour, each
     /// pixel's fragments back to front by depth (ties: the later stored in front), over what
     /// the pixel holds. `draw` issues the draws with buildProgram() bound (its view uniforms set
-    /// by the caller); it runs with the target's framebuffer bound, the depth test LESS against
-    /// the target's depth and no depth or colour writes, and may run more than once.
+    /// by the caller); it runs with the caller's framebuffer (of the target's size), depth and
+    /// stencil tests (evaluated before a fragment is stored), no depth or colour writes, and may
+    /// run more than once. With opaque_depth (a depth texture, not the framebuffer's), fragments
+    /// at or behind it are dropped; with 0 the caller's depth test hides the opaque surfaces.
     /// Throws std::runtime_error when a single pixel has more fragments than the buffers hold.
-    Result composite(const RenderTarget& target, PixelRect rect, const std::function<void()>& draw);
+    Result composite(const RenderTarget& target, PixelRect rect, GLuint opaque_depth,
+                     const std::function<void()>& draw);
 
     /// The program `draw` binds: the shading vertex shader, fragments into the lists.
     GLuint buildProgram() const { return build_program_.get(); }
@@ -44,7 +47,7 @@ public:
 private:
     /// Draws rect's fragments into the lists; returns how many there were (kHuge when the
     /// counter passed 2^31, where it could wrap).
-    uint64_t build(PixelRect rect, const std::function<void()>& draw);
+    uint64_t build(PixelRect rect, GLuint opaque_depth, const std::function<void()>& draw);
     void allocate(uint64_t nodes);
 
     GlProgram build_program_, resolve_program_;

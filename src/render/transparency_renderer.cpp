@@ -17,6 +17,7 @@
 #include "render/render_target.h"
 #include "render/scene_geometry.h"
 #include "render/shading.h"
+#include "render/verified_blending.h"
 #include "render/weighted_blended.h"
 
 namespace vissort {
@@ -91,6 +92,7 @@ struct TransparencyRenderer::Impl {
     std::unique_ptr<detail::DepthPeeling> peeling;
     std::unique_ptr<detail::DualDepthPeeling> dual_peeling;
     std::unique_ptr<detail::WeightedBlended> weighted;
+    std::unique_ptr<detail::VerifiedBlending> verified;
 
     const std::vector<detail::DrawPrimitive>& orderedPrimitives() const {
         return settings.level == OrderLevel::object ? part_objects : part_triangles;
@@ -166,38 +168,41 @@ struct TransparencyRenderer::Impl {
         geometry->drawTransparent(first, count);
     }
 
-    // Sorted blending: runs of triangles blended in sequence, groups from fragment lists.
+    // Blending in sequence order, unchecked: the engines' way (unsorted, centroid).
     void blendSequence(const ViewProjection& view, RenderStats& stats) {
-        if (!sequence.segments.empty())
-            stats.passes = 1;
-        for (const detail::DrawSegment& segment : sequence.segments) {
-            target.bind();
-            if (!segment.per_pixel) {
-                glEnable(GL_DEPTH_TEST);
-                glDepthFunc(GL_LESS);
-                glDepthMask(GL_FALSE);
-                glEnable(GL_BLEND);
-                glBlendEquation(GL_FUNC_ADD);
-                // Colour: source over destination; the buffer's alpha stays 1 (opaque background).
-                glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-                drawTransparent(shade_program.get(), view, segment.first_triangle,
-                                segment.triangle_count);
-                continue;
-            }
-            const detail::FragmentLists::Result listed =
-                compositeLists(view, segment.rect, segment.first_triangle, segment.triangle_count);
-            stats.fragments += listed.fragments;
-            stats.passes += listed.passes - 1; // a regrown or split group drew again
-        }
+        if (sequence.triangles.empty())
+            return;
+        target.bind();
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glDepthMask(GL_FALSE);
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        // Colour: source over destination; the buffer's alpha stays 1 (opaque background).
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+        drawTransparent(shade_program.get(), view, 0, sequence.triangles.size());
+        glDisable(GL_BLEND);
+        stats.passes = 1;
     }
 
-    detail::FragmentLists::Result compositeLists(const ViewProjection& view, detail::PixelRect rect,
-                                                 std::size_t first, std::size_t count) {
+    detail::FragmentLists& fragmentLists() {
         if (!lists)
             lists = std::make_unique<detail::FragmentLists>(settings.list_bytes);
-        target.bind();
-        return lists->composite(
-            target, rect, [&] { drawTransparent(lists->buildProgram(), view, first, count); });
+        return *lists;
+    }
+
+    // The order, its groups per pixel, every pixel checked and repaired if need be.
+    void blendVerified(const ViewProjection& view, bool repair, RenderStats& stats) {
+        if (!verified)
+            verified = std::make_unique<detail::VerifiedBlending>();
+        const detail::VerifiedBlending::Result result =
+            verified->composite(target, fragmentLists(), sequence, repair,
+                                [&](GLuint program, std::size_t first, std::size_t count) {
+                                    drawTransparent(program, view, first, count);
+                                });
+        stats.passes = sequence.triangles.empty() ? 0 : 1 + result.extra_passes;
+        stats.fragments = result.fragments;
+        stats.repaired_pixels = result.repaired_pixels;
     }
 
     void compositeTransparent(const ViewProjection& view, RenderStats& stats) {
@@ -206,17 +211,31 @@ struct TransparencyRenderer::Impl {
             return;
         switch (settings.method) {
         case BlendMethod::unsorted:
-            sequence.clear();
-            sequence.append(part.scene_triangle, false);
-            blendSequence(view, stats);
-            return;
-        case BlendMethod::vissort:
         case BlendMethod::centroid:
-            blendSequence(view, stats);
+        case BlendMethod::vissort: {
+            if (settings.method == BlendMethod::unsorted) {
+                sequence.clear();
+                sequence.append(part.scene_triangle, false);
+            }
+            using Check = RenderSettings::OrderCheck;
+            const bool check =
+                settings.check == Check::on ||
+                (settings.check == Check::automatic && settings.method == BlendMethod::vissort);
+            // vissort's groups are composited per pixel even unchecked.
+            if (check || settings.method == BlendMethod::vissort)
+                blendVerified(view, check, stats);
+            else
+                blendSequence(view, stats);
             return;
+        }
         case BlendMethod::linked_list: {
+            target.bind();
+            glEnable(GL_DEPTH_TEST); // the opaque surfaces hide fragments
+            glDepthFunc(GL_LESS);
             const detail::FragmentLists::Result listed =
-                compositeLists(view, target.whole(), 0, all);
+                fragmentLists().composite(target, target.whole(), 0, [&] {
+                    drawTransparent(lists->buildProgram(), view, 0, all);
+                });
             stats.fragments = listed.fragments;
             stats.passes = listed.passes;
             return;

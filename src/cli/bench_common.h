@@ -1,0 +1,18 @@
+#pragma once
+// What the benchmarks share: the clock, medians, the machine's name.
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+namespace vissort::cli {
+
+using BenchClock = std::chrono::steady_clock;
+
+double secondsSince(BenchClock::time_point start);
+/// The middle value (the upper one of an even count); 0 for none.
+double median(std::vector<double> values);
+/// The CPU's model name from /proc/cpuinfo, or "unknown CPU".
+std::string machineName();
+
+} // namespace vissort::cli

@@ -1,0 +1,185 @@
+// End to end: `vissort render` and `vissort bench transparency` as a user runs them: the PNGs
+// they write (read back with stb_image and, for flat shading, checked against the ray-cast
+// A-buffer of tests/support), the statistics JSON, frame sequences, and one-line errors.
+
+#include <stb/stb_image.h>
+
+#include <cstring>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "a_buffer.h"
+#include "cli_fixture.h"
+#include "vissort/camera.h"
+#include "vissort/scene.h"
+
+namespace vissort {
+namespace {
+
+struct Png {
+    int width = 0, height = 0;
+    std::vector<uint8_t> rgba;
+};
+
+Png readPng(const std::string& path) {
+    Png png;
+    int channels = 0;
+    unsigned char* data = stbi_load(path.c_str(), &png.width, &png.height, &channels, 4);
+    if (data == nullptr) {
+        ADD_FAILURE() << "cannot read " << path << ": " << stbi_failure_reason();
+        return png;
+    }
+    png.rgba.assign(data, data + std::size_t(png.width) * png.height * 4);
+    stbi_image_free(data);
+    return png;
+}
+
+const std::string kSticks = dataPath("scenes/three_sticks.json");
+
+TEST_F(Cli, RenderWritesThePngTheJsonAndTheErrorMap) {
+    const Result r =
+        run({"render", "builtin:slabs?layers=6", "--size", "64x48", "-o", path("out.png"), "--json",
+             path("stats.json"), "--reference", "linked-list", "--error-map", path("error.png")});
+    ASSERT_EQ(r.code, 0) << r;
+    EXPECT_TRUE(r.err.empty()) << r;
+    EXPECT_NE(r.out.find("against linked-list"), std::string::npos) << r;
+    const Png png = readPng(path("out.png"));
+    EXPECT_EQ(png.width, 64);
+    EXPECT_EQ(png.height, 48);
+    const Png map = readPng(path("error.png"));
+    EXPECT_EQ(map.width, 64);
+    const json stats = json::parse(readFile(path("stats.json")));
+    EXPECT_EQ(stats.value("method", ""), "vissort");
+    for (const char* key : {"order", "render", "total"}) {
+        ASSERT_TRUE(stats["ms"].contains(key)) << key;
+        EXPECT_GE(stats["ms"][key].get<double>(), 0.0) << key;
+    }
+    EXPECT_GE(stats["ms"]["total"].get<double>(), stats["ms"]["render"].get<double>());
+    EXPECT_EQ(stats.value("passes", 0), 1);
+    EXPECT_TRUE(stats.contains("fragments"));
+    ASSERT_TRUE(stats.contains("error")) << stats.dump();
+    EXPECT_LE(stats["error"]["max_abs"].get<int>(), 1);
+    EXPECT_TRUE(stats["error"].contains("rmse"));
+    EXPECT_TRUE(stats["error"].contains("psnr"));
+    EXPECT_EQ(stats.value("size", json()), json({64, 48}));
+}
+
+// The tool's flat-shaded output against the ray-cast A-buffer, for every exact method.
+TEST_F(Cli, FlatRenderOfEveryExactMethodMatchesTheRayCastABuffer) {
+    Loaded<Scene> loaded = loadScene(kSticks);
+    ASSERT_TRUE(loaded) << loaded.error;
+    const Scene& scene = *loaded.value;
+    const ViewProjection view = frameCamera(*scene.camera, scene.positions.bounds(), 96, 72);
+    std::vector<Rgba> colours(scene.triangleCount());
+    for (const SceneObject& object : scene.objects)
+        for (uint32_t t = 0; t < object.triangle_count; ++t) {
+            colours[object.first_triangle + t] = object.colour;
+            colours[object.first_triangle + t].a = 0.4f;
+        }
+    const test::ABuffer reference =
+        test::rayCastComposite(scene.positions, view, colours, Rgba{1, 1, 1, 1});
+    for (const char* method : {"vissort", "peel", "dual-peel", "linked-list"}) {
+        const Result r =
+            run({"render", kSticks, "--size", "96x72", "--all-transparent", "--alpha", "0.4",
+                 "--shading", "flat", "--method", method, "-o", path("out.png")});
+        ASSERT_EQ(r.code, 0) << r;
+        const Png png = readPng(path("out.png"));
+        const test::ABufferComparison compared = test::compareWithABuffer(png.rgba, reference);
+        EXPECT_GT(compared.compared, 96u * 72u / 2) << method;
+        EXPECT_LE(compared.max_abs, 1)
+            << method << " at (" << compared.worst_x << ", " << compared.worst_y << ")";
+    }
+}
+
+TEST_F(Cli, RenderRunsEveryMethodAndNamesThemInJson) {
+    for (const char* method :
+         {"vissort", "unsorted", "centroid", "peel", "dual-peel", "linked-list", "weighted"}) {
+        const Result r = run({"render", "builtin:bunnies?n=3", "--size", "40x30", "--method",
+                              method, "-o", path("out.png"), "--json", path("stats.json")});
+        ASSERT_EQ(r.code, 0) << r;
+        EXPECT_EQ(json::parse(readFile(path("stats.json"))).value("method", ""), method);
+    }
+}
+
+TEST_F(Cli, RenderFramesWriteASequence) {
+    const Result r =
+        run({"render", "builtin:bunnies?n=3", "--size", "40x30", "--frames", "3", "--path", "orbit",
+             "--level", "triangle", "-o", path("frame_%02d.png"), "--json", path("stats.json")});
+    ASSERT_EQ(r.code, 0) << r;
+    for (const char* name : {"frame_00.png", "frame_01.png", "frame_02.png"})
+        EXPECT_EQ(readPng(path(name)).width, 40) << name;
+    EXPECT_FALSE(fs::exists(path("frame_03.png")));
+    const json stats = json::parse(readFile(path("stats.json")));
+    ASSERT_TRUE(stats.contains("frames"));
+    EXPECT_EQ(stats["frames"].size(), 3u);
+    EXPECT_EQ(stats.value("level", ""), "triangle");
+}
+
+TEST_F(Cli, RenderErrorsNameTheProblem) {
+    const std::string out = path("out.png");
+    expectError({"render", kSticks, "-o", out, "--method", "sorted"}, kUsage,
+                {"--method", "sorted"});
+    expectError({"render", kSticks, "-o", out, "--reference", "exact"}, kUsage,
+                {"--reference", "exact"});
+    expectError({"render", kSticks, "-o", out, "--all-transparent", "--alpha", "0"}, kUsage,
+                {"--alpha"});
+    expectError({"render", kSticks, "-o", out, "--level", "pixel"}, kUsage, {"--level", "pixel"});
+    expectError({"render", kSticks, "-o", out, "--oracle", "magic"}, kUsage, {"--oracle"});
+    expectError({"render", kSticks, "-o", out, "--shading", "phong"}, kUsage, {"--shading"});
+    expectError({"render", kSticks, "-o", out, "--check", "maybe"}, kUsage, {"--check", "maybe"});
+    expectError({"render", kSticks, "-o", out, "--list-memory", "0"}, kUsage, {"--list-memory"});
+    expectError({"render", kSticks, "-o", out, "--error-map", path("e.png")}, kUsage,
+                {"--error-map", "--reference"});
+    expectError({"render", kSticks, "-o", out, "--frames", "2"}, kUsage, {"%d"});
+    expectError({"render", kSticks, "-o", path("f%d.png"), "--frames", "2", "--reference", "peel",
+                 "--error-map", path("e.png")},
+                kUsage, {"--error-map", "%d"});
+    expectError({"render", kSticks}, kUsage, {"--output"});
+    expectError({"render", dataPath("no_such_scene.json"), "-o", out}, kInput, {"no_such_scene"});
+    expectError({"render", kSticks, "--size", "0x10", "-o", out}, kUsage, {"--size"});
+    const std::string unwritable = path("no/such/folder/out.png");
+    expectError({"render", kSticks, "--size", "16x16", "-o", unwritable}, kFailure, {unwritable});
+}
+
+// Every method and scene at every depth, errors against linked-list, in one run.
+TEST_F(Cli, BenchTransparencyMeasuresEveryMethodInOneRun) {
+    const Result r = run({"bench", "transparency", "--size", "48x32", "--depths", "2,6", "--frames",
+                          "2", "--json", path("bench.json")});
+    ASSERT_EQ(r.code, 0) << r;
+    const json doc = json::parse(readFile(path("bench.json")));
+    EXPECT_TRUE(doc.contains("machine"));
+    EXPECT_EQ(doc.value("level", ""), "multistage");
+    std::map<std::string, std::set<std::string>> methods; // scene and depth -> methods
+    for (const json& row : doc["rows"]) {
+        const std::string key =
+            row["scene"].get<std::string>() + " " + std::to_string(row["depth"].get<int>());
+        methods[key].insert(row["method"].get<std::string>());
+        EXPECT_GE(row["ms"].get<double>(), 0.0) << row.dump();
+        const std::string method = row["method"];
+        if (method == "vissort" || method == "dual-peel") {
+            EXPECT_LE(row["error"]["max_abs"].get<int>(), 1) << row.dump();
+        }
+        if (row["scene"] == "slabs") { // a slab a layer, all over the middle of the view
+            EXPECT_EQ(row["depth_seen"], row["depth"]) << row.dump();
+        }
+    }
+    const std::set<std::string> all{"vissort",     "peel",     "dual-peel",
+                                    "linked-list", "weighted", "centroid"};
+    EXPECT_EQ(methods.size(), 4u);
+    for (const auto& [key, found] : methods)
+        EXPECT_EQ(found, all) << key;
+}
+
+TEST_F(Cli, BenchTransparencyErrors) {
+    expectError({"bench", "transparency", "--depths", "2,x"}, kUsage, {"--depths", "2,x"});
+    expectError({"bench", "transparency", "--depths", "0"}, kUsage, {"--depths"});
+    expectError({"bench", "transparency", "--frames", "1"}, kUsage, {"--frames"});
+    expectError({"bench", "transparency", "--level", "none"}, kUsage, {"--level"});
+    expectError({"bench", "transparency", "--size", "4"}, kUsage, {"--size"});
+    expectError({"bench", "nothing"}, kUsage, {"nothing", "transparency"});
+}
+
+} // namespace
+} // namespace vissort
