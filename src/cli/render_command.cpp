@@ -73,6 +73,11 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
                      "colour, unlit)")
         ->capture_default_str();
     command
+        ->add_option("--check", options.check,
+                     "auto, on or off: check every pixel of an ordered blend against the GPU's "
+                     "depths and repair it from fragment lists (auto: on for vissort only)")
+        ->capture_default_str();
+    command
         ->add_option("--list-memory", options.list_memory_mib,
                      "MiB for per-pixel fragment lists (linked-list, vissort's cycles); more "
                      "fragments are drawn in bands")

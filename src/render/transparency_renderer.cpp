@@ -195,11 +195,18 @@ struct TransparencyRenderer::Impl {
     void blendVerified(const ViewProjection& view, bool repair, RenderStats& stats) {
         if (!verified)
             verified = std::make_unique<detail::VerifiedBlending>();
-        const detail::VerifiedBlending::Result result =
-            verified->composite(target, fragmentLists(), sequence, repair,
-                                [&](GLuint program, std::size_t first, std::size_t count) {
-                                    drawTransparent(program, view, first, count);
-                                });
+        const detail::VerifiedBlending::Result result = verified->composite(
+            target, fragmentLists(), sequence, repair, settings.background,
+            !opaque_triangles.empty(),
+            [&](GLuint program) {
+                geometry->setView(program, view);
+                glUseProgram(program);
+                geometry->bind();
+                geometry->drawOpaque();
+            },
+            [&](GLuint program, std::size_t first, std::size_t count) {
+                drawTransparent(program, view, first, count);
+            });
         stats.passes = sequence.triangles.empty() ? 0 : 1 + result.extra_passes;
         stats.fragments = result.fragments;
         stats.repaired_pixels = result.repaired_pixels;

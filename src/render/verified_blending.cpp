@@ -10,6 +10,8 @@ namespace {
 
 // The opaque surfaces hide fragments here, not through the framebuffer's depth, which keeps
 // the check's nearest blended depth. A discarded fragment leaves depth and stencil alone.
+// Without opaque surfaces a program without the test blends: a discard anywhere in a shader
+// makes llvmpipe test depth after shading, which cost a third of the pass.
 constexpr const char* kCheckedBlendFragmentShader = R"(#version 450 core
 in vec4 shaded;
 layout(binding = 1) uniform sampler2D opaque_depth;
@@ -36,15 +38,27 @@ void main() {
 }
 )";
 
-// Marked pixels get back the opaque colour, to composite all their fragments over again.
-constexpr const char* kRestoreBody = R"(
-layout(binding = 0) uniform usampler2D marks;
-layout(binding = 1) uniform sampler2D opaque_colour;
-layout(binding = 2, rgba32f) uniform writeonly image2D target;
+// A triangle over the whole viewport, for the passes that only test the stencil.
+constexpr const char* kCoverVertexShader = R"(#version 450 core
 void main() {
-    ivec2 pixel;
-    if (!rectanglePixel(pixel) || texelFetch(marks, pixel, 0).r == 0u) return;
-    imageStore(target, pixel, texelFetch(opaque_colour, pixel, 0));
+    gl_Position = vec4(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0, 0.0, 1.0);
+}
+)";
+constexpr const char* kBackgroundFragmentShader = R"(#version 450 core
+uniform vec4 background;
+layout(location = 0) out vec4 colour;
+void main() { colour = background; }
+)";
+
+// An opaque surface's colour where it is the one the opaque pass kept: its depth there is the
+// stored one, bit for bit (the same vertex shader, invariant gl_Position).
+constexpr const char* kOpaqueAgainFragmentShader = R"(#version 450 core
+in vec4 shaded;
+layout(binding = 1) uniform sampler2D opaque_depth;
+layout(location = 0) out vec4 colour;
+void main() {
+    if (gl_FragCoord.z != texelFetch(opaque_depth, ivec2(gl_FragCoord.xy), 0).r) discard;
+    colour = shaded;
 }
 )";
 
@@ -62,9 +76,14 @@ void checkAndMark() {
 } // namespace
 
 VerifiedBlending::VerifiedBlending()
-    : blend_program_(linkProgram(kShadeVertexShader, kCheckedBlendFragmentShader)),
-      scan_program_(linkPixelProgram(kScanBody)), restore_program_(linkPixelProgram(kRestoreBody)) {
+    : blend_program_(linkProgram(kShadeVertexShader, kShadeFragmentShader)),
+      opaque_blend_program_(linkProgram(kShadeVertexShader, kCheckedBlendFragmentShader)),
+      opaque_program_(linkProgram(kShadeVertexShader, kOpaqueAgainFragmentShader)),
+      background_program_(linkProgram(kCoverVertexShader, kBackgroundFragmentShader)),
+      scan_program_(linkPixelProgram(kScanBody)), query_(makeQuery()) {
     GLuint name = 0;
+    glCreateVertexArrays(1, &name);
+    empty_vertex_array_ = GlVertexArray(name);
     glCreateBuffers(1, &name);
     marked_ = GlBuffer(name);
     glNamedBufferStorage(marked_.get(), 5 * sizeof(GLuint), nullptr,
@@ -84,7 +103,6 @@ void VerifiedBlending::resize(const RenderTarget& target) {
     glTextureParameteri(nearest_.get(), GL_DEPTH_STENCIL_TEXTURE_MODE, GL_STENCIL_INDEX);
     glTextureParameteri(nearest_.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(nearest_.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    opaque_colour_ = makeTexture(GL_RGBA32F, width_, height_);
     GLuint name = 0;
     glCreateFramebuffers(1, &name);
     framebuffer_ = GlFramebuffer(name);
@@ -97,13 +115,12 @@ void VerifiedBlending::resize(const RenderTarget& target) {
 
 VerifiedBlending::Result VerifiedBlending::composite(
     const RenderTarget& target, FragmentLists& lists, const DrawSequence& sequence, bool repair,
+    const Rgba& background, bool has_opaque, const std::function<void(GLuint program)>& draw_opaque,
     const std::function<void(GLuint program, std::size_t first, std::size_t count)>& draw) {
     Result result;
     if (sequence.triangles.empty())
         return result;
     resize(target);
-    glCopyImageSubData(target.colourTexture(), GL_TEXTURE_2D, 0, 0, 0, 0, opaque_colour_.get(),
-                       GL_TEXTURE_2D, 0, 0, 0, 0, GLsizei(width_), GLsizei(height_), 1);
     const float far = 1.0f;
     glDepthMask(GL_TRUE); // clears obey the write masks
     glStencilMask(0xFF);
@@ -111,6 +128,8 @@ VerifiedBlending::Result VerifiedBlending::composite(
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
     glViewport(0, 0, GLsizei(width_), GLsizei(height_));
     glBindTextureUnit(1, target.depthTexture());
+    const GLuint blend = has_opaque ? opaque_blend_program_.get() : blend_program_.get();
+    const GLuint opaque_depth = has_opaque ? target.depthTexture() : 0;
 
     for (const DrawSegment& segment : sequence.segments) {
         if (!segment.per_pixel) {
@@ -120,7 +139,7 @@ VerifiedBlending::Result VerifiedBlending::composite(
             glBlendEquation(GL_FUNC_ADD);
             // Colour: source over destination; the buffer's alpha stays 1 (opaque background).
             glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-            draw(blend_program_.get(), segment.first_triangle, segment.triangle_count);
+            draw(blend, segment.first_triangle, segment.triangle_count);
             continue;
         }
         // A group: its fragments in front of everything blended so far are composited per pixel;
@@ -128,7 +147,7 @@ VerifiedBlending::Result VerifiedBlending::composite(
         // free (no marks).
         checkAndMark();
         const FragmentLists::Result listed =
-            lists.composite(target, segment.rect, target.depthTexture(), [&] {
+            lists.composite(target, segment.rect, opaque_depth, [&] {
                 draw(lists.buildProgram(), segment.first_triangle, segment.triangle_count);
             });
         result.fragments += listed.fragments;
@@ -139,7 +158,7 @@ VerifiedBlending::Result VerifiedBlending::composite(
         glDepthMask(GL_TRUE);
         glDisable(GL_BLEND);
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        draw(blend_program_.get(), segment.first_triangle, segment.triangle_count);
+        draw(blend, segment.first_triangle, segment.triangle_count);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     }
     glDisable(GL_BLEND);
@@ -149,6 +168,19 @@ VerifiedBlending::Result VerifiedBlending::composite(
     if (!repair)
         return result;
 
+    // Any mark? One stencil-tested triangle over the screen answers; only then are the marks
+    // counted and bounded, and repaired.
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_EQUAL, kMark, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glUseProgram(background_program_.get());
+    glBindVertexArray(empty_vertex_array_.get());
+    const bool any_marked = anySamplePasses(query_, [] { glDrawArrays(GL_TRIANGLES, 0, 3); });
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDisable(GL_STENCIL_TEST);
+    if (!any_marked)
+        return result;
     const GLuint initial[5] = {0, ~0u, ~0u, 0, 0};
     glNamedBufferSubData(marked_.get(), 0, sizeof(initial), initial);
     glBindTextureUnit(0, nearest_.get());
@@ -158,22 +190,29 @@ VerifiedBlending::Result VerifiedBlending::composite(
     GLuint marked[5];
     glGetNamedBufferSubData(marked_.get(), 0, sizeof(marked), marked);
     result.repaired_pixels = marked[0];
-    if (marked[0] == 0)
-        return result;
-
-    // The repair: marked pixels back to the opaque colour, then every transparent fragment
-    // there from lists, the stencil keeping the lists to the marked pixels.
     const PixelRect rect{marked[1], marked[2], marked[3] - marked[1] + 1,
                          marked[4] - marked[2] + 1};
-    glBindTextureUnit(0, nearest_.get());
-    glBindTextureUnit(1, opaque_colour_.get());
-    glBindImageTexture(2, target.colourTexture(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    runPixelProgram(restore_program_.get(), rect);
+
+    // The repair, on marked pixels only (stencil test): the background, the opaque surfaces
+    // again, then every transparent fragment from lists.
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
+    glEnable(GL_STENCIL_TEST);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(GLint(rect.x), GLint(rect.y), GLsizei(rect.width), GLsizei(rect.height));
+    glProgramUniform4f(background_program_.get(),
+                       glGetUniformLocation(background_program_.get(), "background"), background.r,
+                       background.g, background.b, 1.0f);
+    glUseProgram(background_program_.get());
+    glBindVertexArray(empty_vertex_array_.get());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindTextureUnit(1, target.depthTexture());
+    draw_opaque(opaque_program_.get());
+    glDisable(GL_SCISSOR_TEST);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
     glEnable(GL_STENCIL_TEST);
     glStencilFunc(GL_EQUAL, kMark, 0xFF);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    const FragmentLists::Result listed = lists.composite(target, rect, target.depthTexture(), [&] {
+    const FragmentLists::Result listed = lists.composite(target, rect, opaque_depth, [&] {
         draw(lists.buildProgram(), 0, sequence.triangles.size());
     });
     glDisable(GL_STENCIL_TEST);

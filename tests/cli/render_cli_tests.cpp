@@ -128,7 +128,7 @@ TEST_F(Cli, RenderErrorsNameTheProblem) {
     expectError({"render", kSticks, "-o", out, "--level", "pixel"}, kUsage, {"--level", "pixel"});
     expectError({"render", kSticks, "-o", out, "--oracle", "magic"}, kUsage, {"--oracle"});
     expectError({"render", kSticks, "-o", out, "--shading", "phong"}, kUsage, {"--shading"});
-    expectError({"render", kSticks, "-o", out, "--check", "maybe"}, kUsage, {"--check", "maybe"});
+    expectError({"render", kSticks, "-o", out, "--check", "maybe"}, kUsage, {"--check must be", "maybe"});
     expectError({"render", kSticks, "-o", out, "--list-memory", "0"}, kUsage, {"--list-memory"});
     expectError({"render", kSticks, "-o", out, "--error-map", path("e.png")}, kUsage,
                 {"--error-map", "--reference"});
