@@ -4,12 +4,15 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <regex>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
+#include "cli/comparison_strip.h"
 #include "cli/json_output.h"
 #include "vissort/transparency_renderer.h"
 
@@ -28,6 +31,15 @@ std::string framePath(const std::string& pattern, int frame) {
     return buffer;
 }
 
+nlohmann::json errorJson(const ImageError& error, const std::string& reference) {
+    return {
+        {"rmse", error.rmse},
+        {"psnr", std::isfinite(error.psnr) ? nlohmann::json(error.psnr) : nlohmann::json(nullptr)},
+        {"max_abs", error.max_abs},
+        {"pixels_over_one", error.pixels_over_one},
+        {"reference", reference}};
+}
+
 nlohmann::json statsJson(BlendMethod method, const RenderStats& stats) {
     return {
         {"method", blendMethodName(method)},
@@ -35,6 +47,66 @@ nlohmann::json statsJson(BlendMethod method, const RenderStats& stats) {
         {"passes", stats.passes},
         {"fragments", stats.fragments},
         {"groups", stats.groups}};
+}
+
+// Every method on the same frame, side by side with its error map against linked-list, as one
+// PNG; each method's time from a second render (the first compiles its programs).
+int renderEveryMethod(const RenderOptions& options, RenderSettings settings, const Scene& scene,
+                      const ResolvedView& view, const std::shared_ptr<GlContext>& context) {
+    constexpr BlendMethod kShown[] = {
+        BlendMethod::vissort,   BlendMethod::unsorted,    BlendMethod::centroid, BlendMethod::peel,
+        BlendMethod::dual_peel, BlendMethod::linked_list, BlendMethod::weighted};
+    const ViewProjection vp =
+        frameCamera(view.camera, scene.positions.bounds(), view.width, view.height);
+    std::vector<std::vector<uint8_t>> images;
+    std::vector<RenderStats> all_stats;
+    for (BlendMethod method : kShown) {
+        settings.method = method;
+        TransparencyRenderer renderer(context, scene, settings);
+        RenderStats stats;
+        renderer.render(scene.positions, vp, stats);
+        images.push_back(renderer.render(scene.positions, vp, stats).toRgba8());
+        all_stats.push_back(stats);
+    }
+    const std::vector<uint8_t>& reference = images[5];
+    std::vector<StripTile> tiles;
+    nlohmann::json methods = nlohmann::json::array();
+    std::vector<StripTile> maps;
+    for (std::size_t i = 0; i < std::size(kShown); ++i) {
+        const RenderStats& stats = all_stats[i];
+        const ImageError error = compareImages(images[i], reference);
+        std::ostringstream caption, map_caption, line;
+        caption << blendMethodName(kShown[i]) << '\n'
+                << std::fixed << std::setprecision(1) << stats.total_ms << " ms, " << stats.passes
+                << (stats.passes == 1 ? " pass" : " passes");
+        map_caption << "against linked-list:\nmax " << error.max_abs << "/255, "
+                    << error.pixels_over_one << " px > 1";
+        tiles.push_back({images[i], caption.str()});
+        maps.push_back({errorMap(images[i], reference), map_caption.str()});
+        std::cout << std::left << std::setw(12) << blendMethodName(kShown[i]) << std::right
+                  << std::fixed << std::setprecision(1) << std::setw(9) << stats.total_ms << " ms, "
+                  << stats.passes << " passes, against linked-list: max " << error.max_abs
+                  << "/255, RMSE " << std::setprecision(3) << error.rmse << ", "
+                  << error.pixels_over_one << " pixels off by more than 1\n";
+        nlohmann::json record = statsJson(kShown[i], stats);
+        record["error"] = errorJson(error, "linked-list");
+        methods.push_back(std::move(record));
+    }
+    tiles.insert(tiles.end(), maps.begin(), maps.end());
+    const Strip strip = composeStrip(tiles, view.width, view.height, uint32_t(std::size(kShown)));
+    if (auto error = writePng(options.output, strip.width, strip.height, strip.rgba);
+        !error.empty())
+        return fail(kExitFailure, error);
+    std::cout << options.output << ": every method (top) and its error against linked-list "
+              << "(below: grey within 1/255, yellow to red beyond)\n";
+    if (options.json_path.empty())
+        return kExitOk;
+    const nlohmann::json document = {{"scene", options.scene},
+                                     {"level", orderLevelName(settings.level)},
+                                     {"oracle", oracleName(settings.oracle)},
+                                     {"size", {view.width, view.height}},
+                                     {"methods", methods}};
+    return writeJsonFile(options.json_path, document);
 }
 
 } // namespace
@@ -46,7 +118,11 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
         ->add_option("scene", options.scene, "Mesh file, JSON scene, or builtin:NAME?key=value&...")
         ->required();
     addViewOptions(*command, options.view);
-    command->add_option("--method", options.method, blendMethodNames())->capture_default_str();
+    command
+        ->add_option("--method", options.method,
+                     blendMethodNames() + "; all: every method side by side in one PNG, with "
+                                          "error maps against linked-list")
+        ->capture_default_str();
     command
         ->add_option("--level", options.level,
                      "object, triangle or multistage: vissort's ordering level, centroid's unit")
@@ -90,9 +166,13 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
 
 int runRender(const RenderOptions& options) {
     RenderSettings settings;
-    if (!parseBlendMethod(options.method, settings.method))
-        return fail(kExitUsage, "--method must be one of " + blendMethodNames() + ", got '" +
+    const bool all_methods = options.method == "all";
+    if (!all_methods && !parseBlendMethod(options.method, settings.method))
+        return fail(kExitUsage, "--method must be one of " + blendMethodNames() + " or all, got '" +
                                     options.method + "'");
+    if (all_methods && (options.view.frames > 1 || !options.reference.empty()))
+        return fail(kExitUsage, "--method all renders one frame against linked-list: no --frames "
+                                "or --reference");
     BlendMethod reference_method{};
     if (!options.reference.empty() && !parseBlendMethod(options.reference, reference_method))
         return fail(kExitUsage, "--reference must be one of " + blendMethodNames() + ", got '" +
@@ -135,6 +215,8 @@ int runRender(const RenderOptions& options) {
     Loaded<std::shared_ptr<GlContext>> context = GlContext::shared();
     if (!context)
         return fail(kExitFailure, context.error);
+    if (all_methods)
+        return renderEveryMethod(options, settings, *scene, view, *context.value);
 
     TransparencyRenderer renderer(*context.value, *scene, settings);
     std::unique_ptr<TransparencyRenderer> reference;
@@ -183,12 +265,7 @@ int runRender(const RenderOptions& options) {
             std::cout << "  against " << options.reference << ": RMSE " << error.rmse << ", PSNR "
                       << error.psnr << " dB, max abs " << error.max_abs << "/255, "
                       << error.pixels_over_one << " pixels off by more than 1\n";
-            record["error"] = {{"rmse", error.rmse},
-                               {"psnr", std::isfinite(error.psnr) ? nlohmann::json(error.psnr)
-                                                                  : nlohmann::json(nullptr)},
-                               {"max_abs", error.max_abs},
-                               {"pixels_over_one", error.pixels_over_one},
-                               {"reference", options.reference}};
+            record["error"] = errorJson(error, options.reference);
         }
         frames.push_back(std::move(record));
     }

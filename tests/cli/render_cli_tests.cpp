@@ -103,6 +103,34 @@ TEST_F(Cli, RenderRunsEveryMethodAndNamesThemInJson) {
     }
 }
 
+// --method all: every method and its error map in one PNG, and each one's figures in the JSON.
+TEST_F(Cli, RenderEveryMethodSideBySide) {
+    const Result r = run({"render", kSticks, "--all-transparent", "--size", "40x30", "--method",
+                          "all", "-o", path("strip.png"), "--json", path("all.json")});
+    ASSERT_EQ(r.code, 0) << r;
+    const Png strip = readPng(path("strip.png"));
+    EXPECT_GT(strip.width, 7 * 40);  // seven columns, with margins
+    EXPECT_GT(strip.height, 2 * 30); // images above, error maps below, with captions
+    const json doc = json::parse(readFile(path("all.json")));
+    std::set<std::string> methods;
+    for (const json& record : doc["methods"]) {
+        const std::string method = record["method"];
+        methods.insert(method);
+        const int error = record["error"]["max_abs"];
+        if (method == "vissort" || method == "linked-list" || method == "dual-peel") {
+            EXPECT_LE(error, 1) << method;
+        }
+        if (method == "unsorted") {
+            EXPECT_GT(error, 1); // the three sticks overlap in a cycle
+        }
+    }
+    EXPECT_EQ(methods.size(), 7u);
+    expectError({"render", kSticks, "--method", "all", "--frames", "2", "-o", path("s%d.png")},
+                kUsage, {"--method all"});
+    expectError({"render", kSticks, "--method", "all", "--reference", "peel", "-o", path("s.png")},
+                kUsage, {"--method all"});
+}
+
 TEST_F(Cli, RenderFramesWriteASequence) {
     const Result r =
         run({"render", "builtin:bunnies?n=3", "--size", "40x30", "--frames", "3", "--path", "orbit",
@@ -128,7 +156,8 @@ TEST_F(Cli, RenderErrorsNameTheProblem) {
     expectError({"render", kSticks, "-o", out, "--level", "pixel"}, kUsage, {"--level", "pixel"});
     expectError({"render", kSticks, "-o", out, "--oracle", "magic"}, kUsage, {"--oracle"});
     expectError({"render", kSticks, "-o", out, "--shading", "phong"}, kUsage, {"--shading"});
-    expectError({"render", kSticks, "-o", out, "--check", "maybe"}, kUsage, {"--check must be", "maybe"});
+    expectError({"render", kSticks, "-o", out, "--check", "maybe"}, kUsage,
+                {"--check must be", "maybe"});
     expectError({"render", kSticks, "-o", out, "--list-memory", "0"}, kUsage, {"--list-memory"});
     expectError({"render", kSticks, "-o", out, "--error-map", path("e.png")}, kUsage,
                 {"--error-map", "--reference"});
