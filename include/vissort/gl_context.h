@@ -1,6 +1,6 @@
 #pragma once
 // A headless OpenGL 4.5 core context through EGL, shared by everything that renders (the
-// occlusion oracle now, the transparency renderer next). No window and no display server: an EGL
+// occlusion oracle and the transparency renderer). No window and no display server: an EGL
 // device (EGL_EXT_platform_device, a GPU's driver) when the machine has one, else Mesa's
 // surfaceless platform (EGL_MESA_platform_surfaceless: llvmpipe, OpenGL on the CPU).
 // No EGL or GL type appears here.

@@ -134,6 +134,7 @@ struct GlOracle::Impl {
         glEnable(GL_DEPTH_TEST);
         glDisable(GL_BLEND);
         glDisable(GL_SCISSOR_TEST);
+        glDisable(GL_STENCIL_TEST);
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         glClearDepth(1.0);
         mode = Mode::unset;
