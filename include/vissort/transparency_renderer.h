@@ -78,7 +78,6 @@ struct RenderStats {
                             // per-pixel groups); 0 for the other methods
     uint32_t groups = 0;    // vissort: groups composited per pixel (cycles, self-overlapping
                             // objects)
-    uint64_t group_triangles = 0; // vissort: the triangles in those groups
     uint64_t repaired_pixels = 0; // vissort: pixels where the GPU's depths contradicted the
                                   // order (near an edge, or a tie), composited again
     VisSortStats order;           // vissort: the ordering's statistics

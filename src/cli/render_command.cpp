@@ -3,7 +3,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <regex>
@@ -46,7 +45,8 @@ nlohmann::json statsJson(BlendMethod method, const RenderStats& stats) {
         {"ms", {{"order", stats.order_ms}, {"render", stats.render_ms}, {"total", stats.total_ms}}},
         {"passes", stats.passes},
         {"fragments", stats.fragments},
-        {"groups", stats.groups}};
+        {"groups", stats.groups},
+        {"repaired", stats.repaired_pixels}};
 }
 
 // Every method on the same frame, side by side with its error map against linked-list, as one

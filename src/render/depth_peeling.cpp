@@ -1,7 +1,5 @@
 #include "render/depth_peeling.h"
 
-#include <string>
-
 #include "gl/gl_program.h"
 #include "render/shading.h"
 
@@ -56,8 +54,8 @@ void main() {
 
 DepthPeeling::DepthPeeling()
     : peel_program_(linkProgram(kShadeVertexShader, kPeelFragmentShader)),
-      under_program_(linkPixelProgram(kUnderBody)), finish_program_(linkPixelProgram(kFinishBody)) {
-}
+      under_program_(linkPixelProgram(kUnderBody)), finish_program_(linkPixelProgram(kFinishBody)),
+      query_(makeQuery()) {}
 
 void DepthPeeling::resize(uint32_t width, uint32_t height) {
     if (width == width_ && height == height_)
@@ -76,7 +74,6 @@ uint32_t DepthPeeling::composite(const RenderTarget& target, const std::function
     resize(target.width(), target.height());
     const float cleared[4] = {0, 0, 0, 1}; // nothing yet: no colour, full transmittance
     glClearTexImage(accumulated_.get(), 0, GL_RGBA, GL_FLOAT, cleared);
-    const GlQuery query = makeQuery();
     uint32_t passes = 0;
     for (int current = 0;; current = 1 - current) {
         // The pass's depth buffer starts as the opaque depth: fragments behind opaque surfaces
@@ -94,7 +91,7 @@ uint32_t DepthPeeling::composite(const RenderTarget& target, const std::function
         glBindTextureUnit(0, depth_[1 - current].get());
         glProgramUniform1i(peel_program_.get(),
                            glGetUniformLocation(peel_program_.get(), "first_pass"), passes == 0);
-        const bool peeled = anySamplePasses(query, draw);
+        const bool peeled = anySamplePasses(query_, draw);
         ++passes;
         if (!peeled)
             break; // every fragment is peeled

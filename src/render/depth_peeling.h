@@ -28,6 +28,7 @@ private:
     void resize(uint32_t width, uint32_t height);
 
     GlProgram peel_program_, under_program_, finish_program_;
+    GlQuery query_; // does a pass peel anything?
     GlTexture layer_, accumulated_, depth_[2];
     GlFramebuffer framebuffer_[2]; // layer_ with depth_[i]
     uint32_t width_ = 0, height_ = 0;

@@ -8,42 +8,27 @@
 
 namespace vissort::detail {
 
-void DrawSequence::append(std::span<const uint32_t> group, bool per_pixel) {
-    if (group.empty())
-        return;
-    const uint32_t first = uint32_t(triangles.size());
-    triangles.insert(triangles.end(), group.begin(), group.end());
-    if (!per_pixel && !segments.empty() && !segments.back().per_pixel)
-        segments.back().triangle_count += uint32_t(group.size());
-    else
-        segments.push_back({first, uint32_t(group.size()), per_pixel});
-}
-
 void sequenceFromOrder(std::span<const uint32_t> front_to_back,
-                       std::span<const DrawPrimitive> primitives,
+                       std::span<const PrimitiveRange> primitives,
                        std::span<const uint32_t> group_of, DrawSequence& sequence) {
     sequence.clear();
-    std::vector<uint32_t> group;
     uint32_t current = kNoGroup;
-    const auto flush = [&] {
-        sequence.append(group, current != kNoGroup);
-        group.clear();
-    };
     for (std::size_t i = front_to_back.size(); i-- > 0;) {
         const uint32_t p = front_to_back[i];
         const uint32_t g = group_of.empty() ? kNoGroup : group_of[p];
-        if (g != current) {
-            flush();
-            current = g;
-        }
+        // A new segment where a group starts or ends; blended primitives share one.
+        if (sequence.segments.empty() || g != current)
+            sequence.segments.push_back(
+                {uint32_t(sequence.triangles.size()), 0, g != kNoGroup, PixelRect{}});
+        current = g;
         for (uint32_t t = 0; t < primitives[p].triangle_count; ++t)
-            group.push_back(primitives[p].first_triangle + t);
+            sequence.triangles.push_back(primitives[p].first_triangle + t);
+        sequence.segments.back().triangle_count += primitives[p].triangle_count;
     }
-    flush();
 }
 
 std::vector<uint32_t> centroidBackToFront(const TrianglePositions& positions,
-                                          std::span<const DrawPrimitive> primitives,
+                                          std::span<const PrimitiveRange> primitives,
                                           const ViewProjection& view) {
     std::vector<double> depth(primitives.size());
     for (std::size_t p = 0; p < primitives.size(); ++p) {

@@ -28,13 +28,6 @@ struct DrawSequence {
         triangles.clear();
         segments.clear();
     }
-    /// Appends a group's triangles; a blended group joins the previous blended segment.
-    void append(std::span<const uint32_t> group, bool per_pixel);
-};
-
-/// One primitive for drawing: its triangles are first_triangle .. + triangle_count.
-struct DrawPrimitive {
-    uint32_t first_triangle = 0, triangle_count = 0;
 };
 
 /// The sequence for a front-to-back order of primitives with groups to composite per pixel:
@@ -42,13 +35,13 @@ struct DrawPrimitive {
 /// as Vis-sort outputs a cycle), or kNoGroup. Primitives are drawn back to front.
 inline constexpr uint32_t kNoGroup = 0xFFFFFFFFu;
 void sequenceFromOrder(std::span<const uint32_t> front_to_back,
-                       std::span<const DrawPrimitive> primitives,
+                       std::span<const PrimitiveRange> primitives,
                        std::span<const uint32_t> group_of, DrawSequence& sequence);
 
 /// Primitives sorted by the depth of their centroid (the mean of their corners), farthest first:
 /// the engines' approximation. Ties keep id order.
 std::vector<uint32_t> centroidBackToFront(const TrianglePositions& positions,
-                                          std::span<const DrawPrimitive> primitives,
+                                          std::span<const PrimitiveRange> primitives,
                                           const ViewProjection& view);
 
 /// The pixels whose centres triangles (scene triangle ids into positions) may cover in view,

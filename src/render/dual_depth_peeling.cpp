@@ -1,7 +1,5 @@
 #include "render/dual_depth_peeling.h"
 
-#include <string>
-
 #include "gl/gl_program.h"
 #include "render/shading.h"
 
@@ -63,7 +61,7 @@ void main() {
 DualDepthPeeling::DualDepthPeeling()
     : init_program_(linkProgram(kShadeVertexShader, kInitFragmentShader)),
       peel_program_(linkProgram(kShadeVertexShader, kPeelFragmentShader)),
-      finish_program_(linkPixelProgram(kFinishBody)) {}
+      finish_program_(linkPixelProgram(kFinishBody)), query_(makeQuery()) {}
 
 void DualDepthPeeling::resize(const RenderTarget& target) {
     if (target.width() == width_ && target.height() == height_ &&
@@ -111,13 +109,12 @@ uint32_t DualDepthPeeling::composite(const RenderTarget& target,
     glBlendFuncSeparatei(1, GL_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
     glBlendEquationi(2, GL_FUNC_ADD);
     glBlendFuncSeparatei(2, GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
-    const GlQuery query = makeQuery();
     for (int previous = 0;; previous = 1 - previous) {
         const int next = 1 - previous;
         glClearTexImage(range_[next].get(), 0, GL_RG, GL_FLOAT, empty_range);
         glBindFramebuffer(GL_FRAMEBUFFER, peel_framebuffer_[next].get());
         glBindTextureUnit(0, range_[previous].get());
-        const bool peeled = anySamplePasses(query, [&] { draw(peel_program_.get()); });
+        const bool peeled = anySamplePasses(query_, [&] { draw(peel_program_.get()); });
         ++passes;
         if (!peeled)
             break; // every fragment is peeled

@@ -31,6 +31,7 @@ private:
     void resize(const RenderTarget& target);
 
     GlProgram init_program_, peel_program_, finish_program_;
+    GlQuery query_; // does a pass peel anything?
     GlTexture range_[2], front_, back_;
     GlFramebuffer init_framebuffer_, peel_framebuffer_[2]; // writing range_[i]
     uint32_t width_ = 0, height_ = 0;

@@ -223,7 +223,8 @@ FragmentLists::Result FragmentLists::composite(const RenderTarget& target, Pixel
             allocate(max_nodes_);
         if (r.area() == 1)
             throw std::runtime_error("a pixel has more than " + std::to_string(max_nodes_) +
-                                     " transparent fragments, more than the driver's buffers hold");
+                                     " transparent fragments, more than the fragment lists may "
+                                     "hold (--list-memory, and the driver's largest buffer)");
         const uint64_t per_band = std::max<uint64_t>(1, max_nodes_ * 3 / 4);
         const uint64_t wanted = (stored + per_band - 1) / per_band;
         const bool by_rows = r.height > 1;

@@ -5,8 +5,8 @@
 // (`linked-list`), and how `vissort` composites the few primitives its order cannot separate.
 //
 // Never drops a fragment: when a draw stores more fragments than the buffers hold, they grow to
-// the count and the draw runs again; past the driver's largest buffer, the rectangle is split
-// into bands of rows drawn one at a time (scissored), each within the buffers.
+// the count and the draw runs again; past the memory limit or the driver's largest buffer, the
+// rectangle is split into bands of rows drawn one at a time (scissored), each within the buffers.
 
 #include <cstdint>
 #include <functional>

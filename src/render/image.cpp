@@ -9,6 +9,18 @@
 #include "vissort/transparency_renderer.h"
 
 namespace vissort {
+namespace {
+
+// The largest difference between the RGB channels of pixel p (its first byte) of a and b.
+int largestChannelDifference(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b,
+                             std::size_t p) {
+    int worst = 0;
+    for (std::size_t c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(int(a[p + c]) - int(b[p + c])));
+    return worst;
+}
+
+} // namespace
 
 std::vector<uint8_t> Image::toRgba8() const {
     std::vector<uint8_t> out(rgba.size());
@@ -27,12 +39,11 @@ ImageError compareImages(const std::vector<uint8_t>& a, const std::vector<uint8_
     }
     double sum = 0;
     for (std::size_t p = 0; p < a.size(); p += 4) {
-        int worst = 0;
         for (std::size_t c = 0; c < 3; ++c) {
-            const int d = std::abs(int(a[p + c]) - int(b[p + c]));
+            const int d = int(a[p + c]) - int(b[p + c]);
             sum += double(d) * d;
-            worst = std::max(worst, d);
         }
+        const int worst = largestChannelDifference(a, b, p);
         error.max_abs = std::max(error.max_abs, worst);
         if (worst > 1)
             ++error.pixels_over_one;
@@ -49,9 +60,7 @@ std::vector<uint8_t> errorMap(const std::vector<uint8_t>& image,
     if (image.size() != reference.size())
         return map;
     for (std::size_t p = 0; p < reference.size(); p += 4) {
-        int worst = 0;
-        for (std::size_t c = 0; c < 3; ++c)
-            worst = std::max(worst, std::abs(int(image[p + c]) - int(reference[p + c])));
+        const int worst = largestChannelDifference(image, reference, p);
         if (worst <= 1) {
             // Within rounding: the reference, faded, so the map shows where errors are.
             const int luma =

@@ -1,5 +1,6 @@
 #include "render/render_target.h"
 
+#include <cassert>
 #include <stdexcept>
 #include <string>
 
@@ -21,7 +22,9 @@ GlTexture makeTexture(GLenum format, uint32_t width, uint32_t height) {
     return texture;
 }
 
-GlFramebuffer makeFramebuffer(std::initializer_list<GLuint> colours, GLuint depth) {
+GlFramebuffer makeFramebuffer(std::initializer_list<GLuint> colours, GLuint depth,
+                              GLenum depth_attachment) {
+    assert(colours.size() <= 8);
     GLuint name = 0;
     glCreateFramebuffers(1, &name);
     GlFramebuffer framebuffer(name);
@@ -33,10 +36,11 @@ GlFramebuffer makeFramebuffer(std::initializer_list<GLuint> colours, GLuint dept
         ++count;
     }
     if (depth != 0)
-        glNamedFramebufferTexture(name, GL_DEPTH_ATTACHMENT, depth, 0);
+        glNamedFramebufferTexture(name, depth_attachment, depth, 0);
     glNamedFramebufferDrawBuffers(name, count, buffers);
     if (glCheckNamedFramebufferStatus(name, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        throw std::runtime_error("the OpenGL driver cannot render to 32-bit float colour buffers");
+        throw std::runtime_error("the OpenGL driver cannot render to 32-bit float colour, depth "
+                                 "and stencil buffers");
     return framebuffer;
 }
 

@@ -29,7 +29,6 @@ public:
     PixelRect whole() const { return {0, 0, width_, height_}; }
     GLuint colourTexture() const { return colour_.get(); }
     GLuint depthTexture() const { return depth_.get(); }
-    GLuint framebuffer() const { return framebuffer_.get(); }
 
 private:
     uint32_t width_ = 0, height_ = 0;
@@ -56,8 +55,10 @@ GlQuery makeQuery();
 /// A new 2D texture of one level; throws std::runtime_error when the driver refuses it.
 GlTexture makeTexture(GLenum format, uint32_t width, uint32_t height);
 
-/// A framebuffer over the given colour textures (attachments 0, 1, ... in order) and depth
-/// texture (0 for none), drawing to all of them; throws std::runtime_error when incomplete.
-GlFramebuffer makeFramebuffer(std::initializer_list<GLuint> colours, GLuint depth);
+/// A framebuffer over the given colour textures (attachments 0, 1, ... in order, at most 8) and
+/// depth texture (0 for none; a depth and stencil texture with GL_DEPTH_STENCIL_ATTACHMENT),
+/// drawing to all of them; throws std::runtime_error when incomplete.
+GlFramebuffer makeFramebuffer(std::initializer_list<GLuint> colours, GLuint depth,
+                              GLenum depth_attachment = GL_DEPTH_ATTACHMENT);
 
 } // namespace vissort::detail

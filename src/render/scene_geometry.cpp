@@ -50,6 +50,10 @@ SceneGeometry::SceneGeometry(const Scene& scene, std::span<const float> object_c
 }
 
 void SceneGeometry::upload(const TrianglePositions& positions) {
+    // A static scene's frames, or the same frame again: the normals and the buffer are current.
+    if (positions.x == uploaded_.x && positions.y == uploaded_.y && positions.z == uploaded_.z)
+        return;
+    uploaded_ = positions;
     mesh_.update(positions, vertex_data_);
     glNamedBufferData(vertices_.get(), GLsizeiptr(vertex_data_.size() * sizeof(float)),
                       vertex_data_.data(), GL_STREAM_DRAW);

@@ -19,7 +19,8 @@ public:
     /// object_colours: 4 floats (r, g, b, alpha) per object of scene, as shaded (shading.h).
     SceneGeometry(const Scene& scene, std::span<const float> object_colours);
 
-    /// Uploads the vertices of a frame: positions has the scene's triangle count.
+    /// Uploads the vertices of a frame: positions has the scene's triangle count. Positions equal
+    /// to the last ones uploaded cost a comparison.
     void upload(const TrianglePositions& positions);
     /// The triangles to draw (scene triangle ids): opaque ones in any order, transparent ones in
     /// the order drawTransparent's ranges refer to.
@@ -41,6 +42,7 @@ private:
     RenderMesh mesh_;
     GlVertexArray vertex_array_;
     GlBuffer vertices_, objects_, colours_, elements_;
+    TrianglePositions uploaded_; // what the vertex buffer holds
     std::vector<float> vertex_data_;
     std::vector<uint32_t> element_data_;
     std::size_t opaque_count_ = 0, transparent_count_ = 0;

@@ -46,6 +46,7 @@ void copyCorners(const TrianglePositions& from, std::span<const uint32_t> triang
 struct TransparentPart {
     Scene scene;
     std::vector<uint32_t> scene_triangle; // part triangle -> scene triangle
+    bool whole = false;                   // every triangle, in order: the scene's own positions
 };
 
 TransparentPart transparentPart(const Scene& scene, const std::vector<uint8_t>& transparent) {
@@ -61,6 +62,7 @@ TransparentPart transparentPart(const Scene& scene, const std::vector<uint8_t>& 
         part.scene.objects.push_back(object);
     }
     copyCorners(scene.positions, part.scene_triangle, part.scene.positions);
+    part.whole = part.scene_triangle.size() == scene.triangleCount();
     return part;
 }
 
@@ -76,12 +78,12 @@ struct TransparencyRenderer::Impl {
     uint32_t triangle_count = 0;
     std::vector<uint32_t> opaque_triangles;
     TransparentPart part;
-    std::vector<detail::DrawPrimitive> part_objects, part_triangles;
+    std::vector<PrimitiveRange> primitives; // the part's, at the ordering level
     // vissort's ordering, over the transparent part only.
     std::unique_ptr<GeometryOracle> oracle;
     std::unique_ptr<SceneOrderer> orderer;
-    TrianglePositions part_positions;
-    detail::DrawSequence sequence; // transparent triangles back to front, scene ids
+    TrianglePositions part_positions; // this frame's, unless the part is the whole scene
+    detail::DrawSequence sequence;    // transparent triangles back to front, scene ids
     bool triangles_uploaded = false;
 
     std::unique_ptr<detail::SceneGeometry> geometry;
@@ -94,10 +96,6 @@ struct TransparencyRenderer::Impl {
     std::unique_ptr<detail::WeightedBlended> weighted;
     std::unique_ptr<detail::VerifiedBlending> verified;
 
-    const std::vector<detail::DrawPrimitive>& orderedPrimitives() const {
-        return settings.level == OrderLevel::object ? part_objects : part_triangles;
-    }
-
     // This frame's back-to-front sequence of transparent triangles (scene triangle ids), for the
     // methods that order per frame.
     void buildSequence(const TrianglePositions& positions, const ViewProjection& view,
@@ -105,22 +103,22 @@ struct TransparencyRenderer::Impl {
         sequence.clear();
         if (part.scene_triangle.empty())
             return;
-        copyCorners(positions, part.scene_triangle, part_positions);
-        const std::vector<detail::DrawPrimitive>& primitives = orderedPrimitives();
+        if (!part.whole)
+            copyCorners(positions, part.scene_triangle, part_positions);
+        const TrianglePositions& ordered = part.whole ? positions : part_positions;
         if (settings.method == BlendMethod::centroid) {
-            std::vector<uint32_t> order =
-                detail::centroidBackToFront(part_positions, primitives, view);
+            std::vector<uint32_t> order = detail::centroidBackToFront(ordered, primitives, view);
             std::reverse(order.begin(), order.end());
             detail::sequenceFromOrder(order, primitives, {}, sequence);
         } else {
-            const FrameOrder frame = orderer->orderFrame(part_positions, view);
+            const FrameOrder frame = orderer->orderFrame(ordered, view);
             stats.order = frame.stats;
             std::vector<uint32_t> group_of(primitives.size(), detail::kNoGroup);
             for (uint32_t g = 0; g < frame.cycles.size(); ++g)
                 for (uint32_t p : frame.cycles[g])
                     group_of[p] = g;
             if (settings.level == OrderLevel::object)
-                markSelfOverlapping(view, group_of);
+                markSelfOverlapping(ordered, view, group_of);
             detail::sequenceFromOrder(frame.order, primitives, group_of, sequence);
         }
         for (uint32_t& t : sequence.triangles)
@@ -129,7 +127,6 @@ struct TransparencyRenderer::Impl {
             if (!segment.per_pixel)
                 continue;
             ++stats.groups;
-            stats.group_triangles += segment.triangle_count;
             segment.rect =
                 detail::screenRectOf(positions,
                                      std::span(sequence.triangles)
@@ -141,20 +138,20 @@ struct TransparencyRenderer::Impl {
     // An object whose own triangles overlap on screen (beyond the depth tolerance) is, alone, a
     // group to composite per pixel. Found with the oracle: draw the object, then ask whether any
     // of it lies behind what was drawn.
-    void markSelfOverlapping(const ViewProjection& view, std::vector<uint32_t>& group_of) {
-        const std::vector<PrimitiveRange> ranges = part.scene.objectPrimitives();
-        oracle->bind(part_positions, view, ranges);
+    void markSelfOverlapping(const TrianglePositions& ordered, const ViewProjection& view,
+                             std::vector<uint32_t>& group_of) {
+        oracle->bind(ordered, view, primitives); // object level: one primitive an object
         // The default tolerance here: the blending one would find every object behind itself.
         // Triangles of one object whose depths nearly tie are neighbours at a fold, where both
         // take their colours from the shared corners: their order hardly shows.
         oracle->setDepthTolerance(kDepthTolerance);
         uint8_t behind = 0;
-        for (uint32_t p = 0; p < ranges.size(); ++p) {
+        for (uint32_t p = 0; p < primitives.size(); ++p) {
             if (group_of[p] != detail::kNoGroup)
                 continue;
             oracle->queryAgainst(std::span(&p, 1), std::span(&p, 1), std::span(&behind, 1));
             if (behind)
-                group_of[p] = uint32_t(ranges.size()) + p; // distinct from every cycle
+                group_of[p] = uint32_t(primitives.size()) + p; // distinct from every cycle
         }
         oracle->setDepthTolerance(kBlendingDepthTolerance);
     }
@@ -220,10 +217,6 @@ struct TransparencyRenderer::Impl {
         case BlendMethod::unsorted:
         case BlendMethod::centroid:
         case BlendMethod::vissort: {
-            if (settings.method == BlendMethod::unsorted) {
-                sequence.clear();
-                sequence.append(part.scene_triangle, false);
-            }
             using Check = RenderSettings::OrderCheck;
             const bool check =
                 settings.check == Check::on ||
@@ -302,11 +295,12 @@ TransparencyRenderer::TransparencyRenderer(std::shared_ptr<GlContext> context, c
                 d.opaque_triangles.push_back(object.first_triangle + t);
     }
     d.part = transparentPart(scene, transparent);
-    for (const SceneObject& object : d.part.scene.objects)
-        d.part_objects.push_back({object.first_triangle, object.triangle_count});
-    d.part_triangles.resize(d.part.scene_triangle.size());
-    for (uint32_t t = 0; t < d.part_triangles.size(); ++t)
-        d.part_triangles[t] = {t, 1};
+    d.primitives = primitivesOf(d.part.scene, settings.level);
+    if (settings.method == BlendMethod::unsorted && !d.part.scene_triangle.empty()) {
+        // Submission order, every frame the same.
+        d.sequence.triangles = d.part.scene_triangle;
+        d.sequence.segments.push_back({0, uint32_t(d.part.scene_triangle.size()), false, {}});
+    }
     if (settings.method == BlendMethod::vissort && !d.part.scene_triangle.empty()) {
         d.oracle = makeOracle(settings.oracle);
         d.oracle->setDepthTolerance(kBlendingDepthTolerance);

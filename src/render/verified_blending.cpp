@@ -1,7 +1,5 @@
 #include "render/verified_blending.h"
 
-#include <algorithm>
-
 #include "gl/gl_program.h"
 #include "render/shading.h"
 
@@ -103,14 +101,7 @@ void VerifiedBlending::resize(const RenderTarget& target) {
     glTextureParameteri(nearest_.get(), GL_DEPTH_STENCIL_TEXTURE_MODE, GL_STENCIL_INDEX);
     glTextureParameteri(nearest_.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(nearest_.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    GLuint name = 0;
-    glCreateFramebuffers(1, &name);
-    framebuffer_ = GlFramebuffer(name);
-    glNamedFramebufferTexture(name, GL_COLOR_ATTACHMENT0, target_colour_, 0);
-    glNamedFramebufferTexture(name, GL_DEPTH_STENCIL_ATTACHMENT, nearest_.get(), 0);
-    if (glCheckNamedFramebufferStatus(name, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        throw std::runtime_error("the OpenGL driver cannot render with a 32-bit float depth and "
-                                 "stencil buffer");
+    framebuffer_ = makeFramebuffer({target_colour_}, nearest_.get(), GL_DEPTH_STENCIL_ATTACHMENT);
 }
 
 VerifiedBlending::Result VerifiedBlending::composite(
@@ -208,10 +199,6 @@ VerifiedBlending::Result VerifiedBlending::composite(
     glBindTextureUnit(1, target.depthTexture());
     draw_opaque(opaque_program_.get());
     glDisable(GL_SCISSOR_TEST);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
-    glEnable(GL_STENCIL_TEST);
-    glStencilFunc(GL_EQUAL, kMark, 0xFF);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     const FragmentLists::Result listed = lists.composite(target, rect, opaque_depth, [&] {
         draw(lists.buildProgram(), 0, sequence.triangles.size());
     });

@@ -1,7 +1,5 @@
 #include "render/weighted_blended.h"
 
-#include <string>
-
 #include "gl/gl_program.h"
 #include "render/shading.h"
 

@@ -58,6 +58,8 @@ TEST_F(Cli, RenderWritesThePngTheJsonAndTheErrorMap) {
     }
     EXPECT_GE(stats["ms"]["total"].get<double>(), stats["ms"]["render"].get<double>());
     EXPECT_EQ(stats.value("passes", 0), 1);
+    EXPECT_EQ(stats.value("groups", -1), 0);   // the slabs order cleanly
+    EXPECT_EQ(stats.value("repaired", -1), 0); // and the order is right on every pixel
     EXPECT_TRUE(stats.contains("fragments"));
     ASSERT_TRUE(stats.contains("error")) << stats.dump();
     EXPECT_LE(stats["error"]["max_abs"].get<int>(), 1);
