@@ -27,12 +27,21 @@
 //     frag > stored + tolerance (float sum; the oracle's depthTolerance(), kDepthTolerance unless
 //     set), so +infinity pixels never count.
 //
-// Conservative mode (RasterMode::conservative) changes rules 5 and 6 only: pixel (px, py) is
-// covered when its square [px, px + 1] x [py, py + 1] lies in the snapped bounding box grown to
-// whole pixels and every edge function's maximum over the square is >= 0, i.e.
-// E_i(centre) + 128 (|xj - xi| + |yj - yi|) >= 0; a draw writes float(c - |ddx| / 2 - |ddy| / 2)
-// and a query tests float(c + |ddx| / 2 + |ddy| / 2), with c the double centre value of rule 6.
-// Both are monotone in the exact mode's values, so its "behind" answers are a superset.
+// Conservative mode (RasterMode::conservative) changes rules 5 and 6 only, so that every pixel
+// square the unsnapped triangle touches is visited with a depth range holding the triangle's
+// depths there (collision culling must never miss a contact; docs/collision.md):
+//  - squares grow by m = 1 sub-pixel unit on every side (snapping moves a vertex by at most half
+//    a unit): pixel (px, py) is covered when its grown square meets the snapped bounding box and
+//    every edge function's maximum over it is >= 0, E_i(centre) + (128 + m)(|xj - xi| + |yj - yi|)
+//    >= 0, whatever the winding;
+//  - a draw writes float(c - s) and a query tests float(c + s), with c the double centre value of
+//    rule 6 and the spread s = |ddx| / 2 + |ddy| / 2;
+//  - where the plane is undefined (det == 0: the unsnapped triangle is edge-on) or not finite,
+//    c = (d_min + d_max) / 2 and s = (d_max - d_min) / 2 over the vertex depths; a triangle of
+//    zero snapped area covers every square its grown box meets, with that same range.
+// Both values are monotone in the exact mode's, so its "behind" answers are a superset. Depths
+// still round to float: callers that need touching surfaces to count both ways set a negative
+// depth tolerance (the collision detector does).
 //
 // Viewports up to kMaxViewportSize = 65536 on a side keep every edge function exact in int64_t.
 

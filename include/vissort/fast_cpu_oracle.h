@@ -23,9 +23,9 @@
 //    OR-ed across bands. Off by default (FastCpuOracleOptions::threads).
 // Conservative mode (FastCpuOracleOptions::mode, for collision culling) matches
 // CpuOracle(RasterMode::conservative) the same way: each edge's bias grows to its rise over half a
-// pixel, the pixel range to every square the snapped bounding box touches, and each fragment
-// moves by the plane's spread over the pixel (nearer for draws, farther for queries) before it is
-// rounded; the tile shortcuts then hold unchanged.
+// pixel and the snapping margin, the pixel range to every square the grown snapped box touches,
+// and each fragment moves by the set-up's depth spread over the pixel (nearer for draws, farther
+// for queries) before it is rounded; the tile shortcuts then hold unchanged.
 
 #include <array>
 #include <cmath>

@@ -8,14 +8,16 @@ namespace vissort::cli {
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options) {
     CLI::App* command = app.add_subcommand(
         "bench",
-        "Measure the oracles or the transparency methods (figures for docs/benchmarks.md)");
-    command->add_option("what", options.what, "What to measure: oracle or transparency")
+        "Measure the oracles, the transparency methods or the collision methods (figures for "
+        "docs/benchmarks.md)");
+    command->add_option("what", options.what, "What to measure: oracle, transparency or collision")
         ->required();
     command->add_option("--repeat", options.repeat, "Runs per synthetic case (best is kept)")
         ->capture_default_str();
     command->add_option("--frames", options.frames,
-                        "Frames of the real workloads (oracle: 11) or of each method and scene "
-                        "(transparency: 3); the first is not timed");
+                        "Frames of the real workloads (oracle: 11), of each method and scene "
+                        "(transparency: 3) or of each bunny count (collision: 30, after one "
+                        "untimed); the first is not timed");
     command
         ->add_option("--gl-frames", options.gl_frames,
                      "Frames of the real workloads through the gl oracle (at most --frames)")
@@ -30,6 +32,11 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options) {
         ->add_option("--depths", options.depths,
                      "transparency: depth complexities to measure, comma-separated")
         ->capture_default_str();
+    command
+        ->add_option("--counts", options.counts,
+                     "collision: numbers of bunnies to measure, comma-separated")
+        ->capture_default_str();
+    command->add_option("--plot", options.plot_path, "collision: write ms against N as a PNG");
     command->add_option("--json", options.json_path, "Write the figures as JSON");
     return command;
 }
@@ -39,8 +46,10 @@ int runBench(const BenchOptions& options) {
         return runOracleBench(options);
     if (options.what == "transparency")
         return runTransparencyBench(options);
-    return fail(kExitUsage,
-                "bench: unknown benchmark '" + options.what + "' (try: oracle, transparency)");
+    if (options.what == "collision")
+        return runCollisionBench(options);
+    return fail(kExitUsage, "bench: unknown benchmark '" + options.what +
+                                "' (try: oracle, transparency, collision)");
 }
 
 } // namespace vissort::cli

@@ -5,7 +5,6 @@
 // method's error against linked-list, every method in the same run through the same renderer.
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -54,24 +53,6 @@ struct Measured {
     double rmse = 0;
 };
 
-// "2,4,8": each a depth complexity of 1 to 1000.
-bool parseDepths(const std::string& text, std::vector<uint32_t>& depths) {
-    depths.clear();
-    std::size_t start = 0;
-    while (start <= text.size()) {
-        const std::size_t comma = std::min(text.find(',', start), text.size());
-        uint32_t depth = 0;
-        const char* first = text.data() + start;
-        const char* last = text.data() + comma;
-        if (std::from_chars(first, last, depth).ptr != last || first == last || depth < 1 ||
-            depth > 1000)
-            return false;
-        depths.push_back(depth);
-        start = comma + 1;
-    }
-    return !depths.empty();
-}
-
 } // namespace
 
 int runTransparencyBench(const BenchOptions& options) {
@@ -86,7 +67,7 @@ int runTransparencyBench(const BenchOptions& options) {
         return fail(kExitUsage,
                     "--level must be object, triangle or multistage, got '" + options.level + "'");
     std::vector<uint32_t> depths;
-    if (!parseDepths(options.depths, depths))
+    if (!parseCounts(options.depths, depths))
         return fail(kExitUsage, "--depths expects depth complexities of 1 to 1000 separated by "
                                 "commas, got '" +
                                     options.depths + "'");

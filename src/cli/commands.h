@@ -35,12 +35,27 @@ struct BenchOptions {
     std::string size = "1024x1024";
     std::string level = "multistage";
     std::string depths = "2,4,8,16,32,64";
+    std::string counts = "18,36,72,144";
+    std::string plot_path;
     std::string json_path;
 };
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options);
 int runBench(const BenchOptions& options);
 int runOracleBench(const BenchOptions& options);
 int runTransparencyBench(const BenchOptions& options);
+int runCollisionBench(const BenchOptions& options);
+
+struct CollideOptions {
+    std::string scene;
+    int frames = 1;
+    std::string method = "vissort";
+    std::string size = "64x64";
+    std::string json_path;
+    std::string pairs_path;
+    std::string dump_path;
+};
+CLI::App* addCollideCommand(CLI::App& app, CollideOptions& options);
+int runCollide(const CollideOptions& options);
 
 struct RenderOptions {
     std::string scene;

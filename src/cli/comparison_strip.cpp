@@ -11,6 +11,7 @@ namespace {
 constexpr uint32_t kMargin = 8;       // pixels around each tile
 constexpr uint32_t kTextScale = 2;    // stb_easy_font's glyphs are about 7 pixels high
 constexpr uint32_t kCaptionLines = 3; // room above each tile
+constexpr uint8_t kCaptionColour[3] = {30, 30, 30};
 
 // stb_easy_font's vertex: x, y, z and a colour; four make a quad, an axis-aligned rectangle.
 struct FontVertex {
@@ -18,7 +19,10 @@ struct FontVertex {
     unsigned char colour[4];
 };
 
-void drawText(Strip& strip, uint32_t left, uint32_t top, const std::string& text) {
+} // namespace
+
+void drawText(Strip& strip, uint32_t left, uint32_t top, const std::string& text,
+              const uint8_t colour[3]) {
     std::vector<char> characters(text.begin(), text.end());
     characters.push_back('\0');
     std::vector<FontVertex> vertices(characters.size() * 300); // ~270 bytes a character
@@ -36,13 +40,13 @@ void drawText(Strip& strip, uint32_t left, uint32_t top, const std::string& text
                 if (x >= strip.width || y >= strip.height)
                     continue;
                 uint8_t* p = &strip.rgba[(std::size_t(y) * strip.width + x) * 4];
-                p[0] = p[1] = p[2] = 30;
+                p[0] = colour[0];
+                p[1] = colour[1];
+                p[2] = colour[2];
                 p[3] = 255;
             }
     }
 }
-
-} // namespace
 
 Strip composeStrip(const std::vector<StripTile>& tiles, uint32_t tile_width, uint32_t tile_height,
                    uint32_t columns) {
@@ -59,7 +63,7 @@ Strip composeStrip(const std::vector<StripTile>& tiles, uint32_t tile_width, uin
         assert(tiles[i].rgba.size() == std::size_t(tile_width) * tile_height * 4);
         const uint32_t left = uint32_t(i % columns) * cell_width + kMargin;
         const uint32_t top = uint32_t(i / columns) * cell_height + kMargin;
-        drawText(strip, left, top, tiles[i].caption);
+        drawText(strip, left, top, tiles[i].caption, kCaptionColour);
         for (uint32_t y = 0; y < tile_height; ++y)
             std::copy_n(
                 &tiles[i].rgba[std::size_t(y) * tile_width * 4], tile_width * 4,

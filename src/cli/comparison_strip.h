@@ -18,6 +18,11 @@ struct Strip {
     std::vector<uint8_t> rgba;
 };
 
+/// Draws text (stb_easy_font at twice its size, about 14 pixels a line) with its top-left
+/// corner at (left, top), clipped to the strip.
+void drawText(Strip& strip, uint32_t left, uint32_t top, const std::string& text,
+              const uint8_t colour[3]);
+
 /// Lays tiles out `columns` to a row, in order, each under its caption (dark text on white),
 /// with a margin around every tile. Every tile must have tile_width * tile_height pixels.
 Strip composeStrip(const std::vector<StripTile>& tiles, uint32_t tile_width, uint32_t tile_height,

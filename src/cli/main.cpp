@@ -18,6 +18,8 @@ int main(int argc, char** argv) {
     CLI::App* bench_command = addBenchCommand(app, bench);
     RenderOptions render;
     CLI::App* render_command = addRenderCommand(app, render);
+    CollideOptions collide;
+    CLI::App* collide_command = addCollideCommand(app, collide);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -33,6 +35,7 @@ int main(int argc, char** argv) {
         if (info_command->parsed()) return runInfo(info);
         if (bench_command->parsed()) return runBench(bench);
         if (render_command->parsed()) return runRender(render);
+        if (collide_command->parsed()) return runCollide(collide);
     } catch (const std::bad_alloc&) {
         return fail(kExitFailure, "out of memory (try a smaller --size or scene)");
     } catch (const std::exception& e) {

@@ -28,6 +28,11 @@ inline constexpr uint32_t kMaxViewportSize = 1u << 16;
 /// absurd input gets here: clipping keeps honest geometry far below it.
 inline constexpr int64_t kMaxSnapped = int64_t(1) << 29;
 
+/// Conservative mode grows each pixel square by this many sub-pixel units on every side: more
+/// than the half unit that snapping moves a vertex, so a square the unsnapped triangle touches
+/// is always walked.
+inline constexpr int64_t kConservativeMargin = 1;
+
 /// Column-major 4x4 matrix: element (row r, column c) at 4 c + r.
 using Matrix4 = std::array<double, 16>;
 
@@ -67,8 +72,12 @@ struct TriangleSetup {
     std::array<int64_t, 3> bias{};    // 1 on top-left edges, 0 elsewhere: covered iff E + bias > 0
     // Depth plane d(sx, sy) = d0 + ddx (sx - x0) + ddy (sy - y0), in double.
     double x0 = 0, y0 = 0, d0 = 0, ddx = 0, ddy = 0;
-    // Inclusive pixel range whose centres may be covered, clamped to the viewport.
+    // Inclusive pixel range whose centres may be covered (conservative mode: whose squares may
+    // be touched), clamped to the viewport.
     int64_t px_min = 0, px_max = -1, py_min = 0, py_max = -1;
+    // Conservative mode: half the range of depths over a pixel square about the plane's value at
+    // its centre (0 in exact mode).
+    double spread = 0;
 };
 
 /// Screen mapping of a clip-space point: sx = (x / w + 1) * 0.5 * width,
@@ -84,9 +93,11 @@ int64_t snapToFixed(double v);
 bool setupTriangle(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
                    uint32_t width, uint32_t height, TriangleSetup& setup);
 
-/// setupTriangle for conservative mode: the same snapping, orientation and depth plane, but a
-/// triangle is kept even when its bounding box holds no pixel centre (it may still touch pixel
-/// squares). Returns false only for zero snapped area or out-of-range coordinates.
+/// setupTriangle for conservative mode (cpu_oracle.h): the same snapping and orientation; the
+/// pixel range is every square the snapped box grown by kConservativeMargin touches; the depth
+/// plane and its spread bound the triangle's depths over each square (a flat range of the vertex
+/// depths where there is no plane, or no snapped area: then every corner is the first, so every
+/// edge function is 0). Returns false only for out-of-range coordinates or off-screen bounds.
 bool setupConservative(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
                        uint32_t width, uint32_t height, TriangleSetup& setup);
 
@@ -123,34 +134,25 @@ bool walkTriangle(const TriangleSetup& s, Visit&& visit) {
 /// whose square the set-up triangle may touch, with the plane's nearest and farthest depth over
 /// that square. Stops, returning true, as soon as visit returns true.
 template <class Visit>
-bool walkTriangleConservative(const TriangleSetup& s, uint32_t width, uint32_t height,
-                              Visit&& visit) {
-    // Pixels whose square meets the snapped bounding box (touching counts).
-    const int64_t min_x = std::min({s.x[0], s.x[1], s.x[2]});
-    const int64_t max_x = std::max({s.x[0], s.x[1], s.x[2]});
-    const int64_t min_y = std::min({s.y[0], s.y[1], s.y[2]});
-    const int64_t max_y = std::max({s.y[0], s.y[1], s.y[2]});
-    const int64_t px_min = std::max<int64_t>(((min_x + kSubpixelScale - 1) >> kSubpixelBits) - 1, 0);
-    const int64_t px_max = std::min<int64_t>(max_x >> kSubpixelBits, int64_t(width) - 1);
-    const int64_t py_min = std::max<int64_t>(((min_y + kSubpixelScale - 1) >> kSubpixelBits) - 1, 0);
-    const int64_t py_max = std::min<int64_t>(max_y >> kSubpixelBits, int64_t(height) - 1);
-    // An edge function's largest value over a pixel square: half a pixel along each axis.
+bool walkTriangleConservative(const TriangleSetup& s, Visit&& visit) {
+    // An edge function's largest value over a pixel square grown by the margin.
     std::array<int64_t, 3> reach;
     for (int i = 0; i < 3; ++i) {
         const int j = (i + 1) % 3;
-        reach[i] = (std::abs(s.x[j] - s.x[i]) + std::abs(s.y[j] - s.y[i])) * (kSubpixelScale / 2);
+        reach[i] = (std::abs(s.x[j] - s.x[i]) + std::abs(s.y[j] - s.y[i])) *
+                   (kSubpixelScale / 2 + kConservativeMargin);
     }
-    const double spread = std::abs(s.ddx) * 0.5 + std::abs(s.ddy) * 0.5;
-    for (int64_t py = py_min; py <= py_max; ++py) {
+    for (int64_t py = s.py_min; py <= s.py_max; ++py) {
         const int64_t cy = py * kSubpixelScale + kSubpixelScale / 2;
-        for (int64_t px = px_min; px <= px_max; ++px) {
+        for (int64_t px = s.px_min; px <= s.px_max; ++px) {
             const int64_t cx = px * kSubpixelScale + kSubpixelScale / 2;
             if (edgeFunction(s, 0, cx, cy) + reach[0] < 0) continue;
             if (edgeFunction(s, 1, cx, cy) + reach[1] < 0) continue;
             if (edgeFunction(s, 2, cx, cy) + reach[2] < 0) continue;
             const double centre = s.d0 + s.ddx * ((double(px) + 0.5) - s.x0) +
                                   s.ddy * ((double(py) + 0.5) - s.y0);
-            if (visit(uint32_t(px), uint32_t(py), float(centre - spread), float(centre + spread)))
+            if (visit(uint32_t(px), uint32_t(py), float(centre - s.spread),
+                      float(centre + s.spread)))
                 return true;
         }
     }
@@ -192,7 +194,7 @@ template <class Visit>
 bool rasterizeTriangleConservative(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
                                    uint32_t width, uint32_t height, Visit&& visit) {
     return forEachFanTriangle(a, b, c, width, height, true, [&](const TriangleSetup& s) {
-        return walkTriangleConservative(s, width, height, visit);
+        return walkTriangleConservative(s, visit);
     });
 }
 

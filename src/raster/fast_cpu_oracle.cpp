@@ -47,10 +47,10 @@ constexpr std::size_t kTilePixels = std::size_t(detail::kTileRowFloats) * detail
 // with a wide safety factor on the 4 roundings it takes).
 constexpr double kDepthMargin = 0x1p-48;
 
-// Conservative mode: how far the plane moves within half a pixel on each axis, computed as the
-// reference does (|ddx| / 2 + |ddy| / 2). Exact mode: 0.
+// Conservative mode: how far depths move from the plane's value at a pixel centre over its
+// square, as the reference's set-up computed it. Exact mode: 0.
 double spreadOf(const detail::FastSetup& s, bool conservative) {
-    return conservative ? std::abs(s.ddx) * 0.5 + std::abs(s.ddy) * 0.5 : 0.0;
+    return conservative ? s.spread : 0.0;
 }
 
 // What a draw (nearest depth over the pixel) or a query (farthest) adds to each fragment's double

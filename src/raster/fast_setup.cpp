@@ -54,9 +54,11 @@ void appendFastSetups(const Matrix4& clip, const TrianglePositions& positions, s
             const int j = (e + 1) % 3;
             const int64_t dx = ts.x[j] - ts.x[e], dy = ts.y[j] - ts.y[e];
             // Conservative: covered when E + reach >= 0, reach = the edge function's rise over
-            // half a pixel on each axis (cpu_oracle.h), i.e. E + reach + 1 > 0. Below 2^39.
-            const int64_t bias =
-                conservative ? (std::abs(dx) + std::abs(dy)) * half + 1 : ts.bias[e];
+            // half a pixel and the margin on each axis (cpu_oracle.h), i.e. E + reach + 1 > 0.
+            // Below 2^39.
+            const int64_t bias = conservative
+                                     ? (std::abs(dx) + std::abs(dy)) * (half + kConservativeMargin) + 1
+                                     : ts.bias[e];
             // E_e at the centre of pixel (0, 0), (128, 128) in 24.8 fixed point: below 2^61.
             s.edge_at_origin[e] = dx * (half - ts.y[e]) - dy * (half - ts.x[e]) + bias;
             s.edge_step_x[e] = -dy * kSubpixelScale;
@@ -67,24 +69,12 @@ void appendFastSetups(const Matrix4& clip, const TrianglePositions& positions, s
         s.d0 = ts.d0;
         s.ddx = ts.ddx;
         s.ddy = ts.ddy;
+        s.spread = ts.spread;
+        // Conservative: every square the grown box touches, as setupConservative computed.
         s.px_min = int32_t(ts.px_min);
         s.px_max = int32_t(ts.px_max);
         s.py_min = int32_t(ts.py_min);
         s.py_max = int32_t(ts.py_max);
-        if (conservative) {
-            // Pixels whose square meets the snapped bounding box, as the reference walks them.
-            const int64_t min_x = std::min({ts.x[0], ts.x[1], ts.x[2]});
-            const int64_t max_x = std::max({ts.x[0], ts.x[1], ts.x[2]});
-            const int64_t min_y = std::min({ts.y[0], ts.y[1], ts.y[2]});
-            const int64_t max_y = std::max({ts.y[0], ts.y[1], ts.y[2]});
-            constexpr int64_t one = kSubpixelScale;
-            constexpr int bits = kSubpixelBits;
-            s.px_min = int32_t(std::max<int64_t>(((min_x + one - 1) >> bits) - 1, 0));
-            s.px_max = int32_t(std::min<int64_t>(max_x >> bits, int64_t(width) - 1));
-            s.py_min = int32_t(std::max<int64_t>(((min_y + one - 1) >> bits) - 1, 0));
-            s.py_max = int32_t(std::min<int64_t>(max_y >> bits, int64_t(height) - 1));
-            if (s.px_min > s.px_max || s.py_min > s.py_max) continue;  // off screen
-        }
         s.narrow = edgesFitInt32(s);
         out.push_back(s);
     }

@@ -19,12 +19,13 @@ namespace vissort::detail {
 
 /// One fan triangle, ready to walk: covered iff edge + bias > 0 for all three edges (the bias is
 /// folded into edge_at_origin: the top-left rule's 0 or 1, or in conservative mode the edge's
-/// rise over half a pixel plus 1).
+/// rise over half a pixel and the margin, plus 1).
 struct FastSetup {
     int64_t edge_at_origin[3];  // E_i + bias_i at the centre of pixel (0, 0)
     int64_t edge_step_x[3];     // change of E_i from pixel px to px + 1
     int64_t edge_step_y[3];     // change of E_i from row py to py + 1
     double x0, y0, d0, ddx, ddy;  // depth plane, as in TriangleSetup
+    double spread;  // conservative mode: TriangleSetup::spread (unset in exact mode)
     int32_t px_min, px_max, py_min, py_max;  // inclusive, clamped to the viewport
     // Every edge function fits in int32_t over the pixel bounds (edgesFitInt32), so the AVX2
     // walks may test edges on 32-bit lanes. Decided once per bind, not per draw or query.

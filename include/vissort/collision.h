@@ -1,0 +1,104 @@
+#pragma once
+// N-body collision detection: every pair of intersecting triangles that belong to different
+// objects, frame after frame, for dynamic scenes of many moving, deforming objects. The
+// `vissort` method culls with visibility ordering, after Govindaraju, Henson, Lin, Manocha,
+// "Interactive Visibility Ordering and Transparency Computations among Geometric Primitives in
+// Complex Environments" (I3D 2005), section 5.3; `brute`, `bullet` and `fcl` are its peers and
+// its ground truth. docs/collision.md explains the method and what makes it exact.
+//
+// Triangles are closed: touching counts as intersecting (a shared point, an edge on a face, a
+// coplanar overlap). Pairs within one object (self-collision) are not reported.
+
+#include <compare>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "vissort/geometry.h"
+
+namespace vissort {
+
+enum class CollisionMethod {
+    vissort,  // visibility-ordering culling along view directions, then the exact test
+    brute,    // every triangle pair of every box-overlapping object pair: the ground truth
+    bullet,   // Bullet's btDbvt per object, refitted each frame, tree against tree
+    fcl,      // FCL's dynamic AABB tree of OBBRSS models, its own triangle tests (may miss)
+};
+
+/// Parses "vissort", "brute", "bullet" or "fcl"; returns false when the name is unknown.
+bool parseCollisionMethod(const std::string& name, CollisionMethod& method);
+const char* collisionMethodName(CollisionMethod method);
+/// Every method, in the order the benchmarks list them.
+std::vector<CollisionMethod> collisionMethods();
+
+/// Two intersecting triangles: global triangle ids, first < second, of different objects.
+struct TrianglePair {
+    uint32_t first = 0, second = 0;
+    friend bool operator==(const TrianglePair&, const TrianglePair&) = default;
+    friend auto operator<=>(const TrianglePair&, const TrianglePair&) = default;
+};
+
+struct CollisionSettings {
+    CollisionMethod method = CollisionMethod::vissort;
+    /// vissort: the orthographic view directions of the object stage, tried in turn while the
+    /// candidate pairs keep shrinking. Empty: the three axes, then the four cube diagonals.
+    std::vector<Vec3> directions;
+    /// vissort: image size in pixels of each object-stage view (1 to 4096 each way).
+    uint32_t width = 64, height = 64;
+};
+
+/// What one frame cost and how much each stage culled.
+struct CollisionStats {
+    uint64_t object_pairs = 0;    // candidate object pairs that reached the triangle stage
+    uint64_t triangle_pairs = 0;  // candidate triangle pairs that reached the exact test
+    uint64_t intersecting = 0;    // intersecting triangle pairs found
+    uint32_t colliding_objects = 0;  // objects in some candidate object pair (the paper's C)
+    uint32_t directions = 0;      // vissort: object-stage directions used this frame
+    uint64_t queries = 0;         // vissort: occlusion queries of the object stage
+    double update_ms = 0;         // per-frame structures from the positions (boxes, refits)
+    double cull_ms = 0;           // every culling stage
+    double exact_ms = 0;          // exact triangle tests
+    double total_ms = 0;          // everything after the positions exist
+};
+
+struct CollisionResult {
+    std::vector<TrianglePair> pairs;  // ascending, no duplicates
+    CollisionStats stats;
+};
+
+namespace detail {
+class Collider;
+}
+
+/// Finds the intersecting triangle pairs of a fixed set of objects, frame by frame. Keeps what
+/// it learns from one frame for the next (orders per direction, trees to refit), so successive
+/// frames of one animation are cheapest; any positions work.
+class CollisionDetector {
+public:
+    /// objects: each object's triangles, as ranges of global triangle ids (Scene::
+    /// objectPrimitives()); copied. Settings are checked: std::invalid_argument on bad values.
+    explicit CollisionDetector(std::span<const PrimitiveRange> objects,
+                               const CollisionSettings& settings = {});
+    ~CollisionDetector();
+    CollisionDetector(const CollisionDetector&) = delete;
+    CollisionDetector& operator=(const CollisionDetector&) = delete;
+
+    /// Every intersecting pair at positions, which must hold every triangle the objects name and
+    /// finite coordinates. Writes into result, reusing its memory: steady-state frames of the
+    /// vissort, brute and bullet methods allocate nothing large.
+    void collide(const TrianglePositions& positions, CollisionResult& result);
+    CollisionResult collide(const TrianglePositions& positions);
+
+    const CollisionSettings& settings() const { return settings_; }
+
+private:
+    CollisionSettings settings_;
+    std::unique_ptr<detail::Collider> collider_;
+};
+
+/// The triangles that take part in some pair, each once, ascending (for highlighting).
+std::vector<uint32_t> collidingTriangles(std::span<const TrianglePair> pairs);
+
+} // namespace vissort

@@ -1,0 +1,22 @@
+#pragma once
+// A small line chart as an RGBA image: the plots of the benchmarks (ms against N).
+
+#include <string>
+#include <vector>
+
+#include "cli/comparison_strip.h"
+
+namespace vissort::cli {
+
+struct PlotSeries {
+    std::string name;
+    std::vector<double> x, y;  // same length; points joined in order
+};
+
+/// A width x height chart of the series on linear axes from 0 to the largest x and y, with
+/// the title on top, axis labels, tick values and a legend.
+Strip plotLines(const std::vector<PlotSeries>& series, const std::string& title,
+                const std::string& x_label, const std::string& y_label, uint32_t width,
+                uint32_t height);
+
+} // namespace vissort::cli

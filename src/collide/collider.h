@@ -1,0 +1,46 @@
+#pragma once
+// The methods behind CollisionDetector (collision.h), one implementation each. Internal.
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <span>
+
+#include "vissort/collision.h"
+#include "vissort/geometry.h"
+
+namespace vissort::detail {
+
+class Collider {
+public:
+    virtual ~Collider() = default;
+    /// Every intersecting pair of triangles of different objects at positions, appended to
+    /// result.pairs (cleared by the caller; any order, no duplicates, first < second), and the
+    /// stage figures of result.stats (zeroed by the caller): object_pairs, triangle_pairs,
+    /// colliding_objects, and update_ms / cull_ms / exact_ms. The caller sorts and sets
+    /// intersecting and total_ms.
+    virtual void collide(const TrianglePositions& positions, CollisionResult& result) = 0;
+};
+
+std::unique_ptr<Collider> makeBruteForceCollider(std::span<const PrimitiveRange> objects);
+std::unique_ptr<Collider> makeVisibilityCollider(std::span<const PrimitiveRange> objects,
+                                                 const CollisionSettings& settings);
+/// Null when vissort was built without Bullet or FCL.
+std::unique_ptr<Collider> makeBulletCollider(std::span<const PrimitiveRange> objects);
+std::unique_ptr<Collider> makeFclCollider(std::span<const PrimitiveRange> objects);
+
+/// Milliseconds since construction or the last lap, for the stage timings.
+class StageClock {
+public:
+    double lap() {
+        const auto now = std::chrono::steady_clock::now();
+        const double ms = std::chrono::duration<double, std::milli>(now - last_).count();
+        last_ = now;
+        return ms;
+    }
+
+private:
+    std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+} // namespace vissort::detail

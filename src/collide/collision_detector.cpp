@@ -1,0 +1,103 @@
+// CollisionDetector (collision.h): checks the settings, runs the chosen method, sorts its pairs
+// and times the frame.
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "collide/collider.h"
+
+namespace vissort {
+
+bool parseCollisionMethod(const std::string& name, CollisionMethod& method) {
+    for (CollisionMethod m : collisionMethods())
+        if (name == collisionMethodName(m)) {
+            method = m;
+            return true;
+        }
+    return false;
+}
+
+const char* collisionMethodName(CollisionMethod method) {
+    switch (method) {
+    case CollisionMethod::vissort: return "vissort";
+    case CollisionMethod::brute: return "brute";
+    case CollisionMethod::bullet: return "bullet";
+    case CollisionMethod::fcl: return "fcl";
+    }
+    return "?";
+}
+
+std::vector<CollisionMethod> collisionMethods() {
+    return {CollisionMethod::vissort, CollisionMethod::brute, CollisionMethod::bullet,
+            CollisionMethod::fcl};
+}
+
+namespace {
+
+void checkSettings(const CollisionSettings& settings) {
+    const auto check_size = [](uint32_t size, const char* what) {
+        if (size < 1 || size > 4096)
+            throw std::invalid_argument(std::string(what) + " must be 1 to 4096 pixels, got " +
+                                        std::to_string(size));
+    };
+    check_size(settings.width, "collision view width");
+    check_size(settings.height, "collision view height");
+    for (const Vec3& d : settings.directions) {
+        const double length2 = d.x * d.x + d.y * d.y + d.z * d.z;
+        if (!(length2 > 0) || !std::isfinite(length2))
+            throw std::invalid_argument("collision direction must be finite and non-zero");
+    }
+}
+
+} // namespace
+
+CollisionDetector::CollisionDetector(std::span<const PrimitiveRange> objects,
+                                     const CollisionSettings& settings)
+    : settings_(settings) {
+    checkSettings(settings_);
+    switch (settings_.method) {
+    case CollisionMethod::vissort:
+        collider_ = detail::makeVisibilityCollider(objects, settings_);
+        break;
+    case CollisionMethod::brute: collider_ = detail::makeBruteForceCollider(objects); break;
+    case CollisionMethod::bullet: collider_ = detail::makeBulletCollider(objects); break;
+    case CollisionMethod::fcl: collider_ = detail::makeFclCollider(objects); break;
+    }
+    if (!collider_)
+        throw std::invalid_argument(std::string("collision method '") +
+                                    collisionMethodName(settings_.method) +
+                                    "' is not built into this vissort");
+}
+
+CollisionDetector::~CollisionDetector() = default;
+
+void CollisionDetector::collide(const TrianglePositions& positions, CollisionResult& result) {
+    detail::StageClock clock;
+    result.pairs.clear();
+    result.stats = {};
+    collider_->collide(positions, result);
+    std::sort(result.pairs.begin(), result.pairs.end());
+    result.stats.intersecting = result.pairs.size();
+    result.stats.total_ms = clock.lap();
+}
+
+CollisionResult CollisionDetector::collide(const TrianglePositions& positions) {
+    CollisionResult result;
+    collide(positions, result);
+    return result;
+}
+
+std::vector<uint32_t> collidingTriangles(std::span<const TrianglePair> pairs) {
+    std::vector<uint32_t> triangles;
+    triangles.reserve(2 * pairs.size());
+    for (const TrianglePair& p : pairs) {
+        triangles.push_back(p.first);
+        triangles.push_back(p.second);
+    }
+    std::sort(triangles.begin(), triangles.end());
+    triangles.erase(std::unique(triangles.begin(), triangles.end()), triangles.end());
+    return triangles;
+}
+
+} // namespace vissort

@@ -1,0 +1,59 @@
+#pragma once
+// A bounding-volume hierarchy of one object's triangle boxes whose shape is built once and whose
+// boxes are refitted bottom-up every frame (van den Bergen, "Efficient Collision Detection of
+// Complex Deformable Models using AABB Trees", 1997): deforming objects keep their topology, so
+// a refit costs one pass over the nodes. Used for the fattened primitives of the object stage
+// (cuts of the tree) and for the pairs of triangle boxes of two objects. Internal.
+
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "collide/triangle_boxes.h"
+#include "vissort/geometry.h"
+
+namespace vissort::detail {
+
+class RefitBvh {
+public:
+    /// A node over triangles()[first, first + size). A leaf when size <= kLeafSize; otherwise
+    /// its children are the next node and node `right`. Its subtree ends before node `after`.
+    struct Node {
+        Box3f box;
+        uint32_t first = 0, size = 0, right = 0, after = 0;
+        bool isLeaf() const { return size <= kLeafSize; }
+    };
+    static constexpr uint32_t kLeafSize = 4;
+
+    /// Builds the tree of object's triangles (at least one) from their boxes: median splits of
+    /// the boxes' centres along the longest axis. The boxes are then current.
+    void build(std::span<const Box3f> triangle_boxes, PrimitiveRange object);
+    /// Recomputes every node's box from the triangles' current boxes.
+    void refit(std::span<const Box3f> triangle_boxes);
+
+    const Box3f& bounds() const { return nodes_.front().box; }
+    std::span<const Node> nodes() const { return nodes_; }
+    /// Global triangle ids in leaf order.
+    std::span<const uint32_t> triangles() const { return triangles_; }
+
+    /// Appends the boxes of the shallowest nodes of at most max_size triangles that meet
+    /// region, once each (marks: per node, round: this call's mark).
+    void appendCut(const Box3f& region, uint32_t max_size, std::vector<uint32_t>& marks,
+                   uint32_t round, std::vector<Box3f>& out) const;
+
+private:
+    uint32_t buildRange(std::span<const Box3f> triangle_boxes, uint32_t first, uint32_t size);
+    std::vector<Node> nodes_;  // pre-order: a parent before its children
+    std::vector<uint32_t> triangles_;
+    std::vector<float> centres_;  // build scratch
+};
+
+/// Every pair (ta, tb) of a triangle of a and one of b whose boxes overlap, appended to pairs;
+/// stack is scratch.
+void overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b,
+                              std::span<const Box3f> triangle_boxes,
+                              std::vector<std::pair<uint32_t, uint32_t>>& pairs,
+                              std::vector<std::pair<uint32_t, uint32_t>>& stack);
+
+} // namespace vissort::detail

@@ -1,0 +1,60 @@
+// Boxes of triangles and objects (triangle_boxes.h), and the sweep and prune over object boxes
+// (Baraff, "Dynamic simulation of non-penetrating rigid bodies", 1992: sort the intervals on one
+// axis, test only those that overlap there).
+
+#include "collide/triangle_boxes.h"
+
+#include <numeric>
+
+namespace vissort::detail {
+
+void computeTriangleBoxes(const TrianglePositions& positions, std::vector<Box3f>& boxes) {
+    const std::size_t n = positions.triangleCount();
+    boxes.resize(n);
+    const float* axes[3] = {positions.x.data(), positions.y.data(), positions.z.data()};
+    for (int k = 0; k < 3; ++k) {
+        const float* c = axes[k];
+        for (std::size_t t = 0; t < n; ++t) {
+            const float a = c[3 * t], b = c[3 * t + 1], d = c[3 * t + 2];
+            boxes[t].min[k] = std::min(std::min(a, b), d);
+            boxes[t].max[k] = std::max(std::max(a, b), d);
+        }
+    }
+}
+
+Box3f boxOfRange(std::span<const Box3f> triangle_boxes, PrimitiveRange range) {
+    Box3f box = triangle_boxes[range.first_triangle];
+    for (uint32_t t = 1; t < range.triangle_count; ++t)
+        includeBox(box, triangle_boxes[range.first_triangle + t]);
+    return box;
+}
+
+void appendTrianglesMeetingBox(std::span<const Box3f> triangle_boxes, PrimitiveRange object,
+                               const Box3f& box, std::vector<uint32_t>& out) {
+    for (uint32_t t = object.first_triangle; t < object.first_triangle + object.triangle_count; ++t)
+        if (boxesOverlap(triangle_boxes[t], box)) out.push_back(t);
+}
+
+void overlappingBoxPairs(std::span<const Box3f> object_boxes,
+                         std::vector<std::pair<uint32_t, uint32_t>>& pairs) {
+    pairs.clear();
+    std::vector<uint32_t> by_min_x(object_boxes.size());
+    std::iota(by_min_x.begin(), by_min_x.end(), 0u);
+    std::sort(by_min_x.begin(), by_min_x.end(), [&](uint32_t a, uint32_t b) {
+        return object_boxes[a].min[0] < object_boxes[b].min[0] ||
+               (object_boxes[a].min[0] == object_boxes[b].min[0] && a < b);
+    });
+    for (std::size_t i = 0; i < by_min_x.size(); ++i) {
+        const Box3f& a = object_boxes[by_min_x[i]];
+        for (std::size_t j = i + 1; j < by_min_x.size(); ++j) {
+            const Box3f& b = object_boxes[by_min_x[j]];
+            if (b.min[0] > a.max[0]) break;  // sorted by min x: no later box reaches a
+            if (boxesOverlap(a, b))
+                pairs.emplace_back(std::min(by_min_x[i], by_min_x[j]),
+                                   std::max(by_min_x[i], by_min_x[j]));
+        }
+    }
+    std::sort(pairs.begin(), pairs.end());
+}
+
+} // namespace vissort::detail

@@ -1,0 +1,67 @@
+#pragma once
+// Axis-aligned boxes of triangles and objects in float: the coordinates' own minima and maxima,
+// so a box contains its triangle exactly and closed boxes that do not overlap prove that their
+// contents do not touch. The pretest every method shares. Internal.
+
+#include <algorithm>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "vissort/geometry.h"
+
+namespace vissort::detail {
+
+struct Box3f {
+    float min[3] = {0, 0, 0}, max[3] = {0, 0, 0};
+};
+
+/// Closed boxes: touching counts as overlapping.
+inline bool boxesOverlap(const Box3f& a, const Box3f& b) {
+    return a.min[0] <= b.max[0] && b.min[0] <= a.max[0] && a.min[1] <= b.max[1] &&
+           b.min[1] <= a.max[1] && a.min[2] <= b.max[2] && b.min[2] <= a.max[2];
+}
+
+/// The overlap of two overlapping boxes.
+inline Box3f intersectBoxes(const Box3f& a, const Box3f& b) {
+    Box3f out;
+    for (int k = 0; k < 3; ++k) {
+        out.min[k] = std::max(a.min[k], b.min[k]);
+        out.max[k] = std::min(a.max[k], b.max[k]);
+    }
+    return out;
+}
+
+/// The axis (0, 1, 2) along which box is longest.
+inline int longestAxis(const Box3f& box) {
+    int axis = 0;
+    for (int k = 1; k < 3; ++k)
+        if (box.max[k] - box.min[k] > box.max[axis] - box.min[axis]) axis = k;
+    return axis;
+}
+
+/// Grows a to contain b.
+inline void includeBox(Box3f& a, const Box3f& b) {
+    for (int k = 0; k < 3; ++k) {
+        a.min[k] = std::min(a.min[k], b.min[k]);
+        a.max[k] = std::max(a.max[k], b.max[k]);
+    }
+}
+
+/// boxes[t] = the box of triangle t, for every triangle of positions (boxes is resized).
+void computeTriangleBoxes(const TrianglePositions& positions, std::vector<Box3f>& boxes);
+
+/// The box of the triangles of range (triangle_count >= 1), from their boxes.
+Box3f boxOfRange(std::span<const Box3f> triangle_boxes, PrimitiveRange range);
+
+/// Appends to out the triangles of object whose boxes overlap box (the only ones that can touch
+/// what it holds), ascending.
+void appendTrianglesMeetingBox(std::span<const Box3f> triangle_boxes, PrimitiveRange object,
+                               const Box3f& box, std::vector<uint32_t>& out);
+
+/// Every pair (a, b), a < b, of objects whose boxes overlap, ascending, into pairs (cleared).
+/// Sweep and prune along x: O(n log n + pairs) per call.
+void overlappingBoxPairs(std::span<const Box3f> object_boxes,
+                         std::vector<std::pair<uint32_t, uint32_t>>& pairs);
+
+} // namespace vissort::detail
