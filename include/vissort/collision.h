@@ -47,6 +47,9 @@ struct CollisionSettings {
     std::vector<Vec3> directions;
     /// vissort: image size in pixels of each object-stage view (1 to 4096 each way).
     uint32_t width = 64, height = 64;
+    /// vissort: threads for the per-object and per-pair work, the calling thread included;
+    /// 0: one per core (std::thread::hardware_concurrency). The pairs never depend on it.
+    uint32_t threads = 1;
 };
 
 /// What one frame cost and how much each stage culled.

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <iomanip>
 #include <iostream>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 
@@ -19,6 +20,29 @@
 
 namespace vissort::cli {
 namespace {
+
+// The contenders: every method, vissort on every core and on one.
+struct Contender {
+    std::string name;
+    CollisionSettings settings;
+};
+
+std::vector<Contender> contenders() {
+    std::vector<Contender> list;
+    for (CollisionMethod m : collisionMethods()) {
+        CollisionSettings settings;
+        settings.method = m;
+        if (m == CollisionMethod::vissort) {
+            settings.threads = 0;
+            list.push_back({"vissort", settings});
+            settings.threads = 1;
+            list.push_back({"vissort-1t", settings});
+        } else {
+            list.push_back({collisionMethodName(m), settings});
+        }
+    }
+    return list;
+}
 
 struct Measured {
     std::vector<double> ms;  // per timed frame
@@ -35,19 +59,16 @@ uint64_t pairsMissing(const std::vector<TrianglePair>& from, const std::vector<T
 
 // Frame 0 builds what later frames refit, so it is not timed; methods take turns in a rotating
 // order so that none always runs on a cold cache.
-std::vector<Measured> measure(uint32_t bunnies, int frames) {
+std::vector<Measured> measure(const std::vector<Contender>& methods, uint32_t bunnies, int frames) {
     const Loaded<Scene> scene = loadScene("builtin:bunnies?n=" + std::to_string(bunnies));
     if (!scene) throw std::runtime_error(scene.error);
     const std::vector<PrimitiveRange> objects = scene.value->objectPrimitives();
-    const std::vector<CollisionMethod> methods = collisionMethods();
     std::vector<std::unique_ptr<CollisionDetector>> detectors;
-    for (CollisionMethod m : methods) {
-        CollisionSettings settings;
-        settings.method = m;
-        detectors.push_back(std::make_unique<CollisionDetector>(objects, settings));
+    std::size_t brute = 0;
+    for (const Contender& c : methods) {
+        if (c.settings.method == CollisionMethod::brute) brute = detectors.size();
+        detectors.push_back(std::make_unique<CollisionDetector>(objects, c.settings));
     }
-    const std::size_t brute = std::find(methods.begin(), methods.end(), CollisionMethod::brute) -
-                              methods.begin();
     std::vector<Measured> measured(methods.size());
     std::vector<CollisionResult> results(methods.size());
     TrianglePositions positions;
@@ -81,23 +102,26 @@ int runCollisionBench(const BenchOptions& options) {
                                     options.counts + "'");
     const int frames = options.frames.value_or(30);
     if (frames < 1) return fail(kExitUsage, "--frames must be at least 1");
-    const std::vector<CollisionMethod> methods = collisionMethods();
+    const std::vector<Contender> methods = contenders();
 
     std::cout << "bench collision: builtin:bunnies?n=N, " << frames
-              << " timed frames each after one untimed; " << machineName() << ", one thread\n";
-    std::cout << std::setw(5) << "N" << std::setw(9) << "method" << std::setw(11) << "median ms"
+              << " timed frames each after one untimed; " << machineName() << ", "
+              << std::thread::hardware_concurrency()
+              << " cores (vissort-1t and the peers: one thread)\n";
+    std::cout << std::setw(5) << "N" << std::setw(12) << "method" << std::setw(11) << "median ms"
               << std::setw(13) << "object pairs" << std::setw(15) << "triangle pairs"
               << std::setw(13) << "intersecting" << std::setw(8) << "missed" << std::setw(10)
               << "invented" << '\n';
     nlohmann::json rows = nlohmann::json::array();
     std::vector<PlotSeries> series(methods.size());
-    for (std::size_t i = 0; i < methods.size(); ++i) series[i].name = collisionMethodName(methods[i]);
+    for (std::size_t i = 0; i < methods.size(); ++i) series[i].name = methods[i].name;
     for (uint32_t n : counts) {
-        const std::vector<Measured> measured = measure(n, frames);
+        std::cerr << "bench collision: " << n << " bunnies..." << std::endl;
+        const std::vector<Measured> measured = measure(methods, n, frames);
         for (std::size_t i = 0; i < methods.size(); ++i) {
             const Measured& m = measured[i];
             const double ms = median(m.ms);
-            std::cout << std::setw(5) << n << std::setw(9) << collisionMethodName(methods[i])
+            std::cout << std::setw(5) << n << std::setw(12) << methods[i].name
                       << std::setw(11) << std::fixed << std::setprecision(2) << ms << std::setw(13)
                       << std::setprecision(1) << m.object_pairs << std::setw(15) << std::setprecision(0)
                       << m.triangle_pairs << std::setw(13) << m.intersecting << std::setw(8)
@@ -105,7 +129,7 @@ int runCollisionBench(const BenchOptions& options) {
             std::cout.unsetf(std::ios::fixed);
             rows.push_back({{"bunnies", n},
                             {"triangles", 3674 * n},
-                            {"method", collisionMethodName(methods[i])},
+                            {"method", methods[i].name},
                             {"median_ms", ms},
                             {"object_pairs", m.object_pairs},
                             {"triangle_pairs", m.triangle_pairs},
@@ -119,6 +143,7 @@ int runCollisionBench(const BenchOptions& options) {
     if (!options.json_path.empty()) {
         const nlohmann::json document = {{"benchmark", "collision"},
                                          {"machine", machineName()},
+                                         {"cores", std::thread::hardware_concurrency()},
                                          {"frames", frames},
                                          {"rows", rows}};
         if (const int code = writeJsonFile(options.json_path, document); code != kExitOk) return code;

@@ -73,6 +73,10 @@ CLI::App* addCollideCommand(CLI::App& app, CollideOptions& options) {
     command->add_option("--size", options.size,
                         "vissort: pixels of each object-stage view, WxH")
         ->capture_default_str();
+    command->add_option("--threads", options.threads,
+                        "vissort: threads, 0 = one per core (the pairs never depend on it)")
+        ->check(CLI::Range(0, 256))
+        ->capture_default_str();
     command->add_option("--json", options.json_path, "Write per-frame statistics as JSON");
     command->add_option("--pairs-out", options.pairs_path,
                         "Write 'FRAME A B' per intersecting pair (triangle ids, A < B, sorted)");
@@ -88,6 +92,7 @@ int runCollide(const CollideOptions& options) {
                                     options.method + "'");
     if (auto error = parseSize(options.size, settings.width, settings.height); !error.empty())
         return fail(kExitUsage, error);
+    settings.threads = uint32_t(options.threads);
     if (settings.width > 4096 || settings.height > 4096)
         return fail(kExitUsage, "--size must be at most 4096x4096 for collide, got " + options.size);
     std::optional<Scene> scene = loadSceneOrReport(options.scene);

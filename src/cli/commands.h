@@ -50,6 +50,7 @@ struct CollideOptions {
     int frames = 1;
     std::string method = "vissort";
     std::string size = "64x64";
+    int threads = 0;
     std::string json_path;
     std::string pairs_path;
     std::string dump_path;

@@ -1,6 +1,7 @@
 #pragma once
-// Exact signs of the orientation determinants on float coordinates. Internal.
-// (Placeholder interface; the implementation file is being written.)
+// Exact signs of the orientation determinants on float coordinates: a floating-point filter in
+// double, and an exact expansion sum when the filter cannot decide (exact_predicates.cpp).
+// Internal.
 
 namespace vissort::detail {
 

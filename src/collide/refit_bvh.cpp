@@ -82,6 +82,7 @@ void RefitBvh::appendCut(const Box3f& region, uint32_t max_size, std::vector<uin
 
 void overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b,
                               std::span<const Box3f> triangle_boxes,
+                              std::span<const DiagonalExtents> diagonals,
                               std::vector<std::pair<uint32_t, uint32_t>>& pairs,
                               std::vector<std::pair<uint32_t, uint32_t>>& stack) {
     const auto na = a.nodes(), nb = b.nodes();
@@ -97,7 +98,8 @@ void overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b,
         if (x.isLeaf() && y.isLeaf()) {
             for (uint32_t p = x.first; p < x.first + x.size; ++p)
                 for (uint32_t q = y.first; q < y.first + y.size; ++q)
-                    if (boxesOverlap(triangle_boxes[ta[p]], triangle_boxes[tb[q]]))
+                    if (boxesOverlap(triangle_boxes[ta[p]], triangle_boxes[tb[q]]) &&
+                        diagonalsOverlap(diagonals[ta[p]], diagonals[tb[q]]))
                         pairs.emplace_back(ta[p], tb[q]);
             continue;
         }

@@ -49,10 +49,11 @@ private:
     std::vector<float> centres_;  // build scratch
 };
 
-/// Every pair (ta, tb) of a triangle of a and one of b whose boxes overlap, appended to pairs;
-/// stack is scratch.
+/// Every pair (ta, tb) of a triangle of a and one of b whose boxes and diagonal extents overlap,
+/// appended to pairs; stack is scratch.
 void overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b,
                               std::span<const Box3f> triangle_boxes,
+                              std::span<const DiagonalExtents> diagonals,
                               std::vector<std::pair<uint32_t, uint32_t>>& pairs,
                               std::vector<std::pair<uint32_t, uint32_t>>& stack);
 

@@ -48,8 +48,32 @@ inline void includeBox(Box3f& a, const Box3f& b) {
     }
 }
 
+/// A triangle's extents along the four cube diagonals (1, 1, 1), (1, 1, -1), (1, -1, 1) and
+/// (-1, 1, 1), unnormalized (x + y + z, ...), widened outwards past any float rounding: with the
+/// box, the triangle's 14-sided discrete-orientation polytope (k-DOP, Klosowski et al., IEEE
+/// TVCG 1998). Two triangles whose extents miss each other along any of the seven directions
+/// cannot touch.
+struct DiagonalExtents {
+    float min[4], max[4];
+};
+
+inline bool diagonalsOverlap(const DiagonalExtents& a, const DiagonalExtents& b) {
+    bool overlap = true;
+    for (int k = 0; k < 4; ++k) overlap &= a.min[k] <= b.max[k] && b.min[k] <= a.max[k];
+    return overlap;
+}
+
+/// extents[t] for the triangles of object (extents must have an entry for each).
+void computeDiagonalExtents(const TrianglePositions& positions, PrimitiveRange object,
+                            std::span<DiagonalExtents> extents);
+
 /// boxes[t] = the box of triangle t, for every triangle of positions (boxes is resized).
 void computeTriangleBoxes(const TrianglePositions& positions, std::vector<Box3f>& boxes);
+
+/// boxes[t] = the box of triangle t for the triangles of object (at least one; boxes must have
+/// an entry for each); returns the object's box.
+Box3f computeObjectBoxes(const TrianglePositions& positions, PrimitiveRange object,
+                         std::span<Box3f> boxes);
 
 /// The box of the triangles of range (triangle_count >= 1), from their boxes.
 Box3f boxOfRange(std::span<const Box3f> triangle_boxes, PrimitiveRange range);

@@ -1,12 +1,22 @@
 // The vissort collision method: object boxes, then visibility ordering of the objects along
-// view directions (object_culling.h), then the pairs of triangle boxes of each surviving object
-// pair from refitted trees (refit_bvh.h), then the exact test. Every stage is conservative, so
-// the pairs are exactly brute force's: docs/collision.md.
+// view directions (object_culling.h), then the pairs of triangles of each surviving object pair
+// whose boxes meet (refitted trees, refit_bvh.h) and whose extents meet along the four
+// diagonals too (the object stage's other directions), then the exact test. Every stage is
+// conservative, so the pairs are exactly brute force's: docs/collision.md.
+//
+// Threads (CollisionSettings::threads) share the per-object work (boxes, refits, extents) and
+// the per-pair work (tree descent, exact tests); the object stage is sequential and cheap. Each
+// thread collects its own pairs: the detector sorts them, so the result does not depend on the
+// thread count.
+
+#include <atomic>
+#include <thread>
 
 #include "collide/collider.h"
 #include "collide/object_culling.h"
 #include "collide/refit_bvh.h"
 #include "collide/triangle_intersection.h"
+#include "raster/fast_worker_pool.h"
 
 namespace vissort::detail {
 namespace {
@@ -15,59 +25,125 @@ class VisibilityCollider final : public Collider {
 public:
     VisibilityCollider(std::span<const PrimitiveRange> objects, const CollisionSettings& settings)
         : objects_(objects.begin(), objects.end()), object_culling_(objects, settings),
-          trees_(objects.size()) {}
+          trees_(objects.size()),
+          threads_(settings.threads != 0 ? settings.threads
+                                         : std::max(1u, std::thread::hardware_concurrency())),
+          workers_(threads_) {
+        if (threads_ > 1) pool_ = std::make_unique<FastWorkerPool>(threads_);
+    }
 
     void collide(const TrianglePositions& positions, CollisionResult& result) override {
         CollisionStats& stats = result.stats;
         StageClock clock;
-        computeTriangleBoxes(positions, triangle_boxes_);
+        triangle_boxes_.resize(positions.triangleCount());
         object_boxes_.resize(objects_.size());
-        for (std::size_t o = 0; o < objects_.size(); ++o)
-            object_boxes_[o] = boxOfRange(triangle_boxes_, objects_[o]);
+        parallelFor(objects_.size(), [&](std::size_t o, Worker&) {
+            object_boxes_[o] = computeObjectBoxes(positions, objects_[o], triangle_boxes_);
+        });
         // Only the objects whose boxes meet another's take part: their trees are brought up to
         // date (built on first use; the shape stays, the boxes follow the deformation).
         overlappingBoxPairs(object_boxes_, candidates_.objects);
         candidates_.alive.assign(candidates_.objects.size(), 1);
-        refitted_.assign(objects_.size(), 0);
+        in_pair_.assign(objects_.size(), 0);
+        active_.clear();
         for (const auto& [a, b] : candidates_.objects)
             for (uint32_t o : {a, b})
-                if (!refitted_[o]) {
-                    refitted_[o] = 1;
-                    if (trees_[o].nodes().empty()) trees_[o].build(triangle_boxes_, objects_[o]);
-                    else trees_[o].refit(triangle_boxes_);
+                if (!in_pair_[o]) {
+                    in_pair_[o] = 1;
+                    active_.push_back(o);
                 }
+        diagonals_.resize(triangle_boxes_.size());
+        parallelFor(active_.size(), [&](std::size_t i, Worker&) {
+            const uint32_t o = active_[i];
+            if (trees_[o].nodes().empty()) trees_[o].build(triangle_boxes_, objects_[o]);
+            else trees_[o].refit(triangle_boxes_);
+            computeDiagonalExtents(positions, objects_[o], diagonals_);
+        });
         stats.update_ms = clock.lap();
 
         object_culling_.cull(trees_, object_boxes_, candidates_, stats);
+        live_.clear();
         in_pair_.assign(objects_.size(), 0);
-        double exact_ms = 0;
         for (std::size_t i = 0; i < candidates_.objects.size(); ++i) {
             if (!candidates_.alive[i]) continue;
-            const auto [a, b] = candidates_.objects[i];
-            in_pair_[a] = in_pair_[b] = 1;
-            ++stats.object_pairs;
-            triangle_pairs_.clear();
-            overlappingTrianglePairs(trees_[a], trees_[b], triangle_boxes_, triangle_pairs_, stack_);
-            stats.triangle_pairs += triangle_pairs_.size();
-            StageClock exact_clock;
-            for (const auto& [ta, tb] : triangle_pairs_)
-                if (trianglesIntersect(cornersOf(positions, ta), cornersOf(positions, tb)))
-                    result.pairs.push_back({std::min(ta, tb), std::max(ta, tb)});
-            exact_ms += exact_clock.lap();
+            live_.push_back(uint32_t(i));
+            in_pair_[candidates_.objects[i].first] = in_pair_[candidates_.objects[i].second] = 1;
         }
+        stats.object_pairs = live_.size();
         for (uint8_t in : in_pair_) stats.colliding_objects += in;
+        for (Worker& w : workers_) w.clear();
+        parallelFor(live_.size(), [&](std::size_t i, Worker& w) {
+            const auto [a, b] = candidates_.objects[live_[i]];
+            w.candidates.clear();
+            overlappingTrianglePairs(trees_[a], trees_[b], triangle_boxes_, diagonals_,
+                                     w.candidates, w.stack);
+            w.triangle_pairs += w.candidates.size();
+            StageClock exact_clock;
+            for (const auto& [ta, tb] : w.candidates)
+                if (trianglesIntersect(cornersOf(positions, ta), cornersOf(positions, tb)))
+                    w.pairs.push_back({std::min(ta, tb), std::max(ta, tb)});
+            w.exact_ms += exact_clock.lap();
+        });
+        double exact_ms = 0;
+        for (const Worker& w : workers_) {
+            result.pairs.insert(result.pairs.end(), w.pairs.begin(), w.pairs.end());
+            stats.triangle_pairs += w.triangle_pairs;
+            exact_ms = std::max(exact_ms, w.exact_ms);  // the threads' exact tests overlap
+        }
         stats.exact_ms = exact_ms;
         stats.cull_ms = clock.lap() - exact_ms;
     }
 
 private:
+    // One thread's scratch and results in the parallel parts.
+    struct Worker {
+        std::vector<std::pair<uint32_t, uint32_t>> candidates, stack;
+        std::vector<TrianglePair> pairs;
+        uint64_t triangle_pairs = 0;
+        double exact_ms = 0;
+        void clear() {
+            pairs.clear();
+            triangle_pairs = 0;
+            exact_ms = 0;
+        }
+    };
+
+    /// body(i, worker) for i = 0..count-1, items claimed one at a time by the threads (pairs
+    /// differ widely in cost).
+    template <class Body>
+    void parallelFor(std::size_t count, Body&& body) {
+        if (!pool_ || count < 2) {
+            for (std::size_t i = 0; i < count; ++i) body(i, workers_[0]);
+            return;
+        }
+        struct Context {
+            Body* body;
+            std::vector<Worker>* workers;
+            std::size_t count;
+            std::atomic<std::size_t> next{0};
+        } context{&body, &workers_, count};
+        pool_->run(
+            uint32_t(std::min<std::size_t>(threads_, count)),
+            [](void* c, uint32_t thread) {
+                Context& context = *static_cast<Context*>(c);
+                for (std::size_t i; (i = context.next.fetch_add(1, std::memory_order_relaxed)) <
+                                    context.count;)
+                    (*context.body)(i, (*context.workers)[thread]);
+            },
+            &context);
+    }
+
     std::vector<PrimitiveRange> objects_;
     ObjectCulling object_culling_;
     std::vector<RefitBvh> trees_;
+    uint32_t threads_;
+    std::vector<Worker> workers_;
+    std::unique_ptr<FastWorkerPool> pool_;
     CandidatePairs candidates_;
     std::vector<Box3f> triangle_boxes_, object_boxes_;
-    std::vector<uint8_t> refitted_, in_pair_;
-    std::vector<std::pair<uint32_t, uint32_t>> triangle_pairs_, stack_;
+    std::vector<DiagonalExtents> diagonals_;  // valid for the objects in box pairs this frame
+    std::vector<uint8_t> in_pair_;
+    std::vector<uint32_t> active_, live_;
 };
 
 } // namespace

@@ -1,0 +1,131 @@
+// End-to-end tests of `vissort collide` and `vissort bench collision`: the vissort method's
+// pairs against brute force's over many frames, the documented outputs, and one-line errors.
+
+#include <algorithm>
+#include <sstream>
+
+#include <stb/stb_image.h>
+
+#include "cli_fixture.h"
+
+namespace vissort {
+namespace {
+
+const std::string kInterpenetrating = dataPath("scenes/interpenetrating.json");
+
+// The lines of a --pairs-out file, each checked to read "FRAME A B" with A < B.
+std::vector<std::string> pairLines(const std::string& text) {
+    const std::vector<std::string> all = lines(text);
+    for (const std::string& line : all) {
+        std::istringstream in(line);
+        long frame = -1, a = -1, b = -1;
+        std::string rest;
+        EXPECT_TRUE(in >> frame >> a >> b) << line;
+        EXPECT_FALSE(in >> rest) << line;
+        EXPECT_GE(frame, 0) << line;
+        EXPECT_LT(a, b) << line;
+    }
+    return all;
+}
+
+TEST_F(Cli, CollideMatchesBruteForceOver300FramesOfBunnies) {
+    for (const char* method : {"vissort", "brute"}) {
+        const Result r = run({"collide", "builtin:bunnies?n=18", "--frames", "300", "--method",
+                              method, "--pairs-out", path(std::string(method) + ".txt")});
+        ASSERT_EQ(r.code, 0) << r;
+        EXPECT_NE(r.out.find("300 frames"), std::string::npos) << r;
+    }
+    const std::string vissort = readFile(path("vissort.txt")), brute = readFile(path("brute.txt"));
+    const std::vector<std::string> pairs = pairLines(brute);
+    EXPECT_GT(pairs.size(), 300u * 500) << "the bunnies collide every frame";
+    EXPECT_TRUE(std::is_sorted(pairs.begin(), pairs.end(), [](const std::string& p, const std::string& q) {
+        long fp, ap, bp, fq, aq, bq;
+        std::istringstream(p) >> fp >> ap >> bp;
+        std::istringstream(q) >> fq >> aq >> bq;
+        return std::tie(fp, ap, bp) < std::tie(fq, aq, bq);
+    }));
+    EXPECT_TRUE(vissort == brute) << "vissort and brute force disagree on some pair";
+}
+
+TEST_F(Cli, EveryExactMethodAgreesOnRealMeshes) {
+    std::string expected;
+    for (const char* method : {"brute", "vissort", "bullet"}) {
+        const Result r = run({"collide", kInterpenetrating, "--method", method, "--pairs-out",
+                              path("pairs.txt")});
+        ASSERT_EQ(r.code, 0) << r;
+        const std::string pairs = readFile(path("pairs.txt"));
+        if (expected.empty()) expected = pairs;
+        EXPECT_EQ(pairs, expected) << method;
+    }
+    EXPECT_GT(pairLines(expected).size(), 20u);
+    const Result fcl = run({"collide", kInterpenetrating, "--method", "fcl"});
+    EXPECT_EQ(fcl.code, 0) << fcl;
+}
+
+TEST_F(Cli, CollideJsonHasEveryDocumentedKey) {
+    const Result r = run({"collide", "builtin:bunnies?n=6", "--frames", "3", "--json",
+                          path("c.json"), "--size", "32x16", "--threads", "2"});
+    ASSERT_EQ(r.code, 0) << r;
+    const json doc = json::parse(readFile(path("c.json")));
+    EXPECT_EQ(doc.value("method", json()), "vissort");
+    EXPECT_EQ(doc.value("size", json()), json({32, 16}));
+    ASSERT_EQ(doc["frames"].size(), 3u);
+    for (int f = 0; f < 3; ++f) {
+        const json& frame = doc["frames"][f];
+        EXPECT_EQ(frame.value("frame", -1), f);
+        for (const char* key : {"object_pairs", "triangle_pairs", "intersecting"})
+            EXPECT_TRUE(frame.contains(key) && frame[key].is_number_unsigned()) << key;
+        EXPECT_GE(frame["triangle_pairs"].get<uint64_t>(), frame["intersecting"].get<uint64_t>());
+        for (const char* key : {"update", "cull", "exact", "total"})
+            EXPECT_GE(frame["ms"].value(key, -1.0), 0.0) << key;
+    }
+}
+
+TEST_F(Cli, CollideDumpsOneGroupPerObjectInTriangleOrder) {
+    const Result r = run({"collide", "builtin:bunnies?n=3", "--dump-primitives", path("d.obj")});
+    ASSERT_EQ(r.code, 0) << r;
+    int groups = 0, faces = 0;
+    for (const std::string& line : lines(readFile(path("d.obj")))) {
+        if (line.rfind("o prim_", 0) == 0) {
+            EXPECT_EQ(line, "o prim_" + std::to_string(groups++));
+        }
+        faces += line.rfind("f ", 0) == 0;
+    }
+    EXPECT_EQ(groups, 3);
+    EXPECT_EQ(faces, 3 * 3674);
+}
+
+TEST_F(Cli, CollideErrorsAreOneLine) {
+    expectError({"collide", "builtin:bunnies", "--method", "gjk"}, kUsage, {"--method", "gjk"});
+    expectError({"collide", "builtin:bunnies", "--size", "0x5"}, kUsage, {"--size"});
+    expectError({"collide", "builtin:bunnies", "--size", "5000x64"}, kUsage, {"--size"});
+    expectError({"collide", "no_such_file.obj"}, kInput, {"no_such_file.obj"});
+    expectError({"collide", dataPath("cli/nan_coordinate.obj")}, kInput, {"nan_coordinate.obj"});
+    expectError({"collide", "builtin:bunnies", "--pairs-out", "/no/such/dir/p.txt"}, kFailure,
+                {"/no/such/dir/p.txt"});
+}
+
+TEST_F(Cli, BenchCollisionMeasuresEveryMethod) {
+    const Result r = run({"bench", "collision", "--counts", "2,3", "--frames", "2", "--json",
+                          path("b.json"), "--plot", path("b.png")});
+    ASSERT_EQ(r.code, 0) << r;
+    const json doc = json::parse(readFile(path("b.json")));
+    ASSERT_EQ(doc["rows"].size(), 2u * 5);
+    for (const json& row : doc["rows"]) {
+        const std::string method = row.value("method", "");
+        EXPECT_GT(row.value("median_ms", 0.0), 0.0) << method;
+        if (method != "fcl") {
+            EXPECT_EQ(row.value("missed", -1), 0) << method;
+            EXPECT_EQ(row.value("invented", -1), 0) << method;
+        }
+    }
+    int width = 0, height = 0, channels = 0;
+    unsigned char* png = stbi_load(path("b.png").c_str(), &width, &height, &channels, 4);
+    ASSERT_NE(png, nullptr);
+    EXPECT_GT(width, 100);
+    stbi_image_free(png);
+    expectError({"bench", "collision", "--counts", "0"}, kUsage, {"--counts"});
+}
+
+} // namespace
+} // namespace vissort
