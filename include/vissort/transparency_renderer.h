@@ -23,6 +23,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -124,6 +125,11 @@ public:
     /// the previous order (coherence), as SceneOrderer does.
     Image render(const TrianglePositions& positions, const ViewProjection& view,
                  RenderStats& stats);
+
+    /// Draws these triangles (scene triangle ids, e.g. collidingTriangles() of a collision
+    /// result) in a strong magenta, nearly opaque, in every method, from the next render on;
+    /// empty: none. Ids beyond the scene are ignored.
+    void setHighlightedTriangles(std::span<const uint32_t> triangles);
 
 private:
     struct Impl;

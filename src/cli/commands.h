@@ -73,6 +73,7 @@ struct RenderOptions {
     std::string shading = "lit";
     std::string check = "auto";
     double list_memory_mib = 3072;
+    bool highlight_collisions = false;
 };
 CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options);
 int runRender(const RenderOptions& options);

@@ -13,6 +13,7 @@
 #include "cli/commands.h"
 #include "cli/comparison_strip.h"
 #include "cli/json_output.h"
+#include "vissort/collision.h"
 #include "vissort/transparency_renderer.h"
 
 namespace vissort::cli {
@@ -158,6 +159,9 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
                      "MiB for per-pixel fragment lists (linked-list, vissort's cycles); more "
                      "fragments are drawn in bands")
         ->capture_default_str();
+    command->add_flag("--highlight-collisions", options.highlight_collisions,
+                      "Draw every triangle that intersects another object's in magenta "
+                      "(vissort's collision detector, each frame)");
     command->add_option("--error-map", options.error_map,
                         "With --reference: write where the two differ as a PNG (a pattern with "
                         "--frames)");
@@ -170,6 +174,8 @@ int runRender(const RenderOptions& options) {
     if (!all_methods && !parseBlendMethod(options.method, settings.method))
         return fail(kExitUsage, "--method must be one of " + blendMethodNames() + " or all, got '" +
                                     options.method + "'");
+    if (all_methods && options.highlight_collisions)
+        return fail(kExitUsage, "--highlight-collisions renders one method: not with --method all");
     if (all_methods && (options.view.frames > 1 || !options.reference.empty()))
         return fail(kExitUsage, "--method all renders one frame against linked-list: no --frames "
                                 "or --reference");
@@ -226,11 +232,26 @@ int runRender(const RenderOptions& options) {
         reference =
             std::make_unique<TransparencyRenderer>(*context.value, *scene, reference_settings);
     }
+    std::unique_ptr<CollisionDetector> collisions;
+    CollisionResult collided;
+    if (options.highlight_collisions) {
+        CollisionSettings collision_settings;
+        collision_settings.threads = 0;
+        collisions = std::make_unique<CollisionDetector>(scene->objectPrimitives(), collision_settings);
+    }
     const Bounds first_bounds = scene->positions.bounds();
     TrianglePositions positions;
     nlohmann::json frames = nlohmann::json::array();
     for (int f = 0; f < view.frames; ++f) {
         scene->frame(f * kFrameInterval, positions);
+        std::size_t highlighted = 0;
+        if (collisions) {
+            collisions->collide(positions, collided);
+            const std::vector<uint32_t> triangles = collidingTriangles(collided.pairs);
+            highlighted = triangles.size();
+            renderer.setHighlightedTriangles(triangles);
+            if (reference) reference->setHighlightedTriangles(triangles);
+        }
         const CameraSpec camera = cameraOnPath(view.camera, view.path, f, first_bounds);
         const ViewProjection vp = frameCamera(camera, positions.bounds(), view.width, view.height);
         RenderStats stats;
@@ -248,6 +269,10 @@ int runRender(const RenderOptions& options) {
             std::cout << ", " << stats.groups << " groups composited per pixel";
         if (stats.repaired_pixels > 0)
             std::cout << ", " << stats.repaired_pixels << " pixels repaired";
+        if (collisions) {
+            std::cout << ", " << highlighted << " colliding triangles highlighted";
+            record["colliding_triangles"] = highlighted;
+        }
         std::cout << '\n';
         if (reference) {
             RenderStats reference_stats;

@@ -35,7 +35,9 @@ constexpr double kEpsilon = 0x1p-53;
 constexpr double kOrient2dBound = (3.0 + 16.0 * kEpsilon) * kEpsilon;
 constexpr double kOrient3dBound = (7.0 + 56.0 * kEpsilon) * kEpsilon;
 
-int signOf(double value) { return (value > 0) - (value < 0); }
+int signOf(double value) {
+    return (value > 0) - (value < 0);
+}
 
 // sum + error == a + b exactly, for any a, b of round to nearest that do not overflow (Knuth).
 inline void twoSum(double a, double b, double& sum, double& error) {
@@ -47,20 +49,22 @@ inline void twoSum(double a, double b, double& sum, double& error) {
 
 // A nonoverlapping expansion: components[0 .. size) are nonzero, ordered by increasing
 // magnitude, and sum exactly to the represented value, so its sign is the sign of the last one.
-template <int kCapacity>
-class Expansion {
+template <int kCapacity> class Expansion {
 public:
     // Shewchuk's GROW-EXPANSION with zero elimination: the length grows by at most one per
     // addition, so kCapacity additions always fit.
     void add(double value) {
-        if (value == 0) return;
+        if (value == 0)
+            return;
         int kept = 0;
         for (int i = 0; i < size_; ++i) {
             double error;
             twoSum(value, components_[i], value, error);
-            if (error != 0) components_[kept++] = error;
+            if (error != 0)
+                components_[kept++] = error;
         }
-        if (value != 0) components_[kept++] = value;
+        if (value != 0)
+            components_[kept++] = value;
         size_ = kept;
     }
     int sign() const { return size_ == 0 ? 0 : signOf(components_[size_ - 1]); }
@@ -72,32 +76,36 @@ private:
 
 // A signed monomial of a determinant whose first column is all ones: which row gives each of
 // the other columns, and the sign of the permutation.
-template <int kColumns>
-struct Monomial {
-    std::array<int, kColumns> row{};  // row[0] gives the one
+template <int kColumns> struct Monomial {
+    std::array<int, kColumns> row{}; // row[0] gives the one
     int sign = 1;
 };
 
 // Every permutation of the rows (the Leibniz expansion), with its sign by counting inversions.
-template <int kSize, int kCount>
-constexpr std::array<Monomial<kSize>, kCount> leibnizTerms() {
+template <int kSize, int kCount> constexpr std::array<Monomial<kSize>, kCount> leibnizTerms() {
     std::array<Monomial<kSize>, kCount> terms{};
     std::array<int, kSize> perm{};
-    for (int i = 0; i < kSize; ++i) perm[i] = i;
+    for (int i = 0; i < kSize; ++i)
+        perm[i] = i;
     for (int t = 0; t < kCount; ++t) {
         terms[t].row = perm;
         int inversions = 0;
         for (int i = 0; i < kSize; ++i)
-            for (int j = i + 1; j < kSize; ++j) inversions += perm[i] > perm[j];
+            for (int j = i + 1; j < kSize; ++j)
+                inversions += perm[i] > perm[j];
         terms[t].sign = inversions % 2 == 0 ? 1 : -1;
         // Next permutation in lexicographic order.
         int i = kSize - 2;
-        while (i >= 0 && perm[i] >= perm[i + 1]) --i;
-        if (i < 0) break;
+        while (i >= 0 && perm[i] >= perm[i + 1])
+            --i;
+        if (i < 0)
+            break;
         int j = kSize - 1;
-        while (perm[j] <= perm[i]) --j;
+        while (perm[j] <= perm[i])
+            --j;
         std::swap(perm[i], perm[j]);
-        for (int l = i + 1, r = kSize - 1; l < r; ++l, --r) std::swap(perm[l], perm[r]);
+        for (int l = i + 1, r = kSize - 1; l < r; ++l, --r)
+            std::swap(perm[l], perm[r]);
     }
     return terms;
 }
@@ -151,11 +159,14 @@ int orient3d(const float a[3], const float b[3], const float c[3], const float d
                              (std::fabs(vx_wy) + std::fabs(vy_wx)) * std::fabs(uz) +
                              (std::fabs(wx_uy) + std::fabs(wy_ux)) * std::fabs(vz);
     const double bound = kOrient3dBound * permanent;
-    if (det > bound) return 1;
-    if (-det > bound) return -1;
+    if (det > bound)
+        return 1;
+    if (-det > bound)
+        return -1;
     // Without underflow a zero permanent means every product of the expansion is exactly zero
     // (a rounded difference is zero only when the exact one is): common for axis-aligned faces.
-    if (permanent == 0) return 0;
+    if (permanent == 0)
+        return 0;
     return orient3dExact(a, b, c, d);
 }
 
@@ -167,8 +178,10 @@ int orient2d(const float a[2], const float b[2], const float c[2]) {
     if ((left > 0 && right <= 0) || (left < 0 && right >= 0) || left == 0)
         return signOf(det);
     const double bound = kOrient2dBound * std::fabs(left + right);
-    if (det > bound) return 1;
-    if (-det > bound) return -1;
+    if (det > bound)
+        return 1;
+    if (-det > bound)
+        return -1;
     return orient2dExact(a, b, c);
 }
 

@@ -23,6 +23,10 @@ SceneGeometry::SceneGeometry(const Scene& scene, std::span<const float> object_c
     objects_ = createBuffer();
     colours_ = createBuffer();
     elements_ = createBuffer();
+    highlighted_ = createBuffer();
+    highlight_flags_.assign(scene.triangleCount(), 0);
+    glNamedBufferStorage(highlighted_.get(), GLsizeiptr(highlight_flags_.size() * sizeof(uint32_t) + 4),
+                         nullptr, GL_DYNAMIC_STORAGE_BIT);
     // Zero-size storage is an error in OpenGL: every buffer gets a few spare bytes.
     const std::vector<uint32_t>& corner_objects = mesh_.cornerObjects();
     glNamedBufferStorage(objects_.get(), GLsizeiptr(corner_objects.size() * sizeof(uint32_t) + 4),
@@ -73,6 +77,15 @@ void SceneGeometry::setTriangles(std::span<const uint32_t> opaque,
     transparent_count_ = transparent.size();
 }
 
+void SceneGeometry::setHighlighted(std::span<const uint32_t> triangles) {
+    std::fill(highlight_flags_.begin(), highlight_flags_.end(), 0u);
+    for (uint32_t t : triangles)
+        if (t < highlight_flags_.size()) highlight_flags_[t] = 1;
+    glNamedBufferSubData(highlighted_.get(), 0, GLsizeiptr(highlight_flags_.size() * sizeof(uint32_t)),
+                         highlight_flags_.data());
+    highlighting_ = !triangles.empty();
+}
+
 void SceneGeometry::setView(GLuint program, const ViewProjection& view) const {
     // The product in double, rounded once: the oracles' transform (cpu_oracle.h, rule 1).
     const glm::dmat4 matrix =
@@ -87,11 +100,13 @@ void SceneGeometry::setView(GLuint program, const ViewProjection& view) const {
     glProgramUniform1i(program, glGetUniformLocation(program, "orthographic"),
                        view.projection == Projection::orthographic ? 1 : 0);
     glProgramUniform1i(program, glGetUniformLocation(program, "unlit"), flat_ ? 1 : 0);
+    glProgramUniform1i(program, glGetUniformLocation(program, "highlighting"), highlighting_ ? 1 : 0);
 }
 
 void SceneGeometry::bind() const {
     glBindVertexArray(vertex_array_.get());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, colours_.get());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, highlighted_.get());
 }
 
 void SceneGeometry::drawOpaque() const {

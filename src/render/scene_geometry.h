@@ -30,7 +30,11 @@ public:
     void setView(GLuint program, const ViewProjection& view) const;
     /// Flat shading (each object's colour, unlit) instead of the lit default.
     void setFlat(bool flat) { flat_ = flat; }
-    /// Binds the vertex stream and the colours (SSBO binding 0) for the draws below.
+    /// Draws these triangles (scene triangle ids) in the highlight colour (shading.h); empty:
+    /// none.
+    void setHighlighted(std::span<const uint32_t> triangles);
+    /// Binds the vertex stream, the colours (SSBO binding 0) and the highlight flags (binding 5)
+    /// for the draws below.
     void bind() const;
     /// Draws every opaque triangle with the bound program and state.
     void drawOpaque() const;
@@ -41,12 +45,14 @@ public:
 private:
     RenderMesh mesh_;
     GlVertexArray vertex_array_;
-    GlBuffer vertices_, objects_, colours_, elements_;
+    GlBuffer vertices_, objects_, colours_, elements_, highlighted_;
     TrianglePositions uploaded_; // what the vertex buffer holds
     std::vector<float> vertex_data_;
     std::vector<uint32_t> element_data_;
     std::size_t opaque_count_ = 0, transparent_count_ = 0;
+    std::vector<uint32_t> highlight_flags_;  // one per triangle
     bool flat_ = false;
+    bool highlighting_ = false;
 };
 
 } // namespace vissort::detail

@@ -11,27 +11,34 @@ namespace vissort::detail {
 // Inputs: SceneGeometry's vertex stream (position, unit normal, object) and per-object colours
 // (SSBO binding 0). Output: `shaded`, straight (not premultiplied) colour and alpha. With `unlit`,
 // each object's colour and alpha as they are, unlit: what a ray-cast reference can reproduce.
+// With `highlighting`, triangles flagged in SSBO binding 5 (one uint per triangle; corners are
+// unindexed, so a corner's index / 3 is its triangle) take kHighlightColour instead: colliding
+// triangles, in every method alike.
 inline constexpr const char* kShadeVertexShader = R"(#version 450 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in uint object;
 layout(std430, binding = 0) readonly buffer Colours { vec4 colours[]; };
+layout(std430, binding = 5) readonly buffer Highlighted { uint highlighted[]; };
 uniform mat4 view_projection;
 uniform vec3 eye;             // perspective: the eye
 uniform vec3 view_direction;  // orthographic: the direction of view
 uniform bool orthographic;
 uniform bool unlit;
+uniform bool highlighting;
 out vec4 shaded;
 invariant gl_Position;  // the same depths in every program: vissort's repair tests equality
 void main() {
     gl_Position = view_projection * vec4(position, 1.0);
+    vec4 base = colours[object];
+    if (highlighting && highlighted[gl_VertexID / 3] != 0u)
+        base = vec4(1.0, 0.1, 0.55, max(base.a, 0.85));  // a strong magenta, nearly opaque
     if (unlit) {
-        shaded = colours[object];
+        shaded = base;
         return;
     }
     vec3 to_eye = orthographic ? -view_direction : normalize(eye - position);
     float facing = length(normal) > 0.0 ? abs(dot(normal, to_eye)) : 1.0;
-    vec4 base = colours[object];
     vec3 rgb = base.rgb * (0.3 + 0.7 * facing);
     float alpha = base.a;
     if (alpha < 1.0) alpha = alpha + (1.0 - alpha) * 0.5 * pow(1.0 - facing, 3.0);

@@ -312,6 +312,11 @@ TransparencyRenderer::TransparencyRenderer(std::shared_ptr<GlContext> context, c
     d.shade_program = detail::linkProgram(detail::kShadeVertexShader, detail::kShadeFragmentShader);
 }
 
+void TransparencyRenderer::setHighlightedTriangles(std::span<const uint32_t> triangles) {
+    impl_->context->makeCurrent();
+    impl_->geometry->setHighlighted(triangles);
+}
+
 TransparencyRenderer::~TransparencyRenderer() {
     if (impl_)
         impl_->context->makeCurrent(); // GL objects are deleted in their context

@@ -127,5 +127,34 @@ TEST_F(Cli, BenchCollisionMeasuresEveryMethod) {
     expectError({"bench", "collision", "--counts", "0"}, kUsage, {"--counts"});
 }
 
+// Pixels of the highlight colour (shading.h: magenta, nearly opaque), lit or not.
+int magentaPixels(const std::string& png_path) {
+    int width = 0, height = 0, channels = 0;
+    unsigned char* png = stbi_load(png_path.c_str(), &width, &height, &channels, 4);
+    if (png == nullptr) return -1;
+    int count = 0;
+    for (int i = 0; i < width * height; ++i) {
+        const unsigned char* p = png + 4 * i;
+        count += p[0] > 150 && p[1] < 60 && p[2] > 50 && p[2] < 170 && p[0] > 2 * p[2];
+    }
+    stbi_image_free(png);
+    return count;
+}
+
+TEST_F(Cli, RenderHighlightsCollidingTriangles) {
+    const Result plain = run({"render", kInterpenetrating, "--size", "200x150", "-o", path("a.png")});
+    ASSERT_EQ(plain.code, 0) << plain;
+    const Result marked = run({"render", kInterpenetrating, "--size", "200x150", "-o", path("b.png"),
+                               "--highlight-collisions", "--json", path("b.json")});
+    ASSERT_EQ(marked.code, 0) << marked;
+    EXPECT_NE(marked.out.find("colliding triangles highlighted"), std::string::npos) << marked;
+    EXPECT_EQ(magentaPixels(path("a.png")), 0);
+    EXPECT_GT(magentaPixels(path("b.png")), 500);
+    EXPECT_GT(json::parse(readFile(path("b.json"))).value("colliding_triangles", 0), 20);
+    expectError({"render", kInterpenetrating, "--method", "all", "--highlight-collisions", "-o",
+                 path("c.png")},
+                kUsage, {"--highlight-collisions"});
+}
+
 } // namespace
 } // namespace vissort
