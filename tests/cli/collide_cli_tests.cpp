@@ -135,7 +135,7 @@ int magentaPixels(const std::string& png_path) {
     int count = 0;
     for (int i = 0; i < width * height; ++i) {
         const unsigned char* p = png + 4 * i;
-        count += p[0] > 150 && p[1] < 60 && p[2] > 50 && p[2] < 170 && p[0] > 2 * p[2];
+        count += p[0] > 120 && p[1] < 0.15 * p[0] && p[2] > 0.4 * p[0] && p[2] < 0.7 * p[0];
     }
     stbi_image_free(png);
     return count;

@@ -94,7 +94,8 @@ TEST(CollisionDetector, VisibilityCullsObjectPairsThatBoxesKeep) {
     ASSERT_TRUE(scene) << scene.error;
     const auto objects = scene.value->objectPrimitives();
     const TrianglePositions positions = scene.value->frame(1.0);
-    const CollisionResult brute = CollisionDetector(objects, method(CollisionMethod::brute)).collide(positions);
+    const CollisionResult brute =
+        CollisionDetector(objects, method(CollisionMethod::brute)).collide(positions);
     const CollisionResult vissort = CollisionDetector(objects).collide(positions);
     expectSamePairs(brute, vissort, "bunnies n=36");
     EXPECT_LT(vissort.stats.object_pairs, brute.stats.object_pairs);
@@ -125,16 +126,20 @@ TEST(CollisionDetector, BoxesFaceToFaceAtSmallGaps) {
             boxes.addBox({0, 0, 0}, {1, 1, 1}, angle);
             boxes.addBox({1 + gap, 0.25, 0.5}, {2 + gap, 1.25, 1.5}, angle);
             const CollisionResult brute = run(boxes, method(CollisionMethod::brute));
-            const std::string what = "angle " + std::to_string(angle) + " gap " + std::to_string(gap);
+            const std::string what =
+                "angle " + std::to_string(angle) + " gap " + std::to_string(gap);
             if (angle == 0.0) {
                 // Exact coordinates: the answer is known.
-                if (gap <= 0) EXPECT_GT(brute.pairs.size(), 0u) << what;
-                else EXPECT_EQ(brute.pairs.size(), 0u) << what;
+                if (gap <= 0)
+                    EXPECT_GT(brute.pairs.size(), 0u) << what;
+                else
+                    EXPECT_EQ(brute.pairs.size(), 0u) << what;
             }
             for (uint32_t size : {1u, 16u, 64u, 1024u}) {
                 CollisionSettings settings;
                 settings.width = settings.height = size;
-                expectSamePairs(brute, run(boxes, settings), what + " size " + std::to_string(size));
+                expectSamePairs(brute, run(boxes, settings),
+                                what + " size " + std::to_string(size));
             }
         }
     }
@@ -152,12 +157,21 @@ Objects randomSoup(uint32_t seed, int objects, int triangles_per_object) {
         for (int t = 0; t < triangles_per_object; ++t) {
             Vec3 c[3];
             for (Vec3& p : c)
-                p = {centre.x + (unit() - 0.5), centre.y + (unit() - 0.5), centre.z + (unit() - 0.5)};
+                p = {centre.x + (unit() - 0.5), centre.y + (unit() - 0.5),
+                     centre.z + (unit() - 0.5)};
             switch (t % 7) {
-            case 5: c[2] = c[1]; break;                                       // a segment
-            case 6: c[1] = c[2] = c[0]; break;                                // a point
-            case 4: c[2] = {c[0].x, c[1].y, c[0].z}; c[1].x = c[0].x; break;  // edge-on along x
-            default: break;
+            case 5:
+                c[2] = c[1];
+                break; // a segment
+            case 6:
+                c[1] = c[2] = c[0];
+                break; // a point
+            case 4:
+                c[2] = {c[0].x, c[1].y, c[0].z};
+                c[1].x = c[0].x;
+                break; // edge-on along x
+            default:
+                break;
             }
             soup.addTriangle(c[0], c[1], c[2]);
         }
@@ -175,7 +189,8 @@ TEST(CollisionDetector, RandomSoupsAtAnyResolutionAndDirection) {
             CollisionSettings settings;
             settings.width = size;
             settings.height = size / 3 + 1;
-            if (seed % 2) settings.directions = {{0.3, -0.5, 0.8}, {-1, 0.2, 0.1}};
+            if (seed % 2)
+                settings.directions = {{0.3, -0.5, 0.8}, {-1, 0.2, 0.1}};
             expectSamePairs(brute, run(soup, settings),
                             "seed " + std::to_string(seed) + " size " + std::to_string(size));
         }
@@ -190,17 +205,17 @@ TEST(CollisionDetector, TouchingAtAPointOrAnEdgeCounts) {
     touching.beginObject();
     touching.addTriangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
     touching.beginObject();
-    touching.addTriangle({0.25, 0.25, 0}, {0.25, 0.25, 1}, {1, 1, 1});  // a vertex on the face
+    touching.addTriangle({0.25, 0.25, 0}, {0.25, 0.25, 1}, {1, 1, 1}); // a vertex on the face
     touching.beginObject();
-    touching.addTriangle({1, 0, 0}, {2, 0, 0}, {1.5, 0, -1});  // shares the corner (1, 0, 0)
+    touching.addTriangle({1, 0, 0}, {2, 0, 0}, {1.5, 0, -1}); // shares the corner (1, 0, 0)
     const CollisionResult brute = run(touching, method(CollisionMethod::brute));
     const CollisionResult vissort = run(touching, {});
     ASSERT_EQ(brute.pairs.size(), 2u);
     expectSamePairs(brute, vissort, "touching");
 
     Objects apart = touching;
-    apart.positions.z[3] = std::nextafter(0.0f, 1.0f);  // the vertex just above the face
-    apart.positions.x[6] = std::nextafter(1.0f, 2.0f);  // the corner just beside
+    apart.positions.z[3] = std::nextafter(0.0f, 1.0f); // the vertex just above the face
+    apart.positions.x[6] = std::nextafter(1.0f, 2.0f); // the corner just beside
     apart.positions.x[7] = std::nextafter(2.0f, 3.0f);
     apart.positions.x[8] = std::nextafter(1.5f, 3.0f);
     EXPECT_EQ(run(apart, method(CollisionMethod::brute)).pairs.size(), 0u);
@@ -256,9 +271,12 @@ TEST(IntervalOracle, TouchingTrianglesOccludeEachOther) {
         Objects pair;
         pair.beginObject();
         Vec3 a[3], b[3];
-        for (Vec3& p : a) p = {unit(), unit(), unit()};
-        for (Vec3& p : b) p = {unit(), unit(), unit()};
-        if (round % 2) b[0] = a[0];  // share a corner exactly
+        for (Vec3& p : a)
+            p = {unit(), unit(), unit()};
+        for (Vec3& p : b)
+            p = {unit(), unit(), unit()};
+        if (round % 2)
+            b[0] = a[0]; // share a corner exactly
         pair.addTriangle(a[0], a[1], a[2]);
         pair.beginObject();
         pair.addTriangle(b[0], b[1], b[2]);
