@@ -35,7 +35,7 @@ constexpr double kEpsilon = 0x1p-53;
 constexpr double kOrient2dBound = (3.0 + 16.0 * kEpsilon) * kEpsilon;
 constexpr double kOrient3dBound = (7.0 + 56.0 * kEpsilon) * kEpsilon;
 
-int signOf(double value) {
+inline int signOf(double value) {
     return (value > 0) - (value < 0);
 }
 
@@ -141,47 +141,99 @@ int orient2dExact(const float a[2], const float b[2], const float c[2]) {
     return sum.sign();
 }
 
+// The filter on rounded differences: det[u, v, w] = u . (v x w), computed as the expansion
+// along u, each minor of v and w rounded. This is Shewchuk's stage-A expression up to the order
+// of rows and columns (a 3x3 determinant of the same nine rounded differences expanded along one
+// line), so the same bound holds with the matching permanent. v x w and its permanent parts are
+// shared by every u tested against the same pair.
+struct Minors {
+    double cross[3];     // v x w, each component rounded
+    double magnitude[3]; // the sum of the two products' magnitudes behind each component
+};
+
+inline Minors minorsOf(const double v[3], const double w[3]) {
+    Minors m;
+    for (int k = 0; k < 3; ++k) {
+        const int i = (k + 1) % 3, j = (k + 2) % 3;
+        const double left = v[i] * w[j], right = v[j] * w[i];
+        m.cross[k] = left - right;
+        m.magnitude[k] = std::fabs(left) + std::fabs(right);
+    }
+    return m;
+}
+
+// The sign of u . (v x w), or kUndecided when the filter cannot tell.
+constexpr int kUndecided = 2;
+
+inline int filteredSign(const double u[3], const Minors& m) {
+    const double det = u[0] * m.cross[0] + u[1] * m.cross[1] + u[2] * m.cross[2];
+    const double permanent = std::fabs(u[0]) * m.magnitude[0] + std::fabs(u[1]) * m.magnitude[1] +
+                             std::fabs(u[2]) * m.magnitude[2];
+    if (std::fabs(det) > kOrient3dBound * permanent)
+        return signOf(det);
+    // Without underflow a zero permanent means every product of the expansion is exactly zero
+    // (a rounded difference is zero only when the exact one is): common for axis-aligned faces.
+    return permanent == 0 ? 0 : kUndecided;
+}
+
+inline void difference(const float p[3], const float origin[3], double out[3]) {
+    for (int k = 0; k < 3; ++k)
+        out[k] = double(p[k]) - double(origin[k]);
+}
+
 } // namespace
 
 int orient3d(const float a[3], const float b[3], const float c[3], const float d[3]) {
-    // u, v, w: the rows, each difference rounded once (the filter's bound accounts for it).
-    const double ux = double(b[0]) - double(a[0]), uy = double(b[1]) - double(a[1]),
-                 uz = double(b[2]) - double(a[2]);
-    const double vx = double(c[0]) - double(a[0]), vy = double(c[1]) - double(a[1]),
-                 vz = double(c[2]) - double(a[2]);
-    const double wx = double(d[0]) - double(a[0]), wy = double(d[1]) - double(a[1]),
-                 wz = double(d[2]) - double(a[2]);
-    const double ux_vy = ux * vy, uy_vx = uy * vx;
-    const double vx_wy = vx * wy, vy_wx = vy * wx;
-    const double wx_uy = wx * uy, wy_ux = wy * ux;
-    const double det = wz * (ux_vy - uy_vx) + uz * (vx_wy - vy_wx) + vz * (wx_uy - wy_ux);
-    const double permanent = (std::fabs(ux_vy) + std::fabs(uy_vx)) * std::fabs(wz) +
-                             (std::fabs(vx_wy) + std::fabs(vy_wx)) * std::fabs(uz) +
-                             (std::fabs(wx_uy) + std::fabs(wy_ux)) * std::fabs(vz);
-    const double bound = kOrient3dBound * permanent;
-    if (det > bound)
-        return 1;
-    if (-det > bound)
-        return -1;
-    // Without underflow a zero permanent means every product of the expansion is exactly zero
-    // (a rounded difference is zero only when the exact one is): common for axis-aligned faces.
-    if (permanent == 0)
-        return 0;
-    return orient3dExact(a, b, c, d);
+    // det[b - a, c - a, d - a] = (d - a) . ((b - a) x (c - a)).
+    double u[3], v[3], w[3];
+    difference(b, a, u);
+    difference(c, a, v);
+    difference(d, a, w);
+    const int sign = filteredSign(w, minorsOf(u, v));
+    return sign != kUndecided ? sign : orient3dExact(a, b, c, d);
+}
+
+void orient3dPlaneSides(const float a[3], const float b[3], const float c[3], const float* d0,
+                        const float* d1, const float* d2, int sides[3]) {
+    double u[3], v[3];
+    difference(b, a, u);
+    difference(c, a, v);
+    const Minors plane = minorsOf(u, v);
+    const float* const d[3] = {d0, d1, d2};
+    for (int i = 0; i < 3; ++i) {
+        double w[3];
+        difference(d[i], a, w);
+        const int sign = filteredSign(w, plane);
+        sides[i] = sign != kUndecided ? sign : orient3dExact(a, b, c, d[i]);
+    }
+}
+
+void orient3dEdgeSides(const float p[3], const float q[3], const float* t0, const float* t1,
+                       const float* t2, int sides[3]) {
+    // det[q - p, t_i - p, t_j - p] = (q - p) . ((t_i - p) x (t_j - p)).
+    const float* const t[3] = {t0, t1, t2};
+    double u[3], corner[3][3];
+    difference(q, p, u);
+    for (int i = 0; i < 3; ++i)
+        difference(t[i], p, corner[i]);
+    for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3;
+        const int sign = filteredSign(u, minorsOf(corner[i], corner[j]));
+        sides[i] = sign != kUndecided ? sign : orient3dExact(p, q, t[i], t[j]);
+    }
 }
 
 int orient2d(const float a[2], const float b[2], const float c[2]) {
     const double left = (double(b[0]) - double(a[0])) * (double(c[1]) - double(a[1]));
     const double right = (double(b[1]) - double(a[1])) * (double(c[0]) - double(a[0]));
     const double det = left - right;
-    // Products of opposite signs (or a zero one) cannot cancel: the sign is the computed one.
-    if ((left > 0 && right <= 0) || (left < 0 && right >= 0) || left == 0)
+    // Shewchuk's bound with |left| + |right| as the permanent; when the products have opposite
+    // signs (no cancellation) it holds a fortiori. Zero when both products are exactly zero.
+    const double permanent = std::fabs(left) + std::fabs(right);
+    if (std::fabs(det) > kOrient2dBound * permanent)
         return signOf(det);
-    const double bound = kOrient2dBound * std::fabs(left + right);
-    if (det > bound)
-        return 1;
-    if (-det > bound)
-        return -1;
+    if (permanent == 0)
+        return 0;
     return orient2dExact(a, b, c);
 }
 

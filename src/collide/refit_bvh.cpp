@@ -8,51 +8,73 @@
 
 namespace vissort::detail {
 
-void RefitBvh::build(std::span<const Box3f> triangle_boxes, PrimitiveRange object) {
-    triangles_.resize(object.triangle_count);
-    std::iota(triangles_.begin(), triangles_.end(), object.first_triangle);
-    nodes_.clear();
-    nodes_.reserve(2 * std::size_t(object.triangle_count) / kLeafSize + 1);
-    buildRange(triangle_boxes, 0, object.triangle_count);
-    refit(triangle_boxes);
+Box3f triangleBox(const TrianglePositions& positions, uint32_t t) {
+    const std::size_t c = 3 * std::size_t(t);
+    Box3f b;
+    const float* axes[3] = {positions.x.data(), positions.y.data(), positions.z.data()};
+    for (int k = 0; k < 3; ++k) {
+        const float p = axes[k][c], q = axes[k][c + 1], r = axes[k][c + 2];
+        b.min[k] = std::min(std::min(p, q), r);
+        b.max[k] = std::max(std::max(p, q), r);
+    }
+    return b;
 }
 
-uint32_t RefitBvh::buildRange(std::span<const Box3f> triangle_boxes, uint32_t first, uint32_t size) {
+void RefitBvh::build(const TrianglePositions& positions, PrimitiveRange object) {
+    triangles_.resize(object.triangle_count);
+    std::iota(triangles_.begin(), triangles_.end(), object.first_triangle);
+    boxes_.resize(object.triangle_count);
+    for (uint32_t i = 0; i < object.triangle_count; ++i) boxes_[i] = triangleBox(positions, triangles_[i]);
+    nodes_.clear();
+    nodes_.reserve(2 * std::size_t(object.triangle_count) / kLeafSize + 1);
+    buildRange(0, object.triangle_count);
+    refit(positions);
+}
+
+// Splits at the median box centre along the longest axis of the centres' extent, keeping
+// triangles_ and boxes_ in step.
+uint32_t RefitBvh::buildRange(uint32_t first, uint32_t size) {
     const uint32_t index = uint32_t(nodes_.size());
     nodes_.push_back({{}, first, size, 0, index + 1});
     if (size <= kLeafSize) return index;
-    // Split at the median centre along the longest axis of the centres' extent.
-    Box3f extent;
-    bool started = false;
-    for (uint32_t i = first; i < first + size; ++i) {
-        const Box3f& b = triangle_boxes[triangles_[i]];
-        Box3f centre;
-        for (int k = 0; k < 3; ++k) centre.min[k] = centre.max[k] = 0.5f * (b.min[k] + b.max[k]);
-        if (started) includeBox(extent, centre);
-        else extent = centre;
-        started = true;
+    float low[3] = {INFINITY, INFINITY, INFINITY}, high[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (uint32_t i = first; i < first + size; ++i)
+        for (int k = 0; k < 3; ++k) {
+            const float centre = 0.5f * (boxes_[i].min[k] + boxes_[i].max[k]);
+            low[k] = std::min(low[k], centre);
+            high[k] = std::max(high[k], centre);
+        }
+    int axis = 0;
+    for (int k = 1; k < 3; ++k)
+        if (high[k] - low[k] > high[axis] - low[axis]) axis = k;
+    std::vector<uint32_t> order(size);
+    std::iota(order.begin(), order.end(), first);
+    std::nth_element(order.begin(), order.begin() + size / 2, order.end(), [&](uint32_t p, uint32_t q) {
+        return boxes_[p].min[axis] + boxes_[p].max[axis] < boxes_[q].min[axis] + boxes_[q].max[axis];
+    });
+    std::vector<uint32_t> triangles(size);
+    std::vector<Box3f> boxes(size);
+    for (uint32_t i = 0; i < size; ++i) {
+        triangles[i] = triangles_[order[i]];
+        boxes[i] = boxes_[order[i]];
     }
-    const int axis = longestAxis(extent);
-    const auto middle = triangles_.begin() + first + size / 2;
-    std::nth_element(triangles_.begin() + first, middle, triangles_.begin() + first + size,
-                     [&](uint32_t p, uint32_t q) {
-                         return triangle_boxes[p].min[axis] + triangle_boxes[p].max[axis] <
-                                triangle_boxes[q].min[axis] + triangle_boxes[q].max[axis];
-                     });
-    buildRange(triangle_boxes, first, size / 2);
-    const uint32_t right = buildRange(triangle_boxes, first + size / 2, size - size / 2);
+    std::copy(triangles.begin(), triangles.end(), triangles_.begin() + first);
+    std::copy(boxes.begin(), boxes.end(), boxes_.begin() + first);
+    buildRange(first, size / 2);
+    const uint32_t right = buildRange(first + size / 2, size - size / 2);
     nodes_[index].right = right;
     nodes_[index].after = uint32_t(nodes_.size());
     return index;
 }
 
-void RefitBvh::refit(std::span<const Box3f> triangle_boxes) {
+void RefitBvh::refit(const TrianglePositions& positions) {
+    for (std::size_t i = 0; i < triangles_.size(); ++i) boxes_[i] = triangleBox(positions, triangles_[i]);
     // Children come after their parent: back to front, every child is refitted first.
     for (std::size_t i = nodes_.size(); i-- > 0;) {
         Node& n = nodes_[i];
         if (n.isLeaf()) {
-            n.box = triangle_boxes[triangles_[n.first]];
-            for (uint32_t k = 1; k < n.size; ++k) includeBox(n.box, triangle_boxes[triangles_[n.first + k]]);
+            n.box = boxes_[n.first];
+            for (uint32_t k = 1; k < n.size; ++k) includeBox(n.box, boxes_[n.first + k]);
         } else {
             n.box = nodes_[i + 1].box;
             includeBox(n.box, nodes_[n.right].box);
@@ -81,35 +103,40 @@ void RefitBvh::appendCut(const Box3f& region, uint32_t max_size, std::vector<uin
 }
 
 void overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b,
-                              std::span<const Box3f> triangle_boxes,
-                              std::span<const DiagonalExtents> diagonals,
+                              const TrianglePositions& positions,
                               std::vector<std::pair<uint32_t, uint32_t>>& pairs,
                               std::vector<std::pair<uint32_t, uint32_t>>& stack) {
     const auto na = a.nodes(), nb = b.nodes();
     const auto ta = a.triangles(), tb = b.triangles();
+    const auto ba = a.triangleBoxes(), bb = b.triangleBoxes();
     stack.clear();
+    if (!boxesOverlap(na[0].box, nb[0].box)) return;
     stack.emplace_back(0, 0);
+    // Every pair on the stack has overlapping boxes: children are tested before they are pushed.
     while (!stack.empty()) {
         const auto [i, j] = stack.back();
         stack.pop_back();
         const RefitBvh::Node& x = na[i];
         const RefitBvh::Node& y = nb[j];
-        if (!boxesOverlap(x.box, y.box)) continue;
         if (x.isLeaf() && y.isLeaf()) {
-            for (uint32_t p = x.first; p < x.first + x.size; ++p)
+            for (uint32_t p = x.first; p < x.first + x.size; ++p) {
+                if (!boxesOverlap(ba[p], y.box)) continue;
                 for (uint32_t q = y.first; q < y.first + y.size; ++q)
-                    if (boxesOverlap(triangle_boxes[ta[p]], triangle_boxes[tb[q]]) &&
-                        diagonalsOverlap(diagonals[ta[p]], diagonals[tb[q]]))
+                    // The diagonals only for boxes that meet: few pairs, so computed here.
+                    if (boxesOverlap(ba[p], bb[q]) &&
+                        diagonalsOverlap(diagonalExtents(positions, ta[p]),
+                                         diagonalExtents(positions, tb[q])))
                         pairs.emplace_back(ta[p], tb[q]);
+            }
             continue;
         }
         // Open the larger node (by triangles), or the one that is not a leaf.
         if (y.isLeaf() || (!x.isLeaf() && x.size >= y.size)) {
-            stack.emplace_back(i + 1, j);
-            stack.emplace_back(x.right, j);
+            for (uint32_t child : {i + 1, x.right})
+                if (boxesOverlap(na[child].box, y.box)) stack.emplace_back(child, j);
         } else {
-            stack.emplace_back(i, j + 1);
-            stack.emplace_back(i, y.right);
+            for (uint32_t child : {j + 1, y.right})
+                if (boxesOverlap(x.box, nb[child].box)) stack.emplace_back(i, child);
         }
     }
 }

@@ -1,9 +1,9 @@
 #pragma once
-// A bounding-volume hierarchy of one object's triangle boxes whose shape is built once and whose
+// A bounding-volume hierarchy of one object's triangles whose shape is built once and whose
 // boxes are refitted bottom-up every frame (van den Bergen, "Efficient Collision Detection of
 // Complex Deformable Models using AABB Trees", 1997): deforming objects keep their topology, so
-// a refit costs one pass over the nodes. Used for the fattened primitives of the object stage
-// (cuts of the tree) and for the pairs of triangle boxes of two objects. Internal.
+// a refit costs one pass over the triangles and one over the nodes. Used for the fattened parts
+// of the object stage (cuts of the tree) and to pair the triangles of two objects. Internal.
 
 #include <cstdint>
 #include <span>
@@ -17,8 +17,9 @@ namespace vissort::detail {
 
 class RefitBvh {
 public:
-    /// A node over triangles()[first, first + size). A leaf when size <= kLeafSize; otherwise
-    /// its children are the next node and node `right`. Its subtree ends before node `after`.
+    /// A node over the leaf-order triangles [first, first + size). A leaf when size <=
+    /// kLeafSize; otherwise its children are the next node and node `right`. Its subtree ends
+    /// before node `after`.
     struct Node {
         Box3f box;
         uint32_t first = 0, size = 0, right = 0, after = 0;
@@ -26,16 +27,18 @@ public:
     };
     static constexpr uint32_t kLeafSize = 4;
 
-    /// Builds the tree of object's triangles (at least one) from their boxes: median splits of
-    /// the boxes' centres along the longest axis. The boxes are then current.
-    void build(std::span<const Box3f> triangle_boxes, PrimitiveRange object);
-    /// Recomputes every node's box from the triangles' current boxes.
-    void refit(std::span<const Box3f> triangle_boxes);
+    /// Builds the tree of object's triangles (at least one) at positions: median splits of the
+    /// triangles' box centres along the longest axis. The boxes are then current.
+    void build(const TrianglePositions& positions, PrimitiveRange object);
+    /// Recomputes every triangle's and node's box from positions (the same triangle count).
+    void refit(const TrianglePositions& positions);
+    bool isBuilt() const { return !nodes_.empty(); }
 
     const Box3f& bounds() const { return nodes_.front().box; }
     std::span<const Node> nodes() const { return nodes_; }
-    /// Global triangle ids in leaf order.
+    /// Global triangle ids in leaf order, and their boxes in the same order.
     std::span<const uint32_t> triangles() const { return triangles_; }
+    std::span<const Box3f> triangleBoxes() const { return boxes_; }
 
     /// Appends the boxes of the shallowest nodes of at most max_size triangles that meet
     /// region, once each (marks: per node, round: this call's mark).
@@ -43,17 +46,19 @@ public:
                    uint32_t round, std::vector<Box3f>& out) const;
 
 private:
-    uint32_t buildRange(std::span<const Box3f> triangle_boxes, uint32_t first, uint32_t size);
+    uint32_t buildRange(uint32_t first, uint32_t size);
     std::vector<Node> nodes_;  // pre-order: a parent before its children
     std::vector<uint32_t> triangles_;
-    std::vector<float> centres_;  // build scratch
+    std::vector<Box3f> boxes_;  // boxes_[i]: the box of triangles_[i]
 };
 
-/// Every pair (ta, tb) of a triangle of a and one of b whose boxes and diagonal extents overlap,
-/// appended to pairs; stack is scratch.
+/// The box of triangle t of positions.
+Box3f triangleBox(const TrianglePositions& positions, uint32_t t);
+
+/// Every pair (ta, tb) of a triangle of a and one of b whose boxes overlap and whose diagonal
+/// extents overlap too (triangle_boxes.h), appended to pairs; stack is scratch.
 void overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b,
-                              std::span<const Box3f> triangle_boxes,
-                              std::span<const DiagonalExtents> diagonals,
+                              const TrianglePositions& positions,
                               std::vector<std::pair<uint32_t, uint32_t>>& pairs,
                               std::vector<std::pair<uint32_t, uint32_t>>& stack);
 

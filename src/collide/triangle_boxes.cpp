@@ -23,54 +23,48 @@ void computeTriangleBoxes(const TrianglePositions& positions, std::vector<Box3f>
     }
 }
 
-Box3f computeObjectBoxes(const TrianglePositions& positions, PrimitiveRange object,
-                         std::span<Box3f> boxes) {
-    Box3f all = {{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
+Box3f objectBox(const TrianglePositions& positions, PrimitiveRange object) {
+    Box3f box;
     const float* axes[3] = {positions.x.data(), positions.y.data(), positions.z.data()};
-    const std::size_t first = object.first_triangle, last = first + object.triangle_count;
+    const std::size_t first = 3 * std::size_t(object.first_triangle);
+    const std::size_t last = first + 3 * std::size_t(object.triangle_count);
     for (int k = 0; k < 3; ++k) {
-        const float* c = axes[k];
         float low = INFINITY, high = -INFINITY;
-        for (std::size_t t = first; t < last; ++t) {
-            const float a = c[3 * t], b = c[3 * t + 1], d = c[3 * t + 2];
-            boxes[t].min[k] = std::min(std::min(a, b), d);
-            boxes[t].max[k] = std::max(std::max(a, b), d);
-            low = std::min(low, boxes[t].min[k]);
-            high = std::max(high, boxes[t].max[k]);
+        for (std::size_t c = first; c < last; ++c) {
+            low = std::min(low, axes[k][c]);
+            high = std::max(high, axes[k][c]);
         }
-        all.min[k] = low;
-        all.max[k] = high;
+        box.min[k] = low;
+        box.max[k] = high;
     }
-    return all;
+    return box;
 }
 
-void computeDiagonalExtents(const TrianglePositions& positions, PrimitiveRange object,
-                            std::span<DiagonalExtents> extents) {
+DiagonalExtents diagonalExtents(const TrianglePositions& positions, uint32_t t) {
     // In float: each sum of three rounds twice, by at most 2^-24 of the sum of magnitudes m
     // each time, so widening by 2^-20 m (itself rounded) leaves a wide margin.
     constexpr float kWiden = 0x1p-20f;
-    for (uint32_t t = object.first_triangle; t < object.first_triangle + object.triangle_count; ++t) {
-        DiagonalExtents& e = extents[t];
-        float magnitude = 0;
-        for (int k = 0; k < 4; ++k) {
-            e.min[k] = INFINITY;
-            e.max[k] = -INFINITY;
-        }
-        for (std::size_t c = 3 * std::size_t(t); c < 3 * std::size_t(t) + 3; ++c) {
-            const float x = positions.x[c], y = positions.y[c], z = positions.z[c];
-            const float sums[4] = {x + y + z, x + y - z, x - y + z, -x + y + z};
-            for (int k = 0; k < 4; ++k) {
-                e.min[k] = std::min(e.min[k], sums[k]);
-                e.max[k] = std::max(e.max[k], sums[k]);
-            }
-            magnitude = std::max(magnitude, std::abs(x) + std::abs(y) + std::abs(z));
-        }
-        const float widen = magnitude * kWiden;
-        for (int k = 0; k < 4; ++k) {
-            e.min[k] -= widen;
-            e.max[k] += widen;
-        }
+    DiagonalExtents e;
+    float magnitude = 0;
+    for (int k = 0; k < 4; ++k) {
+        e.min[k] = INFINITY;
+        e.max[k] = -INFINITY;
     }
+    for (std::size_t c = 3 * std::size_t(t); c < 3 * std::size_t(t) + 3; ++c) {
+        const float x = positions.x[c], y = positions.y[c], z = positions.z[c];
+        const float sums[4] = {x + y + z, x + y - z, x - y + z, -x + y + z};
+        for (int k = 0; k < 4; ++k) {
+            e.min[k] = std::min(e.min[k], sums[k]);
+            e.max[k] = std::max(e.max[k], sums[k]);
+        }
+        magnitude = std::max(magnitude, std::abs(x) + std::abs(y) + std::abs(z));
+    }
+    const float widen = magnitude * kWiden;
+    for (int k = 0; k < 4; ++k) {
+        e.min[k] -= widen;
+        e.max[k] += widen;
+    }
+    return e;
 }
 
 Box3f boxOfRange(std::span<const Box3f> triangle_boxes, PrimitiveRange range) {

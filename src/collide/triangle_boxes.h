@@ -4,6 +4,7 @@
 // contents do not touch. The pretest every method shares. Internal.
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -15,6 +16,9 @@ namespace vissort::detail {
 struct Box3f {
     float min[3] = {0, 0, 0}, max[3] = {0, 0, 0};
 };
+
+/// A box that overlaps nothing (an object without triangles).
+inline constexpr Box3f kEmptyBox = {{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
 
 /// Closed boxes: touching counts as overlapping.
 inline bool boxesOverlap(const Box3f& a, const Box3f& b) {
@@ -63,17 +67,16 @@ inline bool diagonalsOverlap(const DiagonalExtents& a, const DiagonalExtents& b)
     return overlap;
 }
 
-/// extents[t] for the triangles of object (extents must have an entry for each).
-void computeDiagonalExtents(const TrianglePositions& positions, PrimitiveRange object,
-                            std::span<DiagonalExtents> extents);
+/// The diagonal extents of triangle t of positions.
+DiagonalExtents diagonalExtents(const TrianglePositions& positions, uint32_t t);
+
+/// The box of object's triangles (at least one), straight from the corners.
+Box3f objectBox(const TrianglePositions& positions, PrimitiveRange object);
 
 /// boxes[t] = the box of triangle t, for every triangle of positions (boxes is resized).
 void computeTriangleBoxes(const TrianglePositions& positions, std::vector<Box3f>& boxes);
 
-/// boxes[t] = the box of triangle t for the triangles of object (at least one; boxes must have
-/// an entry for each); returns the object's box.
-Box3f computeObjectBoxes(const TrianglePositions& positions, PrimitiveRange object,
-                         std::span<Box3f> boxes);
+
 
 /// The box of the triangles of range (triangle_count >= 1), from their boxes.
 Box3f boxOfRange(std::span<const Box3f> triangle_boxes, PrimitiveRange range);

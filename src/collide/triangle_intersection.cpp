@@ -170,12 +170,9 @@ bool segmentMeetsTriangle(const Point& p, const Point& q, int sp, int sq, const 
     }
     // pq crosses the plane at one point; it lies in t iff line pq passes on the same side of
     // (or through) every directed edge of t.
-    const int e0 = orient3d(p.data(), q.data(), t[0].data(), t[1].data());
-    const int e1 = orient3d(p.data(), q.data(), t[1].data(), t[2].data());
-    if (e0 * e1 < 0)
-        return false;
-    const int e2 = orient3d(p.data(), q.data(), t[2].data(), t[0].data());
-    return notMixed(e0, e1, e2);
+    int e[3];
+    orient3dEdgeSides(p.data(), q.data(), t[0].data(), t[1].data(), t[2].data(), e);
+    return notMixed(e[0], e[1], e[2]);
 }
 
 // The corners of a degenerate (collinear) triangle that bound it, along the axis of its
@@ -279,12 +276,12 @@ bool flatPairMeets(const TriangleCorners& a, const TriangleCorners& b, const int
 bool trianglesIntersect(const TriangleCorners& a, const TriangleCorners& b) {
     // Sides of each triangle's plane. A degenerate triangle has no plane: all its signs are 0.
     int sb[3], sa[3];
-    for (int c = 0; c < 3; ++c)
-        sb[c] = orient3d(a[0].data(), a[1].data(), a[2].data(), b[c].data());
+    orient3dPlaneSides(a[0].data(), a[1].data(), a[2].data(), b[0].data(), b[1].data(), b[2].data(),
+                       sb);
     if (sameStrictSide(sb))
         return false;
-    for (int c = 0; c < 3; ++c)
-        sa[c] = orient3d(b[0].data(), b[1].data(), b[2].data(), a[c].data());
+    orient3dPlaneSides(b[0].data(), b[1].data(), b[2].data(), a[0].data(), a[1].data(), a[2].data(),
+                       sa);
     if (sameStrictSide(sa))
         return false;
 

@@ -35,13 +35,20 @@ public:
     void collide(const TrianglePositions& positions, CollisionResult& result) override {
         CollisionStats& stats = result.stats;
         StageClock clock;
-        triangle_boxes_.resize(positions.triangleCount());
         object_boxes_.resize(objects_.size());
         parallelFor(objects_.size(), [&](std::size_t o, Worker&) {
-            object_boxes_[o] = computeObjectBoxes(positions, objects_[o], triangle_boxes_);
+            if (objects_[o].triangle_count > 0) object_boxes_[o] = objectBox(positions, objects_[o]);
+            else object_boxes_[o] = kEmptyBox;
         });
         // Only the objects whose boxes meet another's take part: their trees are brought up to
-        // date (built on first use; the shape stays, the boxes follow the deformation).
+        // date. Every tree is built on the first frame (the shape stays, the boxes follow the
+        // deformation).
+        if (!built_) {
+            parallelFor(objects_.size(), [&](std::size_t o, Worker&) {
+                if (objects_[o].triangle_count > 0) trees_[o].build(positions, objects_[o]);
+            });
+            built_ = true;
+        }
         overlappingBoxPairs(object_boxes_, candidates_.objects);
         candidates_.alive.assign(candidates_.objects.size(), 1);
         in_pair_.assign(objects_.size(), 0);
@@ -52,13 +59,7 @@ public:
                     in_pair_[o] = 1;
                     active_.push_back(o);
                 }
-        diagonals_.resize(triangle_boxes_.size());
-        parallelFor(active_.size(), [&](std::size_t i, Worker&) {
-            const uint32_t o = active_[i];
-            if (trees_[o].nodes().empty()) trees_[o].build(triangle_boxes_, objects_[o]);
-            else trees_[o].refit(triangle_boxes_);
-            computeDiagonalExtents(positions, objects_[o], diagonals_);
-        });
+        parallelFor(active_.size(), [&](std::size_t i, Worker&) { trees_[active_[i]].refit(positions); });
         stats.update_ms = clock.lap();
 
         object_culling_.cull(trees_, object_boxes_, candidates_, stats);
@@ -75,8 +76,7 @@ public:
         parallelFor(live_.size(), [&](std::size_t i, Worker& w) {
             const auto [a, b] = candidates_.objects[live_[i]];
             w.candidates.clear();
-            overlappingTrianglePairs(trees_[a], trees_[b], triangle_boxes_, diagonals_,
-                                     w.candidates, w.stack);
+            overlappingTrianglePairs(trees_[a], trees_[b], positions, w.candidates, w.stack);
             w.triangle_pairs += w.candidates.size();
             StageClock exact_clock;
             for (const auto& [ta, tb] : w.candidates)
@@ -140,8 +140,8 @@ private:
     std::vector<Worker> workers_;
     std::unique_ptr<FastWorkerPool> pool_;
     CandidatePairs candidates_;
-    std::vector<Box3f> triangle_boxes_, object_boxes_;
-    std::vector<DiagonalExtents> diagonals_;  // valid for the objects in box pairs this frame
+    std::vector<Box3f> object_boxes_;
+    bool built_ = false;
     std::vector<uint8_t> in_pair_;
     std::vector<uint32_t> active_, live_;
 };
