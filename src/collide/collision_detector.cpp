@@ -43,6 +43,8 @@ void checkSettings(const CollisionSettings& settings) {
     };
     check_size(settings.width, "collision view width");
     check_size(settings.height, "collision view height");
+    if (!(settings.min_cull_fraction >= 0 && settings.min_cull_fraction <= 1))
+        throw std::invalid_argument("collision min_cull_fraction must be in [0, 1]");
     for (const Vec3& d : settings.directions) {
         const double length2 = d.x * d.x + d.y * d.y + d.z * d.z;
         if (!(length2 > 0) || !std::isfinite(length2))

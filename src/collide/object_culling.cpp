@@ -38,7 +38,8 @@ ObjectCulling::ObjectCulling(std::span<const PrimitiveRange> objects,
                              const CollisionSettings& settings)
     : objects_(objects.begin(), objects.end()),
       directions_(settings.directions.empty() ? defaultCollisionDirections() : settings.directions),
-      width_(settings.width), height_(settings.height) {
+      width_(settings.width), height_(settings.height),
+      min_cull_fraction_(settings.min_cull_fraction) {
     rank_.assign(directions_.size(), std::vector<uint32_t>(objects_.size(), kNoRank));
     cycle_of_.assign(objects_.size(), -1);
     slot_of_.assign(objects_.size(), -1);
@@ -46,8 +47,12 @@ ObjectCulling::ObjectCulling(std::span<const PrimitiveRange> objects,
 
 void ObjectCulling::cull(std::span<const RefitBvh> trees, std::span<const Box3f> object_boxes,
                          CandidatePairs& candidates, CollisionStats& stats) {
-    for (std::size_t d = 0; d < directions_.size() && candidates.aliveCount() > 0; ++d)
-        if (cullAlong(d, trees, object_boxes, candidates, stats) == 0) break;
+    for (std::size_t d = 0; d < directions_.size(); ++d) {
+        const std::size_t given = candidates.aliveCount();
+        if (given == 0) break;
+        const std::size_t culled = cullAlong(d, trees, object_boxes, candidates, stats);
+        if (culled == 0 || double(culled) < double(min_cull_fraction_) * double(given)) break;
+    }
 }
 
 std::size_t ObjectCulling::cullAlong(std::size_t direction, std::span<const RefitBvh> trees,

@@ -35,8 +35,8 @@ public:
     ObjectCulling(std::span<const PrimitiveRange> objects, const CollisionSettings& settings);
 
     /// Culls candidates along each direction in turn, keeping alive the pairs whose objects
-    /// share a cycle, until a direction culls none (the paper's C stopped shrinking) or none is
-    /// left. trees: each object's tree, refitted to this frame. Adds the directions used and
+    /// share a cycle, while a direction culls at least min_cull_fraction of the pairs it was
+    /// given (0: until one culls none, the paper's C stopped shrinking) and some are left. trees: each object's tree, refitted to this frame. Adds the directions used and
     /// the queries to stats.
     void cull(std::span<const RefitBvh> trees, std::span<const Box3f> object_boxes,
               CandidatePairs& candidates, CollisionStats& stats);
@@ -50,6 +50,7 @@ private:
     std::vector<PrimitiveRange> objects_;
     std::vector<Vec3> directions_;
     uint32_t width_, height_;
+    float min_cull_fraction_;
     IntervalOracle oracle_;
     // Per direction, each object's place in that direction's last order (coherence): the next
     // frame starts from it. kNoRank until the object was first sorted along it.

@@ -21,10 +21,12 @@ Box3f triangleBox(const TrianglePositions& positions, uint32_t t) {
 }
 
 void RefitBvh::build(const TrianglePositions& positions, PrimitiveRange object) {
+    first_triangle_ = object.first_triangle;
     triangles_.resize(object.triangle_count);
     std::iota(triangles_.begin(), triangles_.end(), object.first_triangle);
+    leaf_boxes_.resize(object.triangle_count);
     boxes_.resize(object.triangle_count);
-    for (uint32_t i = 0; i < object.triangle_count; ++i) boxes_[i] = triangleBox(positions, triangles_[i]);
+    for (uint32_t i = 0; i < object.triangle_count; ++i) leaf_boxes_[i] = triangleBox(positions, triangles_[i]);
     nodes_.clear();
     nodes_.reserve(2 * std::size_t(object.triangle_count) / kLeafSize + 1);
     buildRange(0, object.triangle_count);
@@ -32,34 +34,43 @@ void RefitBvh::build(const TrianglePositions& positions, PrimitiveRange object) 
 }
 
 // Splits at the median box centre along the longest axis of the centres' extent, keeping
-// triangles_ and boxes_ in step.
+// triangles_ and leaf_boxes_ in step.
 uint32_t RefitBvh::buildRange(uint32_t first, uint32_t size) {
     const uint32_t index = uint32_t(nodes_.size());
     nodes_.push_back({{}, first, size, 0, index + 1});
     if (size <= kLeafSize) return index;
-    float low[3] = {INFINITY, INFINITY, INFINITY}, high[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (uint32_t i = first; i < first + size; ++i)
-        for (int k = 0; k < 3; ++k) {
-            const float centre = 0.5f * (boxes_[i].min[k] + boxes_[i].max[k]);
-            low[k] = std::min(low[k], centre);
-            high[k] = std::max(high[k], centre);
+    // Of the median splits along the three axes, the one whose halves' boxes have the least
+    // surface area (the surface area heuristic's estimate of how often they are visited).
+    const auto area = [](const Box3f& b) {
+        const float dx = b.max[0] - b.min[0], dy = b.max[1] - b.min[1], dz = b.max[2] - b.min[2];
+        return dx * dy + dy * dz + dz * dx;
+    };
+    std::vector<uint32_t> order(size), best;
+    float best_cost = INFINITY;
+    for (int axis = 0; axis < 3; ++axis) {
+        std::iota(order.begin(), order.end(), first);
+        std::nth_element(order.begin(), order.begin() + size / 2, order.end(), [&](uint32_t p, uint32_t q) {
+            return leaf_boxes_[p].min[axis] + leaf_boxes_[p].max[axis] <
+                   leaf_boxes_[q].min[axis] + leaf_boxes_[q].max[axis];
+        });
+        Box3f left = leaf_boxes_[order[0]], right = leaf_boxes_[order[size / 2]];
+        for (uint32_t i = 1; i < size / 2; ++i) includeBox(left, leaf_boxes_[order[i]]);
+        for (uint32_t i = size / 2 + 1; i < size; ++i) includeBox(right, leaf_boxes_[order[i]]);
+        const float cost = area(left) + area(right);
+        if (cost < best_cost || best.empty()) {
+            best_cost = cost;
+            best = order;
         }
-    int axis = 0;
-    for (int k = 1; k < 3; ++k)
-        if (high[k] - low[k] > high[axis] - low[axis]) axis = k;
-    std::vector<uint32_t> order(size);
-    std::iota(order.begin(), order.end(), first);
-    std::nth_element(order.begin(), order.begin() + size / 2, order.end(), [&](uint32_t p, uint32_t q) {
-        return boxes_[p].min[axis] + boxes_[p].max[axis] < boxes_[q].min[axis] + boxes_[q].max[axis];
-    });
+    }
+    order = std::move(best);
     std::vector<uint32_t> triangles(size);
     std::vector<Box3f> boxes(size);
     for (uint32_t i = 0; i < size; ++i) {
         triangles[i] = triangles_[order[i]];
-        boxes[i] = boxes_[order[i]];
+        boxes[i] = leaf_boxes_[order[i]];
     }
     std::copy(triangles.begin(), triangles.end(), triangles_.begin() + first);
-    std::copy(boxes.begin(), boxes.end(), boxes_.begin() + first);
+    std::copy(boxes.begin(), boxes.end(), leaf_boxes_.begin() + first);
     buildRange(first, size / 2);
     const uint32_t right = buildRange(first + size / 2, size - size / 2);
     nodes_[index].right = right;
@@ -68,13 +79,16 @@ uint32_t RefitBvh::buildRange(uint32_t first, uint32_t size) {
 }
 
 void RefitBvh::refit(const TrianglePositions& positions) {
-    for (std::size_t i = 0; i < triangles_.size(); ++i) boxes_[i] = triangleBox(positions, triangles_[i]);
+    // The triangles' boxes in id order (the corners are read forward), then in leaf order from
+    // that small array.
+    for (std::size_t i = 0; i < boxes_.size(); ++i) boxes_[i] = triangleBox(positions, first_triangle_ + uint32_t(i));
+    for (std::size_t i = 0; i < triangles_.size(); ++i) leaf_boxes_[i] = boxes_[triangles_[i] - first_triangle_];
     // Children come after their parent: back to front, every child is refitted first.
     for (std::size_t i = nodes_.size(); i-- > 0;) {
         Node& n = nodes_[i];
         if (n.isLeaf()) {
-            n.box = boxes_[n.first];
-            for (uint32_t k = 1; k < n.size; ++k) includeBox(n.box, boxes_[n.first + k]);
+            n.box = leaf_boxes_[n.first];
+            for (uint32_t k = 1; k < n.size; ++k) includeBox(n.box, leaf_boxes_[n.first + k]);
         } else {
             n.box = nodes_[i + 1].box;
             includeBox(n.box, nodes_[n.right].box);
@@ -130,8 +144,13 @@ void overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b,
             }
             continue;
         }
-        // Open the larger node (by triangles), or the one that is not a leaf.
-        if (y.isLeaf() || (!x.isLeaf() && x.size >= y.size)) {
+        // Open both nodes at once (four child pairs, as Bullet's collideTT does), or the one
+        // that is not a leaf.
+        if (!x.isLeaf() && !y.isLeaf()) {
+            for (uint32_t cx : {i + 1, x.right})
+                for (uint32_t cy : {j + 1, y.right})
+                    if (boxesOverlap(na[cx].box, nb[cy].box)) stack.emplace_back(cx, cy);
+        } else if (!x.isLeaf()) {
             for (uint32_t child : {i + 1, x.right})
                 if (boxesOverlap(na[child].box, y.box)) stack.emplace_back(child, j);
         } else {

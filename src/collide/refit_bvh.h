@@ -38,7 +38,7 @@ public:
     std::span<const Node> nodes() const { return nodes_; }
     /// Global triangle ids in leaf order, and their boxes in the same order.
     std::span<const uint32_t> triangles() const { return triangles_; }
-    std::span<const Box3f> triangleBoxes() const { return boxes_; }
+    std::span<const Box3f> triangleBoxes() const { return leaf_boxes_; }
 
     /// Appends the boxes of the shallowest nodes of at most max_size triangles that meet
     /// region, once each (marks: per node, round: this call's mark).
@@ -49,7 +49,9 @@ private:
     uint32_t buildRange(uint32_t first, uint32_t size);
     std::vector<Node> nodes_;  // pre-order: a parent before its children
     std::vector<uint32_t> triangles_;
-    std::vector<Box3f> boxes_;  // boxes_[i]: the box of triangles_[i]
+    uint32_t first_triangle_ = 0;
+    std::vector<Box3f> boxes_;       // in triangle id order, from first_triangle_
+    std::vector<Box3f> leaf_boxes_;  // leaf_boxes_[i]: the box of triangles_[i]
 };
 
 /// The box of triangle t of positions.

@@ -35,31 +35,20 @@ public:
     void collide(const TrianglePositions& positions, CollisionResult& result) override {
         CollisionStats& stats = result.stats;
         StageClock clock;
+        // Every tree is built on the first frame and refitted on every frame after (the shape
+        // stays, the boxes follow the deformation); an object's box is its tree's root.
         object_boxes_.resize(objects_.size());
         parallelFor(objects_.size(), [&](std::size_t o, Worker&) {
-            if (objects_[o].triangle_count > 0) object_boxes_[o] = objectBox(positions, objects_[o]);
-            else object_boxes_[o] = kEmptyBox;
+            if (objects_[o].triangle_count == 0) {
+                object_boxes_[o] = kEmptyBox;
+                return;
+            }
+            if (trees_[o].isBuilt()) trees_[o].refit(positions);
+            else trees_[o].build(positions, objects_[o]);
+            object_boxes_[o] = trees_[o].bounds();
         });
-        // Only the objects whose boxes meet another's take part: their trees are brought up to
-        // date. Every tree is built on the first frame (the shape stays, the boxes follow the
-        // deformation).
-        if (!built_) {
-            parallelFor(objects_.size(), [&](std::size_t o, Worker&) {
-                if (objects_[o].triangle_count > 0) trees_[o].build(positions, objects_[o]);
-            });
-            built_ = true;
-        }
         overlappingBoxPairs(object_boxes_, candidates_.objects);
         candidates_.alive.assign(candidates_.objects.size(), 1);
-        in_pair_.assign(objects_.size(), 0);
-        active_.clear();
-        for (const auto& [a, b] : candidates_.objects)
-            for (uint32_t o : {a, b})
-                if (!in_pair_[o]) {
-                    in_pair_[o] = 1;
-                    active_.push_back(o);
-                }
-        parallelFor(active_.size(), [&](std::size_t i, Worker&) { trees_[active_[i]].refit(positions); });
         stats.update_ms = clock.lap();
 
         object_culling_.cull(trees_, object_boxes_, candidates_, stats);
@@ -141,9 +130,8 @@ private:
     std::unique_ptr<FastWorkerPool> pool_;
     CandidatePairs candidates_;
     std::vector<Box3f> object_boxes_;
-    bool built_ = false;
     std::vector<uint8_t> in_pair_;
-    std::vector<uint32_t> active_, live_;
+    std::vector<uint32_t> live_;
 };
 
 } // namespace
