@@ -33,6 +33,9 @@ const char* collisionMethodName(CollisionMethod method);
 /// Every method, in the order the benchmarks list them.
 std::vector<CollisionMethod> collisionMethods();
 
+/// The object stage's default directions: the three axes, then the four cube diagonals.
+std::vector<Vec3> defaultCollisionDirections();
+
 /// Two intersecting triangles: global triangle ids, first < second, of different objects.
 struct TrianglePair {
     uint32_t first = 0, second = 0;
@@ -59,8 +62,10 @@ struct CollisionSettings {
 
 /// What one frame cost and how much each stage culled.
 struct CollisionStats {
-    uint64_t object_pairs = 0;    // candidate object pairs that reached the triangle stage
-    uint64_t triangle_pairs = 0;  // candidate triangle pairs that reached the exact test
+    uint64_t box_object_pairs = 0;    // object pairs whose boxes overlap (every method's start)
+    uint64_t object_pairs = 0;        // candidate object pairs that reached the triangle stage
+    uint64_t box_triangle_pairs = 0;  // of their triangle pairs, those whose boxes overlap
+    uint64_t triangle_pairs = 0;      // candidate triangle pairs that reached the exact test
     uint64_t intersecting = 0;    // intersecting triangle pairs found
     uint32_t colliding_objects = 0;  // objects in some candidate object pair (the paper's C)
     uint32_t directions = 0;      // vissort: object-stage directions used this frame

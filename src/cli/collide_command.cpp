@@ -22,7 +22,9 @@ double median(std::vector<double> values) {
 
 nlohmann::json frameRecord(int frame, const CollisionStats& stats) {
     return {{"frame", frame},
+            {"box_object_pairs", stats.box_object_pairs},
             {"object_pairs", stats.object_pairs},
+            {"box_triangle_pairs", stats.box_triangle_pairs},
             {"triangle_pairs", stats.triangle_pairs},
             {"intersecting", stats.intersecting},
             {"colliding_objects", stats.colliding_objects},
@@ -73,6 +75,17 @@ CLI::App* addCollideCommand(CLI::App& app, CollideOptions& options) {
     command->add_option("--size", options.size,
                         "vissort: pixels of each object-stage view, WxH")
         ->capture_default_str();
+    command->add_option("--directions", options.directions,
+                        "vissort: how many of the object stage's directions to allow (the axes, "
+                        "then the cube diagonals)")
+        ->check(CLI::Range(1, 7))
+        ->capture_default_str();
+    command->add_option("--min-cull", options.min_cull,
+                        "vissort: try the next direction only while the last culled at least "
+                        "this fraction of its object pairs (0: until none is culled, the paper's "
+                        "rule)")
+        ->check(CLI::Range(0.0, 1.0))
+        ->capture_default_str();
     command->add_option("--threads", options.threads,
                         "vissort: threads, 0 = one per core (the pairs never depend on it)")
         ->check(CLI::Range(0, 256))
@@ -93,6 +106,9 @@ int runCollide(const CollideOptions& options) {
     if (auto error = parseSize(options.size, settings.width, settings.height); !error.empty())
         return fail(kExitUsage, error);
     settings.threads = uint32_t(options.threads);
+    settings.min_cull_fraction = float(options.min_cull);
+    const std::vector<Vec3> all_directions = defaultCollisionDirections();
+    settings.directions.assign(all_directions.begin(), all_directions.begin() + options.directions);
     if (settings.width > 4096 || settings.height > 4096)
         return fail(kExitUsage, "--size must be at most 4096x4096 for collide, got " + options.size);
     std::optional<Scene> scene = loadSceneOrReport(options.scene);

@@ -50,6 +50,8 @@ struct CollideOptions {
     int frames = 1;
     std::string method = "vissort";
     std::string size = "64x64";
+    int directions = 7;
+    double min_cull = 0.25;
     int threads = 0;
     std::string json_path;
     std::string pairs_path;

@@ -24,7 +24,7 @@ public:
         result.stats.update_ms = clock.lap();
 
         overlappingBoxPairs(object_boxes_, object_pairs_);
-        result.stats.object_pairs = object_pairs_.size();
+        result.stats.box_object_pairs = result.stats.object_pairs = object_pairs_.size();
         in_pair_.assign(objects_.size(), 0);
         double exact_ms = 0;
         for (const auto& [a, b] : object_pairs_) {
@@ -42,6 +42,7 @@ public:
                 }
         }
         for (uint8_t in : in_pair_) result.stats.colliding_objects += in;
+        result.stats.box_triangle_pairs = result.stats.triangle_pairs;
         // The box filters and the exact tests interleave here; the exact tests are the work.
         exact_ms = clock.lap();
         result.stats.exact_ms = exact_ms;

@@ -81,7 +81,7 @@ public:
             }
         }
         overlappingBoxPairs(object_boxes_, object_pairs_);
-        result.stats.object_pairs = object_pairs_.size();
+        result.stats.box_object_pairs = result.stats.object_pairs = object_pairs_.size();
         in_pair_.assign(objects_.size(), 0);
         candidates_.clear();
         LeafPairRecorder recorder;
@@ -93,7 +93,7 @@ public:
         }
         for (uint8_t in : in_pair_)
             result.stats.colliding_objects += in;
-        result.stats.triangle_pairs = candidates_.size();
+        result.stats.box_triangle_pairs = result.stats.triangle_pairs = candidates_.size();
         result.stats.cull_ms = clock.lap();
 
         for (const TrianglePair& c : candidates_)

@@ -28,6 +28,10 @@ const char* collisionMethodName(CollisionMethod method) {
     return "?";
 }
 
+std::vector<Vec3> defaultCollisionDirections() {
+    return {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}, {1, 1, -1}, {1, -1, 1}, {-1, 1, 1}};
+}
+
 std::vector<CollisionMethod> collisionMethods() {
     return {CollisionMethod::vissort, CollisionMethod::brute, CollisionMethod::bullet,
             CollisionMethod::fcl};

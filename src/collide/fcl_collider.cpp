@@ -122,6 +122,7 @@ private:
         const auto* range1 = static_cast<const PrimitiveRange*>(o1->getUserData());
         const auto* range2 = static_cast<const PrimitiveRange*>(o2->getUserData());
         ++frame.stats.object_pairs;
+        ++frame.stats.box_object_pairs;
         self.in_pair_[std::size_t(range1 - self.objects_.data())] = 1;
         self.in_pair_[std::size_t(range2 - self.objects_.data())] = 1;
 
@@ -131,6 +132,7 @@ private:
         // fcl::collide exposes neither its volume tests nor its leaf tests: the contacts it
         // reports (before the dedupe) stand for the triangle pairs it tested.
         frame.stats.triangle_pairs += count;
+        frame.stats.box_triangle_pairs += count;
         for (std::size_t i = 0; i < count; ++i) {
             const fcl::Contact<double>& contact = self.contacts_.getContact(i);
             // b1 names a triangle of contact.o1, which is o1's geometry unless FCL swapped them.

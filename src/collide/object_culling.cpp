@@ -30,9 +30,6 @@ std::size_t CandidatePairs::aliveCount() const {
     return std::size_t(std::count(alive.begin(), alive.end(), uint8_t(1)));
 }
 
-std::vector<Vec3> defaultCollisionDirections() {
-    return {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}, {1, 1, -1}, {1, -1, 1}, {-1, 1, 1}};
-}
 
 ObjectCulling::ObjectCulling(std::span<const PrimitiveRange> objects,
                              const CollisionSettings& settings)

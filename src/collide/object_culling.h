@@ -27,9 +27,6 @@ struct CandidatePairs {
     std::size_t aliveCount() const;
 };
 
-/// The object stage's default directions: the three axes, then the four cube diagonals.
-std::vector<Vec3> defaultCollisionDirections();
-
 class ObjectCulling {
 public:
     ObjectCulling(std::span<const PrimitiveRange> objects, const CollisionSettings& settings);

@@ -116,15 +116,16 @@ void RefitBvh::appendCut(const Box3f& region, uint32_t max_size, std::vector<uin
     }
 }
 
-void overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b,
-                              const TrianglePositions& positions,
-                              std::vector<std::pair<uint32_t, uint32_t>>& pairs,
-                              std::vector<std::pair<uint32_t, uint32_t>>& stack) {
+uint64_t overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b,
+                                  const TrianglePositions& positions,
+                                  std::vector<std::pair<uint32_t, uint32_t>>& pairs,
+                                  std::vector<std::pair<uint32_t, uint32_t>>& stack) {
     const auto na = a.nodes(), nb = b.nodes();
     const auto ta = a.triangles(), tb = b.triangles();
     const auto ba = a.triangleBoxes(), bb = b.triangleBoxes();
+    uint64_t box_pairs = 0;
     stack.clear();
-    if (!boxesOverlap(na[0].box, nb[0].box)) return;
+    if (!boxesOverlap(na[0].box, nb[0].box)) return 0;
     stack.emplace_back(0, 0);
     // Every pair on the stack has overlapping boxes: children are tested before they are pushed.
     while (!stack.empty()) {
@@ -135,12 +136,14 @@ void overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b,
         if (x.isLeaf() && y.isLeaf()) {
             for (uint32_t p = x.first; p < x.first + x.size; ++p) {
                 if (!boxesOverlap(ba[p], y.box)) continue;
-                for (uint32_t q = y.first; q < y.first + y.size; ++q)
+                for (uint32_t q = y.first; q < y.first + y.size; ++q) {
+                    if (!boxesOverlap(ba[p], bb[q])) continue;
+                    ++box_pairs;
                     // The diagonals only for boxes that meet: few pairs, so computed here.
-                    if (boxesOverlap(ba[p], bb[q]) &&
-                        diagonalsOverlap(diagonalExtents(positions, ta[p]),
+                    if (diagonalsOverlap(diagonalExtents(positions, ta[p]),
                                          diagonalExtents(positions, tb[q])))
                         pairs.emplace_back(ta[p], tb[q]);
+                }
             }
             continue;
         }
@@ -158,6 +161,7 @@ void overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b,
                 if (boxesOverlap(x.box, nb[child].box)) stack.emplace_back(i, child);
         }
     }
+    return box_pairs;
 }
 
 } // namespace vissort::detail

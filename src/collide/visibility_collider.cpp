@@ -49,6 +49,7 @@ public:
         });
         overlappingBoxPairs(object_boxes_, candidates_.objects);
         candidates_.alive.assign(candidates_.objects.size(), 1);
+        stats.box_object_pairs = candidates_.objects.size();
         stats.update_ms = clock.lap();
 
         object_culling_.cull(trees_, object_boxes_, candidates_, stats);
@@ -65,7 +66,8 @@ public:
         parallelFor(live_.size(), [&](std::size_t i, Worker& w) {
             const auto [a, b] = candidates_.objects[live_[i]];
             w.candidates.clear();
-            overlappingTrianglePairs(trees_[a], trees_[b], positions, w.candidates, w.stack);
+            w.box_triangle_pairs +=
+                overlappingTrianglePairs(trees_[a], trees_[b], positions, w.candidates, w.stack);
             w.triangle_pairs += w.candidates.size();
             StageClock exact_clock;
             for (const auto& [ta, tb] : w.candidates)
@@ -77,6 +79,7 @@ public:
         for (const Worker& w : workers_) {
             result.pairs.insert(result.pairs.end(), w.pairs.begin(), w.pairs.end());
             stats.triangle_pairs += w.triangle_pairs;
+            stats.box_triangle_pairs += w.box_triangle_pairs;
             exact_ms = std::max(exact_ms, w.exact_ms);  // the threads' exact tests overlap
         }
         stats.exact_ms = exact_ms;
@@ -88,11 +91,11 @@ private:
     struct Worker {
         std::vector<std::pair<uint32_t, uint32_t>> candidates, stack;
         std::vector<TrianglePair> pairs;
-        uint64_t triangle_pairs = 0;
+        uint64_t triangle_pairs = 0, box_triangle_pairs = 0;
         double exact_ms = 0;
         void clear() {
             pairs.clear();
-            triangle_pairs = 0;
+            triangle_pairs = box_triangle_pairs = 0;
             exact_ms = 0;
         }
     };
