@@ -17,8 +17,8 @@
 //   the error analysis of the filter requires, and a computed product is 0 only when a factor is.
 // - A product of two floats has at most 48 significant bits: exact in double.
 // - A product of that with a third float has at most 72 bits: fl(p * z) = hi, and
-//   lo = fma(p, z, -hi) is the exact remainder (fma rounds once, and the remainder fits in 53
-//   bits above 2^-447), so hi + lo == p * z exactly.
+//   lo = fma(p, z, -hi) is the exact remainder (fma rounds once, and the remainder, a multiple
+//   of 2^-447 of at most 19 significant bits, is representable), so hi + lo == p * z exactly.
 
 #include "collide/exact_predicates.h"
 
@@ -123,6 +123,8 @@ int orient3dExact(const float a[3], const float b[3], const float c[3], const fl
     for (const Monomial<4>& term : kTerms4) {
         const double xy = double(points[term.row[1]][0]) * double(points[term.row[2]][1]);
         const double z = term.sign * double(points[term.row[3]][2]);
+        if (xy == 0 || z == 0)
+            continue; // frequent on axis-aligned or integer inputs; saves the fma
         const double hi = xy * z;
         const double lo = std::fma(xy, z, -hi);
         sum.add(hi);

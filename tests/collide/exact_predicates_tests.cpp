@@ -104,6 +104,16 @@ void check3d(const P3& a, const P3& b, const P3& c, const P3& d, Tally& tally) {
     ASSERT_EQ(detail::orient3d(b.data(), a.data(), c.data(), d.data()), -expected);
     ASSERT_EQ(detail::orient3d(a.data(), c.data(), d.data(), b.data()), expected);
     ASSERT_EQ(detail::orient3d(d.data(), b.data(), c.data(), a.data()), -expected);
+    // The batched forms: corners against a plane, and a line against directed edges.
+    int sides[3];
+    detail::orient3dPlaneSides(a.data(), b.data(), c.data(), d.data(), a.data(), d.data(), sides);
+    ASSERT_EQ(sides[0], expected);
+    ASSERT_EQ(sides[1], 0);
+    ASSERT_EQ(sides[2], expected);
+    detail::orient3dEdgeSides(a.data(), b.data(), c.data(), d.data(), c.data(), sides);
+    ASSERT_EQ(sides[0], expected);  // orient3d(a, b, c, d)
+    ASSERT_EQ(sides[1], -expected); // orient3d(a, b, d, c)
+    ASSERT_EQ(sides[2], 0);         // orient3d(a, b, c, c)
     tally.add(expected, naiveOrient3d(a, b, c, d));
 }
 
