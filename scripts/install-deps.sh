@@ -19,6 +19,9 @@ packages=(
   libstb-dev                 # PNG output of the renderer (stb_image_write)
   libgtest-dev               # the test suite
   libbenchmark-dev           # the Google Benchmark suite (built by the test script, not run)
+  libbullet-dev              # the bullet collision peer
+  libfcl-dev                 # the fcl collision peer
+  libcgal-dev                # tests only: exact reference predicates for the collision tests
 )
 
 missing=()

@@ -99,8 +99,9 @@ public:
     CollisionDetector& operator=(const CollisionDetector&) = delete;
 
     /// Every intersecting pair at positions, which must hold every triangle the objects name and
-    /// finite coordinates. Writes into result, reusing its memory: steady-state frames of the
-    /// vissort, brute and bullet methods allocate nothing large.
+    /// finite coordinates (else std::invalid_argument, nothing computed). Writes into result,
+    /// reusing its memory: steady-state frames of the vissort, brute and bullet methods allocate
+    /// nothing large.
     void collide(const TrianglePositions& positions, CollisionResult& result);
     CollisionResult collide(const TrianglePositions& positions);
 
@@ -108,6 +109,7 @@ public:
 
 private:
     CollisionSettings settings_;
+    uint64_t triangles_needed_ = 0;  // one past the last triangle an object names
     std::unique_ptr<detail::Collider> collider_;
 };
 

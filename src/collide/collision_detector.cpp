@@ -62,6 +62,8 @@ CollisionDetector::CollisionDetector(std::span<const PrimitiveRange> objects,
                                      const CollisionSettings& settings)
     : settings_(settings) {
     checkSettings(settings_);
+    for (const PrimitiveRange& o : objects)
+        triangles_needed_ = std::max<uint64_t>(triangles_needed_, uint64_t(o.first_triangle) + o.triangle_count);
     switch (settings_.method) {
     case CollisionMethod::vissort:
         collider_ = detail::makeVisibilityCollider(objects, settings_);
@@ -80,6 +82,17 @@ CollisionDetector::~CollisionDetector() = default;
 
 void CollisionDetector::collide(const TrianglePositions& positions, CollisionResult& result) {
     detail::StageClock clock;
+    // Cheap next to the frame, and what makes bad input an error instead of a wrong answer.
+    if (positions.y.size() != positions.x.size() || positions.z.size() != positions.x.size() ||
+        positions.x.size() % 3 != 0 || positions.triangleCount() < triangles_needed_)
+        throw std::invalid_argument("collision positions hold " +
+                                    std::to_string(positions.triangleCount()) +
+                                    " triangles; the objects need " +
+                                    std::to_string(triangles_needed_));
+    for (const std::vector<float>* axis : {&positions.x, &positions.y, &positions.z})
+        for (float v : *axis)
+            if (!std::isfinite(v))
+                throw std::invalid_argument("collision positions must be finite");
     result.pairs.clear();
     result.stats = {};
     collider_->collide(positions, result);

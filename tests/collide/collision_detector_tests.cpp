@@ -246,6 +246,24 @@ TEST(CollisionDetector, RejectsBadSettings) {
     EXPECT_THROW(CollisionDetector(one.ranges, settings), std::invalid_argument);
 }
 
+TEST(CollisionDetector, RejectsPositionsThatDoNotFit) {
+    Objects two;
+    two.addBox({0, 0, 0}, {1, 1, 1});
+    two.addBox({0.5, 0.5, 0.5}, {2, 2, 2});
+    for (CollisionMethod m : collisionMethods()) {
+        CollisionDetector detector(two.ranges, method(m));
+        TrianglePositions short_positions = two.positions;
+        short_positions.resize(20);
+        EXPECT_THROW(detector.collide(short_positions), std::invalid_argument);
+        TrianglePositions not_finite = two.positions;
+        not_finite.y[40] = NAN;
+        EXPECT_THROW(detector.collide(not_finite), std::invalid_argument);
+        not_finite.y[40] = INFINITY;
+        EXPECT_THROW(detector.collide(not_finite), std::invalid_argument);
+        EXPECT_FALSE(detector.collide(two.positions).pairs.empty()) << "still usable";
+    }
+}
+
 TEST(CollisionDetector, MethodNamesRoundTrip) {
     for (CollisionMethod m : collisionMethods()) {
         CollisionMethod parsed{};
