@@ -8,11 +8,12 @@ namespace vissort::cli {
 namespace {
 
 constexpr uint8_t kInk[3] = {30, 30, 30};
-constexpr uint8_t kGrid[3] = {215, 215, 215};
+constexpr uint8_t kGrid[3] = {200, 200, 200};
+constexpr uint8_t kFaintGrid[3] = {235, 235, 235};
 // Distinct on white, in series order.
 constexpr uint8_t kColours[][3] = {{214, 39, 40}, {31, 119, 180}, {44, 160, 44},
                                    {255, 127, 14}, {148, 103, 189}, {140, 86, 75}};
-constexpr uint32_t kLeft = 80, kRight = 170, kTop = 50, kBottom = 60;
+constexpr uint32_t kLeft = 80, kRight = 170, kTop = 60, kBottom = 60;
 
 void setPixel(Strip& s, int x, int y, const uint8_t c[3]) {
     if (x < 0 || y < 0 || x >= int(s.width) || y >= int(s.height)) return;
@@ -58,31 +59,44 @@ Strip plotLines(const std::vector<PlotSeries>& series, const std::string& title,
     s.width = width;
     s.height = height;
     s.rgba.assign(std::size_t(width) * height * 4, 255);
-    double x_top = 0, y_top = 0;
+    double x_top = 0, y_low = INFINITY, y_high = 0;
     for (const PlotSeries& line : series) {
         for (double x : line.x) x_top = std::max(x_top, x);
-        for (double y : line.y) y_top = std::max(y_top, y);
+        for (double y : line.y)
+            if (y > 0) {
+                y_low = std::min(y_low, y);
+                y_high = std::max(y_high, y);
+            }
     }
-    const double x_step = tickStep(x_top > 0 ? x_top : 1), y_step = tickStep(y_top > 0 ? y_top : 1);
+    if (!(y_high > 0)) y_low = y_high = 1;
+    const double x_step = tickStep(x_top > 0 ? x_top : 1);
     x_top = std::ceil((x_top > 0 ? x_top : 1) / x_step) * x_step;
-    y_top = std::ceil((y_top > 0 ? y_top : 1) / y_step) * y_step;
+    const double decade_low = std::floor(std::log10(y_low)), decade_high = std::ceil(std::log10(y_high));
+    const double decades = std::max(decade_high - decade_low, 1.0);
     const double plot_w = double(width - kLeft - kRight), plot_h = double(height - kTop - kBottom);
     const auto px = [&](double x) { return kLeft + x / x_top * plot_w; };
-    const auto py = [&](double y) { return kTop + plot_h - y / y_top * plot_h; };
+    const auto py = [&](double y) {
+        const double t = (std::log10(std::max(y, 1e-300)) - decade_low) / decades;
+        return kTop + plot_h - std::clamp(t, 0.0, 1.0) * plot_h;
+    };
+    const double y_bottom = std::pow(10.0, decade_low), y_top = std::pow(10.0, decade_low + decades);
 
-    for (double y = 0; y <= y_top + 1e-9; y += y_step) {
+    for (double decade = decade_low; decade <= decade_low + decades + 1e-9; ++decade) {
+        const double y = std::pow(10.0, decade);
+        for (int m = 2; m < 10 && decade < decade_low + decades; ++m)
+            drawLine(s, px(0), py(m * y), px(x_top), py(m * y), kFaintGrid, 1);
         drawLine(s, px(0), py(y), px(x_top), py(y), kGrid, 1);
         drawText(s, 8, uint32_t(py(y)) - 6, number(y), kInk);
     }
     for (double x = 0; x <= x_top + 1e-9; x += x_step) {
-        drawLine(s, px(x), py(0), px(x), py(y_top), kGrid, 1);
-        drawText(s, uint32_t(px(x)) - 8, uint32_t(py(0)) + 8, number(x), kInk);
+        drawLine(s, px(x), py(y_bottom), px(x), py(y_top), kGrid, 1);
+        drawText(s, uint32_t(px(x)) - 8, uint32_t(py(y_bottom)) + 8, number(x), kInk);
     }
-    drawLine(s, px(0), py(0), px(x_top), py(0), kInk, 1);
-    drawLine(s, px(0), py(0), px(0), py(y_top), kInk, 1);
-    drawText(s, kLeft, 12, title, kInk);
+    drawLine(s, px(0), py(y_bottom), px(x_top), py(y_bottom), kInk, 1);
+    drawLine(s, px(0), py(y_bottom), px(0), py(y_top), kInk, 1);
+    drawText(s, kLeft, 8, title, kInk);
     drawText(s, uint32_t(kLeft + plot_w / 2 - 40), height - 28, x_label, kInk);
-    drawText(s, 8, kTop - 30, y_label, kInk);
+    drawText(s, kLeft + 8, kTop - 22, y_label + " (log scale)", kInk);
 
     for (std::size_t i = 0; i < series.size(); ++i) {
         const uint8_t* colour = kColours[i % std::size(kColours)];

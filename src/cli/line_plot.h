@@ -13,8 +13,9 @@ struct PlotSeries {
     std::vector<double> x, y;  // same length; points joined in order
 };
 
-/// A width x height chart of the series on linear axes from 0 to the largest x and y, with
-/// the title on top, axis labels, tick values and a legend.
+/// A width x height chart of the series, x linear from 0 to the largest x, y logarithmic over
+/// the powers of ten around the values (which must be positive): peers a thousand times apart
+/// stay readable. With the title on top, axis labels, tick values and a legend.
 Strip plotLines(const std::vector<PlotSeries>& series, const std::string& title,
                 const std::string& x_label, const std::string& y_label, uint32_t width,
                 uint32_t height);
