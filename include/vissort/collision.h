@@ -21,10 +21,10 @@
 namespace vissort {
 
 enum class CollisionMethod {
-    vissort,  // visibility-ordering culling along view directions, then the exact test
-    brute,    // every triangle pair of every box-overlapping object pair: the ground truth
-    bullet,   // Bullet's btDbvt per object, refitted each frame, tree against tree
-    fcl,      // FCL's dynamic AABB tree of OBBRSS models, its own triangle tests (may miss)
+    vissort, // visibility-ordering culling along view directions, then the exact test
+    brute,   // every triangle pair of every box-overlapping object pair: the ground truth
+    bullet,  // Bullet's btDbvt per object, refitted each frame, tree against tree
+    fcl,     // FCL's dynamic AABB tree of OBBRSS models, its own triangle tests (may miss)
 };
 
 /// Parses "vissort", "brute", "bullet" or "fcl"; returns false when the name is unknown.
@@ -62,22 +62,22 @@ struct CollisionSettings {
 
 /// What one frame cost and how much each stage culled.
 struct CollisionStats {
-    uint64_t box_object_pairs = 0;    // object pairs whose boxes overlap (every method's start)
-    uint64_t object_pairs = 0;        // candidate object pairs that reached the triangle stage
-    uint64_t box_triangle_pairs = 0;  // of their triangle pairs, those whose boxes overlap
-    uint64_t triangle_pairs = 0;      // candidate triangle pairs that reached the exact test
-    uint64_t intersecting = 0;    // intersecting triangle pairs found
+    uint64_t box_object_pairs = 0;   // object pairs whose boxes overlap (every method's start)
+    uint64_t object_pairs = 0;       // candidate object pairs that reached the triangle stage
+    uint64_t box_triangle_pairs = 0; // of their triangle pairs, those whose boxes overlap
+    uint64_t triangle_pairs = 0;     // candidate triangle pairs that reached the exact test
+    uint64_t intersecting = 0;       // intersecting triangle pairs found
     uint32_t colliding_objects = 0;  // objects in some candidate object pair (the paper's C)
-    uint32_t directions = 0;      // vissort: object-stage directions used this frame
-    uint64_t queries = 0;         // vissort: occlusion queries of the object stage
-    double update_ms = 0;         // per-frame structures from the positions (boxes, refits)
-    double cull_ms = 0;           // every culling stage
-    double exact_ms = 0;          // exact triangle tests
-    double total_ms = 0;          // everything after the positions exist
+    uint32_t directions = 0;         // vissort: object-stage directions used this frame
+    uint64_t queries = 0;            // vissort: occlusion queries of the object stage
+    double update_ms = 0;            // per-frame structures from the positions (boxes, refits)
+    double cull_ms = 0;              // every culling stage
+    double exact_ms = 0;             // exact triangle tests
+    double total_ms = 0;             // everything after the positions exist
 };
 
 struct CollisionResult {
-    std::vector<TrianglePair> pairs;  // ascending, no duplicates
+    std::vector<TrianglePair> pairs; // ascending, no duplicates
     CollisionStats stats;
 };
 
@@ -109,7 +109,7 @@ public:
 
 private:
     CollisionSettings settings_;
-    uint64_t triangles_needed_ = 0;  // one past the last triangle an object names
+    uint64_t triangles_needed_ = 0; // one past the last triangle an object names
     std::unique_ptr<detail::Collider> collider_;
 };
 

@@ -45,15 +45,16 @@ std::vector<Contender> contenders() {
 }
 
 struct Measured {
-    std::vector<double> ms;  // per timed frame
-    double object_pairs = 0, triangle_pairs = 0, intersecting = 0;  // means per frame
-    uint64_t missed = 0, invented = 0;  // against brute, over every frame
+    std::vector<double> ms;                                        // per timed frame
+    double object_pairs = 0, triangle_pairs = 0, intersecting = 0; // means per frame
+    uint64_t missed = 0, invented = 0; // against brute, over every frame
 };
 
 // Pairs in one sorted list and not the other.
 uint64_t pairsMissing(const std::vector<TrianglePair>& from, const std::vector<TrianglePair>& in) {
     std::vector<TrianglePair> missing;
-    std::set_difference(from.begin(), from.end(), in.begin(), in.end(), std::back_inserter(missing));
+    std::set_difference(from.begin(), from.end(), in.begin(), in.end(),
+                        std::back_inserter(missing));
     return missing.size();
 }
 
@@ -61,12 +62,14 @@ uint64_t pairsMissing(const std::vector<TrianglePair>& from, const std::vector<T
 // order so that none always runs on a cold cache.
 std::vector<Measured> measure(const std::vector<Contender>& methods, uint32_t bunnies, int frames) {
     const Loaded<Scene> scene = loadScene("builtin:bunnies?n=" + std::to_string(bunnies));
-    if (!scene) throw std::runtime_error(scene.error);
+    if (!scene)
+        throw std::runtime_error(scene.error);
     const std::vector<PrimitiveRange> objects = scene.value->objectPrimitives();
     std::vector<std::unique_ptr<CollisionDetector>> detectors;
     std::size_t brute = 0;
     for (const Contender& c : methods) {
-        if (c.settings.method == CollisionMethod::brute) brute = detectors.size();
+        if (c.settings.method == CollisionMethod::brute)
+            brute = detectors.size();
         detectors.push_back(std::make_unique<CollisionDetector>(objects, c.settings));
     }
     std::vector<Measured> measured(methods.size());
@@ -78,7 +81,8 @@ std::vector<Measured> measure(const std::vector<Contender>& methods, uint32_t bu
             const std::size_t i = (k + std::size_t(f)) % methods.size();
             detectors[i]->collide(positions, results[i]);
         }
-        if (f == 0) continue;
+        if (f == 0)
+            continue;
         for (std::size_t i = 0; i < methods.size(); ++i) {
             const CollisionStats& s = results[i].stats;
             Measured& m = measured[i];
@@ -98,10 +102,12 @@ std::vector<Measured> measure(const std::vector<Contender>& methods, uint32_t bu
 int runCollisionBench(const BenchOptions& options) {
     std::vector<uint32_t> counts;
     if (!parseCounts(options.counts, counts))
-        return fail(kExitUsage, "--counts must be bunny counts from 1 to 1000, comma-separated, got '" +
-                                    options.counts + "'");
+        return fail(kExitUsage,
+                    "--counts must be bunny counts from 1 to 1000, comma-separated, got '" +
+                        options.counts + "'");
     const int frames = options.frames.value_or(30);
-    if (frames < 1) return fail(kExitUsage, "--frames must be at least 1");
+    if (frames < 1)
+        return fail(kExitUsage, "--frames must be at least 1");
     const std::vector<Contender> methods = contenders();
 
     std::cout << "bench collision: builtin:bunnies?n=N, " << frames
@@ -114,18 +120,19 @@ int runCollisionBench(const BenchOptions& options) {
               << "invented" << '\n';
     nlohmann::json rows = nlohmann::json::array();
     std::vector<PlotSeries> series(methods.size());
-    for (std::size_t i = 0; i < methods.size(); ++i) series[i].name = methods[i].name;
+    for (std::size_t i = 0; i < methods.size(); ++i)
+        series[i].name = methods[i].name;
     for (uint32_t n : counts) {
         std::cerr << "bench collision: " << n << " bunnies..." << std::endl;
         const std::vector<Measured> measured = measure(methods, n, frames);
         for (std::size_t i = 0; i < methods.size(); ++i) {
             const Measured& m = measured[i];
             const double ms = median(m.ms);
-            std::cout << std::setw(5) << n << std::setw(12) << methods[i].name
-                      << std::setw(11) << std::fixed << std::setprecision(2) << ms << std::setw(13)
-                      << std::setprecision(1) << m.object_pairs << std::setw(15) << std::setprecision(0)
-                      << m.triangle_pairs << std::setw(13) << m.intersecting << std::setw(8)
-                      << m.missed << std::setw(10) << m.invented << std::endl;
+            std::cout << std::setw(5) << n << std::setw(12) << methods[i].name << std::setw(11)
+                      << std::fixed << std::setprecision(2) << ms << std::setw(13)
+                      << std::setprecision(1) << m.object_pairs << std::setw(15)
+                      << std::setprecision(0) << m.triangle_pairs << std::setw(13) << m.intersecting
+                      << std::setw(8) << m.missed << std::setw(10) << m.invented << std::endl;
             std::cout.unsetf(std::ios::fixed);
             rows.push_back({{"bunnies", n},
                             {"triangles", 3674 * n},
@@ -146,12 +153,13 @@ int runCollisionBench(const BenchOptions& options) {
                                          {"cores", std::thread::hardware_concurrency()},
                                          {"frames", frames},
                                          {"rows", rows}};
-        if (const int code = writeJsonFile(options.json_path, document); code != kExitOk) return code;
+        if (const int code = writeJsonFile(options.json_path, document); code != kExitOk)
+            return code;
     }
     if (!options.plot_path.empty()) {
-        const Strip plot = plotLines(series, "collision: ms per frame, deforming bunnies (" +
-                                                 machineName() + ")",
-                                     "bunnies N (3674 triangles each)", "ms per frame", 900, 560);
+        const Strip plot =
+            plotLines(series, "collision: ms per frame, deforming bunnies (" + machineName() + ")",
+                      "bunnies N (3674 triangles each)", "ms per frame", 900, 560);
         if (auto error = writePng(options.plot_path, plot.width, plot.height, plot.rgba);
             !error.empty())
             return fail(kExitFailure, error);

@@ -14,7 +14,8 @@ namespace vissort::cli {
 namespace {
 
 double median(std::vector<double> values) {
-    if (values.empty()) return 0;
+    if (values.empty())
+        return 0;
     std::sort(values.begin(), values.end());
     const std::size_t n = values.size();
     return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
@@ -42,7 +43,8 @@ nlohmann::json frameRecord(int frame, const CollisionStats& stats) {
 bool dumpObjects(const std::string& path, const TrianglePositions& positions,
                  std::span<const PrimitiveRange> objects) {
     std::ofstream out(path);
-    if (!out) return false;
+    if (!out)
+        return false;
     out << "# vissort collide: one group per object id; face i is triangle i\n";
     std::size_t next_vertex = 1;
     for (std::size_t o = 0; o < objects.size(); ++o) {
@@ -62,32 +64,36 @@ bool dumpObjects(const std::string& path, const TrianglePositions& positions,
 CLI::App* addCollideCommand(CLI::App& app, CollideOptions& options) {
     CLI::App* command = app.add_subcommand(
         "collide", "Find every pair of intersecting triangles of different objects");
-    command->add_option("scene", options.scene,
-                        "Mesh file, JSON scene, or builtin:NAME?key=value&...")
+    command
+        ->add_option("scene", options.scene, "Mesh file, JSON scene, or builtin:NAME?key=value&...")
         ->required();
-    command->add_option("--frames", options.frames,
-                        "Frames to run; dynamic scenes advance 1/30 s a frame")
+    command
+        ->add_option("--frames", options.frames,
+                     "Frames to run; dynamic scenes advance 1/30 s a frame")
         ->check(CLI::Range(1, 1000000))
         ->capture_default_str();
-    command->add_option("--method", options.method,
-                        "vissort (visibility culling), brute (ground truth), bullet or fcl")
+    command
+        ->add_option("--method", options.method,
+                     "vissort (visibility culling), brute (ground truth), bullet or fcl")
         ->capture_default_str();
-    command->add_option("--size", options.size,
-                        "vissort: pixels of each object-stage view, WxH")
+    command->add_option("--size", options.size, "vissort: pixels of each object-stage view, WxH")
         ->capture_default_str();
-    command->add_option("--directions", options.directions,
-                        "vissort: how many of the object stage's directions to allow (the axes, "
-                        "then the cube diagonals)")
+    command
+        ->add_option("--directions", options.directions,
+                     "vissort: how many of the object stage's directions to allow (the axes, "
+                     "then the cube diagonals)")
         ->check(CLI::Range(1, 7))
         ->capture_default_str();
-    command->add_option("--min-cull", options.min_cull,
-                        "vissort: try the next direction only while the last culled at least "
-                        "this fraction of its object pairs (0: until none is culled, the paper's "
-                        "rule)")
+    command
+        ->add_option("--min-cull", options.min_cull,
+                     "vissort: try the next direction only while the last culled at least "
+                     "this fraction of its object pairs (0: until none is culled, the paper's "
+                     "rule)")
         ->check(CLI::Range(0.0, 1.0))
         ->capture_default_str();
-    command->add_option("--threads", options.threads,
-                        "vissort: threads, 0 = one per core (the pairs never depend on it)")
+    command
+        ->add_option("--threads", options.threads,
+                     "vissort: threads, 0 = one per core (the pairs never depend on it)")
         ->check(CLI::Range(0, 256))
         ->capture_default_str();
     command->add_option("--json", options.json_path, "Write per-frame statistics as JSON");
@@ -101,8 +107,8 @@ CLI::App* addCollideCommand(CLI::App& app, CollideOptions& options) {
 int runCollide(const CollideOptions& options) {
     CollisionSettings settings;
     if (!parseCollisionMethod(options.method, settings.method))
-        return fail(kExitUsage, "--method must be vissort, brute, bullet or fcl, got '" +
-                                    options.method + "'");
+        return fail(kExitUsage,
+                    "--method must be vissort, brute, bullet or fcl, got '" + options.method + "'");
     if (auto error = parseSize(options.size, settings.width, settings.height); !error.empty())
         return fail(kExitUsage, error);
     settings.threads = uint32_t(options.threads);
@@ -110,14 +116,17 @@ int runCollide(const CollideOptions& options) {
     const std::vector<Vec3> all_directions = defaultCollisionDirections();
     settings.directions.assign(all_directions.begin(), all_directions.begin() + options.directions);
     if (settings.width > 4096 || settings.height > 4096)
-        return fail(kExitUsage, "--size must be at most 4096x4096 for collide, got " + options.size);
+        return fail(kExitUsage,
+                    "--size must be at most 4096x4096 for collide, got " + options.size);
     std::optional<Scene> scene = loadSceneOrReport(options.scene);
-    if (!scene) return kExitInput;
+    if (!scene)
+        return kExitInput;
 
     std::ofstream pairs_out;
     if (!options.pairs_path.empty()) {
         pairs_out.open(options.pairs_path);
-        if (!pairs_out) return fail(kExitFailure, "cannot write " + options.pairs_path);
+        if (!pairs_out)
+            return fail(kExitFailure, "cannot write " + options.pairs_path);
     }
     const std::vector<PrimitiveRange> objects = scene->objectPrimitives();
     CollisionDetector detector(objects, settings);
@@ -131,7 +140,8 @@ int runCollide(const CollideOptions& options) {
         detector.collide(positions, result);
         total_ms.push_back(result.stats.total_ms);
         pair_sum += result.pairs.size();
-        if (!options.json_path.empty()) frames.push_back(frameRecord(f, result.stats));
+        if (!options.json_path.empty())
+            frames.push_back(frameRecord(f, result.stats));
         for (const TrianglePair& p : result.pairs)
             pairs_out << f << ' ' << p.first << ' ' << p.second << '\n';
         if (options.frames > 1)
@@ -143,15 +153,16 @@ int runCollide(const CollideOptions& options) {
         return fail(kExitFailure, "cannot write " + options.pairs_path);
 
     double mean = 0;
-    for (double ms : total_ms) mean += ms / double(total_ms.size());
+    for (double ms : total_ms)
+        mean += ms / double(total_ms.size());
     std::cout << options.scene << ": " << scene->objects.size() << " objects, "
               << scene->triangleCount() << " triangles; method " << options.method << "\n"
-              << options.frames << (options.frames == 1 ? " frame" : " frames") << ": mean "
-              << mean << " ms, median " << median(total_ms) << " ms per frame, "
+              << options.frames << (options.frames == 1 ? " frame" : " frames") << ": mean " << mean
+              << " ms, median " << median(total_ms) << " ms per frame, "
               << double(pair_sum) / options.frames << " intersecting pairs per frame\n"
               << "last frame: " << result.stats.object_pairs << " candidate object pairs, "
-              << result.stats.triangle_pairs << " candidate triangle pairs, "
-              << result.pairs.size() << " intersecting\n";
+              << result.stats.triangle_pairs << " candidate triangle pairs, " << result.pairs.size()
+              << " intersecting\n";
 
     if (!options.json_path.empty()) {
         nlohmann::json document = {{"method", options.method},

@@ -11,12 +11,13 @@ constexpr uint8_t kInk[3] = {30, 30, 30};
 constexpr uint8_t kGrid[3] = {200, 200, 200};
 constexpr uint8_t kFaintGrid[3] = {235, 235, 235};
 // Distinct on white, in series order.
-constexpr uint8_t kColours[][3] = {{214, 39, 40}, {31, 119, 180}, {44, 160, 44},
+constexpr uint8_t kColours[][3] = {{214, 39, 40},  {31, 119, 180},  {44, 160, 44},
                                    {255, 127, 14}, {148, 103, 189}, {140, 86, 75}};
 constexpr uint32_t kLeft = 80, kRight = 170, kTop = 60, kBottom = 60;
 
 void setPixel(Strip& s, int x, int y, const uint8_t c[3]) {
-    if (x < 0 || y < 0 || x >= int(s.width) || y >= int(s.height)) return;
+    if (x < 0 || y < 0 || x >= int(s.width) || y >= int(s.height))
+        return;
     uint8_t* p = &s.rgba[(std::size_t(y) * s.width + std::size_t(x)) * 4];
     p[0] = c[0];
     p[1] = c[1];
@@ -30,9 +31,11 @@ void drawLine(Strip& s, double x0, double y0, double x1, double y1, const uint8_
     const int steps = int(std::max(std::abs(x1 - x0), std::abs(y1 - y0))) + 1;
     for (int i = 0; i <= steps; ++i) {
         const double t = double(i) / steps;
-        const int x = int(std::lround(x0 + (x1 - x0) * t)), y = int(std::lround(y0 + (y1 - y0) * t));
+        const int x = int(std::lround(x0 + (x1 - x0) * t)),
+                  y = int(std::lround(y0 + (y1 - y0) * t));
         for (int dy = -thickness / 2; dy <= thickness / 2; ++dy)
-            for (int dx = -thickness / 2; dx <= thickness / 2; ++dx) setPixel(s, x + dx, y + dy, c);
+            for (int dx = -thickness / 2; dx <= thickness / 2; ++dx)
+                setPixel(s, x + dx, y + dy, c);
     }
 }
 
@@ -40,7 +43,8 @@ void drawLine(Strip& s, double x0, double y0, double x1, double y1, const uint8_
 double tickStep(double top) {
     const double raw = top / 5, power = std::pow(10.0, std::floor(std::log10(raw)));
     for (double m : {1.0, 2.0, 5.0})
-        if (m * power >= raw) return m * power;
+        if (m * power >= raw)
+            return m * power;
     return 10 * power;
 }
 
@@ -61,17 +65,20 @@ Strip plotLines(const std::vector<PlotSeries>& series, const std::string& title,
     s.rgba.assign(std::size_t(width) * height * 4, 255);
     double x_top = 0, y_low = INFINITY, y_high = 0;
     for (const PlotSeries& line : series) {
-        for (double x : line.x) x_top = std::max(x_top, x);
+        for (double x : line.x)
+            x_top = std::max(x_top, x);
         for (double y : line.y)
             if (y > 0) {
                 y_low = std::min(y_low, y);
                 y_high = std::max(y_high, y);
             }
     }
-    if (!(y_high > 0)) y_low = y_high = 1;
+    if (!(y_high > 0))
+        y_low = y_high = 1;
     const double x_step = tickStep(x_top > 0 ? x_top : 1);
     x_top = std::ceil((x_top > 0 ? x_top : 1) / x_step) * x_step;
-    const double decade_low = std::floor(std::log10(y_low)), decade_high = std::ceil(std::log10(y_high));
+    const double decade_low = std::floor(std::log10(y_low)),
+                 decade_high = std::ceil(std::log10(y_high));
     const double decades = std::max(decade_high - decade_low, 1.0);
     const double plot_w = double(width - kLeft - kRight), plot_h = double(height - kTop - kBottom);
     const auto px = [&](double x) { return kLeft + x / x_top * plot_w; };
@@ -79,7 +86,8 @@ Strip plotLines(const std::vector<PlotSeries>& series, const std::string& title,
         const double t = (std::log10(std::max(y, 1e-300)) - decade_low) / decades;
         return kTop + plot_h - std::clamp(t, 0.0, 1.0) * plot_h;
     };
-    const double y_bottom = std::pow(10.0, decade_low), y_top = std::pow(10.0, decade_low + decades);
+    const double y_bottom = std::pow(10.0, decade_low),
+                 y_top = std::pow(10.0, decade_low + decades);
 
     for (double decade = decade_low; decade <= decade_low + decades + 1e-9; ++decade) {
         const double y = std::pow(10.0, decade);
@@ -102,11 +110,14 @@ Strip plotLines(const std::vector<PlotSeries>& series, const std::string& title,
         const uint8_t* colour = kColours[i % std::size(kColours)];
         const PlotSeries& line = series[i];
         for (std::size_t k = 0; k + 1 < line.x.size(); ++k)
-            drawLine(s, px(line.x[k]), py(line.y[k]), px(line.x[k + 1]), py(line.y[k + 1]), colour, 3);
+            drawLine(s, px(line.x[k]), py(line.y[k]), px(line.x[k + 1]), py(line.y[k + 1]), colour,
+                     3);
         for (std::size_t k = 0; k < line.x.size(); ++k)
-            drawLine(s, px(line.x[k]) - 3, py(line.y[k]), px(line.x[k]) + 3, py(line.y[k]), colour, 7);
+            drawLine(s, px(line.x[k]) - 3, py(line.y[k]), px(line.x[k]) + 3, py(line.y[k]), colour,
+                     7);
         const uint32_t legend_y = kTop + 10 + uint32_t(i) * 24;
-        drawLine(s, width - kRight + 15, legend_y + 6, width - kRight + 40, legend_y + 6, colour, 3);
+        drawLine(s, width - kRight + 15, legend_y + 6, width - kRight + 40, legend_y + 6, colour,
+                 3);
         drawText(s, width - kRight + 48, legend_y, line.name, kInk);
     }
     return s;

@@ -10,7 +10,7 @@ namespace vissort::cli {
 
 struct PlotSeries {
     std::string name;
-    std::vector<double> x, y;  // same length; points joined in order
+    std::vector<double> x, y; // same length; points joined in order
 };
 
 /// A width x height chart of the series, x linear from 0 to the largest x, y logarithmic over

@@ -35,13 +35,15 @@ public:
             appendTrianglesMeetingBox(triangle_boxes_, objects_[b], object_boxes_[a], near_b_);
             for (uint32_t ta : near_a_)
                 for (uint32_t tb : near_b_) {
-                    if (!boxesOverlap(triangle_boxes_[ta], triangle_boxes_[tb])) continue;
+                    if (!boxesOverlap(triangle_boxes_[ta], triangle_boxes_[tb]))
+                        continue;
                     ++result.stats.triangle_pairs;
                     if (trianglesIntersect(cornersOf(positions, ta), cornersOf(positions, tb)))
                         result.pairs.push_back({std::min(ta, tb), std::max(ta, tb)});
                 }
         }
-        for (uint8_t in : in_pair_) result.stats.colliding_objects += in;
+        for (uint8_t in : in_pair_)
+            result.stats.colliding_objects += in;
         result.stats.box_triangle_pairs = result.stats.triangle_pairs;
         // The box filters and the exact tests interleave here; the exact tests are the work.
         exact_ms = clock.lap();

@@ -20,10 +20,14 @@ bool parseCollisionMethod(const std::string& name, CollisionMethod& method) {
 
 const char* collisionMethodName(CollisionMethod method) {
     switch (method) {
-    case CollisionMethod::vissort: return "vissort";
-    case CollisionMethod::brute: return "brute";
-    case CollisionMethod::bullet: return "bullet";
-    case CollisionMethod::fcl: return "fcl";
+    case CollisionMethod::vissort:
+        return "vissort";
+    case CollisionMethod::brute:
+        return "brute";
+    case CollisionMethod::bullet:
+        return "bullet";
+    case CollisionMethod::fcl:
+        return "fcl";
     }
     return "?";
 }
@@ -63,14 +67,21 @@ CollisionDetector::CollisionDetector(std::span<const PrimitiveRange> objects,
     : settings_(settings) {
     checkSettings(settings_);
     for (const PrimitiveRange& o : objects)
-        triangles_needed_ = std::max<uint64_t>(triangles_needed_, uint64_t(o.first_triangle) + o.triangle_count);
+        triangles_needed_ =
+            std::max<uint64_t>(triangles_needed_, uint64_t(o.first_triangle) + o.triangle_count);
     switch (settings_.method) {
     case CollisionMethod::vissort:
         collider_ = detail::makeVisibilityCollider(objects, settings_);
         break;
-    case CollisionMethod::brute: collider_ = detail::makeBruteForceCollider(objects); break;
-    case CollisionMethod::bullet: collider_ = detail::makeBulletCollider(objects); break;
-    case CollisionMethod::fcl: collider_ = detail::makeFclCollider(objects); break;
+    case CollisionMethod::brute:
+        collider_ = detail::makeBruteForceCollider(objects);
+        break;
+    case CollisionMethod::bullet:
+        collider_ = detail::makeBulletCollider(objects);
+        break;
+    case CollisionMethod::fcl:
+        collider_ = detail::makeFclCollider(objects);
+        break;
     }
     if (!collider_)
         throw std::invalid_argument(std::string("collision method '") +
@@ -85,10 +96,9 @@ void CollisionDetector::collide(const TrianglePositions& positions, CollisionRes
     // Cheap next to the frame, and what makes bad input an error instead of a wrong answer.
     if (positions.y.size() != positions.x.size() || positions.z.size() != positions.x.size() ||
         positions.x.size() % 3 != 0 || positions.triangleCount() < triangles_needed_)
-        throw std::invalid_argument("collision positions hold " +
-                                    std::to_string(positions.triangleCount()) +
-                                    " triangles; the objects need " +
-                                    std::to_string(triangles_needed_));
+        throw std::invalid_argument(
+            "collision positions hold " + std::to_string(positions.triangleCount()) +
+            " triangles; the objects need " + std::to_string(triangles_needed_));
     for (const std::vector<float>* axis : {&positions.x, &positions.y, &positions.z})
         for (float v : *axis)
             if (!std::isfinite(v))

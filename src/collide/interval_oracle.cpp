@@ -24,7 +24,7 @@ constexpr float kInfinity = std::numeric_limits<float>::infinity();
 constexpr double kRoundingBound = 0x1p-44;
 
 struct Axes {
-    double u[3], v[3], w[3];  // image right, image down, view direction
+    double u[3], v[3], w[3]; // image right, image down, view direction
 };
 
 Axes axesAlong(const Vec3& direction) {
@@ -32,18 +32,20 @@ Axes axesAlong(const Vec3& direction) {
                                     direction.z * direction.z);
     const double w[3] = {direction.x / length, direction.y / length, direction.z / length};
     Axes a{};
-    for (int k = 0; k < 3; ++k) a.w[k] = w[k];
+    for (int k = 0; k < 3; ++k)
+        a.w[k] = w[k];
     // Any right-handed frame will do; an axis maps to the two other axes exactly.
     const int dominant = std::abs(w[0]) >= std::abs(w[1]) && std::abs(w[0]) >= std::abs(w[2]) ? 0
-                         : std::abs(w[1]) >= std::abs(w[2])                                  ? 1
-                                                                                             : 2;
+                         : std::abs(w[1]) >= std::abs(w[2])                                   ? 1
+                                                                                              : 2;
     double helper[3] = {0, 0, 0};
     helper[(dominant + 1) % 3] = 1;
     // u = normalize(helper x w), v = w x u.
     double u[3] = {helper[1] * w[2] - helper[2] * w[1], helper[2] * w[0] - helper[0] * w[2],
                    helper[0] * w[1] - helper[1] * w[0]};
     const double ul = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    for (int k = 0; k < 3; ++k) a.u[k] = u[k] / ul;
+    for (int k = 0; k < 3; ++k)
+        a.u[k] = u[k] / ul;
     a.v[0] = w[1] * a.u[2] - w[2] * a.u[1];
     a.v[1] = w[2] * a.u[0] - w[0] * a.u[2];
     a.v[2] = w[0] * a.u[1] - w[1] * a.u[0];
@@ -75,7 +77,9 @@ void IntervalOracle::bind(std::span<const Box3f> boxes, std::span<const uint32_t
     // A box's interval along unit axis a: centre . a +- sum |a_k| half_k, within the rounding
     // bound of the coordinates' magnitude (nothing along an axis).
     double magnitude = 0;
-    for (int k = 0; k < 3; ++k) magnitude = std::max({magnitude, std::abs(double(frame.min[k])), std::abs(double(frame.max[k]))});
+    for (int k = 0; k < 3; ++k)
+        magnitude =
+            std::max({magnitude, std::abs(double(frame.min[k])), std::abs(double(frame.max[k]))});
     const auto interval = [&](const double a[3], const Box3f& b, double& low, double& high) {
         if (along_axis) {
             const int k = a[0] != 0 ? 0 : a[1] != 0 ? 1 : 2;
@@ -156,14 +160,17 @@ void IntervalOracle::bind(std::span<const Box3f> boxes, std::span<const uint32_t
     stored_.assign(std::size_t(width) * height, kInfinity);
 }
 
-void IntervalOracle::clear() { std::fill(stored_.begin(), stored_.end(), kInfinity); }
+void IntervalOracle::clear() {
+    std::fill(stored_.begin(), stored_.end(), kInfinity);
+}
 
 void IntervalOracle::draw(uint32_t primitive) {
     const Footprint& f = footprints_[primitive];
     for (uint32_t y = 0; y < f.height; ++y) {
         float* stored = stored_.data() + std::size_t(f.y0 + y) * width_ + f.x0;
         const float* nearest = near_.data() + f.first + std::size_t(y) * f.width;
-        for (uint32_t x = 0; x < f.width; ++x) stored[x] = std::min(stored[x], nearest[x]);
+        for (uint32_t x = 0; x < f.width; ++x)
+            stored[x] = std::min(stored[x], nearest[x]);
     }
 }
 
@@ -173,8 +180,10 @@ bool IntervalOracle::anyBehind(uint32_t primitive) {
         const float* stored = stored_.data() + std::size_t(f.y0 + y) * width_ + f.x0;
         const float* farthest = far_.data() + f.first + std::size_t(y) * f.width;
         bool behind = false;
-        for (uint32_t x = 0; x < f.width; ++x) behind |= farthest[x] >= stored[x];
-        if (behind) return true;
+        for (uint32_t x = 0; x < f.width; ++x)
+            behind |= farthest[x] >= stored[x];
+        if (behind)
+            return true;
     }
     return false;
 }

@@ -1,19 +1,19 @@
 #pragma once
 // A conservative occlusion oracle for collision culling along an orthographic direction, with
 // no rasterizer: each box (of a triangle, or of a group of them) covers every pixel its projected
-// rectangle touches, with its whole depth range. Coverage and depths only grow, so "behind" answers only grow: a triangle
-// that touches another is always behind it and it behind the triangle (docs/collision.md).
-// Sub-pixel triangles (a detailed mesh in a coarse view) cost a handful of pixel operations
-// each; large ones are coarse but still conservative. Each primitive's pixels hold the nearest
-// and farthest depth of its triangles there, computed once per bind, so a draw or a query costs
-// the primitive's pixels, not its triangles. Internal.
+// rectangle touches, with its whole depth range. Coverage and depths only grow, so "behind" answers
+// only grow: a triangle that touches another is always behind it and it behind the triangle
+// (docs/collision.md). Sub-pixel triangles (a detailed mesh in a coarse view) cost a handful of
+// pixel operations each; large ones are coarse but still conservative. Each primitive's pixels hold
+// the nearest and farthest depth of its triangles there, computed once per bind, so a draw or a
+// query costs the primitive's pixels, not its triangles. Internal.
 
 #include <cstdint>
 #include <span>
 #include <vector>
 
 #include "collide/triangle_boxes.h"
-#include "vissort/geometry.h"  // Vec3
+#include "vissort/geometry.h" // Vec3
 #include "vissort/occlusion_oracle.h"
 
 namespace vissort::detail {
@@ -41,12 +41,12 @@ private:
     // depth of its triangles there (+inf and -inf where none covers it).
     struct Footprint {
         uint32_t x0 = 0, y0 = 0, width = 0, height = 0;
-        std::size_t first = 0;  // into near_ and far_
+        std::size_t first = 0; // into near_ and far_
     };
     uint32_t width_ = 0, height_ = 0;
     std::vector<Footprint> footprints_;
     std::vector<float> near_, far_;
-    std::vector<float> stored_;  // the depth buffer, +inf when clear
+    std::vector<float> stored_; // the depth buffer, +inf when clear
     // Per box of the primitive being bound: its pixel rectangle and depth range.
     struct Splat {
         uint32_t x0, y0, x1, y1;

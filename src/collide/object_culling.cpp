@@ -20,7 +20,8 @@ constexpr uint32_t kPartTriangles = 8;
 double nearestAlong(const Box3f& box, const Vec3& d) {
     const double axis[3] = {d.x, d.y, d.z};
     double key = 0;
-    for (int k = 0; k < 3; ++k) key += axis[k] * (axis[k] >= 0 ? box.min[k] : box.max[k]);
+    for (int k = 0; k < 3; ++k)
+        key += axis[k] * (axis[k] >= 0 ? box.min[k] : box.max[k]);
     return key;
 }
 
@@ -29,7 +30,6 @@ double nearestAlong(const Box3f& box, const Vec3& d) {
 std::size_t CandidatePairs::aliveCount() const {
     return std::size_t(std::count(alive.begin(), alive.end(), uint8_t(1)));
 }
-
 
 ObjectCulling::ObjectCulling(std::span<const PrimitiveRange> objects,
                              const CollisionSettings& settings)
@@ -46,9 +46,11 @@ void ObjectCulling::cull(std::span<const RefitBvh> trees, std::span<const Box3f>
                          CandidatePairs& candidates, CollisionStats& stats) {
     for (std::size_t d = 0; d < directions_.size(); ++d) {
         const std::size_t given = candidates.aliveCount();
-        if (given == 0) break;
+        if (given == 0)
+            break;
         const std::size_t culled = cullAlong(d, trees, object_boxes, candidates, stats);
-        if (culled == 0 || double(culled) < double(min_cull_fraction_) * double(given)) break;
+        if (culled == 0 || double(culled) < double(min_cull_fraction_) * double(given))
+            break;
     }
 }
 
@@ -61,28 +63,31 @@ std::size_t ObjectCulling::cullAlong(std::size_t direction, std::span<const Refi
     // at most kPartTriangles triangles that meet a partner's box (only those can touch it).
     start_.clear();
     node_marks_.resize(objects_.size());
-    if (++mark_round_ == 0) {  // wrapped: old marks could match again
-        for (auto& marks : node_marks_) std::fill(marks.begin(), marks.end(), 0);
+    if (++mark_round_ == 0) { // wrapped: old marks could match again
+        for (auto& marks : node_marks_)
+            std::fill(marks.begin(), marks.end(), 0);
         mark_round_ = 1;
     }
     const auto add = [&](uint32_t object, uint32_t partner) {
         if (slot_of_[object] < 0) {
             slot_of_[object] = int32_t(start_.size());
             start_.push_back(object);
-            if (object_parts_.size() < start_.size()) object_parts_.resize(start_.size());
+            if (object_parts_.size() < start_.size())
+                object_parts_.resize(start_.size());
             object_parts_[start_.size() - 1].clear();
         }
         trees[object].appendCut(object_boxes[partner], kPartTriangles, node_marks_[object],
                                 mark_round_, object_parts_[std::size_t(slot_of_[object])]);
     };
     for (std::size_t i = 0; i < candidates.objects.size(); ++i) {
-        if (!candidates.alive[i]) continue;
+        if (!candidates.alive[i])
+            continue;
         add(candidates.objects[i].first, candidates.objects[i].second);
         add(candidates.objects[i].second, candidates.objects[i].first);
     }
 
     // The start list: last frame's order along this direction (coherence), or a depth key.
-    std::vector<uint32_t>& slots = slots_;  // places in start_, in start-list order
+    std::vector<uint32_t>& slots = slots_; // places in start_, in start-list order
     slots.resize(start_.size());
     std::iota(slots.begin(), slots.end(), 0u);
     const bool all_ranked =
@@ -107,8 +112,10 @@ std::size_t ObjectCulling::cullAlong(std::size_t direction, std::span<const Refi
         box_starts_.push_back(uint32_t(bound_boxes_.size()));
     }
     Box3f frame{};
-    if (!bound_boxes_.empty()) frame = bound_boxes_.front();
-    for (const Box3f& part : bound_boxes_) includeBox(frame, part);
+    if (!bound_boxes_.empty())
+        frame = bound_boxes_.front();
+    for (const Box3f& part : bound_boxes_)
+        includeBox(frame, part);
     oracle_.bind(bound_boxes_, box_starts_, frame, d, width_, height_);
     if (identity_.size() != slots.size()) {
         identity_.resize(slots.size());
@@ -119,12 +126,15 @@ std::size_t ObjectCulling::cullAlong(std::size_t direction, std::span<const Refi
     ++stats.directions;
 
     const auto object_at = [&](uint32_t bound) { return start_[slots[bound]]; };
-    for (std::size_t i = 0; i < sorted_.order.size(); ++i) rank[object_at(sorted_.order[i])] = uint32_t(i);
+    for (std::size_t i = 0; i < sorted_.order.size(); ++i)
+        rank[object_at(sorted_.order[i])] = uint32_t(i);
     for (std::size_t c = 0; c < sorted_.cycles.size(); ++c)
-        for (uint32_t p : sorted_.cycles[c]) cycle_of_[object_at(p)] = int32_t(c);
+        for (uint32_t p : sorted_.cycles[c])
+            cycle_of_[object_at(p)] = int32_t(c);
     std::size_t culled = 0;
     for (std::size_t i = 0; i < candidates.objects.size(); ++i) {
-        if (!candidates.alive[i]) continue;
+        if (!candidates.alive[i])
+            continue;
         const auto [a, b] = candidates.objects[i];
         if (cycle_of_[a] < 0 || cycle_of_[a] != cycle_of_[b]) {
             candidates.alive[i] = 0;

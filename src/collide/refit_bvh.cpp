@@ -26,7 +26,8 @@ void RefitBvh::build(const TrianglePositions& positions, PrimitiveRange object) 
     std::iota(triangles_.begin(), triangles_.end(), object.first_triangle);
     leaf_boxes_.resize(object.triangle_count);
     boxes_.resize(object.triangle_count);
-    for (uint32_t i = 0; i < object.triangle_count; ++i) leaf_boxes_[i] = triangleBox(positions, triangles_[i]);
+    for (uint32_t i = 0; i < object.triangle_count; ++i)
+        leaf_boxes_[i] = triangleBox(positions, triangles_[i]);
     nodes_.clear();
     nodes_.reserve(2 * std::size_t(object.triangle_count) / kLeafSize + 1);
     buildRange(0, object.triangle_count);
@@ -38,7 +39,8 @@ void RefitBvh::build(const TrianglePositions& positions, PrimitiveRange object) 
 uint32_t RefitBvh::buildRange(uint32_t first, uint32_t size) {
     const uint32_t index = uint32_t(nodes_.size());
     nodes_.push_back({{}, first, size, 0, index + 1});
-    if (size <= kLeafSize) return index;
+    if (size <= kLeafSize)
+        return index;
     // Of the median splits along the three axes, the one whose halves' boxes have the least
     // surface area (the surface area heuristic's estimate of how often they are visited).
     const auto area = [](const Box3f& b) {
@@ -49,13 +51,16 @@ uint32_t RefitBvh::buildRange(uint32_t first, uint32_t size) {
     float best_cost = INFINITY;
     for (int axis = 0; axis < 3; ++axis) {
         std::iota(order.begin(), order.end(), first);
-        std::nth_element(order.begin(), order.begin() + size / 2, order.end(), [&](uint32_t p, uint32_t q) {
-            return leaf_boxes_[p].min[axis] + leaf_boxes_[p].max[axis] <
-                   leaf_boxes_[q].min[axis] + leaf_boxes_[q].max[axis];
-        });
+        std::nth_element(order.begin(), order.begin() + size / 2, order.end(),
+                         [&](uint32_t p, uint32_t q) {
+                             return leaf_boxes_[p].min[axis] + leaf_boxes_[p].max[axis] <
+                                    leaf_boxes_[q].min[axis] + leaf_boxes_[q].max[axis];
+                         });
         Box3f left = leaf_boxes_[order[0]], right = leaf_boxes_[order[size / 2]];
-        for (uint32_t i = 1; i < size / 2; ++i) includeBox(left, leaf_boxes_[order[i]]);
-        for (uint32_t i = size / 2 + 1; i < size; ++i) includeBox(right, leaf_boxes_[order[i]]);
+        for (uint32_t i = 1; i < size / 2; ++i)
+            includeBox(left, leaf_boxes_[order[i]]);
+        for (uint32_t i = size / 2 + 1; i < size; ++i)
+            includeBox(right, leaf_boxes_[order[i]]);
         const float cost = area(left) + area(right);
         if (cost < best_cost || best.empty()) {
             best_cost = cost;
@@ -81,14 +86,17 @@ uint32_t RefitBvh::buildRange(uint32_t first, uint32_t size) {
 void RefitBvh::refit(const TrianglePositions& positions) {
     // The triangles' boxes in id order (the corners are read forward), then in leaf order from
     // that small array.
-    for (std::size_t i = 0; i < boxes_.size(); ++i) boxes_[i] = triangleBox(positions, first_triangle_ + uint32_t(i));
-    for (std::size_t i = 0; i < triangles_.size(); ++i) leaf_boxes_[i] = boxes_[triangles_[i] - first_triangle_];
+    for (std::size_t i = 0; i < boxes_.size(); ++i)
+        boxes_[i] = triangleBox(positions, first_triangle_ + uint32_t(i));
+    for (std::size_t i = 0; i < triangles_.size(); ++i)
+        leaf_boxes_[i] = boxes_[triangles_[i] - first_triangle_];
     // Children come after their parent: back to front, every child is refitted first.
     for (std::size_t i = nodes_.size(); i-- > 0;) {
         Node& n = nodes_[i];
         if (n.isLeaf()) {
             n.box = leaf_boxes_[n.first];
-            for (uint32_t k = 1; k < n.size; ++k) includeBox(n.box, leaf_boxes_[n.first + k]);
+            for (uint32_t k = 1; k < n.size; ++k)
+                includeBox(n.box, leaf_boxes_[n.first + k]);
         } else {
             n.box = nodes_[i + 1].box;
             includeBox(n.box, nodes_[n.right].box);
@@ -98,7 +106,8 @@ void RefitBvh::refit(const TrianglePositions& positions) {
 
 void RefitBvh::appendCut(const Box3f& region, uint32_t max_size, std::vector<uint32_t>& marks,
                          uint32_t round, std::vector<Box3f>& out) const {
-    if (marks.size() < nodes_.size()) marks.resize(nodes_.size(), 0);
+    if (marks.size() < nodes_.size())
+        marks.resize(nodes_.size(), 0);
     // Pre-order walk: a node that meets the region is cut when small enough, else opened.
     for (uint32_t i = 0; i < nodes_.size();) {
         const Node& n = nodes_[i];
@@ -111,7 +120,7 @@ void RefitBvh::appendCut(const Box3f& region, uint32_t max_size, std::vector<uin
             }
             i = n.after;
         } else {
-            i = i + 1;  // open: the left child follows
+            i = i + 1; // open: the left child follows
         }
     }
 }
@@ -125,7 +134,8 @@ uint64_t overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b,
     const auto ba = a.triangleBoxes(), bb = b.triangleBoxes();
     uint64_t box_pairs = 0;
     stack.clear();
-    if (!boxesOverlap(na[0].box, nb[0].box)) return 0;
+    if (!boxesOverlap(na[0].box, nb[0].box))
+        return 0;
     stack.emplace_back(0, 0);
     // Every pair on the stack has overlapping boxes: children are tested before they are pushed.
     while (!stack.empty()) {
@@ -135,9 +145,11 @@ uint64_t overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b,
         const RefitBvh::Node& y = nb[j];
         if (x.isLeaf() && y.isLeaf()) {
             for (uint32_t p = x.first; p < x.first + x.size; ++p) {
-                if (!boxesOverlap(ba[p], y.box)) continue;
+                if (!boxesOverlap(ba[p], y.box))
+                    continue;
                 for (uint32_t q = y.first; q < y.first + y.size; ++q) {
-                    if (!boxesOverlap(ba[p], bb[q])) continue;
+                    if (!boxesOverlap(ba[p], bb[q]))
+                        continue;
                     ++box_pairs;
                     // The diagonals only for boxes that meet: few pairs, so computed here.
                     if (diagonalsOverlap(diagonalExtents(positions, ta[p]),
@@ -152,13 +164,16 @@ uint64_t overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b,
         if (!x.isLeaf() && !y.isLeaf()) {
             for (uint32_t cx : {i + 1, x.right})
                 for (uint32_t cy : {j + 1, y.right})
-                    if (boxesOverlap(na[cx].box, nb[cy].box)) stack.emplace_back(cx, cy);
+                    if (boxesOverlap(na[cx].box, nb[cy].box))
+                        stack.emplace_back(cx, cy);
         } else if (!x.isLeaf()) {
             for (uint32_t child : {i + 1, x.right})
-                if (boxesOverlap(na[child].box, y.box)) stack.emplace_back(child, j);
+                if (boxesOverlap(na[child].box, y.box))
+                    stack.emplace_back(child, j);
         } else {
             for (uint32_t child : {j + 1, y.right})
-                if (boxesOverlap(x.box, nb[child].box)) stack.emplace_back(i, child);
+                if (boxesOverlap(x.box, nb[child].box))
+                    stack.emplace_back(i, child);
         }
     }
     return box_pairs;

@@ -47,11 +47,11 @@ public:
 
 private:
     uint32_t buildRange(uint32_t first, uint32_t size);
-    std::vector<Node> nodes_;  // pre-order: a parent before its children
+    std::vector<Node> nodes_; // pre-order: a parent before its children
     std::vector<uint32_t> triangles_;
     uint32_t first_triangle_ = 0;
-    std::vector<Box3f> boxes_;       // in triangle id order, from first_triangle_
-    std::vector<Box3f> leaf_boxes_;  // leaf_boxes_[i]: the box of triangles_[i]
+    std::vector<Box3f> boxes_;      // in triangle id order, from first_triangle_
+    std::vector<Box3f> leaf_boxes_; // leaf_boxes_[i]: the box of triangles_[i]
 };
 
 /// The box of triangle t of positions.

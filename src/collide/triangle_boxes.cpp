@@ -77,7 +77,8 @@ Box3f boxOfRange(std::span<const Box3f> triangle_boxes, PrimitiveRange range) {
 void appendTrianglesMeetingBox(std::span<const Box3f> triangle_boxes, PrimitiveRange object,
                                const Box3f& box, std::vector<uint32_t>& out) {
     for (uint32_t t = object.first_triangle; t < object.first_triangle + object.triangle_count; ++t)
-        if (boxesOverlap(triangle_boxes[t], box)) out.push_back(t);
+        if (boxesOverlap(triangle_boxes[t], box))
+            out.push_back(t);
 }
 
 void overlappingBoxPairs(std::span<const Box3f> object_boxes,
@@ -93,7 +94,8 @@ void overlappingBoxPairs(std::span<const Box3f> object_boxes,
         const Box3f& a = object_boxes[by_min_x[i]];
         for (std::size_t j = i + 1; j < by_min_x.size(); ++j) {
             const Box3f& b = object_boxes[by_min_x[j]];
-            if (b.min[0] > a.max[0]) break;  // sorted by min x: no later box reaches a
+            if (b.min[0] > a.max[0])
+                break; // sorted by min x: no later box reaches a
             if (boxesOverlap(a, b))
                 pairs.emplace_back(std::min(by_min_x[i], by_min_x[j]),
                                    std::max(by_min_x[i], by_min_x[j]));

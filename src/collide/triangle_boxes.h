@@ -18,7 +18,8 @@ struct Box3f {
 };
 
 /// A box that overlaps nothing (an object without triangles).
-inline constexpr Box3f kEmptyBox = {{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
+inline constexpr Box3f kEmptyBox = {{INFINITY, INFINITY, INFINITY},
+                                    {-INFINITY, -INFINITY, -INFINITY}};
 
 /// Closed boxes: touching counts as overlapping.
 inline bool boxesOverlap(const Box3f& a, const Box3f& b) {
@@ -40,7 +41,8 @@ inline Box3f intersectBoxes(const Box3f& a, const Box3f& b) {
 inline int longestAxis(const Box3f& box) {
     int axis = 0;
     for (int k = 1; k < 3; ++k)
-        if (box.max[k] - box.min[k] > box.max[axis] - box.min[axis]) axis = k;
+        if (box.max[k] - box.min[k] > box.max[axis] - box.min[axis])
+            axis = k;
     return axis;
 }
 
@@ -63,7 +65,8 @@ struct DiagonalExtents {
 
 inline bool diagonalsOverlap(const DiagonalExtents& a, const DiagonalExtents& b) {
     bool overlap = true;
-    for (int k = 0; k < 4; ++k) overlap &= a.min[k] <= b.max[k] && b.min[k] <= a.max[k];
+    for (int k = 0; k < 4; ++k)
+        overlap &= a.min[k] <= b.max[k] && b.min[k] <= a.max[k];
     return overlap;
 }
 
@@ -75,8 +78,6 @@ Box3f objectBox(const TrianglePositions& positions, PrimitiveRange object);
 
 /// boxes[t] = the box of triangle t, for every triangle of positions (boxes is resized).
 void computeTriangleBoxes(const TrianglePositions& positions, std::vector<Box3f>& boxes);
-
-
 
 /// The box of the triangles of range (triangle_count >= 1), from their boxes.
 Box3f boxOfRange(std::span<const Box3f> triangle_boxes, PrimitiveRange range);

@@ -29,7 +29,8 @@ public:
           threads_(settings.threads != 0 ? settings.threads
                                          : std::max(1u, std::thread::hardware_concurrency())),
           workers_(threads_) {
-        if (threads_ > 1) pool_ = std::make_unique<FastWorkerPool>(threads_);
+        if (threads_ > 1)
+            pool_ = std::make_unique<FastWorkerPool>(threads_);
     }
 
     void collide(const TrianglePositions& positions, CollisionResult& result) override {
@@ -43,8 +44,10 @@ public:
                 object_boxes_[o] = kEmptyBox;
                 return;
             }
-            if (trees_[o].isBuilt()) trees_[o].refit(positions);
-            else trees_[o].build(positions, objects_[o]);
+            if (trees_[o].isBuilt())
+                trees_[o].refit(positions);
+            else
+                trees_[o].build(positions, objects_[o]);
             object_boxes_[o] = trees_[o].bounds();
         });
         overlappingBoxPairs(object_boxes_, candidates_.objects);
@@ -56,13 +59,16 @@ public:
         live_.clear();
         in_pair_.assign(objects_.size(), 0);
         for (std::size_t i = 0; i < candidates_.objects.size(); ++i) {
-            if (!candidates_.alive[i]) continue;
+            if (!candidates_.alive[i])
+                continue;
             live_.push_back(uint32_t(i));
             in_pair_[candidates_.objects[i].first] = in_pair_[candidates_.objects[i].second] = 1;
         }
         stats.object_pairs = live_.size();
-        for (uint8_t in : in_pair_) stats.colliding_objects += in;
-        for (Worker& w : workers_) w.clear();
+        for (uint8_t in : in_pair_)
+            stats.colliding_objects += in;
+        for (Worker& w : workers_)
+            w.clear();
         parallelFor(live_.size(), [&](std::size_t i, Worker& w) {
             const auto [a, b] = candidates_.objects[live_[i]];
             w.candidates.clear();
@@ -80,7 +86,7 @@ public:
             result.pairs.insert(result.pairs.end(), w.pairs.begin(), w.pairs.end());
             stats.triangle_pairs += w.triangle_pairs;
             stats.box_triangle_pairs += w.box_triangle_pairs;
-            exact_ms = std::max(exact_ms, w.exact_ms);  // the threads' exact tests overlap
+            exact_ms = std::max(exact_ms, w.exact_ms); // the threads' exact tests overlap
         }
         stats.exact_ms = exact_ms;
         stats.cull_ms = clock.lap() - exact_ms;
@@ -102,10 +108,10 @@ private:
 
     /// body(i, worker) for i = 0..count-1, items claimed one at a time by the threads (pairs
     /// differ widely in cost).
-    template <class Body>
-    void parallelFor(std::size_t count, Body&& body) {
+    template <class Body> void parallelFor(std::size_t count, Body&& body) {
         if (!pool_ || count < 2) {
-            for (std::size_t i = 0; i < count; ++i) body(i, workers_[0]);
+            for (std::size_t i = 0; i < count; ++i)
+                body(i, workers_[0]);
             return;
         }
         struct Context {
@@ -118,8 +124,8 @@ private:
             uint32_t(std::min<std::size_t>(threads_, count)),
             [](void* c, uint32_t thread) {
                 Context& context = *static_cast<Context*>(c);
-                for (std::size_t i; (i = context.next.fetch_add(1, std::memory_order_relaxed)) <
-                                    context.count;)
+                for (std::size_t i;
+                     (i = context.next.fetch_add(1, std::memory_order_relaxed)) < context.count;)
                     (*context.body)(i, (*context.workers)[thread]);
             },
             &context);

@@ -38,23 +38,25 @@ TEST_F(Cli, CollideMatchesBruteForceOver300FramesOfBunnies) {
     const std::string vissort = readFile(path("vissort.txt")), brute = readFile(path("brute.txt"));
     const std::vector<std::string> pairs = pairLines(brute);
     EXPECT_GT(pairs.size(), 300u * 500) << "the bunnies collide every frame";
-    EXPECT_TRUE(std::is_sorted(pairs.begin(), pairs.end(), [](const std::string& p, const std::string& q) {
-        long fp, ap, bp, fq, aq, bq;
-        std::istringstream(p) >> fp >> ap >> bp;
-        std::istringstream(q) >> fq >> aq >> bq;
-        return std::tie(fp, ap, bp) < std::tie(fq, aq, bq);
-    }));
+    EXPECT_TRUE(
+        std::is_sorted(pairs.begin(), pairs.end(), [](const std::string& p, const std::string& q) {
+            long fp, ap, bp, fq, aq, bq;
+            std::istringstream(p) >> fp >> ap >> bp;
+            std::istringstream(q) >> fq >> aq >> bq;
+            return std::tie(fp, ap, bp) < std::tie(fq, aq, bq);
+        }));
     EXPECT_TRUE(vissort == brute) << "vissort and brute force disagree on some pair";
 }
 
 TEST_F(Cli, EveryExactMethodAgreesOnRealMeshes) {
     std::string expected;
     for (const char* method : {"brute", "vissort", "bullet"}) {
-        const Result r = run({"collide", kInterpenetrating, "--method", method, "--pairs-out",
-                              path("pairs.txt")});
+        const Result r = run(
+            {"collide", kInterpenetrating, "--method", method, "--pairs-out", path("pairs.txt")});
         ASSERT_EQ(r.code, 0) << r;
         const std::string pairs = readFile(path("pairs.txt"));
-        if (expected.empty()) expected = pairs;
+        if (expected.empty())
+            expected = pairs;
         EXPECT_EQ(pairs, expected) << method;
     }
     EXPECT_GT(pairLines(expected).size(), 20u);
@@ -131,7 +133,8 @@ TEST_F(Cli, BenchCollisionMeasuresEveryMethod) {
 int magentaPixels(const std::string& png_path) {
     int width = 0, height = 0, channels = 0;
     unsigned char* png = stbi_load(png_path.c_str(), &width, &height, &channels, 4);
-    if (png == nullptr) return -1;
+    if (png == nullptr)
+        return -1;
     int count = 0;
     for (int i = 0; i < width * height; ++i) {
         const unsigned char* p = png + 4 * i;
@@ -142,10 +145,11 @@ int magentaPixels(const std::string& png_path) {
 }
 
 TEST_F(Cli, RenderHighlightsCollidingTriangles) {
-    const Result plain = run({"render", kInterpenetrating, "--size", "200x150", "-o", path("a.png")});
+    const Result plain =
+        run({"render", kInterpenetrating, "--size", "200x150", "-o", path("a.png")});
     ASSERT_EQ(plain.code, 0) << plain;
-    const Result marked = run({"render", kInterpenetrating, "--size", "200x150", "-o", path("b.png"),
-                               "--highlight-collisions", "--json", path("b.json")});
+    const Result marked = run({"render", kInterpenetrating, "--size", "200x150", "-o",
+                               path("b.png"), "--highlight-collisions", "--json", path("b.json")});
     ASSERT_EQ(marked.code, 0) << marked;
     EXPECT_NE(marked.out.find("colliding triangles highlighted"), std::string::npos) << marked;
     EXPECT_EQ(magentaPixels(path("a.png")), 0);
