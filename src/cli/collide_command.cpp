@@ -6,20 +6,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/bench_common.h"
 #include "cli/commands.h"
 #include "cli/json_output.h"
+#include "cli/obj_output.h"
 #include "vissort/collision.h"
 
 namespace vissort::cli {
 namespace {
-
-double median(std::vector<double> values) {
-    if (values.empty())
-        return 0;
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 
 nlohmann::json frameRecord(int frame, const CollisionStats& stats) {
     return {{"frame", frame},
@@ -36,27 +30,6 @@ nlohmann::json frameRecord(int frame, const CollisionStats& stats) {
               {"cull", stats.cull_ms},
               {"exact", stats.exact_ms},
               {"total", stats.total_ms}}}};
-}
-
-// One `o prim_<object id>` group per object, each object's triangles in id order, so the i-th
-// face of the file is triangle i.
-bool dumpObjects(const std::string& path, const TrianglePositions& positions,
-                 std::span<const PrimitiveRange> objects) {
-    std::ofstream out(path);
-    if (!out)
-        return false;
-    out << "# vissort collide: one group per object id; face i is triangle i\n";
-    std::size_t next_vertex = 1;
-    for (std::size_t o = 0; o < objects.size(); ++o) {
-        out << "o prim_" << o << '\n';
-        const std::size_t first = std::size_t(objects[o].first_triangle) * 3;
-        const std::size_t count = std::size_t(objects[o].triangle_count) * 3;
-        for (std::size_t c = first; c < first + count; ++c)
-            out << "v " << positions.x[c] << ' ' << positions.y[c] << ' ' << positions.z[c] << '\n';
-        for (std::size_t t = 0; t < count / 3; ++t, next_vertex += 3)
-            out << "f " << next_vertex << ' ' << next_vertex + 1 << ' ' << next_vertex + 2 << '\n';
-    }
-    return bool(out);
 }
 
 } // namespace
@@ -172,7 +145,10 @@ int runCollide(const CollideOptions& options) {
         if (const int code = writeJsonFile(options.json_path, document); code != kExitOk)
             return code;
     }
-    if (!options.dump_path.empty() && !dumpObjects(options.dump_path, positions, objects))
+    if (!options.dump_path.empty() &&
+        !writePrimitivesObj(options.dump_path,
+                            "vissort collide: one group per object id; face i is triangle i",
+                            positions, objects))
         return fail(kExitFailure, "cannot write " + options.dump_path);
     return kExitOk;
 }

@@ -1,5 +1,4 @@
 #include <algorithm>
-#include <fstream>
 #include <iostream>
 #include <numeric>
 
@@ -7,6 +6,7 @@
 
 #include "cli/commands.h"
 #include "cli/json_output.h"
+#include "cli/obj_output.h"
 #include "vissort/scene_orderer.h"
 
 namespace vissort::cli {
@@ -27,25 +27,6 @@ nlohmann::json frameRecord(const FrameOrder& frame, bool back_to_front) {
               {"cycle_queries", frame.stats.cycle_queries},
               {"cycle_draws", frame.stats.cycle_draws},
               {"ms", frame.milliseconds}}}};
-}
-
-// One `o prim_<id>` group per primitive so that any tool can check an order against it.
-bool dumpPrimitives(const std::string& path, const TrianglePositions& positions,
-                    std::span<const PrimitiveRange> primitives) {
-    std::ofstream out(path);
-    if (!out) return false;
-    out << "# vissort primitives: one group per primitive id, world space\n";
-    std::size_t next_vertex = 1;
-    for (std::size_t p = 0; p < primitives.size(); ++p) {
-        out << "o prim_" << p << '\n';
-        const std::size_t first = std::size_t(primitives[p].first_triangle) * 3;
-        const std::size_t count = std::size_t(primitives[p].triangle_count) * 3;
-        for (std::size_t c = first; c < first + count; ++c)
-            out << "v " << positions.x[c] << ' ' << positions.y[c] << ' ' << positions.z[c] << '\n';
-        for (std::size_t t = 0; t < count / 3; ++t, next_vertex += 3)
-            out << "f " << next_vertex << ' ' << next_vertex + 1 << ' ' << next_vertex + 2 << '\n';
-    }
-    return bool(out);
 }
 
 void printFrame(int index, const FrameOrder& frame) {
@@ -145,7 +126,9 @@ int runOrder(const OrderOptions& options) {
     }
     if (!options.dump_path.empty()) {
         const auto primitives = primitivesOf(*scene, level);
-        if (!dumpPrimitives(options.dump_path, positions, primitives))
+        if (!writePrimitivesObj(options.dump_path,
+                                "vissort primitives: one group per primitive id, world space",
+                                positions, primitives))
             return fail(kExitFailure, "cannot write " + options.dump_path);
     }
     return kExitOk;

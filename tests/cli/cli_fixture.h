@@ -78,9 +78,10 @@ protected:
 
     std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
-    Result run(const std::vector<std::string>& args) {
+    // Runs the tool; killed (code 124) after timeout_seconds: a hang fails the test, not the run.
+    Result run(const std::vector<std::string>& args, int timeout_seconds = 60) {
         Result r;
-        std::string command = "timeout 60 " + shellQuote(kTool);
+        std::string command = "timeout " + std::to_string(timeout_seconds) + " " + shellQuote(kTool);
         for (const std::string& a : args)
             command += ' ' + shellQuote(a);
         r.command = command;

@@ -31,7 +31,8 @@ std::vector<std::string> pairLines(const std::string& text) {
 TEST_F(Cli, CollideMatchesBruteForceOver300FramesOfBunnies) {
     for (const char* method : {"vissort", "brute"}) {
         const Result r = run({"collide", "builtin:bunnies?n=18", "--frames", "300", "--method",
-                              method, "--pairs-out", path(std::string(method) + ".txt")});
+                              method, "--pairs-out", path(std::string(method) + ".txt")},
+                             /*timeout_seconds=*/400); // brute force: 8 s in a release build
         ASSERT_EQ(r.code, 0) << r;
         EXPECT_NE(r.out.find("300 frames"), std::string::npos) << r;
     }
