@@ -14,11 +14,12 @@ if [ "${1:-}" = "--sanitize" ]; then
   build_dir=build-sanitize
   flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DVISSORT_SANITIZE=ON)
 elif [ "${1:-}" = "--tsan" ]; then
-  # Only the rasterizer starts threads (banded passes): its tests run 1, 2 and 3 threads.
+  # The threaded code: the rasterizer's banded passes (its tests run 1, 2 and 3 threads) and
+  # the collision detector's shared refits and pairs.
   build_dir=build-tsan
   flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DVISSORT_TSAN=ON)
-  targets=(--target raster_tests)
-  tests=(-R "FastCpuOracle")
+  targets=(--target raster_tests collide_tests)
+  tests=(-R "FastCpuOracle|CollisionThreads")
 fi
 
 bash scripts/install-deps.sh

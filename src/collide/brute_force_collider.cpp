@@ -23,7 +23,7 @@ public:
             object_boxes_[o] = boxOfRange(triangle_boxes_, objects_[o]);
         result.stats.update_ms = clock.lap();
 
-        overlappingBoxPairs(object_boxes_, object_pairs_);
+        overlappingBoxPairs(object_boxes_, object_pairs_, sweep_order_);
         result.stats.box_object_pairs = result.stats.object_pairs = object_pairs_.size();
         in_pair_.assign(objects_.size(), 0);
         double exact_ms = 0;
@@ -53,6 +53,7 @@ public:
 private:
     std::vector<PrimitiveRange> objects_;
     std::vector<Box3f> triangle_boxes_, object_boxes_;
+    std::vector<uint32_t> sweep_order_; // overlappingBoxPairs' scratch
     std::vector<std::pair<uint32_t, uint32_t>> object_pairs_;
     std::vector<uint8_t> in_pair_;
     std::vector<uint32_t> near_a_, near_b_;

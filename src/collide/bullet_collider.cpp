@@ -80,7 +80,7 @@ public:
                 box.max[k] = roots_[o]->volume.Maxs()[k];
             }
         }
-        overlappingBoxPairs(object_boxes_, object_pairs_);
+        overlappingBoxPairs(object_boxes_, object_pairs_, sweep_order_);
         result.stats.box_object_pairs = result.stats.object_pairs = object_pairs_.size();
         in_pair_.assign(objects_.size(), 0);
         candidates_.clear();
@@ -170,6 +170,7 @@ private:
     std::vector<const btDbvtNode*> roots_; // per object; null without triangles
     btDbvt traverser_; // owns no nodes: lends collideTT and the stack it keeps between calls
     std::vector<Box3f> object_boxes_;
+    std::vector<uint32_t> sweep_order_; // overlappingBoxPairs' scratch
     std::vector<std::pair<uint32_t, uint32_t>> object_pairs_;
     std::vector<uint8_t> in_pair_;
     std::vector<TrianglePair> candidates_; // leaf pairs whose boxes meet, this frame

@@ -82,9 +82,11 @@ void appendTrianglesMeetingBox(std::span<const Box3f> triangle_boxes, PrimitiveR
 }
 
 void overlappingBoxPairs(std::span<const Box3f> object_boxes,
-                         std::vector<std::pair<uint32_t, uint32_t>>& pairs) {
+                         std::vector<std::pair<uint32_t, uint32_t>>& pairs,
+                         std::vector<uint32_t>& order) {
     pairs.clear();
-    std::vector<uint32_t> by_min_x(object_boxes.size());
+    std::vector<uint32_t>& by_min_x = order;
+    by_min_x.resize(object_boxes.size());
     std::iota(by_min_x.begin(), by_min_x.end(), 0u);
     std::sort(by_min_x.begin(), by_min_x.end(), [&](uint32_t a, uint32_t b) {
         return object_boxes[a].min[0] < object_boxes[b].min[0] ||

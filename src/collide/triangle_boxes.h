@@ -88,8 +88,10 @@ void appendTrianglesMeetingBox(std::span<const Box3f> triangle_boxes, PrimitiveR
                                const Box3f& box, std::vector<uint32_t>& out);
 
 /// Every pair (a, b), a < b, of objects whose boxes overlap, ascending, into pairs (cleared).
-/// Sweep and prune along x: O(n log n + pairs) per call.
+/// Sweep and prune along x: O(n log n + pairs) per call. order is scratch (no allocation once
+/// it has grown).
 void overlappingBoxPairs(std::span<const Box3f> object_boxes,
-                         std::vector<std::pair<uint32_t, uint32_t>>& pairs);
+                         std::vector<std::pair<uint32_t, uint32_t>>& pairs,
+                         std::vector<uint32_t>& order);
 
 } // namespace vissort::detail

@@ -50,7 +50,7 @@ public:
                 trees_[o].build(positions, objects_[o]);
             object_boxes_[o] = trees_[o].bounds();
         });
-        overlappingBoxPairs(object_boxes_, candidates_.objects);
+        overlappingBoxPairs(object_boxes_, candidates_.objects, sweep_order_);
         candidates_.alive.assign(candidates_.objects.size(), 1);
         stats.box_object_pairs = candidates_.objects.size();
         stats.update_ms = clock.lap();
@@ -139,6 +139,7 @@ private:
     std::unique_ptr<FastWorkerPool> pool_;
     CandidatePairs candidates_;
     std::vector<Box3f> object_boxes_;
+    std::vector<uint32_t> sweep_order_; // overlappingBoxPairs' scratch
     std::vector<uint8_t> in_pair_;
     std::vector<uint32_t> live_;
 };
