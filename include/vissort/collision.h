@@ -81,6 +81,9 @@ struct CollisionResult {
     CollisionStats stats;
 };
 
+/// Empty when the settings are usable, else a one-line description of what is wrong.
+std::string validateCollisionSettings(const CollisionSettings& settings);
+
 namespace detail {
 class Collider;
 }
@@ -91,7 +94,8 @@ class Collider;
 class CollisionDetector {
 public:
     /// objects: each object's triangles, as ranges of global triangle ids (Scene::
-    /// objectPrimitives()); copied. Settings are checked: std::invalid_argument on bad values.
+    /// objectPrimitives()); copied. Settings are checked (validateCollisionSettings):
+    /// std::invalid_argument on bad values.
     explicit CollisionDetector(std::span<const PrimitiveRange> objects,
                                const CollisionSettings& settings = {});
     ~CollisionDetector();

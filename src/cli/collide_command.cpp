@@ -88,9 +88,8 @@ int runCollide(const CollideOptions& options) {
     settings.min_cull_fraction = float(options.min_cull);
     const std::vector<Vec3> all_directions = defaultCollisionDirections();
     settings.directions.assign(all_directions.begin(), all_directions.begin() + options.directions);
-    if (settings.width > 4096 || settings.height > 4096)
-        return fail(kExitUsage,
-                    "--size must be at most 4096x4096 for collide, got " + options.size);
+    if (const std::string error = validateCollisionSettings(settings); !error.empty())
+        return fail(kExitUsage, "--size " + options.size + ": " + error);
     std::optional<Scene> scene = loadSceneOrReport(options.scene);
     if (!scene)
         return kExitInput;
@@ -115,8 +114,9 @@ int runCollide(const CollideOptions& options) {
         pair_sum += result.pairs.size();
         if (!options.json_path.empty())
             frames.push_back(frameRecord(f, result.stats));
-        for (const TrianglePair& p : result.pairs)
-            pairs_out << f << ' ' << p.first << ' ' << p.second << '\n';
+        if (pairs_out.is_open())
+            for (const TrianglePair& p : result.pairs)
+                pairs_out << f << ' ' << p.first << ' ' << p.second << '\n';
         if (options.frames > 1)
             std::cout << "frame " << f << ": " << result.pairs.size() << " intersecting pairs, "
                       << result.stats.triangle_pairs << " candidate triangle pairs, "

@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <limits>
 #include <memory>
 #include <vector>
 
@@ -71,8 +70,7 @@ public:
         for (std::size_t o = 0; o < objects_.size(); ++o) {
             Box3f& box = object_boxes_[o];
             if (!roots_[o]) { // an object without triangles meets nothing
-                constexpr float kInf = std::numeric_limits<float>::infinity();
-                box = {{kInf, kInf, kInf}, {-kInf, -kInf, -kInf}};
+                box = kEmptyBox;
                 continue;
             }
             for (int k = 0; k < 3; ++k) {

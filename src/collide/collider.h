@@ -18,15 +18,13 @@ public:
     /// result.pairs (cleared by the caller; any order, no duplicates, first < second), and the
     /// stage figures of result.stats (zeroed by the caller): box_object_pairs, object_pairs,
     /// box_triangle_pairs, triangle_pairs, colliding_objects, and update_ms / cull_ms /
-    /// exact_ms. The caller sorts and sets
-    /// intersecting and total_ms.
+    /// exact_ms. The caller sorts and sets intersecting and total_ms.
     virtual void collide(const TrianglePositions& positions, CollisionResult& result) = 0;
 };
 
 std::unique_ptr<Collider> makeBruteForceCollider(std::span<const PrimitiveRange> objects);
 std::unique_ptr<Collider> makeVisibilityCollider(std::span<const PrimitiveRange> objects,
                                                  const CollisionSettings& settings);
-/// Null when vissort was built without Bullet or FCL.
 std::unique_ptr<Collider> makeBulletCollider(std::span<const PrimitiveRange> objects);
 std::unique_ptr<Collider> makeFclCollider(std::span<const PrimitiveRange> objects);
 

@@ -41,31 +41,27 @@ std::vector<CollisionMethod> collisionMethods() {
             CollisionMethod::fcl};
 }
 
-namespace {
-
-void checkSettings(const CollisionSettings& settings) {
-    const auto check_size = [](uint32_t size, const char* what) {
+std::string validateCollisionSettings(const CollisionSettings& settings) {
+    for (const auto& [size, what] :
+         {std::pair{settings.width, "width"}, {settings.height, "height"}})
         if (size < 1 || size > 4096)
-            throw std::invalid_argument(std::string(what) + " must be 1 to 4096 pixels, got " +
-                                        std::to_string(size));
-    };
-    check_size(settings.width, "collision view width");
-    check_size(settings.height, "collision view height");
+            return std::string("collision view ") + what + " must be 1 to 4096 pixels, got " +
+                   std::to_string(size);
     if (!(settings.min_cull_fraction >= 0 && settings.min_cull_fraction <= 1))
-        throw std::invalid_argument("collision min_cull_fraction must be in [0, 1]");
+        return "collision min_cull_fraction must be in [0, 1]";
     for (const Vec3& d : settings.directions) {
         const double length2 = d.x * d.x + d.y * d.y + d.z * d.z;
         if (!(length2 > 0) || !std::isfinite(length2))
-            throw std::invalid_argument("collision direction must be finite and non-zero");
+            return "collision direction must be finite and non-zero";
     }
+    return {};
 }
-
-} // namespace
 
 CollisionDetector::CollisionDetector(std::span<const PrimitiveRange> objects,
                                      const CollisionSettings& settings)
     : settings_(settings) {
-    checkSettings(settings_);
+    if (const std::string error = validateCollisionSettings(settings_); !error.empty())
+        throw std::invalid_argument(error);
     for (const PrimitiveRange& o : objects)
         triangles_needed_ =
             std::max<uint64_t>(triangles_needed_, uint64_t(o.first_triangle) + o.triangle_count);
@@ -83,10 +79,6 @@ CollisionDetector::CollisionDetector(std::span<const PrimitiveRange> objects,
         collider_ = detail::makeFclCollider(objects);
         break;
     }
-    if (!collider_)
-        throw std::invalid_argument(std::string("collision method '") +
-                                    collisionMethodName(settings_.method) +
-                                    "' is not built into this vissort");
 }
 
 CollisionDetector::~CollisionDetector() = default;

@@ -34,8 +34,8 @@ void RefitBvh::build(const TrianglePositions& positions, PrimitiveRange object) 
     refit(positions);
 }
 
-// Splits at the median box centre along the longest axis of the centres' extent, keeping
-// triangles_ and leaf_boxes_ in step.
+// Splits at the median box centre on the best of the three axes, keeping triangles_ and
+// leaf_boxes_ in step.
 uint32_t RefitBvh::buildRange(uint32_t first, uint32_t size) {
     const uint32_t index = uint32_t(nodes_.size());
     nodes_.push_back({{}, first, size, 0, index + 1});

@@ -28,7 +28,8 @@ public:
     static constexpr uint32_t kLeafSize = 4;
 
     /// Builds the tree of object's triangles (at least one) at positions: median splits of the
-    /// triangles' box centres along the longest axis. The boxes are then current.
+    /// triangles' box centres, on the axis whose halves have the least surface area. The boxes
+    /// are then current.
     void build(const TrianglePositions& positions, PrimitiveRange object);
     /// Recomputes every triangle's and node's box from positions (the same triangle count).
     void refit(const TrianglePositions& positions);

@@ -23,23 +23,6 @@ void computeTriangleBoxes(const TrianglePositions& positions, std::vector<Box3f>
     }
 }
 
-Box3f objectBox(const TrianglePositions& positions, PrimitiveRange object) {
-    Box3f box;
-    const float* axes[3] = {positions.x.data(), positions.y.data(), positions.z.data()};
-    const std::size_t first = 3 * std::size_t(object.first_triangle);
-    const std::size_t last = first + 3 * std::size_t(object.triangle_count);
-    for (int k = 0; k < 3; ++k) {
-        float low = INFINITY, high = -INFINITY;
-        for (std::size_t c = first; c < last; ++c) {
-            low = std::min(low, axes[k][c]);
-            high = std::max(high, axes[k][c]);
-        }
-        box.min[k] = low;
-        box.max[k] = high;
-    }
-    return box;
-}
-
 DiagonalExtents diagonalExtents(const TrianglePositions& positions, uint32_t t) {
     // In float: each sum of three rounds twice, by at most 2^-24 of the sum of magnitudes m
     // each time, so widening by 2^-20 m (itself rounded) leaves a wide margin.

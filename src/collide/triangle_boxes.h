@@ -27,25 +27,6 @@ inline bool boxesOverlap(const Box3f& a, const Box3f& b) {
            b.min[1] <= a.max[1] && a.min[2] <= b.max[2] && b.min[2] <= a.max[2];
 }
 
-/// The overlap of two overlapping boxes.
-inline Box3f intersectBoxes(const Box3f& a, const Box3f& b) {
-    Box3f out;
-    for (int k = 0; k < 3; ++k) {
-        out.min[k] = std::max(a.min[k], b.min[k]);
-        out.max[k] = std::min(a.max[k], b.max[k]);
-    }
-    return out;
-}
-
-/// The axis (0, 1, 2) along which box is longest.
-inline int longestAxis(const Box3f& box) {
-    int axis = 0;
-    for (int k = 1; k < 3; ++k)
-        if (box.max[k] - box.min[k] > box.max[axis] - box.min[axis])
-            axis = k;
-    return axis;
-}
-
 /// Grows a to contain b.
 inline void includeBox(Box3f& a, const Box3f& b) {
     for (int k = 0; k < 3; ++k) {
@@ -72,9 +53,6 @@ inline bool diagonalsOverlap(const DiagonalExtents& a, const DiagonalExtents& b)
 
 /// The diagonal extents of triangle t of positions.
 DiagonalExtents diagonalExtents(const TrianglePositions& positions, uint32_t t);
-
-/// The box of object's triangles (at least one), straight from the corners.
-Box3f objectBox(const TrianglePositions& positions, PrimitiveRange object);
 
 /// boxes[t] = the box of triangle t, for every triangle of positions (boxes is resized).
 void computeTriangleBoxes(const TrianglePositions& positions, std::vector<Box3f>& boxes);
