@@ -19,7 +19,7 @@
 #include "vissort/camera_path.h"
 #include "vissort/cpu_oracle.h"
 #include "vissort/fast_cpu_oracle.h"
-#include "vissort/oracle_workloads.h"
+#include "support/oracle_workloads.h"
 #include "vissort/scene.h"
 #include "vissort/scene_orderer.h"
 
@@ -97,7 +97,7 @@ BENCHMARK(fillQuery<FastCpuOracle>)->Name("BM_FillBoundQuery_Fast")->Arg(100)->A
 // Real workload: triangle-level Vis-sort of the 18 bunnies along an orbit, 10 coherent frames.
 template <class Oracle>
 void bunniesOrbit(benchmark::State& state) {
-    const Loaded<Scene> loaded = loadScene("builtin:bunnies");
+    const Result<Scene> loaded = loadScene("builtin:bunnies");
     if (!loaded) {
         state.SkipWithError(loaded.error.c_str());
         return;

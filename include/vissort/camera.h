@@ -13,6 +13,7 @@
 #include <string>
 
 #include "vissort/geometry.h"
+#include "vissort/result.h"
 
 namespace vissort {
 
@@ -62,6 +63,6 @@ ViewProjection frameCamera(const CameraSpec& camera, const Bounds& scene_bounds,
                            uint32_t height);
 
 /// Empty when the camera is usable, else a one-line description of what is wrong.
-std::string validateCamera(const CameraSpec& camera);
+Status validateCamera(const CameraSpec& camera);
 
 } // namespace vissort

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "vissort/enum_names.h"
 #include "vissort/camera.h"
 
 namespace vissort {
@@ -16,8 +17,18 @@ enum class CameraPath {
                  // an orthographic camera has no inside, so it orbits instead
 };
 
-bool parseCameraPath(const std::string& name, CameraPath& path);
-const char* cameraPathName(CameraPath path);
+inline constexpr EnumName<CameraPath> kCameraPathNames[] = {
+    {CameraPath::fixed, "static"},
+    {CameraPath::orbit, "orbit"},
+    {CameraPath::flythrough, "flythrough"},
+};
+/// "static", "orbit" or "flythrough", or "unknown camera path 'NAME' (expected ...)".
+inline Result<CameraPath> parseCameraPath(std::string_view name) {
+    return parseEnum<CameraPath>(kCameraPathNames, name, "camera path");
+}
+inline const char* cameraPathName(CameraPath path) {
+    return enumName<CameraPath>(kCameraPathNames, path);
+}
 
 /// The camera of frame `frame` (0 = the base camera itself, except for flythrough, which starts
 /// on its circle) for a scene whose first frame has the given bounds.

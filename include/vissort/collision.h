@@ -16,7 +16,9 @@
 #include <string>
 #include <vector>
 
+#include "vissort/enum_names.h"
 #include "vissort/geometry.h"
+#include "vissort/result.h"
 
 namespace vissort {
 
@@ -27,9 +29,20 @@ enum class CollisionMethod {
     fcl,     // FCL's dynamic AABB tree of OBBRSS models, its own triangle tests (may miss)
 };
 
-/// Parses "vissort", "brute", "bullet" or "fcl"; returns false when the name is unknown.
-bool parseCollisionMethod(const std::string& name, CollisionMethod& method);
-const char* collisionMethodName(CollisionMethod method);
+/// Every method, in the order the benchmarks list them.
+inline constexpr EnumName<CollisionMethod> kCollisionMethodNames[] = {
+    {CollisionMethod::vissort, "vissort"},
+    {CollisionMethod::brute, "brute"},
+    {CollisionMethod::bullet, "bullet"},
+    {CollisionMethod::fcl, "fcl"},
+};
+/// "vissort", "brute", "bullet" or "fcl", or "unknown collision method 'NAME' (expected ...)".
+inline Result<CollisionMethod> parseCollisionMethod(std::string_view name) {
+    return parseEnum<CollisionMethod>(kCollisionMethodNames, name, "collision method");
+}
+inline const char* collisionMethodName(CollisionMethod method) {
+    return enumName<CollisionMethod>(kCollisionMethodNames, method);
+}
 /// Every method, in the order the benchmarks list them.
 std::vector<CollisionMethod> collisionMethods();
 
@@ -82,7 +95,7 @@ struct CollisionResult {
 };
 
 /// Empty when the settings are usable, else a one-line description of what is wrong.
-std::string validateCollisionSettings(const CollisionSettings& settings);
+Status validateCollisionSettings(const CollisionSettings& settings);
 
 namespace detail {
 class Collider;
@@ -106,8 +119,8 @@ public:
     /// finite coordinates (else std::invalid_argument, nothing computed). Writes into result,
     /// reusing its memory: steady-state frames of the vissort, brute and bullet methods allocate
     /// nothing large.
-    void collide(const TrianglePositions& positions, CollisionResult& result);
-    CollisionResult collide(const TrianglePositions& positions);
+    void collide(PositionsView positions, CollisionResult& result);
+    CollisionResult collide(PositionsView positions);
 
     const CollisionSettings& settings() const { return settings_; }
 

@@ -67,7 +67,7 @@ public:
 
     /// See GeometryOracle::bind. Copies the primitives and the clip-space corners it needs.
     /// The view's width and height must be in [1, 65536]; every range must lie within positions.
-    void bind(const TrianglePositions& positions, const ViewProjection& view,
+    void bind(PositionsView positions, const ViewProjection& view,
               std::span<const PrimitiveRange> primitives) override;
 
     uint32_t primitiveCount() const override { return uint32_t(primitives_.size()); }

@@ -29,7 +29,7 @@ public:
     /// Casts the rays (the cost of this oracle) and builds the fragments. Triangles outside every
     /// range are ignored; ranges must lie inside positions and must not overlap.
     /// Keeps no reference to its arguments.
-    void bind(const TrianglePositions& positions, const ViewProjection& view,
+    void bind(PositionsView positions, const ViewProjection& view,
               std::span<const PrimitiveRange> primitives) override;
 
     uint32_t primitiveCount() const override { return primitive_count_; }

@@ -8,7 +8,8 @@
 #include <memory>
 #include <string>
 
-#include "vissort/scene.h"
+#include "vissort/enum_names.h"
+#include "vissort/result.h"
 
 namespace vissort {
 
@@ -18,9 +19,18 @@ enum class GlPlatform {
     surfaceless,  // "surfaceless": Mesa's surfaceless platform
 };
 
-/// Parses "auto", "device" or "surfaceless"; returns false when the name is unknown.
-bool parseGlPlatform(const std::string& name, GlPlatform& platform);
-const char* glPlatformName(GlPlatform platform);
+inline constexpr EnumName<GlPlatform> kGlPlatformNames[] = {
+    {GlPlatform::automatic, "auto"},
+    {GlPlatform::device, "device"},
+    {GlPlatform::surfaceless, "surfaceless"},
+};
+/// "auto", "device" or "surfaceless", or "unknown GL platform 'NAME' (expected ...)".
+inline Result<GlPlatform> parseGlPlatform(std::string_view name) {
+    return parseEnum<GlPlatform>(kGlPlatformNames, name, "GL platform");
+}
+inline const char* glPlatformName(GlPlatform platform) {
+    return enumName<GlPlatform>(kGlPlatformNames, platform);
+}
 
 /// What a context runs on, as EGL and OpenGL name it.
 struct GlContextInfo {
@@ -34,16 +44,22 @@ struct GlContextInfo {
 class GlContext {
 public:
     /// Creates an OpenGL 4.5 core profile context with no surface and makes it current on the
-    /// calling thread. With GlPlatform::automatic, the environment variable VISSORT_GL_PLATFORM
-    /// (auto, device or surfaceless) chooses. Sets LP_NUM_THREADS=0 unless it is set: Mesa's
-    /// llvmpipe then rasterizes on the calling thread, 4 times faster for the oracle's many small
-    /// draws and queries than with its worker threads. Fails with a one-line message naming what
-    /// is missing: EGL, the platform, a device, or OpenGL 4.5.
-    static Loaded<std::shared_ptr<GlContext>> create(GlPlatform platform = GlPlatform::automatic);
+    /// calling thread. Fails with a one-line message naming what is missing: EGL, the platform,
+    /// a device, or OpenGL 4.5. The library reads no environment variable; on Mesa's llvmpipe,
+    /// set LP_NUM_THREADS=0 before the first context (the vissort command does): llvmpipe then
+    /// rasterizes on the calling thread, 4 times faster for the oracle's many small draws and
+    /// queries than with its worker threads (docs/benchmarks.md).
+    static Result<std::shared_ptr<GlContext>> create(GlPlatform platform = GlPlatform::automatic);
 
     /// The context every part of the process shares: created by the first call, kept while any
     /// caller holds it.
-    static Loaded<std::shared_ptr<GlContext>> shared();
+    static Result<std::shared_ptr<GlContext>> shared();
+    /// The platform the shared context is created on (automatic until set); takes effect when
+    /// shared() next creates one.
+    static void setSharedPlatform(GlPlatform platform);
+    /// Makes shared() fail with reason (one line) until setSharedPlatform: for an application
+    /// whose configuration rules OpenGL out, so that only the work that needs it fails.
+    static void refuseShared(std::string reason);
 
     ~GlContext();
     GlContext(const GlContext&) = delete;

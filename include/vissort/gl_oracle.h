@@ -64,7 +64,7 @@ public:
     /// See GeometryOracle::bind. Uploads the corners and sizes the framebuffer. Throws
     /// std::runtime_error naming the limit when the view exceeds the driver's largest
     /// framebuffer or the scene its largest draw (2^31 - 1 corners).
-    void bind(const TrianglePositions& positions, const ViewProjection& view,
+    void bind(PositionsView positions, const ViewProjection& view,
               std::span<const PrimitiveRange> primitives) override;
 
     uint32_t primitiveCount() const override;

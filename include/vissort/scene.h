@@ -10,6 +10,7 @@
 
 #include "vissort/camera.h"
 #include "vissort/geometry.h"
+#include "vissort/result.h"
 
 namespace vissort {
 
@@ -49,26 +50,16 @@ struct Scene {
     uint32_t objectOfTriangle(uint32_t triangle) const;
 };
 
-/// Either a value or a one-line error message naming the problem.
-template <class T>
-struct Loaded {
-    std::optional<T> value;
-    std::string error;
-
-    explicit operator bool() const { return value.has_value(); }
-    static Loaded failure(std::string message) { return {std::nullopt, std::move(message)}; }
-};
-
 /// Loads a scene from a specification:
 ///   `builtin:NAME?key=value&...`  a named generated scene (see scene_library.h);
 ///   `PATH.json`                   a JSON scene composing mesh files (docs/scene-format.md);
 ///   any other path                a mesh file read with assimp (OBJ, PLY, STL, glTF/GLB, ...):
 ///                                 each mesh of the file is one object, in file order.
 /// Rejects missing or unreadable files, empty geometry and non-finite coordinates.
-Loaded<Scene> loadScene(const std::string& specification);
+Result<Scene> loadScene(const std::string& specification);
 
 /// Checks a scene's invariants: finite coordinates, object ranges that tile the triangles in
-/// order, at least one triangle. Empty when valid, else a one-line message.
-std::string validateScene(const Scene& scene);
+/// order, at least one triangle. A one-line message when one does not hold.
+Status validateScene(const Scene& scene);
 
 } // namespace vissort

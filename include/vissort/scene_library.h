@@ -28,6 +28,6 @@ std::vector<BuiltinSceneInfo> builtinScenes();
 ///   soup:    n (1000), seed (1): random non-intersecting triangles.
 ///   plant:   layers (8), seed (1): CAD-like rows of pipes, tanks and steel, opaque and
 ///            transparent; depth complexity about 2 layers.
-Loaded<Scene> makeBuiltinScene(const std::string& name, const SceneParameters& parameters);
+Result<Scene> makeBuiltinScene(const std::string& name, const SceneParameters& parameters);
 
 } // namespace vissort

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "vissort/enum_names.h"
 #include "vissort/camera.h"
 #include "vissort/geometry_oracle.h"
 #include "vissort/scene.h"
@@ -20,8 +21,18 @@ enum class OrderLevel {
     multistage,  // objects first, then the triangles of each object or cycle; triangle ids
 };
 
-bool parseOrderLevel(const std::string& name, OrderLevel& level);
-const char* orderLevelName(OrderLevel level);
+inline constexpr EnumName<OrderLevel> kOrderLevelNames[] = {
+    {OrderLevel::object, "object"},
+    {OrderLevel::triangle, "triangle"},
+    {OrderLevel::multistage, "multistage"},
+};
+/// "object", "triangle" or "multistage", or "unknown level 'NAME' (expected ...)".
+inline Result<OrderLevel> parseOrderLevel(std::string_view name) {
+    return parseEnum<OrderLevel>(kOrderLevelNames, name, "level");
+}
+inline const char* orderLevelName(OrderLevel level) {
+    return enumName<OrderLevel>(kOrderLevelNames, level);
+}
 
 struct FrameOrder {
     OrderLevel level = OrderLevel::object;
@@ -38,7 +49,7 @@ std::vector<PrimitiveRange> primitivesOf(const Scene& scene, OrderLevel level);
 /// The first-frame order: primitives sorted front to back by the depth of their nearest corner
 /// in front of the near plane (a cheap key; ties and primitives entirely behind the camera keep
 /// id order after the rest).
-std::vector<uint32_t> depthKeyOrder(const TrianglePositions& positions, const ViewProjection& view,
+std::vector<uint32_t> depthKeyOrder(PositionsView positions, const ViewProjection& view,
                                     std::span<const PrimitiveRange> primitives);
 
 /// Orders successive frames of one scene at one level with one oracle. Each frame starts from
@@ -48,18 +59,18 @@ public:
     SceneOrderer(const Scene& scene, OrderLevel level, GeometryOracle& oracle);
 
     /// Orders the scene's triangles at `positions` (scene.frame(t)) seen through view.
-    FrameOrder orderFrame(const TrianglePositions& positions, const ViewProjection& view);
+    FrameOrder orderFrame(PositionsView positions, const ViewProjection& view);
 
 private:
-    FrameOrder orderMultistage(const TrianglePositions& positions, const ViewProjection& view);
+    FrameOrder orderMultistage(PositionsView positions, const ViewProjection& view);
     /// Binds the oracle to primitives and sorts them into `into`, starting from previous_order
     /// when it has the right size, else from the depth-key order.
-    void sortPrimitives(const TrianglePositions& positions, const ViewProjection& view,
+    void sortPrimitives(PositionsView positions, const ViewProjection& view,
                         std::span<const PrimitiveRange> primitives,
                         std::span<const uint32_t> previous_order, VisibilityOrder& into);
     /// Vis-sort of primitives from the list `start` (a permutation of their indices), with the
     /// oracle bound to them in that order and the answer mapped back to indices of primitives.
-    void sortFrom(const TrianglePositions& positions, const ViewProjection& view,
+    void sortFrom(PositionsView positions, const ViewProjection& view,
                   std::span<const PrimitiveRange> primitives, std::span<const uint32_t> start,
                   VisibilityOrder& into);
 

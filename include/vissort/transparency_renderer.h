@@ -27,9 +27,11 @@
 #include <string>
 #include <vector>
 
+#include "vissort/enum_names.h"
 #include "vissort/camera.h"
 #include "vissort/geometry_oracle.h"
 #include "vissort/gl_context.h"
+#include "vissort/oracles.h"
 #include "vissort/scene.h"
 #include "vissort/scene_orderer.h"
 
@@ -37,16 +39,34 @@ namespace vissort {
 
 enum class BlendMethod { vissort, unsorted, centroid, peel, dual_peel, linked_list, weighted };
 
-/// Parses a method's name (blendMethodNames()); false when unknown.
-bool parseBlendMethod(const std::string& name, BlendMethod& method);
-const char* blendMethodName(BlendMethod method);
+inline constexpr EnumName<BlendMethod> kBlendMethodNames[] = {
+    {BlendMethod::vissort, "vissort"},         {BlendMethod::unsorted, "unsorted"},
+    {BlendMethod::centroid, "centroid"},       {BlendMethod::peel, "peel"},
+    {BlendMethod::dual_peel, "dual-peel"},     {BlendMethod::linked_list, "linked-list"},
+    {BlendMethod::weighted, "weighted"},
+};
+/// A method by name, or "unknown method 'NAME' (expected ...)".
+inline Result<BlendMethod> parseBlendMethod(std::string_view name) {
+    return parseEnum<BlendMethod>(kBlendMethodNames, name, "method");
+}
+inline const char* blendMethodName(BlendMethod method) {
+    return enumName<BlendMethod>(kBlendMethodNames, method);
+}
 /// Every method's name, comma-separated, for help and error messages.
-std::string blendMethodNames();
+inline std::string blendMethodNames() { return enumNames<BlendMethod>(kBlendMethodNames); }
+
+/// The oracle's depth tolerance for exact blending: negative, so that a fragment counts as behind
+/// unless it is in front by more than 2^-16. Surfaces whose depths come that close anywhere then
+/// occlude each other both ways: a cycle, which the renderer composites per pixel with the GPU's
+/// own depths. The order is thus exact wherever the oracle's depths and the GPU's differ by less
+/// than 2^-16, where near ties of the default tolerance (kDepthTolerance) could swap layers.
+inline constexpr float kBlendingDepthTolerance = -1.0f / (1 << 16);
 
 struct RenderSettings {
     BlendMethod method = BlendMethod::vissort;
     OrderLevel level = OrderLevel::object; // vissort's ordering level; centroid's unit
     OracleKind oracle = OracleKind::cpu;   // vissort's oracle
+    OracleOptions oracle_options;          // its threads and SIMD (the answers never change)
     bool all_transparent = false;          // every object transparent with alpha below
     float alpha = 0.5f;                    // with all_transparent, in (0, 1]
     Rgba background{1.0f, 1.0f, 1.0f, 1.0f};
@@ -66,8 +86,15 @@ struct RenderSettings {
     enum class OrderCheck { automatic, on, off } check = OrderCheck::automatic;
 };
 
-/// Parses "auto", "on" or "off"; false when unknown.
-bool parseOrderCheck(const std::string& name, RenderSettings::OrderCheck& check);
+inline constexpr EnumName<RenderSettings::OrderCheck> kOrderCheckNames[] = {
+    {RenderSettings::OrderCheck::automatic, "auto"},
+    {RenderSettings::OrderCheck::on, "on"},
+    {RenderSettings::OrderCheck::off, "off"},
+};
+/// "auto", "on" or "off", or "unknown order check 'NAME' (expected ...)".
+inline Result<RenderSettings::OrderCheck> parseOrderCheck(std::string_view name) {
+    return parseEnum<RenderSettings::OrderCheck>(kOrderCheckNames, name, "order check");
+}
 
 /// What one frame cost.
 struct RenderStats {
@@ -108,7 +135,7 @@ std::vector<uint8_t> errorMap(const std::vector<uint8_t>& image,
                               const std::vector<uint8_t>& reference);
 
 /// Writes 8-bit RGBA as PNG; empty on success, else a one-line message.
-std::string writePng(const std::string& path, uint32_t width, uint32_t height,
+Status writePng(const std::string& path, uint32_t width, uint32_t height,
                      const std::vector<uint8_t>& rgba8);
 
 class TransparencyRenderer {
@@ -123,7 +150,7 @@ public:
 
     /// Renders the scene at `positions` (scene.frame(t)) through view. Successive frames reuse
     /// the previous order (coherence), as SceneOrderer does.
-    Image render(const TrianglePositions& positions, const ViewProjection& view,
+    Image render(PositionsView positions, const ViewProjection& view,
                  RenderStats& stats);
 
     /// Draws these triangles (scene triangle ids, e.g. collidingTriangles() of a collision

@@ -66,7 +66,7 @@ uint64_t pairsMissing(const std::vector<TrianglePair>& from, const std::vector<T
 // order so that none always runs on a cold cache.
 std::vector<Measured> measure(const std::vector<Contender>& methods, uint32_t bunnies, int frames,
                               std::size_t& triangles) {
-    const Loaded<Scene> scene = loadScene("builtin:bunnies?n=" + std::to_string(bunnies));
+    const Result<Scene> scene = loadScene("builtin:bunnies?n=" + std::to_string(bunnies));
     if (!scene)
         throw std::runtime_error(scene.error);
     triangles = scene.value->triangleCount();
@@ -167,9 +167,9 @@ int runCollisionBench(const BenchOptions& options) {
         const Strip plot =
             plotLines(series, "collision: ms per frame, deforming bunnies (" + machineName() + ")",
                       "bunnies N (builtin:bunnies?n=N)", "ms per frame", 900, 560);
-        if (auto error = writePng(options.plot_path, plot.width, plot.height, plot.rgba);
-            !error.empty())
-            return fail(kExitFailure, error);
+        if (Status error = writePng(options.plot_path, plot.width, plot.height, plot.rgba);
+            !error)
+            return fail(kExitFailure, error.error);
     }
     return kExitOk;
 }

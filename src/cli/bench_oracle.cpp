@@ -14,10 +14,12 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/bench_common.h"
+#include "cli/environment.h"
+#include "vissort/oracles.h"
 #include "cli/commands.h"
 #include "cli/json_output.h"
 #include "vissort/gl_context.h"
-#include "vissort/oracle_workloads.h"
+#include "support/oracle_workloads.h"
 #include "vissort/scene_orderer.h"
 
 namespace vissort::cli {
@@ -97,7 +99,9 @@ int runOracleBench(const BenchOptions& options) {
             makeRightTriangleWorkload(c.count, c.leg, c.width, c.height);
         const double pixels = c.count * c.leg * c.leg / 2;
         for (OracleKind kind : kinds) {
-            auto oracle = makeOracle(kind);
+            Result<std::unique_ptr<GeometryOracle>> made = makeOracle(kind, environmentOracleOptions());
+            if (!made) return fail(kExitFailure, made.error);
+            GeometryOracle* oracle = made.value->get();
             const SyntheticResult r = runSynthetic(*oracle, w, options.repeat);
             if (c.setup_bound) {
                 rows.push_back({std::string(c.name) + ", bind", oracleName(kind), "M triangles/s",
@@ -125,7 +129,7 @@ int runOracleBench(const BenchOptions& options) {
     std::vector<std::pair<OracleKind, int>> real_oracles;
     for (OracleKind kind : kinds)
         real_oracles.push_back({kind, frame_count});
-    if (Loaded<std::shared_ptr<GlContext>> context = GlContext::shared(); context) {
+    if (Result<std::shared_ptr<GlContext>> context = GlContext::shared(); context) {
         real_oracles.push_back({OracleKind::gl, std::min(frame_count, options.gl_frames)});
         std::cout << "gl: " << (*context.value)->info().renderer << " ("
                   << (*context.value)->info().version << "), " << real_oracles.back().second
@@ -143,14 +147,16 @@ int runOracleBench(const BenchOptions& options) {
                                  {"slabs (64), object level, orbit, 1024x768",
                                   "builtin:slabs?layers=64", OrderLevel::object}};
     for (const RealWorkload& workload : real) {
-        Loaded<Scene> loaded = loadScene(workload.scene);
+        Result<Scene> loaded = loadScene(workload.scene);
         if (!loaded)
             return fail(kExitFailure, loaded.error);
         const Scene& scene = *loaded.value;
         const CameraSpec base =
             scene.camera.value_or(defaultCamera(scene.positions.bounds(), 1024.0 / 768));
         for (const auto& [kind, frames] : real_oracles) {
-            auto oracle = makeOracle(kind);
+            Result<std::unique_ptr<GeometryOracle>> made = makeOracle(kind, environmentOracleOptions());
+            if (!made) return fail(kExitFailure, made.error);
+            GeometryOracle* oracle = made.value->get();
             SceneOrderer orderer(scene, workload.level, *oracle);
             TrianglePositions positions;
             std::vector<double> ms, queries, iterations;

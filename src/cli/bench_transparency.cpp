@@ -62,16 +62,15 @@ int runTransparencyBench(const BenchOptions& options) {
     uint32_t width = 0, height = 0;
     if (auto error = parseSize(options.size, width, height); !error.empty())
         return fail(kExitUsage, error);
-    OrderLevel level;
-    if (!parseOrderLevel(options.level, level))
-        return fail(kExitUsage,
-                    "--level must be object, triangle or multistage, got '" + options.level + "'");
+    const Result<OrderLevel> parsed_level = parseOrderLevel(options.level);
+    if (!parsed_level) return fail(kExitUsage, "--level: " + parsed_level.error);
+    const OrderLevel level = *parsed_level.value;
     std::vector<uint32_t> depths;
     if (!parseCounts(options.depths, depths))
         return fail(kExitUsage, "--depths expects depth complexities of 1 to 1000 separated by "
                                 "commas, got '" +
                                     options.depths + "'");
-    Loaded<std::shared_ptr<GlContext>> context = GlContext::shared();
+    Result<std::shared_ptr<GlContext>> context = GlContext::shared();
     if (!context)
         return fail(kExitFailure, context.error);
     const GlContextInfo& gl = (*context.value)->info();
@@ -90,7 +89,7 @@ int runTransparencyBench(const BenchOptions& options) {
         std::cout << "   errors against linked-list (max/255)\n";
         for (uint32_t depth : depths) {
             const std::string spec = family.scene(depth);
-            Loaded<Scene> loaded = loadScene(spec);
+            Result<Scene> loaded = loadScene(spec);
             if (!loaded)
                 return fail(kExitFailure, loaded.error);
             const Scene& scene = *loaded.value;

@@ -79,8 +79,9 @@ std::string resolveView(const ViewOptions& options, const Scene& scene, Resolved
     if (options.frames < 1 || options.frames > kMaxFrames)
         return "--frames must be between 1 and " + std::to_string(kMaxFrames);
     view.frames = options.frames;
-    if (!parseCameraPath(options.path, view.path))
-        return "--path must be static, orbit or flythrough, got '" + options.path + "'";
+    const Result<CameraPath> path = parseCameraPath(options.path);
+    if (!path) return "--path: " + path.error;
+    view.path = *path.value;
 
     const bool perspective_given =
         !options.eye.empty() || !options.target.empty() || !options.up.empty() || options.fov;
@@ -106,7 +107,7 @@ std::string resolveView(const ViewOptions& options, const Scene& scene, Resolved
             if (auto e = parseVec3("--up", options.up, view.camera.up); !e.empty()) return e;
         if (options.fov) view.camera.fov_degrees = *options.fov;
     }
-    if (auto e = validateCamera(view.camera); !e.empty()) {
+    if (auto e = validateCamera(view.camera).error; !e.empty()) {
         // Name where the bad camera came from: the user's options, or the scene file.
         if (!options.ortho_dir.empty()) return "--ortho-dir: " + e;
         if (perspective_given) return "--eye/--target/--up/--fov: " + e;
@@ -116,7 +117,7 @@ std::string resolveView(const ViewOptions& options, const Scene& scene, Resolved
 }
 
 std::optional<Scene> loadSceneOrReport(const std::string& specification) {
-    Loaded<Scene> loaded = loadScene(specification);
+    Result<Scene> loaded = loadScene(specification);
     if (!loaded) {
         fail(kExitInput, loaded.error);
         return std::nullopt;

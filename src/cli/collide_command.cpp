@@ -79,17 +79,17 @@ CLI::App* addCollideCommand(CLI::App& app, CollideOptions& options) {
 
 int runCollide(const CollideOptions& options) {
     CollisionSettings settings;
-    if (!parseCollisionMethod(options.method, settings.method))
-        return fail(kExitUsage,
-                    "--method must be vissort, brute, bullet or fcl, got '" + options.method + "'");
+    const Result<CollisionMethod> method = parseCollisionMethod(options.method);
+    if (!method) return fail(kExitUsage, "--method: " + method.error);
+    settings.method = *method.value;
     if (auto error = parseSize(options.size, settings.width, settings.height); !error.empty())
         return fail(kExitUsage, error);
     settings.threads = uint32_t(options.threads);
     settings.min_cull_fraction = float(options.min_cull);
     const std::vector<Vec3> all_directions = defaultCollisionDirections();
     settings.directions.assign(all_directions.begin(), all_directions.begin() + options.directions);
-    if (const std::string error = validateCollisionSettings(settings); !error.empty())
-        return fail(kExitUsage, "--size " + options.size + ": " + error);
+    if (Status valid = validateCollisionSettings(settings); !valid)
+        return fail(kExitUsage, "--size " + options.size + ": " + valid.error);
     std::optional<Scene> scene = loadSceneOrReport(options.scene);
     if (!scene)
         return kExitInput;

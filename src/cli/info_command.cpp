@@ -30,7 +30,7 @@ CLI::App* addInfoCommand(CLI::App& app, InfoOptions& options) {
 namespace {
 
 int printGlInfo() {
-    Loaded<std::shared_ptr<GlContext>> context = GlContext::shared();
+    Result<std::shared_ptr<GlContext>> context = GlContext::shared();
     if (!context) return fail(kExitFailure, context.error);
     const GlContextInfo& info = (*context.value)->info();
     std::cout << "OpenGL: " << info.version << '\n'

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "cli/environment.h"
 
 int main(int argc, char** argv) {
     using namespace vissort::cli;
@@ -30,6 +31,8 @@ int main(int argc, char** argv) {
         // One line, not CLI11's multi-line report.
         return fail(kExitUsage, std::string(e.what()) + " (run 'vissort --help')");
     }
+    if (vissort::Status environment = applyEnvironment(); !environment)
+        return fail(kExitFailure, environment.error);
     try {
         if (order_command->parsed()) return runOrder(order);
         if (info_command->parsed()) return runInfo(info);

@@ -5,7 +5,7 @@
 namespace vissort::cli {
 
 bool writePrimitivesObj(const std::string& path, const std::string& comment,
-                        const TrianglePositions& positions,
+                        PositionsView positions,
                         std::span<const PrimitiveRange> primitives) {
     std::ofstream out(path);
     if (!out)

@@ -13,7 +13,7 @@ namespace vissort::cli {
 /// id order (so with primitives tiling the triangles in order, face i of the file is triangle
 /// i), after a `# comment` line. False when the file cannot be written.
 bool writePrimitivesObj(const std::string& path, const std::string& comment,
-                        const TrianglePositions& positions,
+                        PositionsView positions,
                         std::span<const PrimitiveRange> primitives);
 
 } // namespace vissort::cli

@@ -5,8 +5,10 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
+#include "cli/environment.h"
 #include "cli/json_output.h"
 #include "cli/obj_output.h"
+#include "vissort/oracles.h"
 #include "vissort/scene_orderer.h"
 
 namespace vissort::cli {
@@ -59,21 +61,21 @@ CLI::App* addOrderCommand(CLI::App& app, OrderOptions& options) {
 }
 
 int runOrder(const OrderOptions& options) {
-    OrderLevel level;
-    if (!parseOrderLevel(options.level, level))
-        return fail(kExitUsage, "--level must be object, triangle or multistage, got '" +
-                                    options.level + "'");
-    OracleKind oracle_kind;
-    if (!parseOracleKind(options.oracle, oracle_kind))
-        return fail(kExitUsage, "--oracle must be cpu, cpu-reference, exact or gl, got '" +
-                                    options.oracle + "'");
+    const Result<OrderLevel> parsed_level = parseOrderLevel(options.level);
+    if (!parsed_level) return fail(kExitUsage, "--level: " + parsed_level.error);
+    const OrderLevel level = *parsed_level.value;
+    const Result<OracleKind> parsed_oracle = parseOracleKind(options.oracle);
+    if (!parsed_oracle) return fail(kExitUsage, "--oracle: " + parsed_oracle.error);
+    const OracleKind oracle_kind = *parsed_oracle.value;
     std::optional<Scene> scene = loadSceneOrReport(options.scene);
     if (!scene) return kExitInput;
     ResolvedView view;
     if (auto error = resolveView(options.view, *scene, view); !error.empty())
         return fail(kExitUsage, error);
 
-    std::unique_ptr<GeometryOracle> oracle = makeOracle(oracle_kind);
+    Result<std::unique_ptr<GeometryOracle>> made = makeOracle(oracle_kind, environmentOracleOptions());
+    if (!made) return fail(kExitFailure, made.error);
+    std::unique_ptr<GeometryOracle> oracle = std::move(*made.value);
     SceneOrderer orderer(*scene, level, *oracle);
     const Bounds first_bounds = scene->positions.bounds();
     TrianglePositions positions;

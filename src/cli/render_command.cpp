@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
+#include "cli/environment.h"
 #include "cli/comparison_strip.h"
 #include "cli/json_output.h"
 #include "vissort/collision.h"
@@ -95,9 +96,9 @@ int renderEveryMethod(const RenderOptions& options, RenderSettings settings, con
     }
     tiles.insert(tiles.end(), maps.begin(), maps.end());
     const Strip strip = composeStrip(tiles, view.width, view.height, uint32_t(std::size(kShown)));
-    if (auto error = writePng(options.output, strip.width, strip.height, strip.rgba);
-        !error.empty())
-        return fail(kExitFailure, error);
+    if (Status error = writePng(options.output, strip.width, strip.height, strip.rgba);
+        !error)
+        return fail(kExitFailure, error.error);
     std::cout << options.output << ": every method (top) and its error against linked-list "
               << "(below: grey within 1/255, yellow to red beyond)\n";
     if (options.json_path.empty())
@@ -171,31 +172,37 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
 int runRender(const RenderOptions& options) {
     RenderSettings settings;
     const bool all_methods = options.method == "all";
-    if (!all_methods && !parseBlendMethod(options.method, settings.method))
-        return fail(kExitUsage, "--method must be one of " + blendMethodNames() + " or all, got '" +
-                                    options.method + "'");
+    if (!all_methods) {
+        const Result<BlendMethod> method = parseBlendMethod(options.method);
+        if (!method) return fail(kExitUsage, "--method: " + method.error + " or all");
+        settings.method = *method.value;
+    }
     if (all_methods && options.highlight_collisions)
         return fail(kExitUsage, "--highlight-collisions renders one method: not with --method all");
     if (all_methods && (options.view.frames > 1 || !options.reference.empty()))
         return fail(kExitUsage, "--method all renders one frame against linked-list: no --frames "
                                 "or --reference");
     BlendMethod reference_method{};
-    if (!options.reference.empty() && !parseBlendMethod(options.reference, reference_method))
-        return fail(kExitUsage, "--reference must be one of " + blendMethodNames() + ", got '" +
-                                    options.reference + "'");
-    if (!parseOrderLevel(options.level, settings.level))
-        return fail(kExitUsage,
-                    "--level must be object, triangle or multistage, got '" + options.level + "'");
-    if (!parseOracleKind(options.oracle, settings.oracle))
-        return fail(kExitUsage, "--oracle must be cpu, cpu-reference, exact or gl, got '" +
-                                    options.oracle + "'");
+    if (!options.reference.empty()) {
+        const Result<BlendMethod> reference = parseBlendMethod(options.reference);
+        if (!reference) return fail(kExitUsage, "--reference: " + reference.error);
+        reference_method = *reference.value;
+    }
+    const Result<OrderLevel> level = parseOrderLevel(options.level);
+    if (!level) return fail(kExitUsage, "--level: " + level.error);
+    settings.level = *level.value;
+    const Result<OracleKind> oracle = parseOracleKind(options.oracle);
+    if (!oracle) return fail(kExitUsage, "--oracle: " + oracle.error);
+    settings.oracle = *oracle.value;
+    settings.oracle_options = environmentOracleOptions();
     if (!(options.alpha > 0.0 && options.alpha <= 1.0))
         return fail(kExitUsage, "--alpha must be in (0, 1], got " + std::to_string(options.alpha));
     if (options.shading != "lit" && options.shading != "flat")
         return fail(kExitUsage, "--shading must be lit or flat, got '" + options.shading + "'");
     settings.flat_shading = options.shading == "flat";
-    if (!parseOrderCheck(options.check, settings.check))
-        return fail(kExitUsage, "--check must be auto, on or off, got '" + options.check + "'");
+    const Result<RenderSettings::OrderCheck> check = parseOrderCheck(options.check);
+    if (!check) return fail(kExitUsage, "--check: " + check.error);
+    settings.check = *check.value;
     // At least one fragment (24 bytes); at most a petabyte, far beyond any driver.
     if (!(options.list_memory_mib >= 1.0 / 1024 && options.list_memory_mib <= 1e9))
         return fail(kExitUsage, "--list-memory must be between 0.001 and 1e9 MiB, got " +
@@ -218,7 +225,7 @@ int runRender(const RenderOptions& options) {
     ResolvedView view;
     if (auto error = resolveView(options.view, *scene, view); !error.empty())
         return fail(kExitUsage, error);
-    Loaded<std::shared_ptr<GlContext>> context = GlContext::shared();
+    Result<std::shared_ptr<GlContext>> context = GlContext::shared();
     if (!context)
         return fail(kExitFailure, context.error);
     if (all_methods)
@@ -257,8 +264,8 @@ int runRender(const RenderOptions& options) {
         RenderStats stats;
         const std::vector<uint8_t> pixels = renderer.render(positions, vp, stats).toRgba8();
         const std::string path = view.frames > 1 ? framePath(options.output, f) : options.output;
-        if (auto error = writePng(path, view.width, view.height, pixels); !error.empty())
-            return fail(kExitFailure, error);
+        if (Status error = writePng(path, view.width, view.height, pixels); !error)
+            return fail(kExitFailure, error.error);
         nlohmann::json record = statsJson(settings.method, stats);
         std::cout << path << ": " << blendMethodName(settings.method) << ", " << stats.total_ms
                   << " ms (order " << stats.order_ms << ", render " << stats.render_ms << "), "
@@ -282,10 +289,10 @@ int runRender(const RenderOptions& options) {
             if (!options.error_map.empty()) {
                 const std::string map_path =
                     view.frames > 1 ? framePath(options.error_map, f) : options.error_map;
-                if (auto e = writePng(map_path, view.width, view.height,
+                if (Status e = writePng(map_path, view.width, view.height,
                                       errorMap(pixels, reference_pixels));
-                    !e.empty())
-                    return fail(kExitFailure, e);
+                    !e)
+                    return fail(kExitFailure, e.error);
             }
             std::cout << "  against " << options.reference << ": RMSE " << error.rmse << ", PSNR "
                       << error.psnr << " dB, max abs " << error.max_abs << "/255, "

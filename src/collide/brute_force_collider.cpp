@@ -15,7 +15,7 @@ public:
     explicit BruteForceCollider(std::span<const PrimitiveRange> objects)
         : objects_(objects.begin(), objects.end()) {}
 
-    void collide(const TrianglePositions& positions, CollisionResult& result) override {
+    void collide(PositionsView positions, CollisionResult& result) override {
         StageClock clock;
         computeTriangleBoxes(positions, triangle_boxes_);
         object_boxes_.resize(objects_.size());

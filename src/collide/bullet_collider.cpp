@@ -29,7 +29,7 @@ uint32_t triangleOfLeaf(const btDbvtNode* leaf) {
 
 /// The exact float box of triangle t: no margin, so the trees cull exactly what brute force's
 /// boxes cull (closed boxes: Bullet's Intersect counts touching).
-btDbvtVolume triangleVolume(const TrianglePositions& positions, uint32_t t) {
+btDbvtVolume triangleVolume(PositionsView positions, uint32_t t) {
     const std::size_t i = 3 * std::size_t(t);
     const float* x = positions.x.data() + i;
     const float* y = positions.y.data() + i;
@@ -58,7 +58,7 @@ public:
         : objects_(objects.begin(), objects.end()), roots_(objects.size(), nullptr),
           object_boxes_(objects.size()) {}
 
-    void collide(const TrianglePositions& positions, CollisionResult& result) override {
+    void collide(PositionsView positions, CollisionResult& result) override {
         StageClock clock;
         if (!built_)
             build(positions);
@@ -106,7 +106,7 @@ private:
     /// copied into nodes_, one block per object: its leaves in triangle order, then its internal
     /// nodes in post-order, root last. Refit is then one forward pass over nodes_, streaming the
     /// positions, instead of chasing Bullet's separately allocated nodes.
-    void build(const TrianglePositions& positions) {
+    void build(PositionsView positions) {
         std::size_t node_count = 0;
         for (const PrimitiveRange& range : objects_)
             if (range.triangle_count > 0)
@@ -154,7 +154,7 @@ private:
 
     /// The trees' shapes stay; leaves take the new triangle boxes and every internal node the
     /// union of its children's, which come before it in nodes_. No allocation.
-    void refit(const TrianglePositions& positions) {
+    void refit(PositionsView positions) {
         for (btDbvtNode& node : nodes_)
             if (node.isleaf())
                 node.volume = triangleVolume(positions, triangleOfLeaf(&node));

@@ -19,7 +19,7 @@ public:
     /// stage figures of result.stats (zeroed by the caller): box_object_pairs, object_pairs,
     /// box_triangle_pairs, triangle_pairs, colliding_objects, and update_ms / cull_ms /
     /// exact_ms. The caller sorts and sets intersecting and total_ms.
-    virtual void collide(const TrianglePositions& positions, CollisionResult& result) = 0;
+    virtual void collide(PositionsView positions, CollisionResult& result) = 0;
 };
 
 std::unique_ptr<Collider> makeBruteForceCollider(std::span<const PrimitiveRange> objects);

@@ -9,39 +9,17 @@
 
 namespace vissort {
 
-bool parseCollisionMethod(const std::string& name, CollisionMethod& method) {
-    for (CollisionMethod m : collisionMethods())
-        if (name == collisionMethodName(m)) {
-            method = m;
-            return true;
-        }
-    return false;
-}
-
-const char* collisionMethodName(CollisionMethod method) {
-    switch (method) {
-    case CollisionMethod::vissort:
-        return "vissort";
-    case CollisionMethod::brute:
-        return "brute";
-    case CollisionMethod::bullet:
-        return "bullet";
-    case CollisionMethod::fcl:
-        return "fcl";
-    }
-    return "?";
-}
-
 std::vector<Vec3> defaultCollisionDirections() {
     return {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}, {1, 1, -1}, {1, -1, 1}, {-1, 1, 1}};
 }
 
 std::vector<CollisionMethod> collisionMethods() {
-    return {CollisionMethod::vissort, CollisionMethod::brute, CollisionMethod::bullet,
-            CollisionMethod::fcl};
+    std::vector<CollisionMethod> methods;
+    for (const EnumName<CollisionMethod>& entry : kCollisionMethodNames) methods.push_back(entry.value);
+    return methods;
 }
 
-std::string validateCollisionSettings(const CollisionSettings& settings) {
+static std::string collisionSettingsProblem(const CollisionSettings& settings) {
     for (const auto& [size, what] :
          {std::pair{settings.width, "width"}, {settings.height, "height"}})
         if (size < 1 || size > 4096)
@@ -60,8 +38,8 @@ std::string validateCollisionSettings(const CollisionSettings& settings) {
 CollisionDetector::CollisionDetector(std::span<const PrimitiveRange> objects,
                                      const CollisionSettings& settings)
     : settings_(settings) {
-    if (const std::string error = validateCollisionSettings(settings_); !error.empty())
-        throw std::invalid_argument(error);
+    if (Status valid = validateCollisionSettings(settings_); !valid)
+        throw std::invalid_argument(valid.error);
     for (const PrimitiveRange& o : objects)
         triangles_needed_ =
             std::max<uint64_t>(triangles_needed_, uint64_t(o.first_triangle) + o.triangle_count);
@@ -83,7 +61,7 @@ CollisionDetector::CollisionDetector(std::span<const PrimitiveRange> objects,
 
 CollisionDetector::~CollisionDetector() = default;
 
-void CollisionDetector::collide(const TrianglePositions& positions, CollisionResult& result) {
+void CollisionDetector::collide(PositionsView positions, CollisionResult& result) {
     detail::StageClock clock;
     // Cheap next to the frame, and what makes bad input an error instead of a wrong answer.
     if (positions.y.size() != positions.x.size() || positions.z.size() != positions.x.size() ||
@@ -91,8 +69,8 @@ void CollisionDetector::collide(const TrianglePositions& positions, CollisionRes
         throw std::invalid_argument(
             "collision positions hold " + std::to_string(positions.triangleCount()) +
             " triangles; the objects need " + std::to_string(triangles_needed_));
-    for (const std::vector<float>* axis : {&positions.x, &positions.y, &positions.z})
-        for (float v : *axis)
+    for (std::span<const float> axis : {positions.x, positions.y, positions.z})
+        for (float v : axis)
             if (!std::isfinite(v))
                 throw std::invalid_argument("collision positions must be finite");
     result.pairs.clear();
@@ -103,7 +81,7 @@ void CollisionDetector::collide(const TrianglePositions& positions, CollisionRes
     result.stats.total_ms = clock.lap();
 }
 
-CollisionResult CollisionDetector::collide(const TrianglePositions& positions) {
+CollisionResult CollisionDetector::collide(PositionsView positions) {
     CollisionResult result;
     collide(positions, result);
     return result;
@@ -119,6 +97,10 @@ std::vector<uint32_t> collidingTriangles(std::span<const TrianglePair> pairs) {
     std::sort(triangles.begin(), triangles.end());
     triangles.erase(std::unique(triangles.begin(), triangles.end()), triangles.end());
     return triangles;
+}
+
+Status validateCollisionSettings(const CollisionSettings& settings) {
+    return Status{collisionSettingsProblem(settings)};
 }
 
 } // namespace vissort

@@ -36,7 +36,7 @@ public:
 
     ~FclCollider() override { manager_.clear(); }
 
-    void collide(const TrianglePositions& positions, CollisionResult& result) override {
+    void collide(PositionsView positions, CollisionResult& result) override {
         StageClock clock;
         if (bodies_.empty() && !objects_.empty())
             build(positions);
@@ -67,14 +67,14 @@ private:
 
     /// One triangle soup per object: corner c of local triangle i is vertex 3i + c, as in
     /// TrianglePositions, so FCL's primitive ids are local triangle ids.
-    void fillVertices(const TrianglePositions& positions, PrimitiveRange range) {
+    void fillVertices(PositionsView positions, PrimitiveRange range) {
         vertices_.resize(3 * std::size_t(range.triangle_count));
         const std::size_t first = 3 * std::size_t(range.first_triangle);
         for (std::size_t v = 0; v < vertices_.size(); ++v)
             vertices_[v] = {positions.x[first + v], positions.y[first + v], positions.z[first + v]};
     }
 
-    void build(const TrianglePositions& positions) {
+    void build(PositionsView positions) {
         std::vector<fcl::CollisionObject<double>*> registered;
         std::vector<fcl::Triangle> triangles;
         for (uint32_t o = 0; o < objects_.size(); ++o) {
@@ -102,7 +102,7 @@ private:
 
     /// Same topology, new vertices: refit each BVH bottom-up, then the object's box, then the
     /// manager's tree.
-    void update(const TrianglePositions& positions) {
+    void update(PositionsView positions) {
         for (Body& body : bodies_) {
             fillVertices(positions, objects_[body.object]);
             body.model->beginUpdateModel();

@@ -8,7 +8,7 @@
 
 namespace vissort::detail {
 
-Box3f triangleBox(const TrianglePositions& positions, uint32_t t) {
+Box3f triangleBox(PositionsView positions, uint32_t t) {
     const std::size_t c = 3 * std::size_t(t);
     Box3f b;
     const float* axes[3] = {positions.x.data(), positions.y.data(), positions.z.data()};
@@ -20,7 +20,7 @@ Box3f triangleBox(const TrianglePositions& positions, uint32_t t) {
     return b;
 }
 
-void RefitBvh::build(const TrianglePositions& positions, PrimitiveRange object) {
+void RefitBvh::build(PositionsView positions, PrimitiveRange object) {
     first_triangle_ = object.first_triangle;
     triangles_.resize(object.triangle_count);
     std::iota(triangles_.begin(), triangles_.end(), object.first_triangle);
@@ -83,7 +83,7 @@ uint32_t RefitBvh::buildRange(uint32_t first, uint32_t size) {
     return index;
 }
 
-void RefitBvh::refit(const TrianglePositions& positions) {
+void RefitBvh::refit(PositionsView positions) {
     // The triangles' boxes in id order (the corners are read forward), then in leaf order from
     // that small array.
     for (std::size_t i = 0; i < boxes_.size(); ++i)
@@ -126,7 +126,7 @@ void RefitBvh::appendCut(const Box3f& region, uint32_t max_size, std::vector<uin
 }
 
 uint64_t overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b,
-                                  const TrianglePositions& positions,
+                                  PositionsView positions,
                                   std::vector<std::pair<uint32_t, uint32_t>>& pairs,
                                   std::vector<std::pair<uint32_t, uint32_t>>& stack) {
     const auto na = a.nodes(), nb = b.nodes();

@@ -30,9 +30,9 @@ public:
     /// Builds the tree of object's triangles (at least one) at positions: median splits of the
     /// triangles' box centres, on the axis whose halves have the least surface area. The boxes
     /// are then current.
-    void build(const TrianglePositions& positions, PrimitiveRange object);
+    void build(PositionsView positions, PrimitiveRange object);
     /// Recomputes every triangle's and node's box from positions (the same triangle count).
-    void refit(const TrianglePositions& positions);
+    void refit(PositionsView positions);
     bool isBuilt() const { return !nodes_.empty(); }
 
     const Box3f& bounds() const { return nodes_.front().box; }
@@ -56,13 +56,13 @@ private:
 };
 
 /// The box of triangle t of positions.
-Box3f triangleBox(const TrianglePositions& positions, uint32_t t);
+Box3f triangleBox(PositionsView positions, uint32_t t);
 
 /// Every pair (ta, tb) of a triangle of a and one of b whose boxes overlap and whose diagonal
 /// extents overlap too (triangle_boxes.h), appended to pairs; stack is scratch. Returns how many
 /// pairs' boxes overlapped (before the diagonals).
 uint64_t overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b,
-                                  const TrianglePositions& positions,
+                                  PositionsView positions,
                                   std::vector<std::pair<uint32_t, uint32_t>>& pairs,
                                   std::vector<std::pair<uint32_t, uint32_t>>& stack);
 

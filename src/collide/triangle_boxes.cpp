@@ -9,7 +9,7 @@
 
 namespace vissort::detail {
 
-void computeTriangleBoxes(const TrianglePositions& positions, std::vector<Box3f>& boxes) {
+void computeTriangleBoxes(PositionsView positions, std::vector<Box3f>& boxes) {
     const std::size_t n = positions.triangleCount();
     boxes.resize(n);
     const float* axes[3] = {positions.x.data(), positions.y.data(), positions.z.data()};
@@ -23,7 +23,7 @@ void computeTriangleBoxes(const TrianglePositions& positions, std::vector<Box3f>
     }
 }
 
-DiagonalExtents diagonalExtents(const TrianglePositions& positions, uint32_t t) {
+DiagonalExtents diagonalExtents(PositionsView positions, uint32_t t) {
     // In float: each sum of three rounds twice, by at most 2^-24 of the sum of magnitudes m
     // each time, so widening by 2^-20 m (itself rounded) leaves a wide margin.
     constexpr float kWiden = 0x1p-20f;

@@ -52,10 +52,10 @@ inline bool diagonalsOverlap(const DiagonalExtents& a, const DiagonalExtents& b)
 }
 
 /// The diagonal extents of triangle t of positions.
-DiagonalExtents diagonalExtents(const TrianglePositions& positions, uint32_t t);
+DiagonalExtents diagonalExtents(PositionsView positions, uint32_t t);
 
 /// boxes[t] = the box of triangle t, for every triangle of positions (boxes is resized).
-void computeTriangleBoxes(const TrianglePositions& positions, std::vector<Box3f>& boxes);
+void computeTriangleBoxes(PositionsView positions, std::vector<Box3f>& boxes);
 
 /// The box of the triangles of range (triangle_count >= 1), from their boxes.
 Box3f boxOfRange(std::span<const Box3f> triangle_boxes, PrimitiveRange range);

@@ -14,7 +14,7 @@ namespace vissort::detail {
 /// A triangle's corners: corner[c][axis].
 using TriangleCorners = std::array<std::array<float, 3>, 3>;
 
-inline TriangleCorners cornersOf(const TrianglePositions& positions, uint32_t triangle) {
+inline TriangleCorners cornersOf(PositionsView positions, uint32_t triangle) {
     TriangleCorners t;
     for (int c = 0; c < 3; ++c) {
         const std::size_t i = 3 * std::size_t(triangle) + std::size_t(c);

@@ -33,7 +33,7 @@ public:
             pool_ = std::make_unique<FastWorkerPool>(threads_);
     }
 
-    void collide(const TrianglePositions& positions, CollisionResult& result) override {
+    void collide(PositionsView positions, CollisionResult& result) override {
         CollisionStats& stats = result.stats;
         StageClock clock;
         // Every tree is built on the first frame and refitted on every frame after (the shape

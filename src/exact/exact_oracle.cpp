@@ -15,7 +15,7 @@ namespace vissort {
 
 ExactOracle::ExactOracle(unsigned thread_count) : thread_count_(thread_count) {}
 
-void ExactOracle::bind(const TrianglePositions& positions, const ViewProjection& view,
+void ExactOracle::bind(PositionsView positions, const ViewProjection& view,
                        std::span<const PrimitiveRange> primitives) {
     constexpr uint32_t kNoPrimitive = std::numeric_limits<uint32_t>::max();
     assert(primitives.size() < kNoPrimitive);

@@ -76,7 +76,7 @@ bool isFinite(float x, float y, float z) {
     return std::isfinite(x) && std::isfinite(y) && std::isfinite(z);
 }
 
-void addTriangles(RTCDevice device, RTCScene scene, const TrianglePositions& positions) {
+void addTriangles(RTCDevice device, RTCScene scene, PositionsView positions) {
     const std::size_t triangle_count = positions.triangleCount();
     RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
     auto* vertices = static_cast<float*>(
@@ -154,7 +154,7 @@ struct RowBlock {
 
 class BlockCaster {
 public:
-    BlockCaster(RTCScene scene, const TrianglePositions& positions, const ViewProjection& view,
+    BlockCaster(RTCScene scene, PositionsView positions, const ViewProjection& view,
                 bool mark_near_edges)
         : scene_(scene), positions_(positions), view_(view), depth_of_(view),
           mark_near_edges_(mark_near_edges) {}
@@ -304,7 +304,7 @@ private:
     }
 
     RTCScene scene_;
-    const TrianglePositions& positions_;
+    PositionsView positions_;
     const ViewProjection& view_;
     DepthFunction depth_of_;
     bool mark_near_edges_;
@@ -318,7 +318,7 @@ constexpr std::size_t kParallelThreshold = 64 * 64;
 
 } // namespace
 
-AllHits castAllHits(const TrianglePositions& positions, const ViewProjection& view,
+AllHits castAllHits(PositionsView positions, const ViewProjection& view,
                     unsigned thread_count, bool mark_near_edges) {
     assert(positions.x.size() == positions.y.size() && positions.x.size() == positions.z.size());
     assert(positions.x.size() % 3 == 0);

@@ -35,7 +35,7 @@ double framingRadius(const Bounds& b) { return b.radius() > 0 ? b.radius() : 1.0
 
 } // namespace
 
-std::string validateCamera(const CameraSpec& camera) {
+static std::string cameraProblem(const CameraSpec& camera) {
     if (camera.projection == Projection::orthographic) {
         if (!isFinite(camera.ortho_direction)) return "orthographic direction must be finite and below 1e30";
         if (glm::length(toGlm(camera.ortho_direction)) < 1e-12) return "orthographic direction is zero";
@@ -146,5 +146,7 @@ void ViewProjection::pixelRay(double px, double py, Vec3& origin, Vec3& directio
         direction = forward;
     }
 }
+
+Status validateCamera(const CameraSpec& camera) { return Status{cameraProblem(camera)}; }
 
 } // namespace vissort

@@ -17,23 +17,6 @@ double degrees(double d) { return d * std::numbers::pi / 180.0; }
 
 } // namespace
 
-bool parseCameraPath(const std::string& name, CameraPath& path) {
-    if (name == "static") path = CameraPath::fixed;
-    else if (name == "orbit") path = CameraPath::orbit;
-    else if (name == "flythrough") path = CameraPath::flythrough;
-    else return false;
-    return true;
-}
-
-const char* cameraPathName(CameraPath path) {
-    switch (path) {
-    case CameraPath::fixed: return "static";
-    case CameraPath::orbit: return "orbit";
-    case CameraPath::flythrough: return "flythrough";
-    }
-    return "?";
-}
-
 CameraSpec cameraOnPath(const CameraSpec& base, CameraPath path, int frame, const Bounds& bounds) {
     if (path == CameraPath::fixed) return base;
     CameraSpec camera = base;

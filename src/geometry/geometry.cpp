@@ -27,7 +27,7 @@ void TrianglePositions::resize(std::size_t triangles) {
     z.resize(triangles * 3);
 }
 
-Bounds TrianglePositions::bounds() const {
+Bounds PositionsView::bounds() const {
     Bounds b;
     for (std::size_t i = 0; i < x.size(); ++i) b.add(corner(i));
     return b;

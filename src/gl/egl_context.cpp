@@ -50,20 +50,20 @@ struct Display {
 };
 
 // The EGL devices, hardware ones first (Mesa lists its software device among them).
-Loaded<Display> deviceDisplay(const char* client_extensions, bool hardware_only) {
+Result<Display> deviceDisplay(const char* client_extensions, bool hardware_only) {
     if (!hasExtension(client_extensions, "EGL_EXT_platform_device") ||
         !hasExtension(client_extensions, "EGL_EXT_device_enumeration"))
-        return Loaded<Display>::failure("EGL has no device platform (EGL_EXT_platform_device)");
+        return Result<Display>::failure("EGL has no device platform (EGL_EXT_platform_device)");
     const auto query_devices =
         reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
     const auto query_string = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(
         eglGetProcAddress("eglQueryDeviceStringEXT"));
     EGLint count = 0;
     if (query_devices == nullptr || query_string == nullptr || !query_devices(0, nullptr, &count))
-        return Loaded<Display>::failure("cannot enumerate EGL devices");
+        return Result<Display>::failure("cannot enumerate EGL devices");
     std::vector<EGLDeviceEXT> devices(std::size_t(std::max(count, 0)));
     if (count > 0 && !query_devices(count, devices.data(), &count))
-        return Loaded<Display>::failure("cannot enumerate EGL devices");
+        return Result<Display>::failure("cannot enumerate EGL devices");
     for (bool software : {false, true}) {
         if (software && hardware_only) break;
         for (EGLDeviceEXT device : devices) {
@@ -84,38 +84,38 @@ Loaded<Display> deviceDisplay(const char* client_extensions, bool hardware_only)
             return {d, ""};
         }
     }
-    return Loaded<Display>::failure(hardware_only ? "no hardware EGL device"
+    return Result<Display>::failure(hardware_only ? "no hardware EGL device"
                                                   : "no usable EGL device");
 }
 
-Loaded<Display> surfacelessDisplay(const char* client_extensions) {
+Result<Display> surfacelessDisplay(const char* client_extensions) {
     if (!hasExtension(client_extensions, "EGL_MESA_platform_surfaceless"))
-        return Loaded<Display>::failure(
+        return Result<Display>::failure(
             "EGL has no surfaceless platform (EGL_MESA_platform_surfaceless; install Mesa's "
             "libegl-mesa0 and libgl1-mesa-dri)");
     Display d;
     d.display = eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     if (d.display == EGL_NO_DISPLAY)
-        return Loaded<Display>::failure("cannot open the EGL surfaceless display");
+        return Result<Display>::failure("cannot open the EGL surfaceless display");
     d.platform = "surfaceless";
     return {d, ""};
 }
 
-Loaded<Display> chooseDisplay(GlPlatform platform) {
+Result<Display> chooseDisplay(GlPlatform platform) {
     // Without EGL 1.5 client extensions there is no platform to ask for.
     const char* client_extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
     if (client_extensions == nullptr)
-        return Loaded<Display>::failure("EGL has no client extensions (no EGL 1.5 driver)");
+        return Result<Display>::failure("EGL has no client extensions (no EGL 1.5 driver)");
     switch (platform) {
     case GlPlatform::device: return deviceDisplay(client_extensions, false);
     case GlPlatform::surfaceless: return surfacelessDisplay(client_extensions);
     case GlPlatform::automatic: break;
     }
-    Loaded<Display> device = deviceDisplay(client_extensions, true);
+    Result<Display> device = deviceDisplay(client_extensions, true);
     if (device) return device;
-    Loaded<Display> surfaceless = surfacelessDisplay(client_extensions);
+    Result<Display> surfaceless = surfacelessDisplay(client_extensions);
     if (surfaceless) return surfaceless;
-    return Loaded<Display>::failure(device.error + ", and " + surfaceless.error);
+    return Result<Display>::failure(device.error + ", and " + surfaceless.error);
 }
 
 std::string glString(GLenum name) {
@@ -124,23 +124,6 @@ std::string glString(GLenum name) {
 }
 
 } // namespace
-
-bool parseGlPlatform(const std::string& name, GlPlatform& platform) {
-    if (name == "auto") platform = GlPlatform::automatic;
-    else if (name == "device") platform = GlPlatform::device;
-    else if (name == "surfaceless") platform = GlPlatform::surfaceless;
-    else return false;
-    return true;
-}
-
-const char* glPlatformName(GlPlatform platform) {
-    switch (platform) {
-    case GlPlatform::automatic: return "auto";
-    case GlPlatform::device: return "device";
-    case GlPlatform::surfaceless: return "surfaceless";
-    }
-    return "?";
-}
 
 struct GlContext::Impl {
     EGLDisplay display = EGL_NO_DISPLAY;
@@ -170,26 +153,16 @@ void GlContext::makeCurrent() const {
         eglMakeCurrent(impl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, impl_->context);
 }
 
-Loaded<std::shared_ptr<GlContext>> GlContext::create(GlPlatform platform) {
-    using Result = Loaded<std::shared_ptr<GlContext>>;
-    if (platform == GlPlatform::automatic)
-        if (const char* env = std::getenv("VISSORT_GL_PLATFORM"); env != nullptr && *env != '\0')
-            if (!parseGlPlatform(env, platform))
-                return Result::failure(std::string("VISSORT_GL_PLATFORM must be auto, device or "
-                                                   "surfaceless, not '") + env + "'");
-    // llvmpipe hands every flush to its worker threads, and the oracle flushes often (a query
-    // answer, a conditional draw): on the calling thread it ran the bunnies' triangle-level frame
-    // in 1.5 s instead of 6.7 s (docs/benchmarks.md). Read by Mesa when the display opens; a
-    // value the user set stays.
-    setenv("LP_NUM_THREADS", "0", 0);
-    Loaded<Display> chosen = chooseDisplay(platform);
-    if (!chosen) return Result::failure("no OpenGL context: " + chosen.error);
+Result<std::shared_ptr<GlContext>> GlContext::create(GlPlatform platform) {
+    using Made = Result<std::shared_ptr<GlContext>>;
+    Result<Display> chosen = chooseDisplay(platform);
+    if (!chosen) return Made::failure("no OpenGL context: " + chosen.error);
     auto impl = std::make_unique<Impl>();
     impl->display = chosen.value->display;
     impl->info.platform = chosen.value->platform;
     impl->info.device = chosen.value->device;
     const auto failure = [&](const std::string& what) {
-        return Result::failure("no OpenGL context on the EGL " + impl->info.platform +
+        return Made::failure("no OpenGL context on the EGL " + impl->info.platform +
                                " platform: " + what + " (" + eglErrorName(eglGetError()) + ")");
     };
 
@@ -220,15 +193,32 @@ Loaded<std::shared_ptr<GlContext>> GlContext::create(GlPlatform platform) {
     return {std::shared_ptr<GlContext>(new GlContext(std::move(impl))), ""};
 }
 
-Loaded<std::shared_ptr<GlContext>> GlContext::shared() {
-    static std::mutex mutex;
+namespace {
+std::mutex shared_mutex;
+GlPlatform shared_platform = GlPlatform::automatic;
+std::string shared_refusal;  // non-empty: shared() fails with it
+} // namespace
+
+void GlContext::setSharedPlatform(GlPlatform platform) {
+    std::lock_guard<std::mutex> lock(shared_mutex);
+    shared_platform = platform;
+    shared_refusal.clear();
+}
+
+void GlContext::refuseShared(std::string reason) {
+    std::lock_guard<std::mutex> lock(shared_mutex);
+    shared_refusal = std::move(reason);
+}
+
+Result<std::shared_ptr<GlContext>> GlContext::shared() {
     static std::weak_ptr<GlContext> current;
-    std::lock_guard<std::mutex> lock(mutex);
+    std::lock_guard<std::mutex> lock(shared_mutex);
+    if (!shared_refusal.empty()) return Result<std::shared_ptr<GlContext>>::failure(shared_refusal);
     if (std::shared_ptr<GlContext> context = current.lock()) {
         context->makeCurrent();
         return {context, ""};
     }
-    Loaded<std::shared_ptr<GlContext>> created = create();
+    Result<std::shared_ptr<GlContext>> created = create(shared_platform);
     if (created) current = *created.value;
     return created;
 }

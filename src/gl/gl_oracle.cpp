@@ -190,7 +190,7 @@ GlOracle::~GlOracle() {
         glDeleteQueries(GLsizei(impl_->queries.size()), impl_->queries.data());
 }
 
-void GlOracle::bind(const TrianglePositions& positions, const ViewProjection& view,
+void GlOracle::bind(PositionsView positions, const ViewProjection& view,
                     std::span<const PrimitiveRange> primitives) {
     Impl& d = *impl_;
     d.context->makeCurrent();

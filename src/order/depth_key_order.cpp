@@ -6,7 +6,7 @@
 
 namespace vissort {
 
-std::vector<uint32_t> depthKeyOrder(const TrianglePositions& positions, const ViewProjection& view,
+std::vector<uint32_t> depthKeyOrder(PositionsView positions, const ViewProjection& view,
                                     std::span<const PrimitiveRange> primitives) {
     // The nearest corner's distance along the view direction: affine, so cheaper than depthOf
     // and it gives the same order for corners in front of the near plane.

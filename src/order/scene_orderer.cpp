@@ -22,23 +22,6 @@ void addStats(VisSortStats& total, const VisSortStats& part) {
 
 } // namespace
 
-bool parseOrderLevel(const std::string& name, OrderLevel& level) {
-    if (name == "object") level = OrderLevel::object;
-    else if (name == "triangle") level = OrderLevel::triangle;
-    else if (name == "multistage") level = OrderLevel::multistage;
-    else return false;
-    return true;
-}
-
-const char* orderLevelName(OrderLevel level) {
-    switch (level) {
-    case OrderLevel::object: return "object";
-    case OrderLevel::triangle: return "triangle";
-    case OrderLevel::multistage: return "multistage";
-    }
-    return "?";
-}
-
 std::vector<PrimitiveRange> primitivesOf(const Scene& scene, OrderLevel level) {
     return level == OrderLevel::object ? scene.objectPrimitives() : scene.trianglePrimitives();
 }
@@ -48,7 +31,7 @@ SceneOrderer::SceneOrderer(const Scene& scene, OrderLevel level, GeometryOracle&
       primitives_(level == OrderLevel::triangle ? scene.trianglePrimitives()
                                                 : scene.objectPrimitives()) {}
 
-void SceneOrderer::sortPrimitives(const TrianglePositions& positions, const ViewProjection& view,
+void SceneOrderer::sortPrimitives(PositionsView positions, const ViewProjection& view,
                                   std::span<const PrimitiveRange> primitives,
                                   std::span<const uint32_t> previous_order, VisibilityOrder& into) {
     if (previous_order.size() == primitives.size()) {
@@ -63,7 +46,7 @@ void SceneOrderer::sortPrimitives(const TrianglePositions& positions, const View
 // start (coherence), and a fast oracle lays out each primitive's set-up in bind order, so the
 // visits read memory forward instead of jumping across megabytes of set-ups. The relabelling
 // changes nothing else: Vis-sort depends on list positions and answers, never on id values.
-void SceneOrderer::sortFrom(const TrianglePositions& positions, const ViewProjection& view,
+void SceneOrderer::sortFrom(PositionsView positions, const ViewProjection& view,
                             std::span<const PrimitiveRange> primitives,
                             std::span<const uint32_t> start, VisibilityOrder& into) {
     const std::size_t n = primitives.size();
@@ -82,7 +65,7 @@ void SceneOrderer::sortFrom(const TrianglePositions& positions, const ViewProjec
     }
 }
 
-FrameOrder SceneOrderer::orderFrame(const TrianglePositions& positions, const ViewProjection& view) {
+FrameOrder SceneOrderer::orderFrame(PositionsView positions, const ViewProjection& view) {
     const auto start = std::chrono::steady_clock::now();
     FrameOrder frame;
     if (level_ == OrderLevel::multistage) {
@@ -100,7 +83,7 @@ FrameOrder SceneOrderer::orderFrame(const TrianglePositions& positions, const Vi
     return frame;
 }
 
-FrameOrder SceneOrderer::orderMultistage(const TrianglePositions& positions,
+FrameOrder SceneOrderer::orderMultistage(PositionsView positions,
                                          const ViewProjection& view) {
     FrameOrder frame;
     frame.level = OrderLevel::multistage;

@@ -19,7 +19,7 @@ detail::ClipVertex toClipVertex(const Corner& corner) {
 
 } // namespace
 
-void CpuOracle::bind(const TrianglePositions& positions, const ViewProjection& view,
+void CpuOracle::bind(PositionsView positions, const ViewProjection& view,
                      std::span<const PrimitiveRange> primitives) {
     assert(view.width >= 1 && view.width <= detail::kMaxViewportSize);
     assert(view.height >= 1 && view.height <= detail::kMaxViewportSize);

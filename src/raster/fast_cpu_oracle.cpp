@@ -125,7 +125,7 @@ FastCpuOracle::FastCpuOracle(const Options& options)
 
 FastCpuOracle::~FastCpuOracle() = default;
 
-void FastCpuOracle::bind(const TrianglePositions& positions, const ViewProjection& view,
+void FastCpuOracle::bind(PositionsView positions, const ViewProjection& view,
                          std::span<const PrimitiveRange> primitives) {
     assert(view.width >= 1 && view.width <= detail::kMaxViewportSize);
     assert(view.height >= 1 && view.height <= detail::kMaxViewportSize);

@@ -26,7 +26,7 @@ bool edgesFitInt32(const FastSetup& s) {
     return fit;
 }
 
-void appendFastSetups(const Matrix4& clip, const TrianglePositions& positions, std::size_t t,
+void appendFastSetups(const Matrix4& clip, PositionsView positions, std::size_t t,
                       uint32_t width, uint32_t height, bool conservative,
                       std::vector<FastSetup>& out) {
     std::array<ClipVertex, 3> corners;

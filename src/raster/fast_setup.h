@@ -39,7 +39,7 @@ bool edgesFitInt32(const FastSetup& s);
 /// Clips, snaps and sets up triangle t of positions (corners 3t .. 3t + 2) for a width x height
 /// viewport, clip being projection * view (rule 1); appends its fan triangles to out (none when
 /// it covers no pixel). Conservative: CpuOracle's conservative rules (cpu_oracle.h).
-void appendFastSetups(const Matrix4& clip, const TrianglePositions& positions, std::size_t t,
+void appendFastSetups(const Matrix4& clip, PositionsView positions, std::size_t t,
                       uint32_t width, uint32_t height, bool conservative,
                       std::vector<FastSetup>& out);
 

@@ -27,7 +27,7 @@ void sequenceFromOrder(std::span<const uint32_t> front_to_back,
     }
 }
 
-std::vector<uint32_t> centroidBackToFront(const TrianglePositions& positions,
+std::vector<uint32_t> centroidBackToFront(PositionsView positions,
                                           std::span<const PrimitiveRange> primitives,
                                           const ViewProjection& view) {
     std::vector<double> depth(primitives.size());
@@ -52,7 +52,7 @@ std::vector<uint32_t> centroidBackToFront(const TrianglePositions& positions,
     return order;
 }
 
-PixelRect screenRectOf(const TrianglePositions& positions, std::span<const uint32_t> triangles,
+PixelRect screenRectOf(PositionsView positions, std::span<const uint32_t> triangles,
                        const ViewProjection& view) {
     const PixelRect whole{0, 0, view.width, view.height};
     double low_x = std::numeric_limits<double>::infinity(), low_y = low_x;

@@ -40,13 +40,13 @@ void sequenceFromOrder(std::span<const uint32_t> front_to_back,
 
 /// Primitives sorted by the depth of their centroid (the mean of their corners), farthest first:
 /// the engines' approximation. Ties keep id order.
-std::vector<uint32_t> centroidBackToFront(const TrianglePositions& positions,
+std::vector<uint32_t> centroidBackToFront(PositionsView positions,
                                           std::span<const PrimitiveRange> primitives,
                                           const ViewProjection& view);
 
 /// The pixels whose centres triangles (scene triangle ids into positions) may cover in view,
 /// with a pixel's margin; the whole image when a corner is at or behind the eye plane.
-PixelRect screenRectOf(const TrianglePositions& positions, std::span<const uint32_t> triangles,
+PixelRect screenRectOf(PositionsView positions, std::span<const uint32_t> triangles,
                        const ViewProjection& view);
 
 } // namespace vissort::detail

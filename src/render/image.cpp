@@ -79,13 +79,13 @@ std::vector<uint8_t> errorMap(const std::vector<uint8_t>& image,
     return map;
 }
 
-std::string writePng(const std::string& path, uint32_t width, uint32_t height,
+Status writePng(const std::string& path, uint32_t width, uint32_t height,
                      const std::vector<uint8_t>& rgba8) {
     if (rgba8.size() != std::size_t(width) * height * 4 || width == 0 || height == 0)
-        return "no image to write to " + path;
+        return Status::failure("no image to write to " + path);
     if (!stbi_write_png(path.c_str(), int(width), int(height), 4, rgba8.data(), int(width) * 4))
-        return "cannot write " + path;
-    return "";
+        return Status::failure("cannot write " + path);
+    return Status::ok();
 }
 
 } // namespace vissort

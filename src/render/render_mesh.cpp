@@ -30,7 +30,7 @@ struct PositionHash {
 } // namespace
 
 RenderMesh::RenderMesh(const Scene& scene) {
-    const TrianglePositions& p = scene.positions;
+    PositionsView p = scene.positions;
     const std::size_t corners = p.x.size();
     corner_vertex_.resize(corners);
     corner_object_.resize(corners);
@@ -50,7 +50,7 @@ RenderMesh::RenderMesh(const Scene& scene) {
     vertex_normals_.resize(vertex_of.size() * 3);
 }
 
-void RenderMesh::update(const TrianglePositions& positions, std::vector<float>& vertices) {
+void RenderMesh::update(PositionsView positions, std::vector<float>& vertices) {
     const std::size_t corners = corner_vertex_.size();
     std::fill(vertex_normals_.begin(), vertex_normals_.end(), 0.0f);
     face_normals_.resize(corners); // 3 floats per triangle

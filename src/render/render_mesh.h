@@ -18,7 +18,7 @@ public:
 
     /// Fills `vertices` with 6 floats per corner (position, unit normal) for `positions`, which
     /// has the scene's corner count (a frame of a dynamic scene moves them: normals follow).
-    void update(const TrianglePositions& positions, std::vector<float>& vertices);
+    void update(PositionsView positions, std::vector<float>& vertices);
 
     /// The object of each corner (constant over frames).
     const std::vector<uint32_t>& cornerObjects() const { return corner_object_; }

@@ -1,5 +1,6 @@
 #include "render/scene_geometry.h"
 
+#include <algorithm>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat4x4.hpp>
 
@@ -53,11 +54,17 @@ SceneGeometry::SceneGeometry(const Scene& scene, std::span<const float> object_c
     glVertexArrayElementBuffer(va, elements_.get());
 }
 
-void SceneGeometry::upload(const TrianglePositions& positions) {
+void SceneGeometry::upload(PositionsView positions) {
     // A static scene's frames, or the same frame again: the normals and the buffer are current.
-    if (positions.x == uploaded_.x && positions.y == uploaded_.y && positions.z == uploaded_.z)
+    const auto same = [](std::span<const float> a, const std::vector<float>& b) {
+        return std::equal(a.begin(), a.end(), b.begin(), b.end());
+    };
+    if (same(positions.x, uploaded_.x) && same(positions.y, uploaded_.y) &&
+        same(positions.z, uploaded_.z))
         return;
-    uploaded_ = positions;
+    uploaded_.x.assign(positions.x.begin(), positions.x.end());
+    uploaded_.y.assign(positions.y.begin(), positions.y.end());
+    uploaded_.z.assign(positions.z.begin(), positions.z.end());
     mesh_.update(positions, vertex_data_);
     glNamedBufferData(vertices_.get(), GLsizeiptr(vertex_data_.size() * sizeof(float)),
                       vertex_data_.data(), GL_STREAM_DRAW);

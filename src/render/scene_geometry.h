@@ -21,7 +21,7 @@ public:
 
     /// Uploads the vertices of a frame: positions has the scene's triangle count. Positions equal
     /// to the last ones uploaded cost a comparison.
-    void upload(const TrianglePositions& positions);
+    void upload(PositionsView positions);
     /// The triangles to draw (scene triangle ids): opaque ones in any order, transparent ones in
     /// the order drawTransparent's ranges refer to.
     void setTriangles(std::span<const uint32_t> opaque, std::span<const uint32_t> transparent);

@@ -28,7 +28,7 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
         .count();
 }
 
-void copyCorners(const TrianglePositions& from, std::span<const uint32_t> triangles,
+void copyCorners(PositionsView from, std::span<const uint32_t> triangles,
                  TrianglePositions& to) {
     to.resize(triangles.size());
     for (std::size_t t = 0; t < triangles.size(); ++t)
@@ -98,14 +98,14 @@ struct TransparencyRenderer::Impl {
 
     // This frame's back-to-front sequence of transparent triangles (scene triangle ids), for the
     // methods that order per frame.
-    void buildSequence(const TrianglePositions& positions, const ViewProjection& view,
+    void buildSequence(PositionsView positions, const ViewProjection& view,
                        RenderStats& stats) {
         sequence.clear();
         if (part.scene_triangle.empty())
             return;
         if (!part.whole)
             copyCorners(positions, part.scene_triangle, part_positions);
-        const TrianglePositions& ordered = part.whole ? positions : part_positions;
+        PositionsView ordered = part.whole ? positions : part_positions;
         if (settings.method == BlendMethod::centroid) {
             std::vector<uint32_t> order = detail::centroidBackToFront(ordered, primitives, view);
             std::reverse(order.begin(), order.end());
@@ -138,7 +138,7 @@ struct TransparencyRenderer::Impl {
     // An object whose own triangles overlap on screen (beyond the depth tolerance) is, alone, a
     // group to composite per pixel. Found with the oracle: draw the object, then ask whether any
     // of it lies behind what was drawn.
-    void markSelfOverlapping(const TrianglePositions& ordered, const ViewProjection& view,
+    void markSelfOverlapping(PositionsView ordered, const ViewProjection& view,
                              std::vector<uint32_t>& group_of) {
         oracle->bind(ordered, view, primitives); // object level: one primitive an object
         // The default tolerance here: the blending one would find every object behind itself.
@@ -302,7 +302,9 @@ TransparencyRenderer::TransparencyRenderer(std::shared_ptr<GlContext> context, c
         d.sequence.segments.push_back({0, uint32_t(d.part.scene_triangle.size()), false, {}});
     }
     if (settings.method == BlendMethod::vissort && !d.part.scene_triangle.empty()) {
-        d.oracle = makeOracle(settings.oracle);
+        Result<std::unique_ptr<GeometryOracle>> oracle = makeOracle(settings.oracle, settings.oracle_options);
+        if (!oracle) throw std::runtime_error(oracle.error);
+        d.oracle = std::move(*oracle.value);
         d.oracle->setDepthTolerance(kBlendingDepthTolerance);
         d.orderer = std::make_unique<SceneOrderer>(d.part.scene, settings.level, *d.oracle);
         d.context->makeCurrent(); // a gl oracle made it current too; the same context
@@ -322,7 +324,7 @@ TransparencyRenderer::~TransparencyRenderer() {
         impl_->context->makeCurrent(); // GL objects are deleted in their context
 }
 
-Image TransparencyRenderer::render(const TrianglePositions& positions, const ViewProjection& view,
+Image TransparencyRenderer::render(PositionsView positions, const ViewProjection& view,
                                    RenderStats& stats) {
     Impl& d = *impl_;
     if (positions.triangleCount() != d.triangle_count)

@@ -119,15 +119,15 @@ struct RestMesh {
     std::vector<uint32_t> corner_vertex;
 };
 
-Loaded<RestMesh> loadRestBunny() {
-    Loaded<Scene> loaded = loadMeshMemory(kBunnyLowresObj, kBunnyLowresObjSize, "obj",
+Result<RestMesh> loadRestBunny() {
+    Result<Scene> loaded = loadMeshMemory(kBunnyLowresObj, kBunnyLowresObjSize, "obj",
                                           "built-in mesh bunny-lowres.obj");
     if (!loaded)
-        return Loaded<RestMesh>::failure(loaded.error);
+        return Result<RestMesh>::failure(loaded.error);
     const TrianglePositions &positions = loaded.value->positions;
     const Bounds bounds = positions.bounds();
     if (positions.triangleCount() == 0 || !(bounds.radius() > 0))
-        return Loaded<RestMesh>::failure("built-in mesh bunny-lowres.obj has no extent");
+        return Result<RestMesh>::failure("built-in mesh bunny-lowres.obj has no extent");
     const glm::dvec3 centre = toGlm(bounds.centre());
     const double scale = 1 / bounds.radius();
 
@@ -162,7 +162,7 @@ Loaded<RestMesh> loadRestBunny() {
         vertex.sin_y = std::sin(kWaveSpatialFrequency * vertex.position.y);
         vertex.cos_y = std::cos(kWaveSpatialFrequency * vertex.position.y);
     }
-    return Loaded<RestMesh>{std::move(mesh), {}};
+    return Result<RestMesh>{std::move(mesh), {}};
 }
 
 glm::dvec3 randomUnitVector(SceneRandom &random) {
@@ -171,19 +171,19 @@ glm::dvec3 randomUnitVector(SceneRandom &random) {
 
 } // namespace
 
-Loaded<Scene> makeBunniesScene(const SceneParameters &parameters) {
+Result<Scene> makeBunniesScene(const SceneParameters &parameters) {
     ParameterReader reader("builtin:bunnies", parameters);
     const auto count = static_cast<std::size_t>(reader.integer("n", 18, 1, 10'000));
     const uint64_t seed = reader.seed("seed", 1);
     if (std::string error = reader.error(); !error.empty())
-        return Loaded<Scene>::failure(error);
+        return Result<Scene>::failure(error);
 
-    Loaded<RestMesh> rest = loadRestBunny();
+    Result<RestMesh> rest = loadRestBunny();
     if (!rest)
-        return Loaded<Scene>::failure("builtin:bunnies: " + rest.error);
+        return Result<Scene>::failure("builtin:bunnies: " + rest.error);
     const std::size_t triangles_per_bunny = rest.value->corner_vertex.size() / 3;
     if (count * triangles_per_bunny > kMaxBuiltinTriangles)
-        return Loaded<Scene>::failure("builtin:bunnies: parameter n=" + std::to_string(count) +
+        return Result<Scene>::failure("builtin:bunnies: parameter n=" + std::to_string(count) +
                                       " gives " + std::to_string(count * triangles_per_bunny) +
                                       " triangles, more than the limit of " +
                                       std::to_string(kMaxBuiltinTriangles));
@@ -229,7 +229,7 @@ Loaded<Scene> makeBunniesScene(const SceneParameters &parameters) {
     cube.add({-reach, -reach, -reach});
     cube.add({reach, reach, reach});
     scene.camera = defaultCamera(cube);
-    return Loaded<Scene>{std::move(scene), {}};
+    return Result<Scene>{std::move(scene), {}};
 }
 
 bool bunnyCentreAt(const Animation &animation, std::size_t bunny, double t, Vec3 &centre) {

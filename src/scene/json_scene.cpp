@@ -27,7 +27,7 @@ using Json = nlohmann::json;
 
 constexpr uint64_t kMaxTriangles = 50'000'000;
 
-// Thrown by the readers below and caught in loadJsonScene, which turns it into a Loaded
+// Thrown by the readers below and caught in loadJsonScene, which turns it into a Result
 // failure: the nesting is deep and every step can fail, so unwinding keeps the readers short.
 struct JsonSceneError {
     std::string message;  // "<where>: <problem>", without the file name
@@ -135,7 +135,7 @@ CameraSpec readCamera(const Json& value, const std::string& where) {
         if (value.contains("up")) camera.up = toVec3(readVec3(value["up"], where + ".up"));
         if (value.contains("fov")) camera.fov_degrees = readNumber(value["fov"], where + ".fov");
     }
-    const std::string problem = validateCamera(camera);
+    const std::string problem = validateCamera(camera).error;
     if (!problem.empty()) fail(where, problem);
     return camera;
 }
@@ -253,7 +253,7 @@ private:
         const std::string path = (folder_ / mesh).lexically_normal().string();
         auto cached = meshes_.find(path);
         if (cached == meshes_.end()) {
-            Loaded<Scene> loaded = loadMeshFile(path);
+            Result<Scene> loaded = loadMeshFile(path);
             if (!loaded) fail(where + ".mesh", loaded.error);
             cached = meshes_.emplace(path, std::move(*loaded.value)).first;
         }
@@ -332,16 +332,16 @@ private:
 
 } // namespace
 
-Loaded<Scene> loadJsonScene(const std::string& path) {
+Result<Scene> loadJsonScene(const std::string& path) {
     std::error_code ec;
     const std::filesystem::path file(path);
     if (!std::filesystem::is_regular_file(file, ec))
-        return Loaded<Scene>::failure(path + (std::filesystem::exists(file, ec) ? ": not a regular file" : ": file not found"));
+        return Result<Scene>::failure(path + (std::filesystem::exists(file, ec) ? ": not a regular file" : ": file not found"));
     try {
         std::ifstream stream(file, std::ios::binary);
         std::ostringstream text;
         text << stream.rdbuf();
-        if (!stream) return Loaded<Scene>::failure(path + ": cannot read the file");
+        if (!stream) return Result<Scene>::failure(path + ": cannot read the file");
         // nlohmann keeps the last of repeated keys; a repeated key is as likely a mistake as a typo.
         std::vector<std::set<std::string>> keys_per_object;
         const Json::parser_callback_t reject_duplicates = [&](int, Json::parse_event_t event, Json& parsed) {
@@ -357,14 +357,14 @@ Loaded<Scene> loadJsonScene(const std::string& path) {
         } catch (const Json::exception& e) {
             // Syntax errors carry nlohmann's "at line L, column C"; a number too large for a
             // double (1e400) is reported as an overflow, naming the number.
-            return Loaded<Scene>::failure(path + ": invalid JSON: " + e.what());
+            return Result<Scene>::failure(path + ": invalid JSON: " + e.what());
         }
         JsonSceneBuilder builder(file.parent_path());
         return {builder.build(root, file.stem().string()), {}};
     } catch (const JsonSceneError& e) {
-        return Loaded<Scene>::failure(path + ": " + e.message);
+        return Result<Scene>::failure(path + ": " + e.message);
     } catch (const std::exception& e) {
-        return Loaded<Scene>::failure(path + ": " + e.what());
+        return Result<Scene>::failure(path + ": " + e.what());
     }
 }
 

@@ -12,6 +12,6 @@ namespace vissort::detail {
 /// Reads a JSON scene; mesh paths are relative to the JSON file's folder.
 /// Any problem (syntax, unknown key, wrong type, missing mesh, non-finite number, zero scale)
 /// gives a one-line error that starts with the JSON file's path.
-Loaded<Scene> loadJsonScene(const std::string& path);
+Result<Scene> loadJsonScene(const std::string& path);
 
 } // namespace vissort::detail

@@ -23,7 +23,7 @@ bool endsWithJson(const std::string& path) {
 }
 
 /// Splits "k=v&k2=v2" into parameters; an empty query gives none.
-Loaded<SceneParameters> parseQuery(const std::string& query, const std::string& specification) {
+Result<SceneParameters> parseQuery(const std::string& query, const std::string& specification) {
     SceneParameters parameters;
     std::size_t begin = 0;
     while (begin < query.size()) {
@@ -32,50 +32,50 @@ Loaded<SceneParameters> parseQuery(const std::string& query, const std::string& 
         const std::string item = query.substr(begin, end - begin);
         const std::size_t equals = item.find('=');
         if (item.empty())
-            return Loaded<SceneParameters>::failure(specification + ": empty parameter between '&'");
+            return Result<SceneParameters>::failure(specification + ": empty parameter between '&'");
         if (equals == std::string::npos)
-            return Loaded<SceneParameters>::failure(specification + ": parameter '" + item +
+            return Result<SceneParameters>::failure(specification + ": parameter '" + item +
                                                     "' needs a value (key=value)");
         const std::string key = item.substr(0, equals);
         if (key.empty())
-            return Loaded<SceneParameters>::failure(specification + ": parameter '" + item + "' has no key");
+            return Result<SceneParameters>::failure(specification + ": parameter '" + item + "' has no key");
         if (!parameters.emplace(key, item.substr(equals + 1)).second)
-            return Loaded<SceneParameters>::failure(specification + ": parameter '" + key + "' given twice");
+            return Result<SceneParameters>::failure(specification + ": parameter '" + key + "' given twice");
         begin = end + 1;
         if (end + 1 == query.size())
-            return Loaded<SceneParameters>::failure(specification + ": empty parameter after the last '&'");
+            return Result<SceneParameters>::failure(specification + ": empty parameter after the last '&'");
     }
     return {std::move(parameters), {}};
 }
 
-Loaded<Scene> loadBuiltin(const std::string& specification) {
+Result<Scene> loadBuiltin(const std::string& specification) {
     const std::string rest = specification.substr(kBuiltinPrefix.size());
     const std::size_t question = rest.find('?');
     const std::string name = rest.substr(0, question);
-    if (name.empty()) return Loaded<Scene>::failure(specification + ": missing the built-in scene name");
-    Loaded<SceneParameters> parameters =
+    if (name.empty()) return Result<Scene>::failure(specification + ": missing the built-in scene name");
+    Result<SceneParameters> parameters =
         parseQuery(question == std::string::npos ? std::string() : rest.substr(question + 1), specification);
-    if (!parameters) return Loaded<Scene>::failure(parameters.error);
-    Loaded<Scene> scene = makeBuiltinScene(name, *parameters.value);
+    if (!parameters) return Result<Scene>::failure(parameters.error);
+    Result<Scene> scene = makeBuiltinScene(name, *parameters.value);
     if (!scene) return scene;  // its message already names the scene and the parameter
     return scene;
 }
 
 } // namespace
 
-Loaded<Scene> loadScene(const std::string& specification) {
-    if (specification.empty()) return Loaded<Scene>::failure("empty scene specification");
+Result<Scene> loadScene(const std::string& specification) {
+    if (specification.empty()) return Result<Scene>::failure("empty scene specification");
     try {
-        Loaded<Scene> scene = specification.starts_with(kBuiltinPrefix) ? loadBuiltin(specification)
+        Result<Scene> scene = specification.starts_with(kBuiltinPrefix) ? loadBuiltin(specification)
                               : endsWithJson(specification)              ? detail::loadJsonScene(specification)
                                                                          : detail::loadMeshFile(specification);
         if (!scene) return scene;
-        const std::string problem = validateScene(*scene.value);
-        if (!problem.empty()) return Loaded<Scene>::failure(specification + ": " + problem);
+        if (Status valid = validateScene(*scene.value); !valid)
+            return Result<Scene>::failure(specification + ": " + valid.error);
         return scene;
     } catch (const std::exception& e) {
         // The loaders return errors as values; this only catches what they cannot (out of memory).
-        return Loaded<Scene>::failure(specification + ": " + e.what());
+        return Result<Scene>::failure(specification + ": " + e.what());
     }
 }
 

@@ -101,13 +101,13 @@ std::string objectName(const aiMesh& mesh, const MeshInstance& instance, unsigne
     return name.empty() ? "object_" + std::to_string(object_id) : name;
 }
 
-Loaded<Scene> convertScene(const aiScene& ai_scene, const std::string& label, const std::string& scene_name) {
+Result<Scene> convertScene(const aiScene& ai_scene, const std::string& label, const std::string& scene_name) {
     const std::vector<MeshInstance> instances = meshInstances(ai_scene);
     uint64_t total = 0;
     for (const MeshInstance& instance : instances) total += fanTriangleCount(*ai_scene.mMeshes[instance.mesh_index]);
-    if (total == 0) return Loaded<Scene>::failure(label + ": no triangles in the file");
+    if (total == 0) return Result<Scene>::failure(label + ": no triangles in the file");
     if (total > kMaxTriangles)
-        return Loaded<Scene>::failure(label + ": " + std::to_string(total) + " triangles, more than the limit of " +
+        return Result<Scene>::failure(label + ": " + std::to_string(total) + " triangles, more than the limit of " +
                                       std::to_string(kMaxTriangles));
 
     std::vector<unsigned> instance_counts(ai_scene.mNumMeshes, 0);
@@ -139,7 +139,7 @@ Loaded<Scene> convertScene(const aiScene& ai_scene, const std::string& label, co
             const aiFace& face = mesh.mFaces[f];
             for (unsigned i = 0; i < face.mNumIndices; ++i)
                 if (face.mIndices[i] >= mesh.mNumVertices)
-                    return Loaded<Scene>::failure(label + ": mesh " + std::to_string(instance.mesh_index) +
+                    return Result<Scene>::failure(label + ": mesh " + std::to_string(instance.mesh_index) +
                                                   " has a vertex index out of range");
             for (unsigned i = 1; i + 1 < face.mNumIndices; ++i) {
                 put(face.mIndices[0]);
@@ -151,10 +151,10 @@ Loaded<Scene> convertScene(const aiScene& ai_scene, const std::string& label, co
     }
 
     // Checked after the transform: a finite vertex can still overflow float once moved.
-    const TrianglePositions& p = scene.positions;
+    PositionsView p = scene.positions;
     for (std::size_t i = 0; i < p.x.size(); ++i)
         if (!std::isfinite(p.x[i]) || !std::isfinite(p.y[i]) || !std::isfinite(p.z[i]))
-            return Loaded<Scene>::failure(label + ": triangle " + std::to_string(i / 3) +
+            return Result<Scene>::failure(label + ": triangle " + std::to_string(i / 3) +
                                           " has a non-finite coordinate");
     return {std::move(scene), {}};
 }
@@ -163,42 +163,42 @@ Loaded<Scene> convertScene(const aiScene& ai_scene, const std::string& label, co
 // rejects malformed data structures (indices out of range, empty meshes).
 constexpr unsigned kImportFlags = aiProcess_ValidateDataStructure;
 
-Loaded<Scene> finishImport(Assimp::Importer& importer, const aiScene* ai_scene, const std::string& label,
+Result<Scene> finishImport(Assimp::Importer& importer, const aiScene* ai_scene, const std::string& label,
                            const std::string& scene_name) {
     if (!ai_scene) {
         std::string reason = oneLine(importer.GetErrorString());
         if (reason.empty()) reason = "unreadable or unsupported file";
-        return Loaded<Scene>::failure(label + ": " + reason);
+        return Result<Scene>::failure(label + ": " + reason);
     }
     return convertScene(*ai_scene, label, scene_name);
 }
 
 } // namespace
 
-Loaded<Scene> loadMeshFile(const std::string& path) {
+Result<Scene> loadMeshFile(const std::string& path) {
     std::error_code ec;
     const std::filesystem::path file(path);
-    if (!std::filesystem::exists(file, ec)) return Loaded<Scene>::failure(path + ": file not found");
-    if (!std::filesystem::is_regular_file(file, ec)) return Loaded<Scene>::failure(path + ": not a regular file");
+    if (!std::filesystem::exists(file, ec)) return Result<Scene>::failure(path + ": file not found");
+    if (!std::filesystem::is_regular_file(file, ec)) return Result<Scene>::failure(path + ": not a regular file");
     try {
         Assimp::Importer importer;
         const aiScene* ai_scene = importer.ReadFile(path, kImportFlags);
         return finishImport(importer, ai_scene, path, file.stem().string());
     } catch (const std::exception& e) {
         // assimp reports most failures through GetErrorString, but some readers throw.
-        return Loaded<Scene>::failure(path + ": " + oneLine(e.what()));
+        return Result<Scene>::failure(path + ": " + oneLine(e.what()));
     }
 }
 
-Loaded<Scene> loadMeshMemory(const void* data, std::size_t size, const std::string& format_hint,
+Result<Scene> loadMeshMemory(const void* data, std::size_t size, const std::string& format_hint,
                              const std::string& label) {
-    if (!data || size == 0) return Loaded<Scene>::failure(label + ": empty input");
+    if (!data || size == 0) return Result<Scene>::failure(label + ": empty input");
     try {
         Assimp::Importer importer;
         const aiScene* ai_scene = importer.ReadFileFromMemory(data, size, kImportFlags, format_hint.c_str());
         return finishImport(importer, ai_scene, label, std::filesystem::path(label).stem().string());
     } catch (const std::exception& e) {
-        return Loaded<Scene>::failure(label + ": " + oneLine(e.what()));
+        return Result<Scene>::failure(label + ": " + oneLine(e.what()));
     }
 }
 

@@ -12,11 +12,11 @@ namespace vissort::detail {
 /// mesh). Polygons are fan-triangulated in place; no vertex welding or reordering that would
 /// change triangle ids. Objects get the material's diffuse colour and opacity when the file has
 /// one (transparent when opacity < 1), else a default grey, opaque.
-Loaded<Scene> loadMeshFile(const std::string& path);
+Result<Scene> loadMeshFile(const std::string& path);
 
 /// The same from bytes in memory; `format_hint` is a file extension such as "obj".
 /// `label` names the source in error messages.
-Loaded<Scene> loadMeshMemory(const void* data, std::size_t size, const std::string& format_hint,
+Result<Scene> loadMeshMemory(const void* data, std::size_t size, const std::string& format_hint,
                              const std::string& label);
 
 } // namespace vissort::detail

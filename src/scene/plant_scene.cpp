@@ -389,12 +389,12 @@ CameraSpec framePlant(const Bounds& bounds) {
 
 } // namespace
 
-Loaded<Scene> makePlantScene(const SceneParameters& parameters) {
+Result<Scene> makePlantScene(const SceneParameters& parameters) {
     ParameterReader reader("builtin:plant", parameters);
     const auto layers = static_cast<uint32_t>(reader.integer("layers", 8, 1, kMaxLayers));
     const uint64_t seed = reader.seed("seed", 1);
     if (std::string error = reader.error(); !error.empty())
-        return Loaded<Scene>::failure(error);
+        return Result<Scene>::failure(error);
 
     SceneRandom random(seed);
     Scene scene;
@@ -443,7 +443,7 @@ Loaded<Scene> makePlantScene(const SceneParameters& parameters) {
         }
 
     scene.camera = framePlant(scene.positions.bounds());
-    return Loaded<Scene>{std::move(scene), {}};
+    return Result<Scene>{std::move(scene), {}};
 }
 
 } // namespace vissort::detail

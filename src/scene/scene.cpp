@@ -48,8 +48,11 @@ uint32_t Scene::objectOfTriangle(uint32_t triangle) const {
     return static_cast<uint32_t>(after - objects.begin() - 1);
 }
 
-std::string validateScene(const Scene& scene) {
-    const TrianglePositions& p = scene.positions;
+namespace {
+
+// The first invariant that does not hold, or empty.
+std::string sceneProblem(const Scene& scene) {
+    PositionsView p = scene.positions;
     if (p.x.size() != p.y.size() || p.x.size() != p.z.size())
         return "position arrays have different lengths";
     if (p.x.size() % 3 != 0) return "position arrays are not a whole number of triangles";
@@ -78,10 +81,14 @@ std::string validateScene(const Scene& scene) {
         return "objects cover " + std::to_string(next) + " triangles, the scene has " +
                std::to_string(p.triangleCount());
     if (scene.camera) {
-        const std::string camera_error = validateCamera(*scene.camera);
+        const std::string camera_error = validateCamera(*scene.camera).error;
         if (!camera_error.empty()) return "default camera: " + camera_error;
     }
     return {};
 }
+
+} // namespace
+
+Status validateScene(const Scene& scene) { return Status{sceneProblem(scene)}; }
 
 } // namespace vissort

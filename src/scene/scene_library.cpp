@@ -10,7 +10,7 @@ namespace {
 struct BuiltinScene {
     const char *name;
     const char *summary;
-    Loaded<Scene> (*make)(const SceneParameters &);
+    Result<Scene> (*make)(const SceneParameters &);
 };
 
 constexpr BuiltinScene kBuiltinScenes[] = {
@@ -41,14 +41,14 @@ std::vector<BuiltinSceneInfo> builtinScenes() {
     return infos;
 }
 
-Loaded<Scene> makeBuiltinScene(const std::string &name, const SceneParameters &parameters) {
+Result<Scene> makeBuiltinScene(const std::string &name, const SceneParameters &parameters) {
     std::string known;
     for (const BuiltinScene &scene : kBuiltinScenes) {
         if (name == scene.name)
             return scene.make(parameters);
         known += (known.empty() ? "" : ", ") + std::string(scene.name);
     }
-    return Loaded<Scene>::failure("unknown built-in scene 'builtin:" + name + "' (known: " + known +
+    return Result<Scene>::failure("unknown built-in scene 'builtin:" + name + "' (known: " + known +
                                   ")");
 }
 

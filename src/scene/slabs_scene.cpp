@@ -21,12 +21,12 @@ constexpr float kAlpha = 0.4f;
 
 } // namespace
 
-Loaded<Scene> makeSlabsScene(const SceneParameters &parameters) {
+Result<Scene> makeSlabsScene(const SceneParameters &parameters) {
     ParameterReader reader("builtin:slabs", parameters);
     const auto layers = static_cast<uint32_t>(reader.integer("layers", 8, 1, 100'000));
     const uint64_t seed = reader.seed("seed", 1);
     if (std::string error = reader.error(); !error.empty())
-        return Loaded<Scene>::failure(error);
+        return Result<Scene>::failure(error);
 
     SceneRandom random(seed);
     Scene scene;
@@ -76,7 +76,7 @@ Loaded<Scene> makeSlabsScene(const SceneParameters &parameters) {
     camera.target = {0, 0, 0};
     camera.up = {0, 1, 0};
     scene.camera = camera;
-    return Loaded<Scene>{std::move(scene), {}};
+    return Result<Scene>{std::move(scene), {}};
 }
 
 } // namespace vissort::detail

@@ -26,12 +26,12 @@ constexpr float kAlpha = 0.5f;
 
 } // namespace
 
-Loaded<Scene> makeSoupScene(const SceneParameters &parameters) {
+Result<Scene> makeSoupScene(const SceneParameters &parameters) {
     ParameterReader reader("builtin:soup", parameters);
     const auto count = static_cast<uint32_t>(reader.integer("n", 1000, 1, kMaxBuiltinTriangles));
     const uint64_t seed = reader.seed("seed", 1);
     if (std::string error = reader.error(); !error.empty())
-        return Loaded<Scene>::failure(error);
+        return Result<Scene>::failure(error);
 
     uint32_t side = 1; // the smallest grid with at least `count` cells
     while (std::size_t{side} * side * side < count)
@@ -88,7 +88,7 @@ Loaded<Scene> makeSoupScene(const SceneParameters &parameters) {
     cube.add({origin, origin, origin});
     cube.add({-origin, -origin, -origin});
     scene.camera = defaultCamera(cube);
-    return Loaded<Scene>{std::move(scene), {}};
+    return Result<Scene>{std::move(scene), {}};
 }
 
 } // namespace vissort::detail

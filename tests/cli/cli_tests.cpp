@@ -100,7 +100,7 @@ void expectFrameRecord(const json& record, std::size_t n, const std::string& lev
 }
 
 Scene loadOrDie(const std::string& spec) {
-    Loaded<Scene> loaded = loadScene(spec);
+    Result<Scene> loaded = loadScene(spec);
     EXPECT_TRUE(loaded) << loaded.error;
     return loaded ? std::move(*loaded.value) : Scene{};
 }

@@ -70,7 +70,7 @@ TEST_F(Cli, RenderWritesThePngTheJsonAndTheErrorMap) {
 
 // The tool's flat-shaded output against the ray-cast A-buffer, for every exact method.
 TEST_F(Cli, FlatRenderOfEveryExactMethodMatchesTheRayCastABuffer) {
-    Loaded<Scene> loaded = loadScene(kSticks);
+    Result<Scene> loaded = loadScene(kSticks);
     ASSERT_TRUE(loaded) << loaded.error;
     const Scene& scene = *loaded.value;
     const ViewProjection view = frameCamera(*scene.camera, scene.positions.bounds(), 96, 72);

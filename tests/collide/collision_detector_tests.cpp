@@ -67,7 +67,7 @@ CollisionSettings method(CollisionMethod m) {
 }
 
 TEST(CollisionDetector, BunniesMatchBruteForceFrameByFrame) {
-    const Loaded<Scene> scene = loadScene("builtin:bunnies?n=18");
+    const Result<Scene> scene = loadScene("builtin:bunnies?n=18");
     ASSERT_TRUE(scene) << scene.error;
     const auto objects = scene.value->objectPrimitives();
     CollisionDetector brute(objects, method(CollisionMethod::brute));
@@ -93,7 +93,7 @@ TEST(CollisionDetector, BunniesMatchBruteForceFrameByFrame) {
 // The threads share the refits and the pairs: the answer must not depend on how many there are,
 // or on which finished first (run under ThreadSanitizer by CI).
 TEST(CollisionThreads, EveryThreadCountGivesThePairsOfOne) {
-    const Loaded<Scene> scene = loadScene("builtin:bunnies?n=12");
+    const Result<Scene> scene = loadScene("builtin:bunnies?n=12");
     ASSERT_TRUE(scene) << scene.error;
     const auto objects = scene.value->objectPrimitives();
     std::vector<std::unique_ptr<CollisionDetector>> detectors;
@@ -120,7 +120,7 @@ TEST(CollisionThreads, EveryThreadCountGivesThePairsOfOne) {
 }
 
 TEST(CollisionDetector, VisibilityCullsObjectPairsThatBoxesKeep) {
-    const Loaded<Scene> scene = loadScene("builtin:bunnies?n=36");
+    const Result<Scene> scene = loadScene("builtin:bunnies?n=36");
     ASSERT_TRUE(scene) << scene.error;
     const auto objects = scene.value->objectPrimitives();
     const TrianglePositions positions = scene.value->frame(1.0);
@@ -132,7 +132,7 @@ TEST(CollisionDetector, VisibilityCullsObjectPairsThatBoxesKeep) {
 }
 
 TEST(CollisionDetector, RealMeshesThatInterpenetrate) {
-    const Loaded<Scene> scene =
+    const Result<Scene> scene =
         loadScene(std::string(VISSORT_SOURCE_DIR) + "/tests/data/scenes/interpenetrating.json");
     ASSERT_TRUE(scene) << scene.error;
     const auto objects = scene.value->objectPrimitives();

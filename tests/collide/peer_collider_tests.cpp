@@ -23,7 +23,7 @@ CollisionSettings settingsFor(CollisionMethod method) {
 }
 
 Scene loadBunnies(int n) {
-    Loaded<Scene> loaded = loadScene("builtin:bunnies?n=" + std::to_string(n));
+    Result<Scene> loaded = loadScene("builtin:bunnies?n=" + std::to_string(n));
     EXPECT_TRUE(loaded) << loaded.error;
     return loaded ? std::move(*loaded.value) : Scene{};
 }

@@ -254,7 +254,7 @@ TEST(ExactOracle, MatchesBruteForceOnOneTrianglePerPrimitive) {
 }
 
 TEST(ExactOracle, MatchesBruteForceOnSpotMesh) {
-    const Loaded<Scene> loaded = loadScene(VISSORT_SOURCE_DIR "/assets/models/spot.obj");
+    const Result<Scene> loaded = loadScene(VISSORT_SOURCE_DIR "/assets/models/spot.obj");
     ASSERT_TRUE(loaded) << loaded.error;
     const TrianglePositions& positions = loaded.value->positions;
     ASSERT_GT(positions.triangleCount(), 1000u);

@@ -128,7 +128,7 @@ TEST(CameraPathOrbit, TurnsThreeDegreesPerFrameKeepingDistanceAndHeight) {
     for (int frame = 1; frame <= 119; ++frame) {
         const CameraSpec camera = cameraOnPath(base, CameraPath::orbit, frame, kBounds);
         const std::string where = "frame " + std::to_string(frame);
-        EXPECT_EQ(validateCamera(camera), "") << where;
+        EXPECT_EQ(validateCamera(camera).error, "") << where;
         const Vec3 offset = minus(camera.eye, centre);
         EXPECT_NEAR(length(offset), length(base_offset), 1e-12) << where;
         EXPECT_NEAR(camera.eye.y, base.eye.y, 1e-12) << where;
@@ -169,7 +169,7 @@ TEST(CameraPathOrbit, OrthographicDirectionTurns) {
         const CameraSpec camera = cameraOnPath(base, CameraPath::orbit, frame, kBounds);
         const std::string where = "frame " + std::to_string(frame);
         EXPECT_EQ(camera.projection, Projection::orthographic);
-        EXPECT_EQ(validateCamera(camera), "") << where;
+        EXPECT_EQ(validateCamera(camera).error, "") << where;
         const Vec3 dir = camera.ortho_direction;
         EXPECT_NEAR(dir.y, base.ortho_direction.y, 1e-12) << where;
         EXPECT_NEAR(length(dir), length(base.ortho_direction), 1e-12) << where;
@@ -189,7 +189,7 @@ TEST(CameraPathFlythrough, StaysInsideAndLooksAhead) {
         const CameraSpec camera = cameraOnPath(base, CameraPath::flythrough, frame, kBounds);
         const CameraSpec next = cameraOnPath(base, CameraPath::flythrough, frame + 1, kBounds);
         const std::string where = "frame " + std::to_string(frame);
-        EXPECT_EQ(validateCamera(camera), "") << where;
+        EXPECT_EQ(validateCamera(camera).error, "") << where;
         EXPECT_EQ(camera.projection, Projection::perspective);
         EXPECT_EQ(camera.fov_degrees, base.fov_degrees);
         // On a horizontal circle of radius 0.6 r about the centre: inside the bounding sphere.
@@ -215,7 +215,7 @@ TEST(CameraPathFlythrough, DegenerateBoundsStillGiveValidCameras) {
     const Bounds point = boxBounds({1, 2, 3}, {1, 2, 3});
     for (int frame : {0, 1, 45, 180}) {
         const CameraSpec camera = cameraOnPath(perspectiveBase(), CameraPath::flythrough, frame, point);
-        EXPECT_EQ(validateCamera(camera), "") << frame;
+        EXPECT_EQ(validateCamera(camera).error, "") << frame;
         // With radius 0 the path uses radius 1: the circle has radius 0.6.
         EXPECT_NEAR(length(minus(camera.eye, point.centre())), 0.6, 1e-12) << frame;
     }
@@ -244,7 +244,7 @@ TEST(CameraPathOrbit, TiltedUpStaysValidAllTheWayRound) {
     base.up = {1, 0, 0};
     for (int frame = 0; frame <= 120; ++frame) {
         const CameraSpec camera = cameraOnPath(base, CameraPath::orbit, frame, bounds);
-        EXPECT_EQ(validateCamera(camera), "") << "frame " << frame;
+        EXPECT_EQ(validateCamera(camera).error, "") << "frame " << frame;
         // up stays perpendicular to the view direction, as in the base camera.
         const double dot = (camera.target.x - camera.eye.x) * camera.up.x +
                            (camera.target.y - camera.eye.y) * camera.up.y +

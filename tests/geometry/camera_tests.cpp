@@ -244,7 +244,7 @@ TEST(CameraPerspective, NearPlane) {
     for (const Case& c : cases) {
         // The target is not the centre: near depends on the distance to the sphere only.
         const CameraSpec camera = perspectiveCamera(c.eye, {2.3, 2.1, 1.9}, {0, 1, 0}, 45);
-        ASSERT_EQ(validateCamera(camera), "");
+        ASSERT_EQ(validateCamera(camera).error, "");
         const ViewProjection vp = frameCamera(camera, bounds, 32, 32);
         EXPECT_NEAR(vp.near, c.expected_near, 1e-12 * std::max(1.0, c.expected_near));
         EXPECT_TRUE(std::isinf(vp.far));
@@ -512,10 +512,10 @@ TEST(CameraOrthographic, DepthEnclosesSphereAndIsLinear) {
 
 TEST(CameraValidate, RejectsDegenerateCameras) {
     const CameraSpec good = perspectiveCamera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 45);
-    EXPECT_EQ(validateCamera(good), "");
-    EXPECT_EQ(validateCamera(CameraSpec{}), "");
-    EXPECT_EQ(validateCamera(perspectiveCamera({1, 2, 3}, {-1, 0.5, 2}, {0.2, 3, 0}, 179.5)), "");
-    EXPECT_EQ(validateCamera(perspectiveCamera({1, 2, 3}, {-1, 0.5, 2}, {0, 1, 0}, 0.5)), "");
+    EXPECT_EQ(validateCamera(good).error, "");
+    EXPECT_EQ(validateCamera(CameraSpec{}).error, "");
+    EXPECT_EQ(validateCamera(perspectiveCamera({1, 2, 3}, {-1, 0.5, 2}, {0.2, 3, 0}, 179.5)).error, "");
+    EXPECT_EQ(validateCamera(perspectiveCamera({1, 2, 3}, {-1, 0.5, 2}, {0, 1, 0}, 0.5)).error, "");
 
     const double nan = std::nan(""), inf = INFINITY;
     std::vector<CameraSpec> bad;
@@ -537,14 +537,14 @@ TEST(CameraValidate, RejectsDegenerateCameras) {
     bad.push_back(orthographicCamera({nan, 0, -1}));
     bad.push_back(orthographicCamera({0, inf, -1}));
     for (std::size_t i = 0; i < bad.size(); ++i) {
-        const std::string message = validateCamera(bad[i]);
+        const std::string message = validateCamera(bad[i]).error;
         EXPECT_FALSE(message.empty()) << "camera " << i;
         EXPECT_EQ(message.find('\n'), std::string::npos) << "camera " << i;
     }
 
-    EXPECT_EQ(validateCamera(orthographicCamera({0, 0, -1})), "");
-    EXPECT_EQ(validateCamera(orthographicCamera({0, -1, 0})), "");
-    EXPECT_EQ(validateCamera(orthographicCamera({1e-3, 2, -7})), "");
+    EXPECT_EQ(validateCamera(orthographicCamera({0, 0, -1})).error, "");
+    EXPECT_EQ(validateCamera(orthographicCamera({0, -1, 0})).error, "");
+    EXPECT_EQ(validateCamera(orthographicCamera({1e-3, 2, -7})).error, "");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -561,7 +561,7 @@ TEST(CameraDefault, FramesTheWholeBoundingSphere) {
         const CameraSpec camera = defaultCamera(bounds);
         EXPECT_EQ(camera.projection, Projection::perspective);
         EXPECT_EQ(camera.fov_degrees, 45.0);
-        EXPECT_EQ(validateCamera(camera), "");
+        EXPECT_EQ(validateCamera(camera).error, "");
         const glm::dvec3 c = toGlm(bounds.centre());
         EXPECT_NEAR(glm::length(toGlm(camera.target) - c), 0.0, 1e-12);
         EXPECT_EQ(camera.up.x, 0);

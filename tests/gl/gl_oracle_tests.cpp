@@ -27,7 +27,7 @@ namespace vissort {
 namespace {
 
 std::shared_ptr<GlContext> context() {
-    static const Loaded<std::shared_ptr<GlContext>> shared = GlContext::shared();
+    static const Result<std::shared_ptr<GlContext>> shared = GlContext::shared();
     if (!shared) ADD_FAILURE() << shared.error;
     return shared ? *shared.value : nullptr;
 }
@@ -47,7 +47,7 @@ ViewProjection viewOf(const Scene& scene, Projection projection, uint32_t width,
 TEST(GlContext, BothEglPlatformsGiveOpenGl45) {
     for (GlPlatform platform : {GlPlatform::surfaceless, GlPlatform::device}) {
         SCOPED_TRACE(glPlatformName(platform));
-        const Loaded<std::shared_ptr<GlContext>> created = GlContext::create(platform);
+        const Result<std::shared_ptr<GlContext>> created = GlContext::create(platform);
         ASSERT_TRUE(created) << created.error;
         const GlContextInfo& info = (*created.value)->info();
         EXPECT_EQ(info.platform, glPlatformName(platform));
@@ -59,19 +59,24 @@ TEST(GlContext, BothEglPlatformsGiveOpenGl45) {
     }
 }
 
-TEST(GlContext, PlatformNamesAndTheEnvironmentOverride) {
-    GlPlatform platform;
+TEST(GlContext, PlatformNamesAndARefusedSharedContext) {
     for (const char* name : {"auto", "device", "surfaceless"}) {
-        ASSERT_TRUE(parseGlPlatform(name, platform)) << name;
-        EXPECT_STREQ(glPlatformName(platform), name);
+        const Result<GlPlatform> platform = parseGlPlatform(name);
+        ASSERT_TRUE(platform) << name;
+        EXPECT_STREQ(glPlatformName(*platform.value), name);
     }
-    EXPECT_FALSE(parseGlPlatform("wayland", platform));
-    ASSERT_EQ(setenv("VISSORT_GL_PLATFORM", "wayland", 1), 0);
-    const Loaded<std::shared_ptr<GlContext>> refused = GlContext::create();
-    unsetenv("VISSORT_GL_PLATFORM");
+    const Result<GlPlatform> unknown = parseGlPlatform("wayland");
+    ASSERT_FALSE(unknown);
+    EXPECT_NE(unknown.error.find("'wayland'"), std::string::npos) << unknown.error;
+    EXPECT_NE(unknown.error.find("surfaceless"), std::string::npos) << unknown.error;
+    // The library reads no environment: an application rules OpenGL out explicitly. Nothing
+    // else would stop shared() from handing out a context that exists.
+    GlContext::refuseShared("no OpenGL context: ruled out by the test");
+    const Result<std::shared_ptr<GlContext>> refused = GlContext::shared();
+    GlContext::setSharedPlatform(GlPlatform::automatic);
     ASSERT_FALSE(refused);
-    EXPECT_NE(refused.error.find("VISSORT_GL_PLATFORM"), std::string::npos) << refused.error;
-    EXPECT_NE(refused.error.find("wayland"), std::string::npos) << refused.error;
+    EXPECT_EQ(refused.error, "no OpenGL context: ruled out by the test");
+    EXPECT_TRUE(GlContext::shared()) << "setSharedPlatform lifts the refusal";
 }
 
 struct Case {

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "vissort/cpu_oracle.h"
-#include "vissort/oracle_workloads.h"
+#include "support/oracle_workloads.h"
 
 namespace vissort {
 namespace {

@@ -17,6 +17,10 @@
 namespace vissort {
 namespace {
 
+// A negative tolerance, as the transparency renderer sets (kBlendingDepthTolerance): near ties
+// count as occlusion.
+constexpr float kNegativeTolerance = -1.0f / (1 << 16);
+
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 // Appends the square [x0, x1] x [y0, y1] at height z as two triangles; returns its range.
@@ -172,8 +176,8 @@ TEST_P(CpuOracleSemantics, BlendingToleranceMakesNearTiesOccludeBothWays) {
     const ViewProjection vp = frameCamera(spec, p.bounds(), 32, 24);
     const double slope = (vp.depthOf({0, 0, -1e-3}) - vp.depthOf({0, 0, 0})) / 1e-3;
     primitives.push_back(addQuad(p, -0.5, -0.5, 1.5, 1.5, 0));  // 1: coplanar with 0
-    primitives.push_back(addQuad(p, -1, -1, 1, 1, 0.25 * kBlendingDepthTolerance / slope));  // 2
-    ASSERT_GT(0.25 * -kBlendingDepthTolerance, 2 * kDepthTolerance);
+    primitives.push_back(addQuad(p, -1, -1, 1, 1, 0.25 * kNegativeTolerance / slope));  // 2
+    ASSERT_GT(0.25 * -kNegativeTolerance, 2 * kDepthTolerance);
     primitives.push_back(addQuad(p, -1, -1, 1, 1, -0.1));  // 3: clearly behind 0
     CpuOracle oracle;
     oracle.bind(p, vp, primitives);
@@ -187,7 +191,7 @@ TEST_P(CpuOracleSemantics, BlendingToleranceMakesNearTiesOccludeBothWays) {
     EXPECT_FALSE(behind(1, 0));
     EXPECT_TRUE(behind(0, 2));
     EXPECT_FALSE(behind(2, 0));
-    oracle.setDepthTolerance(kBlendingDepthTolerance);
+    oracle.setDepthTolerance(kNegativeTolerance);
     for (uint32_t other : {1u, 2u}) {
         EXPECT_TRUE(behind(0, other)) << other;
         EXPECT_TRUE(behind(other, 0)) << other;
@@ -243,7 +247,7 @@ TEST(CpuOracle, RebindAndDegenerateGeometry) {
 // The depth buffer of a whole mesh equals, at every pixel away from an edge, the nearest hit of
 // a double-precision ray cast against every triangle.
 TEST(CpuOracle, SpotDepthBufferMatchesRayCast) {
-    const Loaded<Scene> loaded = loadScene(std::string(VISSORT_SOURCE_DIR) + "/assets/models/spot.obj");
+    const Result<Scene> loaded = loadScene(std::string(VISSORT_SOURCE_DIR) + "/assets/models/spot.obj");
     ASSERT_TRUE(loaded) << loaded.error;
     const Scene& scene = *loaded.value;
     const TrianglePositions& p = scene.positions;

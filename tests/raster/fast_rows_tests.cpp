@@ -21,6 +21,10 @@
 namespace vissort::detail {
 namespace {
 
+// A negative tolerance, as the transparency renderer sets (kBlendingDepthTolerance): near ties
+// count as occlusion.
+constexpr float kNegativeTolerance = -1.0f / (1 << 16);
+
 using TileDepths = std::array<float, kTileRowFloats * kTileRowFloats>;
 
 enum class EdgeScale { small, at_int32_limit, huge };
@@ -41,7 +45,7 @@ void randomPlane(std::mt19937_64& rng, int32_t x, int32_t y, TriangleWalk& w) {
     w.y0_plane = y + 8 * unit(rng);
     const double offsets[] = {-0.0, 0.0, (unit(rng) - 0.5) * 0.01};
     w.offset = offsets[std::uniform_int_distribution<int>(0, 2)(rng)];
-    w.tolerance = unit(rng) < 0.5 ? kDepthTolerance : kBlendingDepthTolerance;
+    w.tolerance = unit(rng) < 0.5 ? kDepthTolerance : kNegativeTolerance;
 }
 
 RandomWalk makeWalk(std::mt19937_64& rng, EdgeScale scale) {

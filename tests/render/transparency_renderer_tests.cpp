@@ -29,7 +29,7 @@ namespace vissort {
 namespace {
 
 std::shared_ptr<GlContext> context() {
-    static const Loaded<std::shared_ptr<GlContext>> shared = GlContext::shared();
+    static const Result<std::shared_ptr<GlContext>> shared = GlContext::shared();
     if (!shared)
         ADD_FAILURE() << shared.error;
     return shared ? *shared.value : nullptr;

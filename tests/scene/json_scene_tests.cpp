@@ -164,12 +164,12 @@ double signedVolume(const Scene& scene, const SceneObject& object) {
 }
 
 Scene loadOrFail(const std::string& path) {
-    Loaded<Scene> loaded = loadJsonScene(path);
+    Result<Scene> loaded = loadJsonScene(path);
     EXPECT_TRUE(loaded) << loaded.error;
     return loaded ? std::move(*loaded.value) : Scene{};
 }
 
-void expectError(const Loaded<Scene>& loaded, const std::string& path, const std::string& contains) {
+void expectError(const Result<Scene>& loaded, const std::string& path, const std::string& contains) {
     ASSERT_FALSE(loaded) << "expected an error containing '" << contains << "'";
     EXPECT_EQ(loaded.error.rfind(path, 0), 0u) << "must name the JSON file first: " << loaded.error;
     EXPECT_EQ(loaded.error.find('\n'), std::string::npos) << "must be one line: " << loaded.error;
@@ -432,7 +432,7 @@ TEST(JsonSceneFixtures, LoadWithTheExpectedObjectCounts) {
         const Scene scene = loadOrFail(kScenes + file);
         EXPECT_EQ(scene.objects.size(), objects);
         EXPECT_TRUE(scene.camera.has_value());
-        EXPECT_EQ(validateScene(scene), "");
+        EXPECT_EQ(validateScene(scene).error, "");
         EXPECT_EQ(scene.isDynamic(), std::string(file) == "animated.json");
     }
 }

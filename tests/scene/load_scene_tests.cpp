@@ -32,7 +32,7 @@ Scene handMadeScene() {
     return scene;
 }
 
-void expectFailure(const Loaded<Scene>& loaded, const std::string& contains) {
+void expectFailure(const Result<Scene>& loaded, const std::string& contains) {
     ASSERT_FALSE(loaded) << "expected an error containing '" << contains << "'";
     EXPECT_EQ(loaded.error.find('\n'), std::string::npos) << loaded.error;
     EXPECT_NE(loaded.error.find(contains), std::string::npos) << loaded.error;
@@ -125,10 +125,10 @@ TEST(ValidateScene, RejectsBrokenInvariants) {
 // --- loadScene ---
 
 TEST(LoadScene, MeshFilesAndJsonScenesByPath) {
-    const Loaded<Scene> mesh = loadScene(kSource + "/assets/models/spot.obj");
+    const Result<Scene> mesh = loadScene(kSource + "/assets/models/spot.obj");
     ASSERT_TRUE(mesh) << mesh.error;
     EXPECT_EQ(mesh.value->triangleCount(), 5856u);
-    const Loaded<Scene> json = loadScene(kSource + "/tests/data/scenes/three_sticks.json");
+    const Result<Scene> json = loadScene(kSource + "/tests/data/scenes/three_sticks.json");
     ASSERT_TRUE(json) << json.error;
     EXPECT_EQ(json.value->objects.size(), 3u);
     EXPECT_EQ(json.value->triangleCount(), 36u);
@@ -137,7 +137,7 @@ TEST(LoadScene, MeshFilesAndJsonScenesByPath) {
 TEST(LoadScene, JsonExtensionIsCaseInsensitive) {
     const fs::path file = fs::temp_directory_path() / ("vissort_load_" + std::to_string(::getpid()) + ".JSON");
     std::ofstream(file) << R"({"objects": [{"shape": "box"}, {"shape": "box", "translate": [2, 0, 0]}]})";
-    const Loaded<Scene> loaded = loadScene(file.string());
+    const Result<Scene> loaded = loadScene(file.string());
     fs::remove(file);
     ASSERT_TRUE(loaded) << loaded.error;
     EXPECT_EQ(loaded.value->objects.size(), 2u);
@@ -160,19 +160,19 @@ TEST(LoadScene, MalformedSpecifications) {
 }
 
 TEST(LoadScene, BuiltinScenesGetTheirParameters) {
-    const Loaded<Scene> plain = loadScene("builtin:slabs");
+    const Result<Scene> plain = loadScene("builtin:slabs");
     ASSERT_TRUE(plain) << plain.error;
     EXPECT_EQ(validateScene(*plain.value), "");
-    const Loaded<Scene> empty_query = loadScene("builtin:slabs?");
+    const Result<Scene> empty_query = loadScene("builtin:slabs?");
     ASSERT_TRUE(empty_query) << empty_query.error;
     EXPECT_EQ(empty_query.value->positions.x, plain.value->positions.x);
 
-    const Loaded<Scene> three = loadScene("builtin:slabs?layers=3&seed=2");
-    const Loaded<Scene> five = loadScene("builtin:slabs?seed=2&layers=5");
+    const Result<Scene> three = loadScene("builtin:slabs?layers=3&seed=2");
+    const Result<Scene> five = loadScene("builtin:slabs?seed=2&layers=5");
     ASSERT_TRUE(three) << three.error;
     ASSERT_TRUE(five) << five.error;
     EXPECT_LT(three.value->triangleCount(), five.value->triangleCount());
-    const Loaded<Scene> again = loadScene("builtin:slabs?seed=2&layers=3");
+    const Result<Scene> again = loadScene("builtin:slabs?seed=2&layers=3");
     ASSERT_TRUE(again) << again.error;
     EXPECT_EQ(again.value->positions.x, three.value->positions.x);  // key order does not matter
 }

@@ -87,7 +87,7 @@ void expectCorner(const Scene& scene, std::size_t corner, Vec3 expected) {
     EXPECT_NEAR(got.z, expected.z, 1e-5) << "corner " << corner;
 }
 
-void expectRejected(const Loaded<Scene>& loaded, const std::string& label, const std::string& contains = "") {
+void expectRejected(const Result<Scene>& loaded, const std::string& label, const std::string& contains = "") {
     ASSERT_FALSE(loaded) << label;
     EXPECT_EQ(loaded.error.rfind(label, 0), 0u) << "message must start with the source: " << loaded.error;
     EXPECT_EQ(loaded.error.find('\n'), std::string::npos) << "message must be one line: " << loaded.error;
@@ -103,7 +103,7 @@ TEST(MeshLoader, BundledModelsMatchTheirDocumentedCountsAndAReferenceReader) {
         {"beetle.obj", 2053},       {"woody.obj", 1267}, {"teapot.obj", 6320}};
     for (const auto& [file, triangles] : models) {
         SCOPED_TRACE(file);
-        const Loaded<Scene> loaded = loadMeshFile(kModels + file);
+        const Result<Scene> loaded = loadMeshFile(kModels + file);
         ASSERT_TRUE(loaded) << loaded.error;
         const Scene& scene = *loaded.value;
         EXPECT_EQ(scene.triangleCount(), triangles);
@@ -125,7 +125,7 @@ TEST(MeshLoader, BundledModelsMatchTheirDocumentedCountsAndAReferenceReader) {
 }
 
 TEST(MeshLoader, PolygonsAreFannedInFaceOrder) {
-    const Loaded<Scene> loaded = loadMeshFile(kMeshes + "polygons.obj");
+    const Result<Scene> loaded = loadMeshFile(kMeshes + "polygons.obj");
     ASSERT_TRUE(loaded) << loaded.error;
     const Scene& scene = *loaded.value;
     ASSERT_EQ(scene.triangleCount(), 5u);
@@ -143,7 +143,7 @@ TEST(MeshLoader, PolygonsAreFannedInFaceOrder) {
 }
 
 TEST(MeshLoader, ObjGroupsBecomeObjectsInFileOrderWithTheirMaterials) {
-    const Loaded<Scene> loaded = loadMeshFile(kMeshes + "groups.obj");
+    const Result<Scene> loaded = loadMeshFile(kMeshes + "groups.obj");
     ASSERT_TRUE(loaded) << loaded.error;
     const Scene& scene = *loaded.value;
     EXPECT_EQ(scene.name, "groups");
@@ -179,7 +179,7 @@ TEST(MeshLoader, ObjGGroupsAreObjectsInFileOrder) {
                                                 "g first\nf 1 2 3\n"
                                                 "g second\nf 1 3 2\nf 2 3 1\n"
                                                 "g third\nf 3 1 2\n");
-    const Loaded<Scene> loaded = loadMeshFile(path);
+    const Result<Scene> loaded = loadMeshFile(path);
     ASSERT_TRUE(loaded) << loaded.error;
     const Scene& scene = *loaded.value;
     ASSERT_EQ(scene.objects.size(), 3u);
@@ -201,7 +201,7 @@ TEST(MeshLoader, AsciiPlyKeepsFaceOrder) {
                                                    "end_header\n"
                                                    "0 0 0\n1 0 0\n1 1 0\n0 1 0\n5 5 5\n"
                                                    "3 4 0 1\n4 0 1 2 3\n");
-    const Loaded<Scene> loaded = loadMeshFile(path);
+    const Result<Scene> loaded = loadMeshFile(path);
     ASSERT_TRUE(loaded) << loaded.error;
     const Scene& scene = *loaded.value;
     ASSERT_EQ(scene.triangleCount(), 3u);
@@ -217,7 +217,7 @@ TEST(MeshLoader, AsciiStlKeepsFacetOrder) {
                                                    "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n"
                                                    "facet normal 0 0 1\nouter loop\nvertex 2 0 3\nvertex 3 0 3\nvertex 2 1 3\nendloop\nendfacet\n"
                                                    "endsolid two\n");
-    const Loaded<Scene> loaded = loadMeshFile(path);
+    const Result<Scene> loaded = loadMeshFile(path);
     ASSERT_TRUE(loaded) << loaded.error;
     const Scene& scene = *loaded.value;
     ASSERT_EQ(scene.triangleCount(), 2u);
@@ -230,7 +230,7 @@ TEST(MeshLoader, AsciiStlKeepsFacetOrder) {
 TEST(MeshLoader, GltfInstancesUseTheirNodeWorldTransforms) {
     // One triangle (0,0,0) (1,0,0) (0,1,0), placed by node "moved" (translate 10,0,0) and by
     // node "child" (translate 0,5,0) under "parent" (scale 2): world = S(2) * T(0,5,0).
-    const Loaded<Scene> loaded = loadMeshFile(kMeshes + "instanced.gltf");
+    const Result<Scene> loaded = loadMeshFile(kMeshes + "instanced.gltf");
     ASSERT_TRUE(loaded) << loaded.error;
     const Scene& scene = *loaded.value;
     ASSERT_EQ(scene.triangleCount(), 2u);
@@ -251,7 +251,7 @@ TEST(MeshLoader, GltfInstancesUseTheirNodeWorldTransforms) {
 
 TEST(MeshLoader, MemoryInputGoesThroughTheSameReader) {
     const std::string bytes = readBytes(kModels + "bunny-lowres.obj");
-    const Loaded<Scene> loaded = loadMeshMemory(bytes.data(), bytes.size(), "obj", "bunny.obj");
+    const Result<Scene> loaded = loadMeshMemory(bytes.data(), bytes.size(), "obj", "bunny.obj");
     ASSERT_TRUE(loaded) << loaded.error;
     const std::vector<Vec3> reference = referenceObjTriangles(kModels + "bunny-lowres.obj");
     ASSERT_EQ(loaded.value->triangleCount() * 3, reference.size());

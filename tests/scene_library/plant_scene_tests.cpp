@@ -31,7 +31,7 @@ constexpr std::size_t kObjectsPerRow = 22; // 4 pipes, 8 columns, 8 beams, a pum
 constexpr double kSmallestGap = 0.05; // the scene's gap between the floor and what stands on it
 
 Scene makePlant(int layers, int seed = 1) {
-    Loaded<Scene> scene = makeBuiltinScene(
+    Result<Scene> scene = makeBuiltinScene(
         "plant", {{"layers", std::to_string(layers)}, {"seed", std::to_string(seed)}});
     EXPECT_TRUE(scene) << scene.error;
     return scene ? std::move(*scene.value) : Scene{};
@@ -166,7 +166,7 @@ bool rayHits(const Vec3& o, const Vec3& d, const Triangle& t) {
 }
 
 TEST(PlantScene, DefaultsAreEightLayersAndSeedOne) {
-    const Loaded<Scene> defaults = makeBuiltinScene("plant", {});
+    const Result<Scene> defaults = makeBuiltinScene("plant", {});
     ASSERT_TRUE(defaults) << defaults.error;
     const Scene explicit_scene = makePlant(8, 1);
     EXPECT_EQ(defaults.value->name, "builtin:plant");
@@ -174,7 +174,7 @@ TEST(PlantScene, DefaultsAreEightLayersAndSeedOne) {
     EXPECT_EQ(defaults.value->positions.x, explicit_scene.positions.x);
     EXPECT_EQ(defaults.value->positions.z, explicit_scene.positions.z);
     EXPECT_FALSE(defaults.value->isDynamic());
-    EXPECT_EQ(validateScene(*defaults.value), "");
+    EXPECT_EQ(validateScene(*defaults.value).error, "");
 }
 
 TEST(PlantScene, BadParametersAreOneLineErrorsNamingTheKey) {
@@ -191,7 +191,7 @@ TEST(PlantScene, BadParametersAreOneLineErrorsNamingTheKey) {
         {{{"n", "3"}}, "builtin:plant: unknown parameter 'n' (accepted: layers, seed)"},
     };
     for (const auto& c : cases) {
-        const Loaded<Scene> scene = makeBuiltinScene("plant", c.parameters);
+        const Result<Scene> scene = makeBuiltinScene("plant", c.parameters);
         EXPECT_FALSE(scene) << c.expected;
         EXPECT_NE(scene.error.find(c.expected), std::string::npos) << scene.error;
         EXPECT_EQ(scene.error.find('\n'), std::string::npos);
@@ -220,7 +220,7 @@ TEST(PlantScene, EveryRowHasItsNamedPartsAndModerateTriangleCounts) {
     for (const int layers : {1, 2, 5, 12}) {
         const Scene scene = makePlant(layers);
         ASSERT_EQ(scene.objects.size(), 1 + layers * kObjectsPerRow);
-        EXPECT_EQ(validateScene(scene), "");
+        EXPECT_EQ(validateScene(scene).error, "");
         EXPECT_EQ(scene.objects[0].name, "floor");
         EXPECT_GT(scene.triangleCount(), previous_triangles);
         previous_triangles = scene.triangleCount();
@@ -350,7 +350,7 @@ TEST(PlantScene, DefaultCameraFramesThePlantFromTheFrontAtTheHeadersHeight) {
         ASSERT_TRUE(scene.camera.has_value());
         const CameraSpec& camera = *scene.camera;
         EXPECT_EQ(camera.projection, Projection::perspective);
-        EXPECT_EQ(validateCamera(camera), "");
+        EXPECT_EQ(validateCamera(camera).error, "");
         const Bounds bounds = scene.positions.bounds();
         EXPECT_GT(camera.eye.z, bounds.max.z); // in front of the first row
         EXPECT_EQ(camera.eye.x, 0.0);

@@ -27,12 +27,12 @@ TEST(SceneLibrary, ListsTheFourScenesWithTheirParameters) {
 
 TEST(SceneLibrary, EveryListedSceneBuildsWithDefaultsAndIsValid) {
     for (const BuiltinSceneInfo &info : builtinScenes()) {
-        const Loaded<Scene> scene = makeBuiltinScene(info.name, {});
+        const Result<Scene> scene = makeBuiltinScene(info.name, {});
         ASSERT_TRUE(scene) << info.name << ": " << scene.error;
         EXPECT_EQ(scene.value->name, "builtin:" + info.name);
-        EXPECT_EQ(validateScene(*scene.value), "") << info.name;
+        EXPECT_EQ(validateScene(*scene.value).error, "") << info.name;
         ASSERT_TRUE(scene.value->camera.has_value()) << info.name;
-        EXPECT_EQ(validateCamera(*scene.value->camera), "") << info.name;
+        EXPECT_EQ(validateCamera(*scene.value->camera).error, "") << info.name;
         // Transparent objects blend (alpha < 1); opaque ones (the plant's steel) do not.
         bool any_transparent = false;
         for (const SceneObject &object : scene.value->objects) {
@@ -45,7 +45,7 @@ TEST(SceneLibrary, EveryListedSceneBuildsWithDefaultsAndIsValid) {
 }
 
 TEST(SceneLibrary, UnknownNamesAreErrorsListingTheKnownOnes) {
-    const Loaded<Scene> scene = makeBuiltinScene("teapot", {});
+    const Result<Scene> scene = makeBuiltinScene("teapot", {});
     EXPECT_FALSE(scene);
     EXPECT_TRUE(contains(scene.error, "'builtin:teapot'"));
     EXPECT_TRUE(contains(scene.error, "bunnies, plant, slabs, soup"));
@@ -70,7 +70,7 @@ TEST(SceneLibrary, ParameterErrorsNameTheSceneAndTheKey) {
         {"soup", {{"n", "1e6"}}, "parameter n='1e6' is not an integer"},
     };
     for (const auto &c : cases) {
-        const Loaded<Scene> scene = makeBuiltinScene(c.scene, c.parameters);
+        const Result<Scene> scene = makeBuiltinScene(c.scene, c.parameters);
         EXPECT_FALSE(scene) << c.expected;
         EXPECT_TRUE(contains(scene.error, c.expected));
     }
@@ -78,7 +78,7 @@ TEST(SceneLibrary, ParameterErrorsNameTheSceneAndTheKey) {
 
 TEST(SceneLibrary, BunniesAboveTheTriangleLimitAreRefused) {
     // 2722 bunnies of 3674 triangles are 10,000,628 triangles: over the 10 million limit.
-    const Loaded<Scene> scene = makeBuiltinScene("bunnies", {{"n", "2722"}});
+    const Result<Scene> scene = makeBuiltinScene("bunnies", {{"n", "2722"}});
     EXPECT_FALSE(scene);
     EXPECT_TRUE(
         contains(scene.error, "builtin:bunnies: parameter n=2722 gives 10000628 triangles"));

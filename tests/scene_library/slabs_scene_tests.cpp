@@ -18,7 +18,7 @@ using vissort_test::Triangle;
 constexpr double kPi = 3.14159265358979323846;
 
 Scene makeSlabs(const std::string &layers, const std::string &seed = "1") {
-    Loaded<Scene> scene = makeBuiltinScene("slabs", {{"layers", layers}, {"seed", seed}});
+    Result<Scene> scene = makeBuiltinScene("slabs", {{"layers", layers}, {"seed", seed}});
     EXPECT_TRUE(scene) << scene.error;
     return scene ? std::move(*scene.value) : Scene{};
 }
@@ -57,7 +57,7 @@ TEST(SlabsScene, CountsAndObjects) {
         }
         EXPECT_FALSE(scene.isDynamic());
     }
-    const Loaded<Scene> defaults = makeBuiltinScene("slabs", {});
+    const Result<Scene> defaults = makeBuiltinScene("slabs", {});
     ASSERT_TRUE(defaults);
     EXPECT_EQ(defaults.value->triangleCount(), 16u);
 }

@@ -18,7 +18,7 @@ using vissort_test::Triangle;
 constexpr double kPi = 3.14159265358979323846;
 
 Scene makeSoup(const std::string &n, const std::string &seed = "1") {
-    Loaded<Scene> scene = makeBuiltinScene("soup", {{"n", n}, {"seed", seed}});
+    Result<Scene> scene = makeBuiltinScene("soup", {{"n", n}, {"seed", seed}});
     EXPECT_TRUE(scene) << scene.error;
     return scene ? std::move(*scene.value) : Scene{};
 }
@@ -47,7 +47,7 @@ TEST(SoupScene, OneObjectPerTriangle) {
         }
         EXPECT_FALSE(scene.isDynamic());
     }
-    const Loaded<Scene> defaults = makeBuiltinScene("soup", {});
+    const Result<Scene> defaults = makeBuiltinScene("soup", {});
     ASSERT_TRUE(defaults);
     EXPECT_EQ(defaults.value->triangleCount(), 1000u);
 }

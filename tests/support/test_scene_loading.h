@@ -13,7 +13,7 @@ namespace vissort::test {
 inline Scene loadTestScene(const std::string& spec) {
     const std::string path =
         spec.rfind("builtin:", 0) == 0 ? spec : std::string(VISSORT_SOURCE_DIR) + "/" + spec;
-    Loaded<Scene> loaded = loadScene(path);
+    Result<Scene> loaded = loadScene(path);
     EXPECT_TRUE(loaded) << loaded.error;
     return loaded ? std::move(*loaded.value) : Scene{};
 }

@@ -1,4 +1,4 @@
-#include "vissort/oracle_workloads.h"
+#include "support/oracle_workloads.h"
 
 #include <algorithm>
 #include <random>

@@ -1,0 +1,54 @@
+#include "cli/environment.h"
+
+#include <charconv>
+#include <cstdlib>
+#include <string>
+#include <string_view>
+
+#if VISSORT_WITH_GL
+#include "vissort/gl_context.h"
+#endif
+
+namespace vissort::cli {
+namespace {
+
+OracleOptions oracle_options;
+
+// The variable's value, or empty when unset.
+std::string_view variable(const char* name) {
+    const char* value = std::getenv(name);
+    return value == nullptr ? std::string_view{} : std::string_view(value);
+}
+
+} // namespace
+
+Status applyEnvironment() {
+    // Read by Mesa when the first display opens; a value the user set stays.
+    setenv("LP_NUM_THREADS", "0", 0);
+    if (std::string_view threads = variable("VISSORT_THREADS"); !threads.empty()) {
+        uint32_t value = 0;
+        const auto [end, error] = std::from_chars(threads.data(), threads.data() + threads.size(), value);
+        if (error != std::errc{} || end != threads.data() + threads.size() || value > 256)
+            return Status::failure("VISSORT_THREADS must be a whole number from 0 (one per core) to "
+                                   "256, not '" + std::string(threads) + "'");
+        oracle_options.threads = value;
+    }
+    if (std::string_view simd = variable("VISSORT_SIMD"); !simd.empty()) {
+        if (simd != "0" && simd != "1")
+            return Status::failure("VISSORT_SIMD must be 0 or 1, not '" + std::string(simd) + "'");
+        oracle_options.allow_simd = simd == "1";
+    }
+#if VISSORT_WITH_GL
+    if (std::string_view platform = variable("VISSORT_GL_PLATFORM"); !platform.empty()) {
+        Result<GlPlatform> parsed = parseGlPlatform(platform);
+        // Only the commands that need OpenGL fail: the cpu oracle still works.
+        if (parsed) GlContext::setSharedPlatform(*parsed.value);
+        else GlContext::refuseShared("no OpenGL context: VISSORT_GL_PLATFORM: " + parsed.error);
+    }
+#endif
+    return Status::ok();
+}
+
+const OracleOptions& environmentOracleOptions() { return oracle_options; }
+
+} // namespace vissort::cli

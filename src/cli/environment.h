@@ -1,0 +1,23 @@
+#pragma once
+// The environment variables the vissort command reads, in one place (the library reads none;
+// README.md, "Environment"):
+//   VISSORT_THREADS      threads of the cpu oracle's passes (0: one per core); default 1
+//   VISSORT_SIMD=0       the cpu oracle's scalar rows instead of AVX2 (benchmarks of the fallback)
+//   VISSORT_GL_PLATFORM  auto, device or surfaceless: where the OpenGL context is made
+//   LP_NUM_THREADS       set to 0 unless set: Mesa's llvmpipe then draws on the calling thread,
+//                        4 times faster for the oracle's many small draws and queries
+
+#include "vissort/oracles.h"
+#include "vissort/result.h"
+
+namespace vissort::cli {
+
+/// Reads the variables above and applies what the process needs before any work (LP_NUM_THREADS,
+/// the shared GL context's platform). A one-line message when one holds a bad value.
+Status applyEnvironment();
+
+/// The oracle options the environment asks for (threads, SIMD), for every oracle the command
+/// makes. Valid after applyEnvironment.
+const OracleOptions& environmentOracleOptions();
+
+} // namespace vissort::cli
