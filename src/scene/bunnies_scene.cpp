@@ -8,6 +8,7 @@
 // frame can be asked for in any order and the result is the same.
 
 #include <cmath>
+#include <numbers>
 #include <map>
 #include <string>
 #include <vector>
@@ -207,7 +208,7 @@ Result<Scene> makeBunniesScene(const SceneParameters &parameters) {
         motion.velocity = randomUnitVector(random) * random.uniform(kMinSpeed, kMaxSpeed);
         motion.spin_axis = randomUnitVector(random);
         motion.spin_rate = glm::radians(random.uniform(kMinSpinDegrees, kMaxSpinDegrees));
-        motion.phase = random.uniform(0, 2 * SceneRandom::kPi);
+        motion.phase = random.uniform(0, 2 * std::numbers::pi);
 
         SceneObject object;
         object.name = "bunny_" + std::to_string(i);
