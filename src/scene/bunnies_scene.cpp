@@ -8,8 +8,8 @@
 // frame can be asked for in any order and the result is the same.
 
 #include <cmath>
-#include <numbers>
 #include <map>
+#include <numbers>
 #include <string>
 #include <vector>
 

@@ -15,9 +15,9 @@
 #include <array>
 #include <cassert>
 #include <cmath>
-#include <numbers>
 #include <cstdint>
 #include <iterator>
+#include <numbers>
 #include <span>
 #include <string>
 #include <utility>

@@ -47,8 +47,7 @@ private:
     fs::path path_;
 };
 
-// --- small vector helpers and a brute-force ray caster (the independent reference) ---
-
+// --- a brute-force ray caster (the independent reference) ---
 
 /// Möller-Trumbore, both sides; the distance along the ray, if hit.
 std::optional<double> hitTriangle(Vec3 origin, Vec3 direction, Vec3 a, Vec3 b, Vec3 c) {
@@ -461,7 +460,8 @@ TEST(JsonSceneFixtures, StackIsThirtySixDisjointSlightlyTiltedSlabs) {
     // The big faces are tilted less than 4 degrees from the z axis.
     for (uint32_t t = 0; t < scene.triangleCount(); ++t) {
         const auto& p = scene.positions;
-        const Vec3 n = cross(p.corner(3 * t + 1) - p.corner(3 * t), p.corner(3 * t + 2) - p.corner(3 * t));
+        const Vec3 n =
+            cross(p.corner(3 * t + 1) - p.corner(3 * t), p.corner(3 * t + 2) - p.corner(3 * t));
         const double area = std::sqrt(dot(n, n)) / 2;
         if (area > 1) {
             EXPECT_GT(std::abs(n.z) / (2 * area), std::cos(4 * std::numbers::pi / 180)) << "triangle " << t;
@@ -469,7 +469,8 @@ TEST(JsonSceneFixtures, StackIsThirtySixDisjointSlightlyTiltedSlabs) {
     }
     // Looking down the stack from the default camera, the centre ray crosses every slab.
     const CameraSpec& camera = *scene.camera;
-    const std::vector<Interval> hits = castRay(scene, bounds, camera.eye, normalized(camera.target - camera.eye));
+    const std::vector<Interval> hits =
+        castRay(scene, bounds, camera.eye, normalized(camera.target - camera.eye));
     std::size_t crossed = 0;
     for (const Interval& hit : hits) crossed += hit.hit() && hit.far > hit.near;
     EXPECT_EQ(crossed, 36u);

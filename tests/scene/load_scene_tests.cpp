@@ -97,7 +97,9 @@ TEST(Scene, AnimationDrivesFrames) {
 
 // --- validateScene ---
 
-TEST(ValidateScene, AcceptsAValidScene) { EXPECT_EQ(validateScene(handMadeScene()).error, ""); }
+TEST(ValidateScene, AcceptsAValidScene) {
+    EXPECT_EQ(validateScene(handMadeScene()).error, "");
+}
 
 TEST(ValidateScene, RejectsBrokenInvariants) {
     const auto broken = [](auto change) {

@@ -1,8 +1,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numbers>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -18,7 +18,6 @@ namespace {
 constexpr double kWobble = 0.05;     // the deformation's amplitude, from the specification
 constexpr double kFloatSlack = 1e-4; // positions are floats of magnitude < 10
 constexpr std::size_t kTrianglesPerBunny = 3674;
-
 
 /// The bunny read straight from assets/models/bunny-lowres.obj (only `v` and `f` lines), scaled
 /// as specified: bounding box centre at the origin, half the box diagonal = 1. Corners in file
@@ -153,9 +152,8 @@ TEST(BunniesScene, EachBunnyIsTheUnitScaledMeshRigidlyMovedAndSlightlyDeformed) 
                 const std::size_t next = k - k % 3 + (k + 1) % 3; // the next corner of the triangle
                 const double edge =
                     length(positions.corner(bunny * reference.size() + next) - world);
-                largest_edge_change =
-                    std::max(largest_edge_change,
-                             std::abs(edge - length(reference[next] - reference[k])));
+                largest_edge_change = std::max(
+                    largest_edge_change, std::abs(edge - length(reference[next] - reference[k])));
             }
             EXPECT_LE(largest_radial_change, kWobble + kFloatSlack)
                 << "bunny " << bunny << " t " << t;
