@@ -31,6 +31,7 @@
 #include "vissort/camera.h"
 #include "vissort/geometry_oracle.h"
 #include "vissort/gl_context.h"
+#include "vissort/image.h"
 #include "vissort/oracles.h"
 #include "vissort/scene.h"
 #include "vissort/scene_orderer.h"
@@ -110,33 +111,6 @@ struct RenderStats {
                                   // order (near an edge, or a tie), composited again
     VisSortStats order;           // vissort: the ordering's statistics
 };
-
-/// A rendered frame: linear RGBA floats, row 0 at the top, 4 floats per pixel.
-struct Image {
-    uint32_t width = 0, height = 0;
-    std::vector<float> rgba;
-
-    /// Each channel clamped to [0, 1] and rounded to 8 bits: the one conversion of a frame.
-    std::vector<uint8_t> toRgba8() const;
-};
-
-/// Differences between two 8-bit RGBA images of one size, in 8-bit units over the RGB channels.
-struct ImageError {
-    double rmse = 0;
-    double psnr = 0;              // infinity when the images are identical
-    int max_abs = 0;              // the largest channel difference, 0..255
-    uint64_t pixels_over_one = 0; // pixels with some channel more than 1 apart
-};
-ImageError compareImages(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b);
-
-/// Where two 8-bit images of one size differ, as an 8-bit RGBA picture: pixels within 1/255
-/// show the reference faded to light grey, the others yellow (2/255) through red (64/255 and more).
-std::vector<uint8_t> errorMap(const std::vector<uint8_t>& image,
-                              const std::vector<uint8_t>& reference);
-
-/// Writes 8-bit RGBA as PNG; empty on success, else a one-line message.
-Status writePng(const std::string& path, uint32_t width, uint32_t height,
-                     const std::vector<uint8_t>& rgba8);
 
 class TransparencyRenderer {
 public:

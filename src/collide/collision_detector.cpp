@@ -28,7 +28,7 @@ static std::string collisionSettingsProblem(const CollisionSettings& settings) {
     if (!(settings.min_cull_fraction >= 0 && settings.min_cull_fraction <= 1))
         return "collision min_cull_fraction must be in [0, 1]";
     for (const Vec3& d : settings.directions) {
-        const double length2 = d.x * d.x + d.y * d.y + d.z * d.z;
+        const double length2 = dot(d, d);
         if (!(length2 > 0) || !std::isfinite(length2))
             return "collision direction must be finite and non-zero";
     }

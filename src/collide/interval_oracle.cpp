@@ -28,28 +28,17 @@ struct Axes {
 };
 
 Axes axesAlong(const Vec3& direction) {
-    const double length = std::sqrt(direction.x * direction.x + direction.y * direction.y +
-                                    direction.z * direction.z);
-    const double w[3] = {direction.x / length, direction.y / length, direction.z / length};
-    Axes a{};
-    for (int k = 0; k < 3; ++k)
-        a.w[k] = w[k];
+    const Vec3 w = direction / length(direction);
     // Any right-handed frame will do; an axis maps to the two other axes exactly.
-    const int dominant = std::abs(w[0]) >= std::abs(w[1]) && std::abs(w[0]) >= std::abs(w[2]) ? 0
-                         : std::abs(w[1]) >= std::abs(w[2])                                   ? 1
-                                                                                              : 2;
-    double helper[3] = {0, 0, 0};
-    helper[(dominant + 1) % 3] = 1;
-    // u = normalize(helper x w), v = w x u.
-    double u[3] = {helper[1] * w[2] - helper[2] * w[1], helper[2] * w[0] - helper[0] * w[2],
-                   helper[0] * w[1] - helper[1] * w[0]};
-    const double ul = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    for (int k = 0; k < 3; ++k)
-        a.u[k] = u[k] / ul;
-    a.v[0] = w[1] * a.u[2] - w[2] * a.u[1];
-    a.v[1] = w[2] * a.u[0] - w[0] * a.u[2];
-    a.v[2] = w[0] * a.u[1] - w[1] * a.u[0];
-    return a;
+    const double ax = std::abs(w.x), ay = std::abs(w.y), az = std::abs(w.z);
+    const int dominant = ax >= ay && ax >= az ? 0 : ay >= az ? 1 : 2;
+    // u = normalize(helper x w), v = w x u, helper the axis after the dominant one.
+    const Vec3 helper = dominant == 0   ? Vec3{0, 1, 0}
+                        : dominant == 1 ? Vec3{0, 0, 1}
+                                        : Vec3{1, 0, 0};
+    const Vec3 u = normalized(cross(helper, w));
+    const Vec3 v = cross(w, u);
+    return {{u.x, u.y, u.z}, {v.x, v.y, v.z}, {w.x, w.y, w.z}};
 }
 
 // The float at or below v, and at or above v.

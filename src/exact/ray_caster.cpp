@@ -107,17 +107,20 @@ void addTriangles(RTCDevice device, RTCScene scene, PositionsView positions) {
     rtcReleaseGeometry(geometry); // the scene holds its own reference
 }
 
-struct DVec3 {
-    double x, y, z;
+// Moller-Trumbore for the ray o + t dir against triangle (a, b, c), in double precision and
+// before the division by det: the hit's barycentrics are u = u_det / det, v = v_det / det, its
+// distance t = t_det / det; det is 0 (or not finite) when the ray is parallel to the plane.
+// Callers scale by det themselves: the robustness test divides, intersect multiplies by 1 / det.
+struct RayTriangle {
+    double det, u_det, v_det, t_det;
 };
-DVec3 operator-(DVec3 a, DVec3 b) {
-    return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-double dot(DVec3 a, DVec3 b) {
-    return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-DVec3 cross(DVec3 a, DVec3 b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+RayTriangle rayTriangle(const Vec3& o, const Vec3& dir, const Vec3& a, const Vec3& b,
+                        const Vec3& c) {
+    const Vec3 e1 = b - a, e2 = c - a;
+    const Vec3 p = cross(dir, e2);
+    const Vec3 s = o - a;
+    const Vec3 q = cross(s, e1);
+    return {dot(e1, p), dot(s, p), dot(dir, q), dot(e2, q)};
 }
 
 // Depth d of a world point in closed form (same as ViewProjection::depthOf, without building
@@ -129,7 +132,7 @@ public:
           perspective_(view.projection == Projection::perspective), near_(view.near),
           far_(view.far) {}
 
-    double operator()(DVec3 p) const {
+    double operator()(const Vec3& p) const {
         const double z = -(row_[0] * p.x + row_[1] * p.y + row_[2] * p.z + row_[3]);
         return perspective_ ? 1.0 - near_ / z : (z - near_) / (far_ - near_);
     }
@@ -202,8 +205,8 @@ private:
         Vec3 origin, direction;
         view_.pixelRay(sx, sy, origin, direction);
         collect(origin, direction, corner_candidates_);
-        const DVec3 o{origin.x, origin.y, origin.z};
-        const DVec3 dir{direction.x, direction.y, direction.z};
+        const Vec3& o = origin;
+        const Vec3& dir = direction;
         for (const Candidate& corner : corner_candidates_) {
             const bool at_centre =
                 std::any_of(candidates_.begin(), candidates_.end(),
@@ -221,17 +224,14 @@ private:
         collect(origin, direction, candidates_);
 
         const std::size_t first = out.size();
-        const DVec3 o{origin.x, origin.y, origin.z};
-        const DVec3 dir{direction.x, direction.y, direction.z};
+        const Vec3& o = origin;
+        const Vec3& dir = direction;
         // Rays through the corners of a square of side 2 * kRobustPixelMargin around the centre.
-        DVec3 corner_origins[4], corner_directions[4];
-        for (int i = 0; i < 4; ++i) {
-            Vec3 co, cd;
+        Vec3 corner_origins[4], corner_directions[4];
+        for (int i = 0; i < 4; ++i)
             view_.pixelRay(px + 0.5 + ((i & 1) ? kRobustPixelMargin : -kRobustPixelMargin),
-                           py + 0.5 + ((i & 2) ? kRobustPixelMargin : -kRobustPixelMargin), co, cd);
-            corner_origins[i] = {co.x, co.y, co.z};
-            corner_directions[i] = {cd.x, cd.y, cd.z};
-        }
+                           py + 0.5 + ((i & 2) ? kRobustPixelMargin : -kRobustPixelMargin),
+                           corner_origins[i], corner_directions[i]);
         for (const Candidate& candidate : candidates_) {
             PixelHit hit = intersect(candidate, o, dir);
             // Robust only when the triangle covers the whole square: then the pixel centre is at
@@ -259,48 +259,35 @@ private:
                                      py + 0.5 + ((i & 2) ? kRobustPixelMargin : -kRobustPixelMargin));
     }
 
-    bool covers(const Candidate& candidate, DVec3 o, DVec3 dir) const {
+    RayTriangle rayCandidate(const Candidate& candidate, const Vec3& o, const Vec3& dir) const {
         const std::size_t k = 3 * std::size_t(candidate.triangle);
-        const auto corner = [&](std::size_t i) {
-            return DVec3{positions_.x[i], positions_.y[i], positions_.z[i]};
-        };
-        const DVec3 a = corner(k), b = corner(k + 1), c = corner(k + 2);
-        const DVec3 e1 = b - a, e2 = c - a;
-        const DVec3 p = cross(dir, e2);
-        const double det = dot(e1, p);
-        if (det == 0.0 || !std::isfinite(det)) return false;
-        const DVec3 s = o - a;
-        const double u = dot(s, p) / det;
-        const double v = dot(dir, cross(s, e1)) / det;
+        return rayTriangle(o, dir, positions_.corner(k), positions_.corner(k + 1),
+                           positions_.corner(k + 2));
+    }
+
+    bool covers(const Candidate& candidate, const Vec3& o, const Vec3& dir) const {
+        const RayTriangle hit = rayCandidate(candidate, o, dir);
+        if (hit.det == 0.0 || !std::isfinite(hit.det)) return false;
+        const double u = hit.u_det / hit.det;
+        const double v = hit.v_det / hit.det;
         return u > 0 && v > 0 && 1.0 - u - v > 0;
     }
 
-    PixelHit intersect(const Candidate& candidate, DVec3 o, DVec3 dir) const {
-        const std::size_t k = 3 * std::size_t(candidate.triangle);
-        const auto corner = [&](std::size_t i) {
-            return DVec3{positions_.x[i], positions_.y[i], positions_.z[i]};
-        };
-        const DVec3 a = corner(k), b = corner(k + 1), c = corner(k + 2);
-        const DVec3 e1 = b - a, e2 = c - a;
-        const DVec3 p = cross(dir, e2);
-        const double det = dot(e1, p);
-        if (det == 0.0 || !std::isfinite(det)) {
+    PixelHit intersect(const Candidate& candidate, const Vec3& o, const Vec3& dir) const {
+        const RayTriangle hit = rayCandidate(candidate, o, dir);
+        if (hit.det == 0.0 || !std::isfinite(hit.det)) {
             // Embree saw a hit that double precision calls parallel: an edge-on grazing hit.
             const double t = candidate.embree_distance;
-            return {candidate.triangle,
-                    depth_of_({o.x + t * dir.x, o.y + t * dir.y, o.z + t * dir.z}), false};
+            return {candidate.triangle, depth_of_(o + t * dir), false};
         }
-        const double inverse = 1.0 / det;
-        const DVec3 s = o - a;
-        const double u = dot(s, p) * inverse;
-        const DVec3 q = cross(s, e1);
-        const double v = dot(dir, q) * inverse;
-        const double t = dot(e2, q) * inverse;
+        const double inverse = 1.0 / hit.det;
+        const double u = hit.u_det * inverse;
+        const double v = hit.v_det * inverse;
+        const double t = hit.t_det * inverse;
         const double w = 1.0 - u - v;
         const bool robust =
             u > kRobustBarycentric && v > kRobustBarycentric && w > kRobustBarycentric;
-        return {candidate.triangle, depth_of_({o.x + t * dir.x, o.y + t * dir.y, o.z + t * dir.z}),
-                robust};
+        return {candidate.triangle, depth_of_(o + t * dir), robust};
     }
 
     RTCScene scene_;

@@ -12,13 +12,12 @@ void Bounds::add(const Vec3& p) {
 
 Vec3 Bounds::centre() const {
     if (isEmpty()) return {};
-    return {(min.x + max.x) / 2, (min.y + max.y) / 2, (min.z + max.z) / 2};
+    return (min + max) / 2;
 }
 
 double Bounds::radius() const {
     if (isEmpty()) return 0;
-    const double dx = max.x - min.x, dy = max.y - min.y, dz = max.z - min.z;
-    return std::sqrt(dx * dx + dy * dy + dz * dz) / 2;
+    return length(max - min) / 2;
 }
 
 void TrianglePositions::resize(std::size_t triangles) {

@@ -18,14 +18,11 @@ public:
     DualDepthPeeling();
 
     /// Composites the transparent fragments of `draw` onto the target's colour, in front of what
-    /// it holds and hidden by its depth (the opaque surfaces). `draw` issues the draws with the
-    /// program bound by the caller from program(), whose view uniforms the caller sets for both
-    /// programs; it runs once per pass. Returns the geometry passes (the first finds the depth
-    /// range, the last is empty).
+    /// it holds and hidden by its depth (the opaque surfaces). `draw` binds the program it is
+    /// given (the depth range's, then the peel's), sets its view uniforms and issues the draws;
+    /// it runs once per pass. Returns the geometry passes (the first finds the depth range, the
+    /// last is empty).
     uint32_t composite(const RenderTarget& target, const std::function<void(GLuint program)>& draw);
-
-    GLuint initProgram() const { return init_program_.get(); }
-    GLuint peelProgram() const { return peel_program_.get(); }
 
 private:
     void resize(const RenderTarget& target);

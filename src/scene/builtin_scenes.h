@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <numbers>
 #include <random>
 
 namespace vissort::detail {
@@ -32,14 +33,15 @@ public:
     /// Uniform on the unit sphere (Archimedes: z uniform in [-1, 1], longitude uniform).
     Vec3 unitVector() {
         const double z = uniform(-1.0, 1.0);
-        const double longitude = uniform(0.0, 2 * kPi);
+        const double longitude = uniform(0.0, 2 * std::numbers::pi);
         const double ring = std::sqrt(std::max(0.0, 1 - z * z));
         return {ring * std::cos(longitude), ring * std::sin(longitude), z};
     }
     /// A rotation uniform on SO(3) as a unit quaternion (w, x, y, z).
     /// Shoemake, "Uniform random rotations", Graphics Gems III, 1992.
     std::array<double, 4> rotation() {
-        const double u1 = uniform(), u2 = uniform(0.0, 2 * kPi), u3 = uniform(0.0, 2 * kPi);
+        const double u1 = uniform(), u2 = uniform(0.0, 2 * std::numbers::pi),
+                     u3 = uniform(0.0, 2 * std::numbers::pi);
         const double a = std::sqrt(1 - u1), b = std::sqrt(u1);
         return {b * std::cos(u3), a * std::sin(u2), a * std::cos(u2), b * std::sin(u3)};
     }

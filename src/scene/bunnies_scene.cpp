@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -207,7 +208,7 @@ Result<Scene> makeBunniesScene(const SceneParameters &parameters) {
         motion.velocity = randomUnitVector(random) * random.uniform(kMinSpeed, kMaxSpeed);
         motion.spin_axis = randomUnitVector(random);
         motion.spin_rate = glm::radians(random.uniform(kMinSpinDegrees, kMaxSpinDegrees));
-        motion.phase = random.uniform(0, 2 * SceneRandom::kPi);
+        motion.phase = random.uniform(0, 2 * std::numbers::pi);
 
         SceneObject object;
         object.name = "bunny_" + std::to_string(i);

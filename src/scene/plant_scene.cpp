@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iterator>
+#include <numbers>
 #include <span>
 #include <string>
 #include <utility>
@@ -131,7 +132,7 @@ void addTube(std::vector<Triangle>& out, std::span<const Ring> rings, int segmen
     for (std::size_t i = 0; i < rings.size(); ++i) {
         const Ring& ring = rings[i];
         for (int j = 0; j < segments; ++j) {
-            const double angle = 2 * SceneRandom::kPi * j / segments;
+            const double angle = 2 * std::numbers::pi * j / segments;
             current[j] = ring.centre + ring.radius * (std::cos(angle) * ring.normal +
                                                       std::sin(angle) * ring.binormal);
         }
@@ -280,7 +281,7 @@ std::vector<Part> makeRow(uint32_t row, SceneRandom& random) {
             const dvec3 up{0, 1, 0};
             dvec3 binormal{0, 0, 1};
             for (int step = 1; step <= kBendSteps; ++step) {
-                const double turn = SceneRandom::kPi / 2 * step / kBendSteps;
+                const double turn = std::numbers::pi / 2 * step / kBendSteps;
                 binormal = {-std::sin(turn), 0, std::cos(turn)};
                 rings.push_back({bend_centre - bend_radius * binormal, up, binormal, run.radius});
             }
@@ -315,7 +316,7 @@ std::vector<Part> makeRow(uint32_t row, SceneRandom& random) {
         // An ellipsoidal head: latitude rings up to the pole.
         const double dome = kDomeHeight * radius;
         for (int k = 1; k < kDomeRings; ++k) {
-            const double latitude = SceneRandom::kPi / 2 * k / kDomeRings;
+            const double latitude = std::numbers::pi / 2 * k / kDomeRings;
             rings.push_back({{tank_x, kFloorGap + height + dome * std::sin(latitude), 0},
                              normal,
                              binormal,
@@ -363,7 +364,7 @@ CameraSpec framePlant(const Bounds& bounds) {
     camera.fov_degrees = 45.0;
     camera.up = {0, 1, 0};
     camera.target = {0, 0.4 * kHeaderHeight, bounds.centre().z};
-    const double reach = 0.95 * std::tan(camera.fov_degrees / 2 * SceneRandom::kPi / 180);
+    const double reach = 0.95 * std::tan(camera.fov_degrees / 2 * std::numbers::pi / 180);
     const dvec3 target{camera.target.x, camera.target.y, camera.target.z};
     for (double distance = 1.0;; distance *= 1.02) {
         const dvec3 eye{0, kHeaderHeight, bounds.max.z + distance};

@@ -2,6 +2,7 @@
 // depth complexity: seen from +z, a pixel near the middle is covered by every layer.
 
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "scene/builtin_scenes.h"
@@ -34,7 +35,7 @@ Result<Scene> makeSlabsScene(const SceneParameters &parameters) {
     scene.positions.resize(std::size_t{layers} * 2);
     scene.objects.reserve(layers);
 
-    const double max_tilt = kMaxTiltDegrees * SceneRandom::kPi / 180;
+    const double max_tilt = kMaxTiltDegrees * std::numbers::pi / 180;
     const double corners[4][2] = {{-kHalfSize, -kHalfSize},
                                   {kHalfSize, -kHalfSize},
                                   {kHalfSize, kHalfSize},
@@ -72,7 +73,7 @@ Result<Scene> makeSlabsScene(const SceneParameters &parameters) {
     CameraSpec camera;
     camera.fov_degrees = 45.0;
     camera.eye = {
-        0, 0, top + 1.1 * kHalfSize / std::tan(camera.fov_degrees / 2 * SceneRandom::kPi / 180)};
+        0, 0, top + 1.1 * kHalfSize / std::tan(camera.fov_degrees / 2 * std::numbers::pi / 180)};
     camera.target = {0, 0, 0};
     camera.up = {0, 1, 0};
     scene.camera = camera;

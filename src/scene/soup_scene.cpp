@@ -3,6 +3,7 @@
 // occlusion alone, not from intersections.
 
 #include <cmath>
+#include <numbers>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -52,7 +53,7 @@ Result<Scene> makeSoupScene(const SceneParameters &parameters) {
     scene.objects.resize(count);
     TrianglePositions &out = scene.positions;
     const double origin = -(side / 2.0); // the cube is centred on the origin
-    constexpr double kThird = 2 * SceneRandom::kPi / 3;
+    constexpr double kThird = 2 * std::numbers::pi / 3;
     for (uint32_t t = 0; t < count; ++t) {
         const uint32_t cell = cells[t];
         const double cell_min[3] = {origin + cell % side, origin + cell / side % side,

@@ -296,12 +296,13 @@ TEST(CollisionDetector, RejectsPositionsThatDoNotFit) {
 
 TEST(CollisionDetector, MethodNamesRoundTrip) {
     for (CollisionMethod m : collisionMethods()) {
-        CollisionMethod parsed{};
-        ASSERT_TRUE(parseCollisionMethod(collisionMethodName(m), parsed));
-        EXPECT_EQ(parsed, m);
+        const Result<CollisionMethod> parsed = parseCollisionMethod(collisionMethodName(m));
+        ASSERT_TRUE(parsed) << parsed.error;
+        EXPECT_EQ(*parsed.value, m);
     }
-    CollisionMethod parsed{};
-    EXPECT_FALSE(parseCollisionMethod("bvh", parsed));
+    const Result<CollisionMethod> unknown = parseCollisionMethod("bvh");
+    EXPECT_FALSE(unknown);
+    EXPECT_NE(unknown.error, "");
 }
 
 TEST(CollisionDetector, CollidingTrianglesAreTheUnionOfThePairs) {

@@ -68,18 +68,16 @@ inline bool barycentricHit(const TrianglePositions& positions, uint32_t t, const
                            const Vec3& d, double& u, double& v, double& dist) {
     const Vec3 a = positions.corner(3 * t), b = positions.corner(3 * t + 1),
                c = positions.corner(3 * t + 2);
-    const double e1x = b.x - a.x, e1y = b.y - a.y, e1z = b.z - a.z;
-    const double e2x = c.x - a.x, e2y = c.y - a.y, e2z = c.z - a.z;
-    const double px_ = d.y * e2z - d.z * e2y, py_ = d.z * e2x - d.x * e2z,
-                 pz_ = d.x * e2y - d.y * e2x;
-    const double det = e1x * px_ + e1y * py_ + e1z * pz_;
+    const Vec3 e1 = b - a, e2 = c - a;
+    const Vec3 p = cross(d, e2);
+    const double det = dot(e1, p);
     if (det == 0 || !std::isfinite(det))
         return false;
-    const double sx = o.x - a.x, sy = o.y - a.y, sz = o.z - a.z;
-    u = (sx * px_ + sy * py_ + sz * pz_) / det;
-    const double qx = sy * e1z - sz * e1y, qy = sz * e1x - sx * e1z, qz = sx * e1y - sy * e1x;
-    v = (d.x * qx + d.y * qy + d.z * qz) / det;
-    dist = (e2x * qx + e2y * qy + e2z * qz) / det;
+    const Vec3 s = o - a;
+    u = dot(s, p) / det;
+    const Vec3 q = cross(s, e1);
+    v = dot(d, q) / det;
+    dist = dot(e2, q) / det;
     return true;
 }
 

@@ -23,9 +23,6 @@ Bounds boxBounds(const Vec3& lo, const Vec3& hi) {
     return b;
 }
 
-Vec3 minus(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-double length(const Vec3& a) { return std::sqrt(dot(a, a)); }
 Vec3 horizontal(const Vec3& a) { return {a.x, 0, a.z}; }
 
 // Unsigned angle between two vectors, in degrees.
@@ -85,22 +82,24 @@ const Bounds kBounds = boxBounds({-0.5, -1, 2}, {2.5, 3, 2});
 
 TEST(CameraPathNames, RoundTrip) {
     for (CameraPath path : {CameraPath::fixed, CameraPath::orbit, CameraPath::flythrough}) {
-        CameraPath parsed = path == CameraPath::fixed ? CameraPath::orbit : CameraPath::fixed;
-        ASSERT_TRUE(parseCameraPath(cameraPathName(path), parsed)) << cameraPathName(path);
-        EXPECT_EQ(parsed, path);
+        const Result<CameraPath> parsed = parseCameraPath(cameraPathName(path));
+        ASSERT_TRUE(parsed) << cameraPathName(path) << ": " << parsed.error;
+        EXPECT_EQ(parsed.error, "");
+        EXPECT_EQ(*parsed.value, path);
     }
     EXPECT_STREQ(cameraPathName(CameraPath::fixed), "static");
     EXPECT_STREQ(cameraPathName(CameraPath::orbit), "orbit");
     EXPECT_STREQ(cameraPathName(CameraPath::flythrough), "flythrough");
-    CameraPath path = CameraPath::orbit;
-    EXPECT_TRUE(parseCameraPath("static", path));
-    EXPECT_EQ(path, CameraPath::fixed);
+    const Result<CameraPath> path = parseCameraPath("static");
+    ASSERT_TRUE(path);
+    EXPECT_EQ(*path.value, CameraPath::fixed);
 }
 
 TEST(CameraPathNames, RejectsUnknownNames) {
     for (const char* name : {"", "fixed", "Orbit", "orbit ", "fly", "flythrough2", "STATIC"}) {
-        CameraPath path = CameraPath::orbit;
-        EXPECT_FALSE(parseCameraPath(name, path)) << '"' << name << '"';
+        const Result<CameraPath> path = parseCameraPath(name);
+        EXPECT_FALSE(path) << '"' << name << '"';
+        EXPECT_NE(path.error, "") << '"' << name << '"';
     }
 }
 
@@ -122,14 +121,14 @@ TEST(CameraPathOrbit, FrameZeroIsTheBase) {
 TEST(CameraPathOrbit, TurnsThreeDegreesPerFrameKeepingDistanceAndHeight) {
     const Vec3 centre = kBounds.centre();
     const CameraSpec base = perspectiveBase();
-    const Vec3 base_offset = minus(base.eye, centre);
-    const Vec3 base_view = minus(base.target, base.eye);
+    const Vec3 base_offset = base.eye - centre;
+    const Vec3 base_view = base.target - base.eye;
     double first_sign = 0;
     for (int frame = 1; frame <= 119; ++frame) {
         const CameraSpec camera = cameraOnPath(base, CameraPath::orbit, frame, kBounds);
         const std::string where = "frame " + std::to_string(frame);
         EXPECT_EQ(validateCamera(camera).error, "") << where;
-        const Vec3 offset = minus(camera.eye, centre);
+        const Vec3 offset = camera.eye - centre;
         EXPECT_NEAR(length(offset), length(base_offset), 1e-12) << where;
         EXPECT_NEAR(camera.eye.y, base.eye.y, 1e-12) << where;
         EXPECT_NEAR(length(horizontal(offset)), length(horizontal(base_offset)), 1e-12) << where;
@@ -139,11 +138,11 @@ TEST(CameraPathOrbit, TurnsThreeDegreesPerFrameKeepingDistanceAndHeight) {
         const double expected = first_sign * 3.0 * frame;
         EXPECT_NEAR(angleDifference(turn, expected), 0.0, 1e-9) << where;
         const CameraSpec previous = cameraOnPath(base, CameraPath::orbit, frame - 1, kBounds);
-        EXPECT_NEAR(angleDegrees(horizontal(minus(previous.eye, centre)), horizontal(offset)), 3.0, 1e-9)
+        EXPECT_NEAR(angleDegrees(horizontal(previous.eye - centre), horizontal(offset)), 3.0, 1e-9)
             << where;
         // The target turns with the eye: the view direction turns by the same angle and keeps
         // its elevation, so the scene is seen the same way from every frame.
-        const Vec3 view = minus(camera.target, camera.eye);
+        const Vec3 view = camera.target - camera.eye;
         EXPECT_NEAR(length(view), length(base_view), 1e-12) << where;
         EXPECT_NEAR(view.y, base_view.y, 1e-12) << where;
         EXPECT_NEAR(angleDifference(signedTurnDegrees(horizontal(base_view), horizontal(view)), expected),
@@ -157,7 +156,7 @@ TEST(CameraPathOrbit, TurnsThreeDegreesPerFrameKeepingDistanceAndHeight) {
     // A quarter turn by hand: 30 frames = 90 degrees, so the horizontal offset (6, 0, -3) of the
     // eye from the centre becomes perpendicular to itself.
     const CameraSpec quarter = cameraOnPath(base, CameraPath::orbit, 30, kBounds);
-    EXPECT_NEAR(dot(horizontal(minus(quarter.eye, centre)), horizontal(base_offset)), 0.0, 1e-12);
+    EXPECT_NEAR(dot(horizontal(quarter.eye - centre), horizontal(base_offset)), 0.0, 1e-12);
     // 120 frames = 360 degrees: back to the start.
     expectSameCamera(cameraOnPath(base, CameraPath::orbit, 120, kBounds), base, 1e-12);
     expectSameCamera(cameraOnPath(base, CameraPath::orbit, 240, kBounds), base, 1e-12);
@@ -193,15 +192,15 @@ TEST(CameraPathFlythrough, StaysInsideAndLooksAhead) {
         EXPECT_EQ(camera.projection, Projection::perspective);
         EXPECT_EQ(camera.fov_degrees, base.fov_degrees);
         // On a horizontal circle of radius 0.6 r about the centre: inside the bounding sphere.
-        const Vec3 offset = minus(camera.eye, centre);
+        const Vec3 offset = camera.eye - centre;
         EXPECT_NEAR(offset.y, 0.0, 1e-12) << where;
         EXPECT_NEAR(length(offset), 0.6 * r, 1e-12) << where;
         EXPECT_LT(length(offset), r);
         // 2 degrees per frame.
-        EXPECT_NEAR(angleDegrees(offset, minus(next.eye, centre)), 2.0, 1e-9) << where;
+        EXPECT_NEAR(angleDegrees(offset, next.eye - centre), 2.0, 1e-9) << where;
         // Looking (roughly) along the direction of travel, horizontally.
-        const Vec3 travel = minus(next.eye, camera.eye);
-        const Vec3 view = minus(camera.target, camera.eye);
+        const Vec3 travel = next.eye - camera.eye;
+        const Vec3 view = camera.target - camera.eye;
         EXPECT_NEAR(view.y, 0.0, 1e-12) << where;
         EXPECT_LT(angleDegrees(travel, view), 10.0) << where;
         // A usable frame: the eye is inside, so near is the small r * 1e-3 * 0.99.
@@ -217,7 +216,7 @@ TEST(CameraPathFlythrough, DegenerateBoundsStillGiveValidCameras) {
         const CameraSpec camera = cameraOnPath(perspectiveBase(), CameraPath::flythrough, frame, point);
         EXPECT_EQ(validateCamera(camera).error, "") << frame;
         // With radius 0 the path uses radius 1: the circle has radius 0.6.
-        EXPECT_NEAR(length(minus(camera.eye, point.centre())), 0.6, 1e-12) << frame;
+        EXPECT_NEAR(length(camera.eye - point.centre()), 0.6, 1e-12) << frame;
     }
 }
 
@@ -246,10 +245,7 @@ TEST(CameraPathOrbit, TiltedUpStaysValidAllTheWayRound) {
         const CameraSpec camera = cameraOnPath(base, CameraPath::orbit, frame, bounds);
         EXPECT_EQ(validateCamera(camera).error, "") << "frame " << frame;
         // up stays perpendicular to the view direction, as in the base camera.
-        const double dot = (camera.target.x - camera.eye.x) * camera.up.x +
-                           (camera.target.y - camera.eye.y) * camera.up.y +
-                           (camera.target.z - camera.eye.z) * camera.up.z;
-        EXPECT_NEAR(dot, 0.0, 1e-9);
+        EXPECT_NEAR(dot(camera.target - camera.eye, camera.up), 0.0, 1e-9);
     }
 }
 

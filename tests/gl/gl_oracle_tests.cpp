@@ -20,6 +20,7 @@
 #include "ground_truth.h"
 #include "test_scene_loading.h"
 #include "vissort/fast_cpu_oracle.h"
+#include "vissort/oracles.h"
 #include "vissort/scene_library.h"
 #include "vissort/scene_orderer.h"
 
@@ -37,8 +38,7 @@ ViewProjection viewOf(const Scene& scene, Projection projection, uint32_t width,
         scene.camera.value_or(defaultCamera(scene.positions.bounds(), double(width) / height));
     if (projection == Projection::orthographic) {
         // Along the perspective camera's direction, so that the same overlaps are seen.
-        camera.ortho_direction = {camera.target.x - camera.eye.x, camera.target.y - camera.eye.y,
-                                  camera.target.z - camera.eye.z};
+        camera.ortho_direction = camera.target - camera.eye;
         camera.projection = Projection::orthographic;
     }
     return frameCamera(camera, scene.positions.bounds(), width, height);
@@ -300,18 +300,22 @@ TEST(GlOracle, ErrorsNameTheLimit) {
     const std::vector<float> depths = gl.depthBuffer();
     ASSERT_EQ(depths.size(), 32u * 32u);
     EXPECT_LT(*std::min_element(depths.begin(), depths.end()), 1.0f);
-    EXPECT_THROW(makeOracle(OracleKind::gl, RasterMode::conservative), std::invalid_argument);
+    EXPECT_THROW(makeOracle(OracleKind::gl, {.mode = RasterMode::conservative}),
+                 std::invalid_argument);
 }
 
 TEST(GlOracle, MadeByNameSharingOneContext) {
-    OracleKind kind;
-    ASSERT_TRUE(parseOracleKind("gl", kind));
+    const Result<OracleKind> parsed = parseOracleKind("gl");
+    ASSERT_TRUE(parsed) << parsed.error;
+    const OracleKind kind = *parsed.value;
     EXPECT_EQ(kind, OracleKind::gl);
     EXPECT_STREQ(oracleName(kind), "gl");
-    const auto first = makeOracle(OracleKind::gl);
-    const auto second = makeOracle(OracleKind::gl);
-    const auto& a = dynamic_cast<const GlOracle&>(*first);
-    const auto& b = dynamic_cast<const GlOracle&>(*second);
+    const Result<std::unique_ptr<GeometryOracle>> first = makeOracle(OracleKind::gl);
+    const Result<std::unique_ptr<GeometryOracle>> second = makeOracle(OracleKind::gl);
+    ASSERT_TRUE(first) << first.error;
+    ASSERT_TRUE(second) << second.error;
+    const auto& a = dynamic_cast<const GlOracle&>(**first.value);
+    const auto& b = dynamic_cast<const GlOracle&>(**second.value);
     EXPECT_EQ(&a.context(), &b.context());
 }
 

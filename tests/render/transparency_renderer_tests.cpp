@@ -5,7 +5,8 @@
 //    multistage level, to 1/255 on every pixel, on scenes with cycles, intersections, nesting and
 //    depth complexity over 30, while centroid and unsorted miss by more on the same scenes;
 //  - the peeling pass counts, fragment lists split into bands, coherent frames, the gl oracle,
-//    opaque-only scenes, determinism and bad settings.
+//    opaque-only scenes, determinism and bad settings;
+//  - the method names.
 // These tests need an OpenGL 4.5 context: without one they fail, naming what is missing.
 
 #include "vissort/transparency_renderer.h"
@@ -17,6 +18,7 @@
 #include <limits>
 #include <optional>
 #include <ostream>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -421,6 +423,23 @@ TEST(TransparencyRenderer, BadSettingsAndPositionsAreRejected) {
     RenderStats stats;
     const ViewProjection view = frameCamera(*scene.camera, scene.positions.bounds(), 16, 16);
     EXPECT_THROW(renderer.render(fewer, view, stats), std::invalid_argument);
+}
+
+TEST(BlendMethodNames, RoundTripAndRejectUnknown) {
+    std::set<std::string> names;
+    for (BlendMethod method :
+         {BlendMethod::vissort, BlendMethod::unsorted, BlendMethod::centroid, BlendMethod::peel,
+          BlendMethod::dual_peel, BlendMethod::linked_list, BlendMethod::weighted}) {
+        const Result<BlendMethod> parsed = parseBlendMethod(blendMethodName(method));
+        ASSERT_TRUE(parsed) << blendMethodName(method) << ": " << parsed.error;
+        EXPECT_EQ(*parsed.value, method);
+        names.insert(blendMethodName(method));
+        EXPECT_NE(blendMethodNames().find(blendMethodName(method)), std::string::npos);
+    }
+    EXPECT_EQ(names.size(), 7u);
+    EXPECT_FALSE(parseBlendMethod("linked_list"));
+    EXPECT_NE(parseBlendMethod("linked_list").error, "");
+    EXPECT_FALSE(parseBlendMethod(""));
 }
 
 } // namespace

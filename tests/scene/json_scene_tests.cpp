@@ -47,21 +47,14 @@ private:
     fs::path path_;
 };
 
-// --- small vector helpers and a brute-force ray caster (the independent reference) ---
-
-Vec3 sub(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-Vec3 add(Vec3 a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-Vec3 mul(Vec3 a, double s) { return {a.x * s, a.y * s, a.z * s}; }
-double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-Vec3 normalized(Vec3 a) { return mul(a, 1 / std::sqrt(dot(a, a))); }
+// --- a brute-force ray caster (the independent reference) ---
 
 /// Möller-Trumbore, both sides; the distance along the ray, if hit.
 std::optional<double> hitTriangle(Vec3 origin, Vec3 direction, Vec3 a, Vec3 b, Vec3 c) {
-    const Vec3 e1 = sub(b, a), e2 = sub(c, a), p = cross(direction, e2);
+    const Vec3 e1 = b - a, e2 = c - a, p = cross(direction, e2);
     const double det = dot(e1, p);
     if (std::abs(det) < 1e-14) return std::nullopt;
-    const Vec3 s = sub(origin, a);
+    const Vec3 s = origin - a;
     const double u = dot(s, p) / det;
     if (u < 0 || u > 1) return std::nullopt;
     const Vec3 q = cross(s, e1);
@@ -128,7 +121,7 @@ template <class Visit>
 void castCameraGrid(const Scene& scene, int n, Visit visit) {
     ASSERT_TRUE(scene.camera.has_value());
     const CameraSpec& camera = *scene.camera;
-    const Vec3 forward = normalized(sub(camera.target, camera.eye));
+    const Vec3 forward = normalized(camera.target - camera.eye);
     const Vec3 right = normalized(cross(forward, camera.up));
     const Vec3 up = cross(right, forward);
     const double half = std::tan(camera.fov_degrees * std::numbers::pi / 360);
@@ -136,7 +129,7 @@ void castCameraGrid(const Scene& scene, int n, Visit visit) {
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j) {
             const double sx = ((i + 0.5) / n * 2 - 1) * half, sy = ((j + 0.5) / n * 2 - 1) * half;
-            const Vec3 direction = normalized(add(forward, add(mul(right, sx), mul(up, sy))));
+            const Vec3 direction = normalized(forward + (right * sx + up * sy));
             visit(castRay(scene, bounds, camera.eye, direction));
         }
 }
@@ -312,7 +305,7 @@ TEST(JsonScene, AnimationMovesAndSpinsObjectsRigidly) {
         EXPECT_NEAR(at2.z[c], scene.positions.z[c], 1e-6);
     }
     for (std::size_t c = spinner.first_triangle * 3u; c < (spinner.first_triangle + spinner.triangle_count) * 3u; ++c) {
-        const Vec3 d = sub(scene.positions.corner(c), centre);
+        const Vec3 d = scene.positions.corner(c) - centre;
         EXPECT_NEAR(at1.x[c], centre.x + d.z, 1e-5);
         EXPECT_NEAR(at1.y[c], centre.y + d.y, 1e-5);
         EXPECT_NEAR(at1.z[c], centre.z - d.x, 1e-5);
@@ -467,7 +460,8 @@ TEST(JsonSceneFixtures, StackIsThirtySixDisjointSlightlyTiltedSlabs) {
     // The big faces are tilted less than 4 degrees from the z axis.
     for (uint32_t t = 0; t < scene.triangleCount(); ++t) {
         const auto& p = scene.positions;
-        const Vec3 n = cross(sub(p.corner(3 * t + 1), p.corner(3 * t)), sub(p.corner(3 * t + 2), p.corner(3 * t)));
+        const Vec3 n =
+            cross(p.corner(3 * t + 1) - p.corner(3 * t), p.corner(3 * t + 2) - p.corner(3 * t));
         const double area = std::sqrt(dot(n, n)) / 2;
         if (area > 1) {
             EXPECT_GT(std::abs(n.z) / (2 * area), std::cos(4 * std::numbers::pi / 180)) << "triangle " << t;
@@ -475,7 +469,8 @@ TEST(JsonSceneFixtures, StackIsThirtySixDisjointSlightlyTiltedSlabs) {
     }
     // Looking down the stack from the default camera, the centre ray crosses every slab.
     const CameraSpec& camera = *scene.camera;
-    const std::vector<Interval> hits = castRay(scene, bounds, camera.eye, normalized(sub(camera.target, camera.eye)));
+    const std::vector<Interval> hits =
+        castRay(scene, bounds, camera.eye, normalized(camera.target - camera.eye));
     std::size_t crossed = 0;
     for (const Interval& hit : hits) crossed += hit.hit() && hit.far > hit.near;
     EXPECT_EQ(crossed, 36u);

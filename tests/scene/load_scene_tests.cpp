@@ -97,13 +97,15 @@ TEST(Scene, AnimationDrivesFrames) {
 
 // --- validateScene ---
 
-TEST(ValidateScene, AcceptsAValidScene) { EXPECT_EQ(validateScene(handMadeScene()), ""); }
+TEST(ValidateScene, AcceptsAValidScene) {
+    EXPECT_EQ(validateScene(handMadeScene()).error, "");
+}
 
 TEST(ValidateScene, RejectsBrokenInvariants) {
     const auto broken = [](auto change) {
         Scene scene = handMadeScene();
         change(scene);
-        return validateScene(scene);
+        return validateScene(scene).error;
     };
     EXPECT_NE(broken([](Scene& s) { s.positions = {}; s.objects.clear(); }), "");
     EXPECT_NE(broken([](Scene& s) { s.objects.clear(); }), "");
@@ -162,7 +164,7 @@ TEST(LoadScene, MalformedSpecifications) {
 TEST(LoadScene, BuiltinScenesGetTheirParameters) {
     const Result<Scene> plain = loadScene("builtin:slabs");
     ASSERT_TRUE(plain) << plain.error;
-    EXPECT_EQ(validateScene(*plain.value), "");
+    EXPECT_EQ(validateScene(*plain.value).error, "");
     const Result<Scene> empty_query = loadScene("builtin:slabs?");
     ASSERT_TRUE(empty_query) << empty_query.error;
     EXPECT_EQ(empty_query.value->positions.x, plain.value->positions.x);

@@ -2,6 +2,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -14,17 +15,9 @@
 namespace vissort {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kWobble = 0.05;     // the deformation's amplitude, from the specification
 constexpr double kFloatSlack = 1e-4; // positions are floats of magnitude < 10
 constexpr std::size_t kTrianglesPerBunny = 3674;
-
-double length(const Vec3 &v) {
-    return std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
-}
-Vec3 sub(const Vec3 &a, const Vec3 &b) {
-    return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
 
 /// The bunny read straight from assets/models/bunny-lowres.obj (only `v` and `f` lines), scaled
 /// as specified: bounding box centre at the origin, half the box diagonal = 1. Corners in file
@@ -54,10 +47,10 @@ std::vector<Vec3> referenceBunnyCorners() {
         high = {std::max(high.x, v.x), std::max(high.y, v.y), std::max(high.z, v.z)};
     }
     const Vec3 centre{(low.x + high.x) / 2, (low.y + high.y) / 2, (low.z + high.z) / 2};
-    const double radius = length(sub(high, low)) / 2;
+    const double radius = length(high - low) / 2;
     std::vector<Vec3> corners;
     for (const std::size_t index : corner_indices) {
-        const Vec3 v = sub(vertices[index], centre);
+        const Vec3 v = vertices[index] - centre;
         corners.push_back({v.x / radius, v.y / radius, v.z / radius});
     }
     return corners;
@@ -152,16 +145,15 @@ TEST(BunniesScene, EachBunnyIsTheUnitScaledMeshRigidlyMovedAndSlightlyDeformed) 
             double reach = 0, largest_radial_change = 0, largest_edge_change = 0;
             for (std::size_t k = 0; k < reference.size(); ++k) {
                 const Vec3 world = positions.corner(bunny * reference.size() + k);
-                const double radial = length(sub(world, centre));
+                const double radial = length(world - centre);
                 reach = std::max(reach, radial);
                 largest_radial_change =
                     std::max(largest_radial_change, std::abs(radial - length(reference[k])));
                 const std::size_t next = k - k % 3 + (k + 1) % 3; // the next corner of the triangle
                 const double edge =
-                    length(sub(positions.corner(bunny * reference.size() + next), world));
-                largest_edge_change =
-                    std::max(largest_edge_change,
-                             std::abs(edge - length(sub(reference[next], reference[k]))));
+                    length(positions.corner(bunny * reference.size() + next) - world);
+                largest_edge_change = std::max(
+                    largest_edge_change, std::abs(edge - length(reference[next] - reference[k])));
             }
             EXPECT_LE(largest_radial_change, kWobble + kFloatSlack)
                 << "bunny " << bunny << " t " << t;
@@ -177,13 +169,13 @@ TEST(BunniesScene, BunniesMoveAndDeformBetweenFrames) {
     const Scene scene = makeBunnies("6", "2");
     const TrianglePositions before = frameAt(scene, 1.0), after = frameAt(scene, 1.3);
     for (std::size_t bunny = 0; bunny < 6; ++bunny) {
-        EXPECT_GT(length(sub(centreOf(scene, bunny, 1.3), centreOf(scene, bunny, 1.0))), 1e-3);
+        EXPECT_GT(length(centreOf(scene, bunny, 1.3) - centreOf(scene, bunny, 1.0)), 1e-3);
         // Rigid motion keeps every edge length; the deformation must change some.
         double largest_edge_change = 0;
         for (std::size_t k = 0; k < 3 * kTrianglesPerBunny; k += 3) {
             const std::size_t i = bunny * 3 * kTrianglesPerBunny + k;
-            const double edge_before = length(sub(before.corner(i + 1), before.corner(i)));
-            const double edge_after = length(sub(after.corner(i + 1), after.corner(i)));
+            const double edge_before = length(before.corner(i + 1) - before.corner(i));
+            const double edge_after = length(after.corner(i + 1) - after.corner(i));
             largest_edge_change = std::max(largest_edge_change, std::abs(edge_after - edge_before));
         }
         EXPECT_GT(largest_edge_change, 1e-3) << "bunny " << bunny;
@@ -205,7 +197,7 @@ TEST(BunniesScene, CentresMoveAtConstantSpeedAndBounceInsideTheCube) {
                 EXPECT_LE(std::abs(c), half_range + 1e-9);
                 nearest_wall = std::min(nearest_wall, half_range - std::abs(c));
             }
-            speeds.push_back(length(sub(centre, previous)) / dt);
+            speeds.push_back(length(centre - previous) / dt);
             previous = centre;
         }
         std::sort(speeds.begin(), speeds.end());
@@ -243,7 +235,7 @@ TEST(BunniesScene, SomeBunniesComeIntoContact) {
         const double t = step * 0.05;
         for (std::size_t a = 0; a < 18; ++a)
             for (std::size_t b = a + 1; b < 18; ++b) {
-                const double distance = length(sub(centreOf(scene, a, t), centreOf(scene, b, t)));
+                const double distance = length(centreOf(scene, a, t) - centreOf(scene, b, t));
                 pairs_in_contact += distance < 2;
                 if (distance < closest)
                     closest = distance, closest_time = t, closest_a = a, closest_b = b;
@@ -258,7 +250,7 @@ TEST(BunniesScene, SomeBunniesComeIntoContact) {
     for (std::size_t i = closest_a * corners; i < (closest_a + 1) * corners; i += 3)
         for (std::size_t j = closest_b * corners; j < (closest_b + 1) * corners; j += 3)
             nearest_corners =
-                std::min(nearest_corners, length(sub(positions.corner(i), positions.corner(j))));
+                std::min(nearest_corners, length(positions.corner(i) - positions.corner(j)));
     EXPECT_LT(nearest_corners, 0.2);
 }
 
@@ -267,15 +259,14 @@ TEST(BunniesScene, DefaultCameraSeesTheWholeCube) {
     const Scene scene = makeBunnies(std::to_string(n));
     ASSERT_TRUE(scene.camera.has_value());
     const CameraSpec &camera = *scene.camera;
-    const Vec3 forward = sub(camera.target, camera.eye);
+    const Vec3 forward = camera.target - camera.eye;
     const double half = cubeSide(n) / 2 + kWobble;
     for (const double x : {-half, half})
         for (const double y : {-half, half})
             for (const double z : {-half, half}) {
-                const Vec3 d = sub(Vec3{x, y, z}, camera.eye);
-                const double cosine = (d.x * forward.x + d.y * forward.y + d.z * forward.z) /
-                                      (length(d) * length(forward));
-                EXPECT_LT(std::acos(cosine), camera.fov_degrees / 2 * kPi / 180);
+                const Vec3 d = Vec3{x, y, z} - camera.eye;
+                const double cosine = dot(d, forward) / (length(d) * length(forward));
+                EXPECT_LT(std::acos(cosine), camera.fov_degrees / 2 * std::numbers::pi / 180);
             }
 }
 

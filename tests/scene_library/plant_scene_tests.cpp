@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <set>
 #include <string>
 #include <tuple>
@@ -26,7 +27,6 @@ namespace {
 
 using vissort_test::Triangle;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr std::size_t kObjectsPerRow = 22; // 4 pipes, 8 columns, 8 beams, a pump, a tank
 constexpr double kSmallestGap = 0.05; // the scene's gap between the floor and what stands on it
 
@@ -42,26 +42,8 @@ Triangle triangleOf(const Scene& scene, std::size_t t) {
             scene.positions.corner(3 * t + 2)};
 }
 
-Vec3 sub(const Vec3& a, const Vec3& b) {
-    return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-Vec3 add(const Vec3& a, const Vec3& b) {
-    return {a.x + b.x, a.y + b.y, a.z + b.z};
-}
-Vec3 scale(const Vec3& a, double s) {
-    return {a.x * s, a.y * s, a.z * s};
-}
-double dot(const Vec3& a, const Vec3& b) {
-    return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-Vec3 normalized(const Vec3& a) {
-    return scale(a, 1 / std::sqrt(dot(a, a)));
-}
 double distance2(const Vec3& a, const Vec3& b) {
-    return dot(sub(a, b), sub(a, b));
+    return dot(a - b, a - b);
 }
 
 bool hasPart(const std::string& name, const std::string& part) {
@@ -71,7 +53,7 @@ bool hasPart(const std::string& name, const std::string& part) {
 // Squared distance between segments p1q1 and p2q2 of non-zero length (Ericson, "Real-Time
 // Collision Detection", 5.1.9).
 double segmentDistance2(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2) {
-    const Vec3 d1 = sub(q1, p1), d2 = sub(q2, p2), r = sub(p1, p2);
+    const Vec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
     const double a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r);
     const double b = dot(d1, d2), c = dot(d1, r), denominator = a * e - b * b;
     double s = denominator > 0 ? std::clamp((b * f - c * e) / denominator, 0.0, 1.0) : 0.0;
@@ -83,34 +65,34 @@ double segmentDistance2(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Ve
         t = 1;
         s = std::clamp((b - c) / a, 0.0, 1.0);
     }
-    return distance2(add(p1, scale(d1, s)), add(p2, scale(d2, t)));
+    return distance2(p1 + d1 * s, p2 + d2 * t);
 }
 
 // The point of triangle abc closest to p (Ericson 5.1.5: by Voronoi regions).
 Vec3 closestOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-    const Vec3 ab = sub(b, a), ac = sub(c, a), ap = sub(p, a);
+    const Vec3 ab = b - a, ac = c - a, ap = p - a;
     const double d1 = dot(ab, ap), d2 = dot(ac, ap);
     if (d1 <= 0 && d2 <= 0)
         return a;
-    const Vec3 bp = sub(p, b);
+    const Vec3 bp = p - b;
     const double d3 = dot(ab, bp), d4 = dot(ac, bp);
     if (d3 >= 0 && d4 <= d3)
         return b;
     const double vc = d1 * d4 - d3 * d2;
     if (vc <= 0 && d1 >= 0 && d3 <= 0)
-        return add(a, scale(ab, d1 / (d1 - d3)));
-    const Vec3 cp = sub(p, c);
+        return a + ab * (d1 / (d1 - d3));
+    const Vec3 cp = p - c;
     const double d5 = dot(ab, cp), d6 = dot(ac, cp);
     if (d6 >= 0 && d5 <= d6)
         return c;
     const double vb = d5 * d2 - d1 * d6;
     if (vb <= 0 && d2 >= 0 && d6 <= 0)
-        return add(a, scale(ac, d2 / (d2 - d6)));
+        return a + ac * (d2 / (d2 - d6));
     const double va = d3 * d6 - d5 * d4;
     if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
-        return add(b, scale(sub(c, b), (d4 - d3) / ((d4 - d3) + (d5 - d6))));
+        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
     const double denominator = 1 / (va + vb + vc);
-    return add(a, add(scale(ab, vb * denominator), scale(ac, vc * denominator)));
+    return a + (ab * (vb * denominator) + ac * (vc * denominator));
 }
 
 // Distance between two closed triangles: 0 when they meet, else it is reached between two edges
@@ -153,12 +135,12 @@ double boxDistance(const Bounds& a, const Bounds& b) {
 
 // Moeller-Trumbore, both sides, hits at distance > 0.
 bool rayHits(const Vec3& o, const Vec3& d, const Triangle& t) {
-    const Vec3 e1 = sub(t[1], t[0]), e2 = sub(t[2], t[0]);
+    const Vec3 e1 = t[1] - t[0], e2 = t[2] - t[0];
     const Vec3 p = cross(d, e2);
     const double det = dot(e1, p);
     if (std::abs(det) < 1e-15)
         return false;
-    const Vec3 s = sub(o, t[0]);
+    const Vec3 s = o - t[0];
     const double u = dot(s, p) / det;
     const Vec3 q = cross(s, e1);
     const double v = dot(d, q) / det;
@@ -287,7 +269,7 @@ TEST(PlantScene, EveryObjectIsClosedWoundOutwardsWithoutDegenerateTriangles) {
                 for (int c = 0; c < 3; ++c)
                     ++directed[{corner_id[c], corner_id[(c + 1) % 3]}];
                 const Triangle tri = triangleOf(scene, t);
-                const Vec3 n = cross(sub(tri[1], tri[0]), sub(tri[2], tri[0]));
+                const Vec3 n = cross(tri[1] - tri[0], tri[2] - tri[0]);
                 smallest_area = std::min(smallest_area, std::sqrt(dot(n, n)) / 2);
                 volume += dot(tri[0], cross(tri[1], tri[2])) / 6; // divergence theorem
             }
@@ -368,12 +350,12 @@ TEST(PlantScene, DefaultCameraFramesThePlantFromTheFrontAtTheHeadersHeight) {
             EXPECT_GT(header.max.x, 2.0) << object.name;
         }
         // Every corner of the plant inside a square image's field of view.
-        const Vec3 forward = normalized(sub(camera.target, camera.eye));
+        const Vec3 forward = normalized(camera.target - camera.eye);
         const Vec3 right = normalized(cross(forward, camera.up));
         const Vec3 up = cross(right, forward);
-        const double reach = std::tan(camera.fov_degrees / 2 * kPi / 180);
+        const double reach = std::tan(camera.fov_degrees / 2 * std::numbers::pi / 180);
         for (std::size_t i = 0; i < scene.positions.x.size(); ++i) {
-            const Vec3 d = sub(scene.positions.corner(i), camera.eye);
+            const Vec3 d = scene.positions.corner(i) - camera.eye;
             const double depth = dot(d, forward);
             ASSERT_GT(depth, 0.0);
             EXPECT_LT(std::abs(dot(d, right)), depth * reach);
@@ -386,7 +368,7 @@ TEST(PlantScene, RayAlongTheRowsAtTheEyesHeightCrossesEveryHeaderAndNothingElse)
     for (const int layers : {1, 7, 20}) {
         const Scene scene = makePlant(layers, 5);
         // Off the axis by a little, so that the ray passes no triangle edge exactly.
-        const Vec3 origin = add(scene.camera->eye, {0.013, 0.037, 0});
+        const Vec3 origin = scene.camera->eye + Vec3{0.013, 0.037, 0};
         const Vec3 direction{0, 0, -1};
         std::map<std::string, int> hits;
         for (std::size_t t = 0; t < scene.triangleCount(); ++t)

@@ -1,5 +1,6 @@
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -15,8 +16,6 @@ namespace {
 
 using vissort_test::Triangle;
 
-constexpr double kPi = 3.14159265358979323846;
-
 Scene makeSlabs(const std::string &layers, const std::string &seed = "1") {
     Result<Scene> scene = makeBuiltinScene("slabs", {{"layers", layers}, {"seed", seed}});
     EXPECT_TRUE(scene) << scene.error;
@@ -30,17 +29,16 @@ Triangle triangleOf(const Scene &scene, std::size_t t) {
 
 // Moeller-Trumbore, both sides, hits at distance > 0.
 bool rayHits(const Vec3 &o, const Vec3 &d, const Triangle &t) {
-    const Vec3 e1{t[1].x - t[0].x, t[1].y - t[0].y, t[1].z - t[0].z};
-    const Vec3 e2{t[2].x - t[0].x, t[2].y - t[0].y, t[2].z - t[0].z};
-    const Vec3 p{d.y * e2.z - d.z * e2.y, d.z * e2.x - d.x * e2.z, d.x * e2.y - d.y * e2.x};
-    const double det = e1.x * p.x + e1.y * p.y + e1.z * p.z;
+    const Vec3 e1 = t[1] - t[0], e2 = t[2] - t[0];
+    const Vec3 p = cross(d, e2);
+    const double det = dot(e1, p);
     if (std::abs(det) < 1e-15)
         return false;
-    const Vec3 s{o.x - t[0].x, o.y - t[0].y, o.z - t[0].z};
-    const double u = (s.x * p.x + s.y * p.y + s.z * p.z) / det;
-    const Vec3 q{s.y * e1.z - s.z * e1.y, s.z * e1.x - s.x * e1.z, s.x * e1.y - s.y * e1.x};
-    const double v = (d.x * q.x + d.y * q.y + d.z * q.z) / det;
-    const double distance = (e2.x * q.x + e2.y * q.y + e2.z * q.z) / det;
+    const Vec3 s = o - t[0];
+    const double u = dot(s, p) / det;
+    const Vec3 q = cross(s, e1);
+    const double v = dot(d, q) / det;
+    const double distance = dot(e2, q) / det;
     return u >= 0 && v >= 0 && u + v <= 1 && distance > 0;
 }
 
@@ -76,18 +74,13 @@ TEST(SlabsScene, QuadsAreFlatSquaresTiltedLessThanFourDegrees) {
     for (std::size_t layer = 0; layer < 200; ++layer) {
         const Triangle t0 = triangleOf(scene, 2 * layer), t1 = triangleOf(scene, 2 * layer + 1);
         // Two triangles sharing a diagonal of a planar quad: the 4th corner is coplanar.
-        const Vec3 e1{t0[1].x - t0[0].x, t0[1].y - t0[0].y, t0[1].z - t0[0].z};
-        const Vec3 e2{t0[2].x - t0[0].x, t0[2].y - t0[0].y, t0[2].z - t0[0].z};
-        Vec3 n{e1.y * e2.z - e1.z * e2.y, e1.z * e2.x - e1.x * e2.z, e1.x * e2.y - e1.y * e2.x};
-        const double length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
-        EXPECT_NEAR(length, 16.0, 1e-3); // twice the area of half a 4 x 4 quad
-        n = {n.x / length, n.y / length, n.z / length};
-        for (const Vec3 &p : t1) {
-            const double off_plane =
-                n.x * (p.x - t0[0].x) + n.y * (p.y - t0[0].y) + n.z * (p.z - t0[0].z);
-            EXPECT_NEAR(off_plane, 0.0, 1e-3);
-        }
-        const double tilt_degrees = std::acos(std::min(1.0, std::abs(n.z))) * 180 / kPi;
+        const Vec3 normal = cross(t0[1] - t0[0], t0[2] - t0[0]);
+        EXPECT_NEAR(length(normal), 16.0, 1e-3); // twice the area of half a 4 x 4 quad
+        const Vec3 n = normalized(normal);
+        for (const Vec3 &p : t1)
+            EXPECT_NEAR(dot(n, p - t0[0]), 0.0, 1e-3);
+        const double tilt_degrees =
+            std::acos(std::min(1.0, std::abs(n.z))) * 180 / std::numbers::pi;
         EXPECT_LT(tilt_degrees, 4.0);
         some_tilt |= tilt_degrees > 0.1;
     }
@@ -129,7 +122,7 @@ TEST(SlabsScene, CameraLooksDownTheStackAndMiddleRaysCrossEveryLayer) {
     EXPECT_GT(camera.eye.z, bounds.max.z);
     EXPECT_LT(camera.target.z, camera.eye.z);
     // Every corner inside the vertical (and, for square images, horizontal) field of view.
-    const double half_fov = std::tan(camera.fov_degrees / 2 * kPi / 180);
+    const double half_fov = std::tan(camera.fov_degrees / 2 * std::numbers::pi / 180);
     for (std::size_t i = 0; i < scene.positions.x.size(); ++i) {
         const Vec3 c = scene.positions.corner(i);
         const double depth = camera.eye.z - c.z;

@@ -1,5 +1,6 @@
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -15,8 +16,6 @@ namespace {
 
 using vissort_test::Triangle;
 
-constexpr double kPi = 3.14159265358979323846;
-
 Scene makeSoup(const std::string &n, const std::string &seed = "1") {
     Result<Scene> scene = makeBuiltinScene("soup", {{"n", n}, {"seed", seed}});
     EXPECT_TRUE(scene) << scene.error;
@@ -29,10 +28,7 @@ Triangle triangleOf(const Scene &scene, std::size_t t) {
 }
 
 double area(const Triangle &t) {
-    const Vec3 e1{t[1].x - t[0].x, t[1].y - t[0].y, t[1].z - t[0].z};
-    const Vec3 e2{t[2].x - t[0].x, t[2].y - t[0].y, t[2].z - t[0].z};
-    const Vec3 n{e1.y * e2.z - e1.z * e2.y, e1.z * e2.x - e1.x * e2.z, e1.x * e2.y - e1.y * e2.x};
-    return std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z) / 2;
+    return length(cross(t[1] - t[0], t[2] - t[0])) / 2;
 }
 
 TEST(SoupScene, OneObjectPerTriangle) {
@@ -79,11 +75,8 @@ TEST(SoupScene, TrianglesAreNonDegenerateSmallerThanACellAndFillTheCube) {
         const Triangle tri = triangleOf(scene, t);
         smallest = std::min(smallest, area(tri));
         for (int i = 0; i < 3; ++i)
-            for (int j = i + 1; j < 3; ++j) {
-                const double dx = tri[i].x - tri[j].x, dy = tri[i].y - tri[j].y,
-                             dz = tri[i].z - tri[j].z;
-                EXPECT_LT(std::sqrt(dx * dx + dy * dy + dz * dz), 1.0);
-            }
+            for (int j = i + 1; j < 3; ++j)
+                EXPECT_LT(length(tri[i] - tri[j]), 1.0);
     }
     EXPECT_GT(smallest, 1e-3);
     const Bounds bounds = scene.positions.bounds();
@@ -111,15 +104,12 @@ TEST(SoupScene, DefaultCameraSeesEveryCorner) {
     const Scene scene = makeSoup("500");
     ASSERT_TRUE(scene.camera.has_value());
     const CameraSpec &camera = *scene.camera;
-    const Vec3 f{camera.target.x - camera.eye.x, camera.target.y - camera.eye.y,
-                 camera.target.z - camera.eye.z};
-    const double f_length = std::sqrt(f.x * f.x + f.y * f.y + f.z * f.z);
-    const double half_fov = camera.fov_degrees / 2 * kPi / 180;
+    const Vec3 f = camera.target - camera.eye;
+    const double half_fov = camera.fov_degrees / 2 * std::numbers::pi / 180;
     for (std::size_t i = 0; i < scene.positions.x.size(); ++i) {
         const Vec3 c = scene.positions.corner(i);
-        const Vec3 d{c.x - camera.eye.x, c.y - camera.eye.y, c.z - camera.eye.z};
-        const double cosine = (d.x * f.x + d.y * f.y + d.z * f.z) /
-                              (f_length * std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z));
+        const Vec3 d = c - camera.eye;
+        const double cosine = dot(d, f) / (length(f) * length(d));
         EXPECT_LT(std::acos(std::min(1.0, cosine)), half_fov); // inside the image's inscribed cone
     }
 }

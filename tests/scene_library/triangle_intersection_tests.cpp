@@ -15,18 +15,9 @@ namespace {
 
 using vissort::Vec3;
 
-Vec3 sub(const Vec3 &a, const Vec3 &b) {
-    return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-double dot(const Vec3 &a, const Vec3 &b) {
-    return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-Vec3 cross(const Vec3 &a, const Vec3 &b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
 // Six times the signed volume of the tetrahedron (a, b, c, d).
 double orient(const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &d) {
-    return dot(cross(sub(b, a), sub(c, a)), sub(d, a));
+    return dot(cross(b - a, c - a), d - a);
 }
 
 // Conservative: touching and coplanar cases count as crossing, so "no pair crosses" is strict.

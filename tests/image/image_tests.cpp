@@ -1,16 +1,15 @@
-// The renderer's image helpers, without OpenGL: the one conversion to 8 bits, the comparison
-// (RMSE, PSNR, largest channel error), the error map, PNG output and the method names.
+// Images, without OpenGL: the one conversion to 8 bits, the comparison (RMSE, PSNR, largest
+// channel error), the error map and PNG output.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <limits>
-#include <set>
 #include <string>
 #include <vector>
 
-#include "vissort/transparency_renderer.h"
+#include "vissort/image.h"
 
 namespace vissort {
 namespace {
@@ -65,29 +64,12 @@ TEST(Image, PngIsWrittenOrTheFailureNamed) {
     const std::filesystem::path path =
         std::filesystem::temp_directory_path() / "vissort_image_test.png";
     const std::vector<uint8_t> pixels(2 * 3 * 4, 200);
-    EXPECT_EQ(writePng(path.string(), 2, 3, pixels), "");
+    EXPECT_EQ(writePng(path.string(), 2, 3, pixels).error, "");
     EXPECT_GT(std::filesystem::file_size(path), 8u);
     std::filesystem::remove(path);
-    const std::string missing = writePng("/nonexistent-folder/x.png", 2, 3, pixels);
+    const std::string missing = writePng("/nonexistent-folder/x.png", 2, 3, pixels).error;
     EXPECT_NE(missing.find("/nonexistent-folder/x.png"), std::string::npos) << missing;
-    EXPECT_NE(writePng(path.string(), 3, 3, pixels), ""); // the wrong size
-}
-
-TEST(BlendMethodNames, RoundTripAndRejectUnknown) {
-    std::set<std::string> names;
-    for (BlendMethod method :
-         {BlendMethod::vissort, BlendMethod::unsorted, BlendMethod::centroid, BlendMethod::peel,
-          BlendMethod::dual_peel, BlendMethod::linked_list, BlendMethod::weighted}) {
-        BlendMethod parsed{};
-        ASSERT_TRUE(parseBlendMethod(blendMethodName(method), parsed)) << blendMethodName(method);
-        EXPECT_EQ(parsed, method);
-        names.insert(blendMethodName(method));
-        EXPECT_NE(blendMethodNames().find(blendMethodName(method)), std::string::npos);
-    }
-    EXPECT_EQ(names.size(), 7u);
-    BlendMethod parsed{};
-    EXPECT_FALSE(parseBlendMethod("linked_list", parsed));
-    EXPECT_FALSE(parseBlendMethod("", parsed));
+    EXPECT_NE(writePng(path.string(), 3, 3, pixels).error, ""); // the wrong size
 }
 
 } // namespace

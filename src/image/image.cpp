@@ -1,4 +1,4 @@
-// Image conversion, comparison and PNG output (transparency_renderer.h).
+// Image conversion, comparison and PNG output (image.h).
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include <stb/stb_image_write.h>
 
-#include "vissort/transparency_renderer.h"
+#include "vissort/image.h"
 
 namespace vissort {
 namespace {
@@ -80,7 +80,7 @@ std::vector<uint8_t> errorMap(const std::vector<uint8_t>& image,
 }
 
 Status writePng(const std::string& path, uint32_t width, uint32_t height,
-                     const std::vector<uint8_t>& rgba8) {
+                const std::vector<uint8_t>& rgba8) {
     if (rgba8.size() != std::size_t(width) * height * 4 || width == 0 || height == 0)
         return Status::failure("no image to write to " + path);
     if (!stbi_write_png(path.c_str(), int(width), int(height), 4, rgba8.data(), int(width) * 4))
