@@ -4,6 +4,10 @@
 # differ and fails. To fix one: clang-format -i FILE.
 #   bash scripts/check-format.sh [FILE...]     default: every tracked .cpp and .h file
 set -euo pipefail
+arguments=()
+for f in "$@"; do
+  arguments+=("$(realpath "$f")")  # the files named are relative to where the script was run
+done
 cd "$(dirname "$0")/.."
 
 clang_format=${CLANG_FORMAT:-}
@@ -20,10 +24,18 @@ if [ -z "$clang_format" ]; then
   exit 2
 fi
 
-if [ $# -gt 0 ]; then
-  files=("$@")
+if [ ${#arguments[@]} -gt 0 ]; then
+  files=("${arguments[@]}")
 else
-  mapfile -t files < <(git ls-files -- '*.cpp' '*.h')
+  mapfile -t files < <(git ls-files -- '*.cpp' '*.h' 2>/dev/null)
+  if [ ${#files[@]} -eq 0 ]; then  # not a git checkout (a source archive): the same folders
+    mapfile -t files < <(find bench examples include src tests \( -name '*.cpp' -o -name '*.h' \) \
+                           -type f 2>/dev/null | sort)
+  fi
+fi
+if [ ${#files[@]} -eq 0 ]; then
+  echo "check-format: no C++ files found" >&2
+  exit 2
 fi
 
 # One clang-format for every file (a process per file is slow on a busy machine); each file that
