@@ -21,6 +21,7 @@ prefix=$work/prefix
 build=$(realpath -m "${VISSORT_CHECK_BUILD_DIR:-$work/build}")
 jobs=$(nproc)
 
+bash scripts/install-deps.sh
 echo "== check-install: building vissort in $build"
 cmake -S "$source_dir" -B "$build" -DCMAKE_BUILD_TYPE=Release -DVISSORT_BUILD_TESTS=OFF \
   -DVISSORT_BUILD_BENCHMARKS=OFF "$@"
