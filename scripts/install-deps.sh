@@ -22,6 +22,7 @@ packages=(
   libbullet-dev              # the bullet collision peer
   libfcl-dev                 # the fcl collision peer
   libcgal-dev                # tests only: exact reference predicates for the collision tests
+  clang-format               # scripts/check-format.sh: clang-format 14, as .clang-format expects
 )
 
 missing=()

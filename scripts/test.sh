@@ -3,11 +3,14 @@
 #   bash scripts/test.sh              Release build in build/
 #   bash scripts/test.sh --sanitize   AddressSanitizer + UndefinedBehaviorSanitizer in build-sanitize/
 #   bash scripts/test.sh --tsan       ThreadSanitizer on the threaded code's tests, in build-tsan/
+#   bash scripts/test.sh --no-gl      Release without OpenGL (-DVISSORT_WITH_GL=OFF), in build-nogl/:
+#                                     every test that exists there; no benchmarks
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 build_dir=build
 flags=(-DCMAKE_BUILD_TYPE=Release)
+benchmarks=ON
 targets=()
 tests=()
 if [ "${1:-}" = "--sanitize" ]; then
@@ -20,10 +23,18 @@ elif [ "${1:-}" = "--tsan" ]; then
   flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DVISSORT_TSAN=ON)
   targets=(--target raster_tests collide_tests)
   tests=(-R "FastCpuOracle|CollisionThreads")
+elif [ "${1:-}" = "--no-gl" ]; then
+  build_dir=build-nogl
+  flags=(-DCMAKE_BUILD_TYPE=Release -DVISSORT_WITH_GL=OFF)
+  benchmarks=OFF
+elif [ -n "${1:-}" ]; then
+  echo "test.sh: unknown option '$1' (expected --sanitize, --tsan or --no-gl)" >&2
+  exit 2
 fi
 
 bash scripts/install-deps.sh
-cmake -S . -B "$build_dir" "${flags[@]}" -DVISSORT_BUILD_TESTS=ON -DVISSORT_BUILD_BENCHMARKS=ON
+cmake -S . -B "$build_dir" "${flags[@]}" -DVISSORT_BUILD_TESTS=ON \
+  -DVISSORT_BUILD_BENCHMARKS="$benchmarks"
 cmake --build "$build_dir" -j"$(nproc)" "${targets[@]}"
 # Embree starts its own worker threads; LeakSanitizer cannot follow them reliably, and the suite
 # checks memory errors, not leaks at exit (the tool frees everything it allocates per frame).

@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# Checks vissort's installed CMake package: builds vissort (Release: the libraries and the CLI,
+# no tests or benchmarks), installs it into a temporary prefix, then configures, builds and runs
+# every consumer project in examples/ against that prefix (CMAKE_PREFIX_PATH) and checks what
+# each prints. Fails on the first error.
+#   bash scripts/check-install.sh [cmake options for vissort, e.g. -DVISSORT_WITH_GL=OFF]
+# Work directory: $VISSORT_CHECK_DIR if set (kept), else a temporary one (removed).
+# VISSORT_CHECK_BUILD_DIR=DIR builds vissort in DIR (an existing build tree to reuse) instead.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+source_dir=$PWD
+
+if [ -n "${VISSORT_CHECK_DIR:-}" ]; then
+  work=$VISSORT_CHECK_DIR
+  mkdir -p "$work"
+else
+  work=$(mktemp -d "${TMPDIR:-/tmp}/vissort-check-install.XXXXXX")
+  trap 'rm -rf "$work"' EXIT
+fi
+prefix=$work/prefix
+build=$(realpath -m "${VISSORT_CHECK_BUILD_DIR:-$work/build}")
+jobs=$(nproc)
+
+bash scripts/install-deps.sh
+echo "== check-install: building vissort in $build"
+cmake -S "$source_dir" -B "$build" -DCMAKE_BUILD_TYPE=Release -DVISSORT_BUILD_TESTS=OFF \
+  -DVISSORT_BUILD_BENCHMARKS=OFF "$@"
+cmake --build "$build" -j"$jobs"
+rm -rf "$prefix"
+cmake --install "$build" --prefix "$prefix"
+
+for f in lib/cmake/vissort/vissortConfig.cmake lib/cmake/vissort/vissortConfigVersion.cmake \
+         lib/cmake/vissort/vissortTargets.cmake include/vissort/vis_sort.h bin/vissort; do
+  [ -e "$prefix/$f" ] || { echo "check-install: $f was not installed" >&2; exit 1; }
+done
+# Nothing of the source or build tree may leak into the installed package.
+if grep -rl -e "$source_dir" -e "$build" "$prefix/lib/cmake/vissort"; then
+  echo "check-install: the package above names the source or build tree" >&2
+  exit 1
+fi
+
+# Every id 0..n-1 exactly once on the line "order: ..." of the output in file $1.
+check_permutation() {
+  local ids
+  ids=$(sed -n 's/^order://p' "$1" | tr ' ' '\n' | sed '/^$/d')
+  local n
+  n=$(printf '%s\n' "$ids" | wc -l)
+  if [ -z "$ids" ] || [ "$(printf '%s\n' "$ids" | sort -n | tr '\n' ' ')" != "$(seq 0 $((n - 1)) | tr '\n' ' ')" ]; then
+    echo "check-install: the order printed is not a permutation of 0..$((n - 1)):" >&2
+    cat "$1" >&2
+    return 1
+  fi
+}
+
+for example in examples/*/; do
+  name=$(basename "$example")
+  echo "== check-install: example $name"
+  cmake -S "$example" -B "$work/examples/$name" -DCMAKE_BUILD_TYPE=Release \
+    -DCMAKE_PREFIX_PATH="$prefix"
+  cmake --build "$work/examples/$name" -j"$jobs"
+done
+
+run() {  # run OUTPUT_FILE PROGRAM ARGS...: runs one example, keeps its output and shows its start
+  local out=$1
+  shift
+  echo "\$ $(basename "$1") ${*:2}"
+  "$@" >"$out"
+  cut -c1-100 "$out"
+}
+bin=$work/examples
+run "$work/out.txt" "$bin/order_mesh/order_mesh"
+check_permutation "$work/out.txt"
+grep -q '^builtin:slabs: 8 objects' "$work/out.txt"
+run "$work/out.txt" "$bin/order_mesh/order_mesh" assets/models/bunny-lowres.obj triangle
+check_permutation "$work/out.txt"
+run "$work/out.txt" "$bin/order_triangles/order_triangles"
+check_permutation "$work/out.txt"
+grep -qx 'order: 1 3 0 2 4' "$work/out.txt" || { echo "check-install: order_triangles: expected order: 1 3 0 2 4" >&2; exit 1; }
+# A bad file is one line on stderr and a non-zero exit.
+if "$bin/order_mesh/order_mesh" no-such-file.obj 2>/dev/null; then
+  echo "check-install: order_mesh accepted a missing file" >&2
+  exit 1
+fi
+echo "== check-install: the installed package builds and runs every example"
