@@ -102,7 +102,8 @@ private:
     std::vector<PrimitiveRange> primitives_;  // stage 1's: triangles at triangle level, else objects
     std::vector<uint32_t> previous_order_;           // last frame, at level_ (objects for multistage)
     std::vector<uint32_t> previous_triangle_rank_;   // multistage: last frame's triangle positions
-    // Reused every frame so that steady-state frames allocate nothing large.
+    // Reused every frame, so that a steady-state frame without cycles allocates nothing
+    // (tests/order/orderer_allocation_tests.cpp).
     VisSortWorkspace workspace_;
     VisibilityOrder sorted_, group_sorted_;
     std::vector<PrimitiveRange> group_;
