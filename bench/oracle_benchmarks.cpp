@@ -119,7 +119,7 @@ void bunniesOrbit(benchmark::State& state) {
     double milliseconds = 0;
     for (auto _ : state) {
         Oracle oracle;
-        SceneOrderer orderer(scene, OrderLevel::triangle, oracle);
+        SceneOrderer orderer(scene.objectPrimitives(), uint32_t(scene.triangleCount()), OrderLevel::triangle, oracle);
         for (int f = 0; f < kFrames; ++f) {
             const FrameOrder order = orderer.orderFrame(positions[f], views[f]);
             queries += order.stats.queries;

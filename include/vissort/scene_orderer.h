@@ -1,6 +1,8 @@
 #pragma once
-// Ordering a scene frame by frame: the primitive level (objects, triangles, or the paper's
-// multi-stage scheme), the first-frame depth-key order, and coherence between frames.
+// Ordering primitives frame by frame: the primitive level (objects, triangles, or the paper's
+// multi-stage scheme), the first-frame depth-key order, and coherence between frames. Inputs are
+// objects' triangle ranges and positions views: no Scene is needed (a Scene gives its objects'
+// ranges with Scene::objectPrimitives()).
 
 #include <cstdint>
 #include <span>
@@ -10,7 +12,6 @@
 #include "vissort/enum_names.h"
 #include "vissort/camera.h"
 #include "vissort/geometry_oracle.h"
-#include "vissort/scene.h"
 #include "vissort/vis_sort.h"
 
 namespace vissort {
@@ -42,9 +43,21 @@ struct FrameOrder {
     double milliseconds = 0;                    // wall time of orderFrame
 };
 
-/// The primitives of a level: one range per object, or one per triangle (multistage's output
-/// is triangles, so it uses the triangle ranges).
-std::vector<PrimitiveRange> primitivesOf(const Scene& scene, OrderLevel level);
+/// The primitives whose ids a level's orders hold: the objects' ranges at object level, else one
+/// range per triangle 0..triangle_count-1 (multistage's output is triangles).
+std::vector<PrimitiveRange> levelPrimitives(std::span<const PrimitiveRange> objects,
+                                            uint32_t triangle_count, OrderLevel level);
+
+/// The same for a scene (vissort::Scene, or anything with objectPrimitives() and
+/// triangleCount()): a template, so that ordering does not depend on the scene layer.
+template <class SceneLike>
+    requires requires(const SceneLike& s) {
+        s.objectPrimitives();
+        s.triangleCount();
+    }
+std::vector<PrimitiveRange> primitivesOf(const SceneLike& scene, OrderLevel level) {
+    return levelPrimitives(scene.objectPrimitives(), uint32_t(scene.triangleCount()), level);
+}
 
 /// The first-frame order: primitives sorted front to back by the depth of their nearest corner
 /// in front of the near plane (a cheap key; ties and primitives entirely behind the camera keep
@@ -52,17 +65,25 @@ std::vector<PrimitiveRange> primitivesOf(const Scene& scene, OrderLevel level);
 std::vector<uint32_t> depthKeyOrder(PositionsView positions, const ViewProjection& view,
                                     std::span<const PrimitiveRange> primitives);
 
-/// Orders successive frames of one scene at one level with one oracle. Each frame starts from
-/// the previous frame's order (coherence); the first from depthKeyOrder.
+/// Orders successive frames of one set of objects at one level with one oracle. Each frame
+/// starts from the previous frame's order (coherence); the first from depthKeyOrder.
 class SceneOrderer {
 public:
-    SceneOrderer(const Scene& scene, OrderLevel level, GeometryOracle& oracle);
+    /// objects: each object's contiguous triangle range, in object id order (copied);
+    /// triangle_count: the triangles of the positions given to orderFrame, every object's
+    /// range within it. The oracle is bound anew every frame and must outlive the orderer.
+    SceneOrderer(std::span<const PrimitiveRange> objects, uint32_t triangle_count,
+                 OrderLevel level, GeometryOracle& oracle);
 
-    /// Orders the scene's triangles at `positions` (scene.frame(t)) seen through view.
+    /// Orders the triangles at `positions` (triangle_count of them) seen through view into out.
+    /// out's vectors and the orderer's buffers keep their capacity: once they have grown, a frame
+    /// allocates nothing unless Vis-sort meets a cycle (see vis_sort.h).
+    void orderFrame(PositionsView positions, const ViewProjection& view, FrameOrder& out);
+    /// The same, returning a new FrameOrder (allocates it every frame).
     FrameOrder orderFrame(PositionsView positions, const ViewProjection& view);
 
 private:
-    FrameOrder orderMultistage(PositionsView positions, const ViewProjection& view);
+    void orderMultistage(PositionsView positions, const ViewProjection& view, FrameOrder& frame);
     /// Binds the oracle to primitives and sorts them into `into`, starting from previous_order
     /// when it has the right size, else from the depth-key order.
     void sortPrimitives(PositionsView positions, const ViewProjection& view,
@@ -74,19 +95,23 @@ private:
                   std::span<const PrimitiveRange> primitives, std::span<const uint32_t> start,
                   VisibilityOrder& into);
 
-    const Scene& scene_;
+    std::vector<PrimitiveRange> objects_;
+    uint32_t triangle_count_;
     OrderLevel level_;
     GeometryOracle& oracle_;
-    std::vector<PrimitiveRange> primitives_;
+    std::vector<PrimitiveRange> primitives_;  // stage 1's: triangles at triangle level, else objects
     std::vector<uint32_t> previous_order_;           // last frame, at level_ (objects for multistage)
     std::vector<uint32_t> previous_triangle_rank_;   // multistage: last frame's triangle positions
-    // Reused every frame so that steady-state frames allocate nothing large.
+    // Reused every frame, so that a steady-state frame without cycles allocates nothing
+    // (tests/order/orderer_allocation_tests.cpp).
     VisSortWorkspace workspace_;
     VisibilityOrder sorted_, group_sorted_;
     std::vector<PrimitiveRange> group_;
     std::vector<uint32_t> group_start_;
     std::vector<PrimitiveRange> bound_;      // primitives in start order, as bound
     std::vector<uint32_t> identity_;         // 0..n-1: the start list of the bound primitives
+    std::vector<int32_t> cycle_of_;          // multistage: object -> its cycle in stage 1, or -1
+    std::vector<uint32_t> triangle_rank_;    // multistage: this frame's triangle positions
 };
 
 } // namespace vissort

@@ -32,7 +32,9 @@ struct VisibilityOrder {
 };
 
 /// Scratch memory for visSort, owned by the caller and reused across frames, so that a frame
-/// allocates nothing in steady state. Contents between calls are unspecified.
+/// allocates nothing in steady state unless it meets a cycle (the cycle search and
+/// VisibilityOrder::cycles allocate a few small vectors per cycle). Contents between calls are
+/// unspecified.
 struct VisSortWorkspace {
     std::vector<uint32_t> unsorted, outside, candidates, position;
     std::vector<uint8_t> in_monotone_run, query, behind, in_cycle, walk_state;

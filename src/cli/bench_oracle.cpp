@@ -157,7 +157,7 @@ int runOracleBench(const BenchOptions& options) {
             Result<std::unique_ptr<GeometryOracle>> made = makeOracle(kind, environmentOracleOptions());
             if (!made) return fail(kExitFailure, made.error);
             GeometryOracle* oracle = made.value->get();
-            SceneOrderer orderer(scene, workload.level, *oracle);
+            SceneOrderer orderer(scene.objectPrimitives(), uint32_t(scene.triangleCount()), workload.level, *oracle);
             TrianglePositions positions;
             std::vector<double> ms, queries, iterations;
             for (int f = 0; f < frames; ++f) {

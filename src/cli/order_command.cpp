@@ -76,7 +76,7 @@ int runOrder(const OrderOptions& options) {
     Result<std::unique_ptr<GeometryOracle>> made = makeOracle(oracle_kind, environmentOracleOptions());
     if (!made) return fail(kExitFailure, made.error);
     std::unique_ptr<GeometryOracle> oracle = std::move(*made.value);
-    SceneOrderer orderer(*scene, level, *oracle);
+    SceneOrderer orderer(scene->objectPrimitives(), uint32_t(scene->triangleCount()), level, *oracle);
     const Bounds first_bounds = scene->positions.bounds();
     TrianglePositions positions;
     nlohmann::json frames = nlohmann::json::array();

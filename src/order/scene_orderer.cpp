@@ -4,6 +4,7 @@
 #include "vissort/scene_orderer.h"
 
 #include <algorithm>
+#include <cassert>
 #include <chrono>
 #include <numeric>
 
@@ -22,14 +23,21 @@ void addStats(VisSortStats& total, const VisSortStats& part) {
 
 } // namespace
 
-std::vector<PrimitiveRange> primitivesOf(const Scene& scene, OrderLevel level) {
-    return level == OrderLevel::object ? scene.objectPrimitives() : scene.trianglePrimitives();
+std::vector<PrimitiveRange> levelPrimitives(std::span<const PrimitiveRange> objects,
+                                            uint32_t triangle_count, OrderLevel level) {
+    if (level == OrderLevel::object) return {objects.begin(), objects.end()};
+    std::vector<PrimitiveRange> triangles(triangle_count);
+    for (uint32_t t = 0; t < triangle_count; ++t) triangles[t] = {t, 1};
+    return triangles;
 }
 
-SceneOrderer::SceneOrderer(const Scene& scene, OrderLevel level, GeometryOracle& oracle)
-    : scene_(scene), level_(level), oracle_(oracle),
-      primitives_(level == OrderLevel::triangle ? scene.trianglePrimitives()
-                                                : scene.objectPrimitives()) {}
+SceneOrderer::SceneOrderer(std::span<const PrimitiveRange> objects, uint32_t triangle_count,
+                           OrderLevel level, GeometryOracle& oracle)
+    : objects_(objects.begin(), objects.end()), triangle_count_(triangle_count), level_(level),
+      oracle_(oracle),
+      primitives_(levelPrimitives(objects, triangle_count,
+                                  level == OrderLevel::triangle ? OrderLevel::triangle
+                                                                : OrderLevel::object)) {}
 
 void SceneOrderer::sortPrimitives(PositionsView positions, const ViewProjection& view,
                                   std::span<const PrimitiveRange> primitives,
@@ -65,28 +73,35 @@ void SceneOrderer::sortFrom(PositionsView positions, const ViewProjection& view,
     }
 }
 
-FrameOrder SceneOrderer::orderFrame(PositionsView positions, const ViewProjection& view) {
+void SceneOrderer::orderFrame(PositionsView positions, const ViewProjection& view,
+                              FrameOrder& out) {
+    assert(positions.triangleCount() == triangle_count_);
     const auto start = std::chrono::steady_clock::now();
-    FrameOrder frame;
+    out.level = level_;
+    out.stats = {};
     if (level_ == OrderLevel::multistage) {
-        frame = orderMultistage(positions, view);
+        orderMultistage(positions, view, out);
     } else {
         sortPrimitives(positions, view, primitives_, previous_order_, sorted_);
-        previous_order_ = sorted_.order;
-        frame.level = level_;
-        frame.order = sorted_.order;
-        frame.cycles = sorted_.cycles;
-        frame.stats = sorted_.stats;
+        previous_order_ = sorted_.order;  // copy-assignments: the vectors keep their capacity
+        out.order = sorted_.order;
+        out.cycles = sorted_.cycles;
+        out.stats = sorted_.stats;
     }
-    frame.milliseconds =
+    out.milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+FrameOrder SceneOrderer::orderFrame(PositionsView positions, const ViewProjection& view) {
+    FrameOrder frame;
+    orderFrame(positions, view, frame);
     return frame;
 }
 
-FrameOrder SceneOrderer::orderMultistage(PositionsView positions,
-                                         const ViewProjection& view) {
-    FrameOrder frame;
-    frame.level = OrderLevel::multistage;
+void SceneOrderer::orderMultistage(PositionsView positions, const ViewProjection& view,
+                                   FrameOrder& frame) {
+    frame.order.clear();
+    frame.cycles.clear();
     // Stage 1: objects.
     sortPrimitives(positions, view, primitives_, previous_order_, sorted_);
     const VisibilityOrder& objects = sorted_;
@@ -96,13 +111,15 @@ FrameOrder SceneOrderer::orderMultistage(PositionsView positions,
     // Stage 2: a group is one object, or all objects of one cycle; groups come out whole and in
     // object order (a cycle's members are contiguous in it), and no triangle of a later group
     // occludes one of an earlier group, so ordering triangles within groups orders them all.
-    std::vector<int32_t> cycle_of(scene_.objects.size(), -1);
+    std::vector<int32_t>& cycle_of = cycle_of_;
+    cycle_of.assign(objects_.size(), -1);
     for (std::size_t c = 0; c < objects.cycles.size(); ++c)
         for (uint32_t object : objects.cycles[c]) cycle_of[object] = int32_t(c);
 
-    const std::size_t triangle_count = positions.triangleCount();
+    const std::size_t triangle_count = triangle_count_;
     const bool have_ranks = previous_triangle_rank_.size() == triangle_count;
-    std::vector<uint32_t> rank(triangle_count, 0);
+    std::vector<uint32_t>& rank = triangle_rank_;
+    rank.assign(triangle_count, 0);
     std::vector<PrimitiveRange>& group = group_;
     std::vector<uint32_t>& group_start = group_start_;
     frame.order.reserve(triangle_count);
@@ -114,7 +131,7 @@ FrameOrder SceneOrderer::orderMultistage(PositionsView positions,
                 ++end;
         group.clear();
         for (std::size_t k = i; k < end; ++k) {
-            const SceneObject& object = scene_.objects[objects.order[k]];
+            const PrimitiveRange& object = objects_[objects.order[k]];
             for (uint32_t t = 0; t < object.triangle_count; ++t)
                 group.push_back({object.first_triangle + t, 1});
         }
@@ -143,8 +160,8 @@ FrameOrder SceneOrderer::orderMultistage(PositionsView positions,
         }
         i = end;
     }
-    previous_triangle_rank_ = std::move(rank);
-    return frame;
+    // This frame's ranks become the previous ones; the old buffer is reused next frame.
+    std::swap(previous_triangle_rank_, triangle_rank_);
 }
 
 } // namespace vissort

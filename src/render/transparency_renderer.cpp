@@ -40,28 +40,25 @@ void copyCorners(PositionsView from, std::span<const uint32_t> triangles,
         }
 }
 
-// The transparent objects as a scene of their own, for ordering: their triangles renumbered from
-// 0 in object order, with the map back to the scene's triangle ids. Opaque surfaces hide
-// transparent fragments but never change the order of the visible ones, so they are left out.
+// The transparent objects, for ordering: their triangle ranges renumbered from 0 in object
+// order, with the map back to the scene's triangle ids. Opaque surfaces hide transparent
+// fragments but never change the order of the visible ones, so they are left out.
 struct TransparentPart {
-    Scene scene;
+    std::vector<PrimitiveRange> objects;  // each transparent object's range of part triangles
     std::vector<uint32_t> scene_triangle; // part triangle -> scene triangle
     bool whole = false;                   // every triangle, in order: the scene's own positions
 };
 
 TransparentPart transparentPart(const Scene& scene, const std::vector<uint8_t>& transparent) {
     TransparentPart part;
-    part.scene.name = scene.name + " (transparent)";
     for (uint32_t o = 0; o < scene.objects.size(); ++o) {
         if (!transparent[o])
             continue;
-        SceneObject object = scene.objects[o];
-        object.first_triangle = uint32_t(part.scene_triangle.size());
+        const SceneObject& object = scene.objects[o];
+        part.objects.push_back({uint32_t(part.scene_triangle.size()), object.triangle_count});
         for (uint32_t t = 0; t < object.triangle_count; ++t)
-            part.scene_triangle.push_back(scene.objects[o].first_triangle + t);
-        part.scene.objects.push_back(object);
+            part.scene_triangle.push_back(object.first_triangle + t);
     }
-    copyCorners(scene.positions, part.scene_triangle, part.scene.positions);
     part.whole = part.scene_triangle.size() == scene.triangleCount();
     return part;
 }
@@ -295,7 +292,8 @@ TransparencyRenderer::TransparencyRenderer(std::shared_ptr<GlContext> context, c
                 d.opaque_triangles.push_back(object.first_triangle + t);
     }
     d.part = transparentPart(scene, transparent);
-    d.primitives = primitivesOf(d.part.scene, settings.level);
+    d.primitives = levelPrimitives(d.part.objects, uint32_t(d.part.scene_triangle.size()),
+                                   settings.level);
     if (settings.method == BlendMethod::unsorted && !d.part.scene_triangle.empty()) {
         // Submission order, every frame the same.
         d.sequence.triangles = d.part.scene_triangle;
@@ -306,7 +304,8 @@ TransparencyRenderer::TransparencyRenderer(std::shared_ptr<GlContext> context, c
         if (!oracle) throw std::runtime_error(oracle.error);
         d.oracle = std::move(*oracle.value);
         d.oracle->setDepthTolerance(kBlendingDepthTolerance);
-        d.orderer = std::make_unique<SceneOrderer>(d.part.scene, settings.level, *d.oracle);
+        d.orderer = std::make_unique<SceneOrderer>(
+            d.part.objects, uint32_t(d.part.scene_triangle.size()), settings.level, *d.oracle);
         d.context->makeCurrent(); // a gl oracle made it current too; the same context
     }
     d.geometry = std::make_unique<detail::SceneGeometry>(scene, colours);

@@ -214,8 +214,8 @@ TEST_P(GlMatchesCpu, OrdersEqualCpuAndPassTheGroundTruth) {
         const ViewProjection view = viewOf(scene, projection, 128, 96);
         FastCpuOracle cpu;
         GlOracle gl(context());
-        SceneOrderer cpu_orderer(scene, GetParam().level, cpu);
-        SceneOrderer gl_orderer(scene, GetParam().level, gl);
+        SceneOrderer cpu_orderer(scene.objectPrimitives(), uint32_t(scene.triangleCount()), GetParam().level, cpu);
+        SceneOrderer gl_orderer(scene.objectPrimitives(), uint32_t(scene.triangleCount()), GetParam().level, gl);
         const FrameOrder expected = cpu_orderer.orderFrame(scene.positions, view);
         const FrameOrder got = gl_orderer.orderFrame(scene.positions, view);
         EXPECT_EQ(got.order, expected.order);
@@ -252,8 +252,8 @@ TEST(GlOracle, FramesOfADynamicSceneUpdateTheVertexBuffer) {
     const auto primitives = primitivesOf(scene, OrderLevel::object);
     FastCpuOracle cpu;
     GlOracle gl(context());
-    SceneOrderer cpu_orderer(scene, OrderLevel::object, cpu);
-    SceneOrderer gl_orderer(scene, OrderLevel::object, gl);
+    SceneOrderer cpu_orderer(scene.objectPrimitives(), uint32_t(scene.triangleCount()), OrderLevel::object, cpu);
+    SceneOrderer gl_orderer(scene.objectPrimitives(), uint32_t(scene.triangleCount()), OrderLevel::object, gl);
     TrianglePositions positions;
     for (int f = 0; f < 4; ++f) {
         scene.frame(f * 0.3, positions);

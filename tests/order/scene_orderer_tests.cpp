@@ -10,11 +10,24 @@
 #include "ground_truth.h"
 #include "test_scene_loading.h"
 #include "tarjan_scc.h"
+#include "vissort/oracles.h"
 #include "vissort/scene_library.h"
 #include "vissort/scene_orderer.h"
 
 namespace vissort {
 namespace {
+
+// The oracle of that kind, failing the test when it cannot be made.
+std::unique_ptr<GeometryOracle> oracleOf(OracleKind kind, const OracleOptions& options = {}) {
+    Result<std::unique_ptr<GeometryOracle>> oracle = makeOracle(kind, options);
+    EXPECT_TRUE(oracle) << oracle.error;
+    return oracle ? std::move(*oracle.value) : nullptr;
+}
+
+// An orderer of the scene's objects at a level.
+SceneOrderer ordererOf(const Scene& scene, OrderLevel level, GeometryOracle& oracle) {
+    return SceneOrderer(scene.objectPrimitives(), uint32_t(scene.triangleCount()), level, oracle);
+}
 
 struct Case {
     std::string scene;
@@ -70,8 +83,9 @@ TEST_P(OrderAgainstGroundTruth, NoOcclusionIsOrderedBackwards) {
     const Scene scene = test::loadTestScene(c.scene);
     ASSERT_FALSE(scene.objects.empty());
     const ViewProjection view = viewOf(scene, c);
-    auto oracle = makeOracle(c.oracle);
-    SceneOrderer orderer(scene, c.level, *oracle);
+    auto oracle = oracleOf(c.oracle);
+    ASSERT_TRUE(oracle);
+    SceneOrderer orderer = ordererOf(scene, c.level, *oracle);
     const FrameOrder frame = orderer.orderFrame(scene.positions, view);
 
     const auto primitives = primitivesOf(scene, c.level);
@@ -131,8 +145,9 @@ TEST(SceneOrderer, StackHasDepthComplexityOver30) {
     const ViewProjection view =
         frameCamera(*scene.camera, scene.positions.bounds(), 64, 64);
     const auto primitives = primitivesOf(scene, OrderLevel::object);
-    auto oracle = makeOracle(OracleKind::cpu);
-    SceneOrderer orderer(scene, OrderLevel::object, *oracle);
+    auto oracle = oracleOf(OracleKind::cpu);
+    ASSERT_TRUE(oracle);
+    SceneOrderer orderer = ordererOf(scene, OrderLevel::object, *oracle);
     const FrameOrder frame = orderer.orderFrame(scene.positions, view);
     const auto check = test::checkVisibilityOrder(scene.positions, view, primitives, frame.order, {});
     EXPECT_GT(check.max_depth_complexity, 30u);
@@ -143,8 +158,9 @@ TEST(SceneOrderer, StackHasDepthComplexityOver30) {
 TEST(SceneOrderer, ThreeSticksFormOneCycleOfThree) {
     const Scene scene = test::loadTestScene("tests/data/scenes/three_sticks.json");
     const ViewProjection view = frameCamera(*scene.camera, scene.positions.bounds(), 128, 128);
-    auto oracle = makeOracle(OracleKind::cpu);
-    SceneOrderer orderer(scene, OrderLevel::object, *oracle);
+    auto oracle = oracleOf(OracleKind::cpu);
+    ASSERT_TRUE(oracle);
+    SceneOrderer orderer = ordererOf(scene, OrderLevel::object, *oracle);
     const FrameOrder frame = orderer.orderFrame(scene.positions, view);
     ASSERT_EQ(frame.cycles.size(), 1u);
     EXPECT_EQ(frame.cycles[0], (std::vector<uint32_t>{0, 1, 2}));
@@ -153,8 +169,9 @@ TEST(SceneOrderer, ThreeSticksFormOneCycleOfThree) {
 TEST(SceneOrderer, CoherentFramesCostAboutLinearQueries) {
     const Scene scene = test::loadTestScene("builtin:bunnies?n=8&seed=5");
     ASSERT_TRUE(scene.isDynamic());
-    auto oracle = makeOracle(OracleKind::cpu);
-    SceneOrderer orderer(scene, OrderLevel::object, *oracle);
+    auto oracle = oracleOf(OracleKind::cpu);
+    ASSERT_TRUE(oracle);
+    SceneOrderer orderer = ordererOf(scene, OrderLevel::object, *oracle);
     const CameraSpec camera = scene.camera.value_or(defaultCamera(scene.positions.bounds()));
     TrianglePositions positions;
     for (int f = 0; f < 6; ++f) {
@@ -175,8 +192,9 @@ TEST(SceneOrderer, CoherentFramesCostAboutLinearQueries) {
 TEST(SceneOrderer, MultistageOutputsEveryTriangleOnce) {
     const Scene scene = test::loadTestScene("tests/data/scenes/interpenetrating.json");
     const ViewProjection view = frameCamera(*scene.camera, scene.positions.bounds(), 64, 64);
-    auto oracle = makeOracle(OracleKind::cpu);
-    SceneOrderer orderer(scene, OrderLevel::multistage, *oracle);
+    auto oracle = oracleOf(OracleKind::cpu);
+    ASSERT_TRUE(oracle);
+    SceneOrderer orderer = ordererOf(scene, OrderLevel::multistage, *oracle);
     FrameOrder frame = orderer.orderFrame(scene.positions, view);
     ASSERT_EQ(frame.order.size(), scene.triangleCount());
     std::sort(frame.order.begin(), frame.order.end());
@@ -192,8 +210,9 @@ TEST(MakeOracle, ConservativeModeAddsBehindAnswersAndExactOracleRefusesIt) {
     const auto primitives = primitivesOf(scene, OrderLevel::object);
     for (OracleKind kind : {OracleKind::cpu, OracleKind::cpu_reference}) {
         SCOPED_TRACE(oracleName(kind));
-        auto exact = makeOracle(kind);
-        auto conservative = makeOracle(kind, RasterMode::conservative);
+        auto exact = oracleOf(kind);
+        auto conservative = oracleOf(kind, {.mode = RasterMode::conservative});
+        ASSERT_TRUE(exact && conservative);
         exact->bind(scene.positions, view, primitives);
         conservative->bind(scene.positions, view, primitives);
         uint32_t exact_behind = 0, conservative_behind = 0;
@@ -211,7 +230,8 @@ TEST(MakeOracle, ConservativeModeAddsBehindAnswersAndExactOracleRefusesIt) {
         }
         EXPECT_GT(conservative_behind, exact_behind);
     }
-    EXPECT_THROW(makeOracle(OracleKind::exact, RasterMode::conservative), std::invalid_argument);
+    EXPECT_THROW(makeOracle(OracleKind::exact, {.mode = RasterMode::conservative}),
+                 std::invalid_argument);
 }
 
 } // namespace
