@@ -35,7 +35,9 @@ int main(int argc, char** argv) {
     const vissort::Bounds bounds = scene.positions.bounds();
     const vissort::CameraSpec camera = scene.camera.value_or(vissort::defaultCamera(bounds));
     const vissort::ViewProjection view = vissort::frameCamera(camera, bounds, 512, 512);
-    vissort::SceneOrderer orderer(scene, *level.value, **oracle.value);
+    // The orderer takes each object's triangle range, not the Scene: any mesh source will do.
+    vissort::SceneOrderer orderer(scene.objectPrimitives(), uint32_t(scene.triangleCount()),
+                                  *level.value, **oracle.value);
     const vissort::FrameOrder frame = orderer.orderFrame(scene.positions, view);
 
     std::printf("%s: %zu objects, %zu triangles, %s level\n", specification.c_str(),

@@ -44,8 +44,13 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options) {
 int runBench(const BenchOptions& options) {
     if (options.what == "oracle")
         return runOracleBench(options);
-    if (options.what == "transparency")
+    if (options.what == "transparency") {
+#if VISSORT_WITH_GL
         return runTransparencyBench(options);
+#else
+        return failWithoutGl("bench transparency");
+#endif
+    }
     if (options.what == "collision")
         return runCollisionBench(options);
     return fail(kExitUsage, "bench: unknown benchmark '" + options.what +

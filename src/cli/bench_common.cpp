@@ -2,18 +2,8 @@
 
 #include <algorithm>
 #include <charconv>
-#include <fstream>
 
 namespace vissort::cli {
-
-double secondsSince(BenchClock::time_point start) {
-    return std::chrono::duration<double>(BenchClock::now() - start).count();
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values.empty() ? 0 : values[values.size() / 2];
-}
 
 bool parseCounts(const std::string& text, std::vector<uint32_t>& counts) {
     counts.clear();
@@ -30,15 +20,6 @@ bool parseCounts(const std::string& text, std::vector<uint32_t>& counts) {
         start = comma + 1;
     }
     return !counts.empty();
-}
-
-std::string machineName() {
-    std::ifstream cpuinfo("/proc/cpuinfo");
-    std::string line;
-    while (std::getline(cpuinfo, line))
-        if (line.rfind("model name", 0) == 0)
-            return line.substr(line.find(':') + 2);
-    return "unknown CPU";
 }
 
 } // namespace vissort::cli

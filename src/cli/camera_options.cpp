@@ -61,6 +61,11 @@ int fail(int code, const std::string& message) {
     return code;
 }
 
+int failWithoutGl(const std::string& what) {
+    return fail(kExitFailure, "this vissort was built without OpenGL (VISSORT_WITH_GL=OFF): " +
+                                  what + " is not available");
+}
+
 void addViewOptions(CLI::App& command, ViewOptions& options) {
     command.add_option("--eye", options.eye, "Perspective eye position X,Y,Z");
     command.add_option("--target", options.target, "Point looked at X,Y,Z");

@@ -22,6 +22,10 @@ inline constexpr int kExitInput = 3;    // the scene or a mesh could not be load
 /// Prints "vissort: error: MESSAGE" on one line to stderr and returns code.
 int fail(int code, const std::string& message);
 
+/// A vissort built without OpenGL (VISSORT_WITH_GL=OFF): prints "vissort: error: this vissort
+/// was built without OpenGL (VISSORT_WITH_GL=OFF): WHAT is not available" and returns kExitFailure.
+int failWithoutGl(const std::string& what);
+
 struct ViewOptions {
     std::string eye, target, up, ortho_dir, size = "1024x1024", path = "static";
     std::optional<double> fov;

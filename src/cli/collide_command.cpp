@@ -6,11 +6,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli/bench_common.h"
 #include "cli/commands.h"
 #include "cli/json_output.h"
 #include "cli/obj_output.h"
 #include "vissort/collision.h"
+#include "vissort/frame_driver.h"
+#include "support/measurement.h"
 
 namespace vissort::cli {
 namespace {
@@ -102,14 +103,14 @@ int runCollide(const CollideOptions& options) {
     }
     const std::vector<PrimitiveRange> objects = scene->objectPrimitives();
     CollisionDetector detector(objects, settings);
-    TrianglePositions positions;
+    FrameDriver driver(*scene);
     CollisionResult result;
     nlohmann::json frames = nlohmann::json::array();
     std::vector<double> total_ms;
     uint64_t pair_sum = 0;
     for (int f = 0; f < options.frames; ++f) {
-        scene->frame(f * kFrameInterval, positions);
-        detector.collide(positions, result);
+        driver.seek(f);
+        detector.collide(driver.positions(), result);
         total_ms.push_back(result.stats.total_ms);
         pair_sum += result.pairs.size();
         if (!options.json_path.empty())
@@ -131,7 +132,7 @@ int runCollide(const CollideOptions& options) {
     std::cout << options.scene << ": " << scene->objects.size() << " objects, "
               << scene->triangleCount() << " triangles; method " << options.method << "\n"
               << options.frames << (options.frames == 1 ? " frame" : " frames") << ": mean " << mean
-              << " ms, median " << median(total_ms) << " ms per frame, "
+              << " ms, median " << bench::median(total_ms) << " ms per frame, "
               << double(pair_sum) / options.frames << " intersecting pairs per frame\n"
               << "last frame: " << result.stats.object_pairs << " candidate object pairs, "
               << result.stats.triangle_pairs << " candidate triangle pairs, " << result.pairs.size()
@@ -148,7 +149,7 @@ int runCollide(const CollideOptions& options) {
     if (!options.dump_path.empty() &&
         !writePrimitivesObj(options.dump_path,
                             "vissort collide: one group per object id; face i is triangle i",
-                            positions, objects))
+                            driver.positions(), objects))
         return fail(kExitFailure, "cannot write " + options.dump_path);
     return kExitOk;
 }

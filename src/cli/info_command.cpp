@@ -3,18 +3,12 @@
 #include <iostream>
 
 #include "cli/commands.h"
-#include "exact/ray_caster.h"
+#include "vissort/depth_complexity.h"
+#if VISSORT_WITH_GL
 #include "vissort/gl_context.h"
+#endif
 
 namespace vissort::cli {
-namespace {
-
-// Depth complexity is estimated by casting rays on a grid of at most this many pixels a side,
-// with the view's aspect ratio: enough for a histogram, fast on big scenes.
-constexpr uint32_t kEstimateSide = 256;
-
-} // namespace
-
 CLI::App* addInfoCommand(CLI::App& app, InfoOptions& options) {
     CLI::App* command = app.add_subcommand("info", "Describe a scene: objects, triangles, bounds, "
                                                    "depth complexity from a view");
@@ -30,6 +24,9 @@ CLI::App* addInfoCommand(CLI::App& app, InfoOptions& options) {
 namespace {
 
 int printGlInfo() {
+#if !VISSORT_WITH_GL
+    return failWithoutGl("info --gl");
+#else
     Result<std::shared_ptr<GlContext>> context = GlContext::shared();
     if (!context) return fail(kExitFailure, context.error);
     const GlContextInfo& info = (*context.value)->info();
@@ -39,6 +36,7 @@ int printGlInfo() {
               << "  EGL platform: " << info.platform
               << (info.device.empty() ? "" : " (" + info.device + ")") << '\n';
     return kExitOk;
+#endif
 }
 
 } // namespace
@@ -73,21 +71,12 @@ int runInfo(const InfoOptions& options) {
     }
     if (scene->objects.size() > 10) std::cout << "  ...\n";
 
-    const double scale = double(kEstimateSide) / std::max(view.width, view.height);
-    const uint32_t w = std::max<uint32_t>(1, uint32_t(std::lround(view.width * std::min(1.0, scale))));
-    const uint32_t h = std::max<uint32_t>(1, uint32_t(std::lround(view.height * std::min(1.0, scale))));
-    const ViewProjection vp = frameCamera(view.camera, bounds, w, h);
-    const detail::AllHits hits = detail::castAllHits(scene->positions, vp);
-    std::size_t covered = 0, most = 0;
-    for (std::size_t p = 0; p < hits.pixelCount(); ++p) {
-        const std::size_t n = hits.endHit(p) - hits.firstHit(p);
-        covered += n > 0 ? 1 : 0;
-        most = std::max(most, n);
-    }
-    std::cout << "depth complexity (" << w << 'x' << h << " rays, "
+    const DepthComplexity depth =
+        estimateDepthComplexity(scene->positions, view.camera, bounds, view.width, view.height);
+    std::cout << "depth complexity (" << depth.width << 'x' << depth.height << " rays, "
               << (view.camera.projection == Projection::perspective ? "perspective" : "orthographic")
-              << "): max " << most << ", mean " << (covered ? double(hits.hitCount()) / covered : 0.0)
-              << " over " << covered << " covered pixels\n";
+              << "): max " << depth.max << ", mean " << depth.mean << " over "
+              << depth.covered_pixels << " covered pixels\n";
     return kExitOk;
 }
 

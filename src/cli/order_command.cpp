@@ -8,6 +8,7 @@
 #include "cli/environment.h"
 #include "cli/json_output.h"
 #include "cli/obj_output.h"
+#include "vissort/frame_driver.h"
 #include "vissort/oracles.h"
 #include "vissort/scene_orderer.h"
 
@@ -77,16 +78,13 @@ int runOrder(const OrderOptions& options) {
     if (!made) return fail(kExitFailure, made.error);
     std::unique_ptr<GeometryOracle> oracle = std::move(*made.value);
     SceneOrderer orderer(scene->objectPrimitives(), uint32_t(scene->triangleCount()), level, *oracle);
-    const Bounds first_bounds = scene->positions.bounds();
-    TrianglePositions positions;
+    FrameDriver driver(*scene, view.camera, view.path, view.width, view.height);
     nlohmann::json frames = nlohmann::json::array();
     FrameOrder last;
     double total_ms = 0;
     for (int f = 0; f < view.frames; ++f) {
-        scene->frame(f * kFrameInterval, positions);
-        const CameraSpec camera = cameraOnPath(view.camera, view.path, f, first_bounds);
-        const ViewProjection vp = frameCamera(camera, positions.bounds(), view.width, view.height);
-        last = orderer.orderFrame(positions, vp);
+        driver.seek(f);
+        last = orderer.orderFrame(driver.positions(), driver.view());
         total_ms += last.milliseconds;
         if (view.frames > 1) {
             printFrame(f, last);
@@ -130,7 +128,7 @@ int runOrder(const OrderOptions& options) {
         const auto primitives = primitivesOf(*scene, level);
         if (!writePrimitivesObj(options.dump_path,
                                 "vissort primitives: one group per primitive id, world space",
-                                positions, primitives))
+                                driver.positions(), primitives))
             return fail(kExitFailure, "cannot write " + options.dump_path);
     }
     return kExitOk;

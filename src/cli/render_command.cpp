@@ -15,9 +15,11 @@
 #include "cli/comparison_strip.h"
 #include "cli/json_output.h"
 #include "vissort/collision.h"
+#include "vissort/frame_driver.h"
 #include "vissort/transparency_renderer.h"
 
 namespace vissort::cli {
+#if VISSORT_WITH_GL
 namespace {
 
 // "frame_%04d.png" and the like: exactly one %d conversion (flags 0-9 only), no other '%'.
@@ -112,13 +114,20 @@ int renderEveryMethod(const RenderOptions& options, RenderSettings settings, con
 }
 
 } // namespace
+#endif // VISSORT_WITH_GL
 
 CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
+#if VISSORT_WITH_GL
+    constexpr bool kWithGl = true;
+#else
+    constexpr bool kWithGl = false;
+#endif
     CLI::App* command =
         app.add_subcommand("render", "Render a scene's transparent objects, blended by a method");
+    // Without OpenGL nothing is required: any `render ...` reaches runRender's one-line error.
     command
         ->add_option("scene", options.scene, "Mesh file, JSON scene, or builtin:NAME?key=value&...")
-        ->required();
+        ->required(kWithGl);
     addViewOptions(*command, options.view);
     command
         ->add_option("--method", options.method,
@@ -136,7 +145,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
     command
         ->add_option("-o,--output", options.output,
                      "PNG to write; with --frames N, a pattern such as frame_%04d.png")
-        ->required();
+        ->required(kWithGl);
     command->add_option("--json", options.json_path, "Write the statistics (and error) as JSON");
     command->add_flag("--all-transparent", options.all_transparent,
                       "Treat every object as transparent with alpha --alpha");
@@ -169,6 +178,9 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
     return command;
 }
 
+#if !VISSORT_WITH_GL
+int runRender(const RenderOptions&) { return failWithoutGl("render"); }
+#else
 int runRender(const RenderOptions& options) {
     RenderSettings settings;
     const bool all_methods = options.method == "all";
@@ -246,11 +258,12 @@ int runRender(const RenderOptions& options) {
         collision_settings.threads = 0;
         collisions = std::make_unique<CollisionDetector>(scene->objectPrimitives(), collision_settings);
     }
-    const Bounds first_bounds = scene->positions.bounds();
-    TrianglePositions positions;
+    FrameDriver driver(*scene, view.camera, view.path, view.width, view.height);
     nlohmann::json frames = nlohmann::json::array();
     for (int f = 0; f < view.frames; ++f) {
-        scene->frame(f * kFrameInterval, positions);
+        driver.seek(f);
+        const PositionsView positions = driver.positions();
+        const ViewProjection& vp = driver.view();
         std::size_t highlighted = 0;
         if (collisions) {
             collisions->collide(positions, collided);
@@ -259,8 +272,6 @@ int runRender(const RenderOptions& options) {
             renderer.setHighlightedTriangles(triangles);
             if (reference) reference->setHighlightedTriangles(triangles);
         }
-        const CameraSpec camera = cameraOnPath(view.camera, view.path, f, first_bounds);
-        const ViewProjection vp = frameCamera(camera, positions.bounds(), view.width, view.height);
         RenderStats stats;
         const std::vector<uint8_t> pixels = renderer.render(positions, vp, stats).toRgba8();
         const std::string path = view.frames > 1 ? framePath(options.output, f) : options.output;
@@ -314,5 +325,7 @@ int runRender(const RenderOptions& options) {
     }
     return kExitOk;
 }
+
+#endif // VISSORT_WITH_GL
 
 } // namespace vissort::cli

@@ -51,14 +51,14 @@ inline std::vector<std::string> lines(const std::string& text) {
     return result;
 }
 
-struct Result {
+struct RunResult {
     int code = -1;   // the tool's exit status; 124 = killed by `timeout`, >= 128 = a signal
     std::string out; // stdout
     std::string err; // stderr
     std::string command;
 };
 
-inline std::ostream& operator<<(std::ostream& os, const Result& r) {
+inline std::ostream& operator<<(std::ostream& os, const RunResult& r) {
     return os << "\n  command: " << r.command << "\n  exit: " << r.code << "\n  stdout: " << r.out
               << "\n  stderr: " << r.err;
 }
@@ -79,8 +79,8 @@ protected:
     std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
     // Runs the tool; killed (code 124) after timeout_seconds: a hang fails the test, not the run.
-    Result run(const std::vector<std::string>& args, int timeout_seconds = 60) {
-        Result r;
+    RunResult run(const std::vector<std::string>& args, int timeout_seconds = 60) {
+        RunResult r;
         std::string command = "timeout " + std::to_string(timeout_seconds) + " " + shellQuote(kTool);
         for (const std::string& a : args)
             command += ' ' + shellQuote(a);
@@ -103,7 +103,7 @@ protected:
         args.insert(args.begin(), "order");
         args.push_back("--json");
         args.push_back(path(name));
-        const Result r = run(args);
+        const RunResult r = run(args);
         EXPECT_EQ(r.code, 0) << r;
         EXPECT_TRUE(r.err.empty()) << r;
         try {
@@ -117,7 +117,7 @@ protected:
     // Exactly one line on stderr, "vissort: error: ..." mentioning every needle, and the code.
     void expectError(const std::vector<std::string>& args, int code,
                      const std::vector<std::string>& needles) {
-        const Result r = run(args);
+        const RunResult r = run(args);
         EXPECT_EQ(r.code, code) << r;
         EXPECT_LT(r.code, 124) << "crashed or hung" << r;
         const auto err_lines = lines(r.err);

@@ -39,7 +39,7 @@ Png readPng(const std::string& path) {
 const std::string kSticks = dataPath("scenes/three_sticks.json");
 
 TEST_F(Cli, RenderWritesThePngTheJsonAndTheErrorMap) {
-    const Result r =
+    const RunResult r =
         run({"render", "builtin:slabs?layers=6", "--size", "64x48", "-o", path("out.png"), "--json",
              path("stats.json"), "--reference", "linked-list", "--error-map", path("error.png")});
     ASSERT_EQ(r.code, 0) << r;
@@ -83,7 +83,7 @@ TEST_F(Cli, FlatRenderOfEveryExactMethodMatchesTheRayCastABuffer) {
     const test::ABuffer reference =
         test::rayCastComposite(scene.positions, view, colours, Rgba{1, 1, 1, 1});
     for (const char* method : {"vissort", "peel", "dual-peel", "linked-list"}) {
-        const Result r =
+        const RunResult r =
             run({"render", kSticks, "--size", "96x72", "--all-transparent", "--alpha", "0.4",
                  "--shading", "flat", "--method", method, "-o", path("out.png")});
         ASSERT_EQ(r.code, 0) << r;
@@ -98,7 +98,7 @@ TEST_F(Cli, FlatRenderOfEveryExactMethodMatchesTheRayCastABuffer) {
 TEST_F(Cli, RenderRunsEveryMethodAndNamesThemInJson) {
     for (const char* method :
          {"vissort", "unsorted", "centroid", "peel", "dual-peel", "linked-list", "weighted"}) {
-        const Result r = run({"render", "builtin:bunnies?n=3", "--size", "40x30", "--method",
+        const RunResult r = run({"render", "builtin:bunnies?n=3", "--size", "40x30", "--method",
                               method, "-o", path("out.png"), "--json", path("stats.json")});
         ASSERT_EQ(r.code, 0) << r;
         EXPECT_EQ(json::parse(readFile(path("stats.json"))).value("method", ""), method);
@@ -107,7 +107,7 @@ TEST_F(Cli, RenderRunsEveryMethodAndNamesThemInJson) {
 
 // --method all: every method and its error map in one PNG, and each one's figures in the JSON.
 TEST_F(Cli, RenderEveryMethodSideBySide) {
-    const Result r = run({"render", kSticks, "--all-transparent", "--size", "40x30", "--method",
+    const RunResult r = run({"render", kSticks, "--all-transparent", "--size", "40x30", "--method",
                           "all", "-o", path("strip.png"), "--json", path("all.json")});
     ASSERT_EQ(r.code, 0) << r;
     const Png strip = readPng(path("strip.png"));
@@ -134,7 +134,7 @@ TEST_F(Cli, RenderEveryMethodSideBySide) {
 }
 
 TEST_F(Cli, RenderFramesWriteASequence) {
-    const Result r =
+    const RunResult r =
         run({"render", "builtin:bunnies?n=3", "--size", "40x30", "--frames", "3", "--path", "orbit",
              "--level", "triangle", "-o", path("frame_%02d.png"), "--json", path("stats.json")});
     ASSERT_EQ(r.code, 0) << r;
@@ -159,7 +159,7 @@ TEST_F(Cli, RenderErrorsNameTheProblem) {
     expectError({"render", kSticks, "-o", out, "--oracle", "magic"}, kUsage, {"--oracle"});
     expectError({"render", kSticks, "-o", out, "--shading", "phong"}, kUsage, {"--shading"});
     expectError({"render", kSticks, "-o", out, "--check", "maybe"}, kUsage,
-                {"--check must be", "maybe"});
+                {"--check", "unknown order check", "maybe"});
     expectError({"render", kSticks, "-o", out, "--list-memory", "0"}, kUsage, {"--list-memory"});
     expectError({"render", kSticks, "-o", out, "--error-map", path("e.png")}, kUsage,
                 {"--error-map", "--reference"});
@@ -176,7 +176,7 @@ TEST_F(Cli, RenderErrorsNameTheProblem) {
 
 // Every method and scene at every depth, errors against linked-list, in one run.
 TEST_F(Cli, BenchTransparencyMeasuresEveryMethodInOneRun) {
-    const Result r = run({"bench", "transparency", "--size", "48x32", "--depths", "2,6", "--frames",
+    const RunResult r = run({"bench", "transparency", "--size", "48x32", "--depths", "2,6", "--frames",
                           "2", "--json", path("bench.json")});
     ASSERT_EQ(r.code, 0) << r;
     const json doc = json::parse(readFile(path("bench.json")));
@@ -210,6 +210,39 @@ TEST_F(Cli, BenchTransparencyErrors) {
     expectError({"bench", "transparency", "--level", "none"}, kUsage, {"--level"});
     expectError({"bench", "transparency", "--size", "4"}, kUsage, {"--size"});
     expectError({"bench", "nothing"}, kUsage, {"nothing", "transparency"});
+}
+
+const std::string kInterpenetrating = dataPath("scenes/interpenetrating.json");
+
+// Pixels of the highlight colour (shading.h: magenta, nearly opaque), lit or not.
+int magentaPixels(const std::string& png_path) {
+    int width = 0, height = 0, channels = 0;
+    unsigned char* png = stbi_load(png_path.c_str(), &width, &height, &channels, 4);
+    if (png == nullptr)
+        return -1;
+    int count = 0;
+    for (int i = 0; i < width * height; ++i) {
+        const unsigned char* p = png + 4 * i;
+        count += p[0] > 120 && p[1] < 0.15 * p[0] && p[2] > 0.4 * p[0] && p[2] < 0.7 * p[0];
+    }
+    stbi_image_free(png);
+    return count;
+}
+
+TEST_F(Cli, RenderHighlightsCollidingTriangles) {
+    const RunResult plain =
+        run({"render", kInterpenetrating, "--size", "200x150", "-o", path("a.png")});
+    ASSERT_EQ(plain.code, 0) << plain;
+    const RunResult marked = run({"render", kInterpenetrating, "--size", "200x150", "-o",
+                               path("b.png"), "--highlight-collisions", "--json", path("b.json")});
+    ASSERT_EQ(marked.code, 0) << marked;
+    EXPECT_NE(marked.out.find("colliding triangles highlighted"), std::string::npos) << marked;
+    EXPECT_EQ(magentaPixels(path("a.png")), 0);
+    EXPECT_GT(magentaPixels(path("b.png")), 500);
+    EXPECT_GT(json::parse(readFile(path("b.json"))).value("colliding_triangles", 0), 20);
+    expectError({"render", kInterpenetrating, "--method", "all", "--highlight-collisions", "-o",
+                 path("c.png")},
+                kUsage, {"--highlight-collisions"});
 }
 
 } // namespace

@@ -1,0 +1,121 @@
+// `vissort bench collision`'s measurements (collision_bench.h).
+
+#include "collision_bench.h"
+
+#include <memory>
+#include <stdexcept>
+
+#include "support/measurement.h"
+#include "vissort/frame_driver.h"
+#include "vissort/scene.h"
+
+namespace vissort::bench {
+namespace {
+
+struct Measured {
+    std::vector<double> ms;                                        // per timed frame
+    double object_pairs = 0, triangle_pairs = 0, intersecting = 0; // means per frame
+    uint64_t missed = 0, invented = 0; // against brute, over every frame
+};
+
+// How many pairs of one sorted list the other lacks.
+uint64_t pairsMissing(const std::vector<TrianglePair>& from, const std::vector<TrianglePair>& in) {
+    uint64_t missing = 0;
+    auto other = in.begin();
+    for (const TrianglePair& p : from) {
+        while (other != in.end() && *other < p)
+            ++other;
+        missing += other == in.end() || *other != p;
+    }
+    return missing;
+}
+
+// Frame 0 builds what later frames refit, so it is not timed; methods take turns in a rotating
+// order so that none always runs on a cold cache.
+std::vector<Measured> measure(const std::vector<CollisionContender>& methods, uint32_t bunnies,
+                              int frames, std::size_t& triangles) {
+    const Result<Scene> scene = loadScene("builtin:bunnies?n=" + std::to_string(bunnies));
+    if (!scene)
+        throw std::runtime_error(scene.error);
+    triangles = scene.value->triangleCount();
+    const std::vector<PrimitiveRange> objects = scene.value->objectPrimitives();
+    std::vector<std::unique_ptr<CollisionDetector>> detectors;
+    std::size_t brute = 0;
+    for (const CollisionContender& c : methods) {
+        if (c.settings.method == CollisionMethod::brute)
+            brute = detectors.size();
+        detectors.push_back(std::make_unique<CollisionDetector>(objects, c.settings));
+    }
+    std::vector<Measured> measured(methods.size());
+    std::vector<CollisionResult> results(methods.size());
+    FrameDriver driver(*scene.value);
+    for (int f = 0; f <= frames; ++f) {
+        driver.seek(f);
+        for (std::size_t k = 0; k < methods.size(); ++k) {
+            const std::size_t i = (k + std::size_t(f)) % methods.size();
+            detectors[i]->collide(driver.positions(), results[i]);
+        }
+        if (f == 0)
+            continue;
+        for (std::size_t i = 0; i < methods.size(); ++i) {
+            const CollisionStats& s = results[i].stats;
+            Measured& m = measured[i];
+            m.ms.push_back(s.total_ms);
+            m.object_pairs += double(s.object_pairs) / frames;
+            m.triangle_pairs += double(s.triangle_pairs) / frames;
+            m.intersecting += double(s.intersecting) / frames;
+            m.missed += pairsMissing(results[brute].pairs, results[i].pairs);
+            m.invented += pairsMissing(results[i].pairs, results[brute].pairs);
+        }
+    }
+    return measured;
+}
+
+} // namespace
+
+std::vector<CollisionContender> collisionContenders() {
+    std::vector<CollisionContender> list;
+    for (CollisionMethod m : collisionMethods()) {
+        CollisionSettings settings;
+        settings.method = m;
+        if (m == CollisionMethod::vissort) {
+            settings.threads = 0;
+            list.push_back({"vissort", settings});
+            settings.threads = 1;
+            list.push_back({"vissort-1t", settings});
+        } else {
+            list.push_back({collisionMethodName(m), settings});
+        }
+    }
+    return list;
+}
+
+std::vector<CollisionBenchRow> runCollisionBench(
+    const CollisionBenchSettings& settings, const std::function<void(uint32_t)>& on_count,
+    const std::function<void(const CollisionBenchRow&)>& on_row) {
+    const std::vector<CollisionContender> methods = collisionContenders();
+    std::vector<CollisionBenchRow> rows;
+    for (uint32_t n : settings.counts) {
+        if (on_count) on_count(n);
+        std::size_t triangles = 0;
+        const std::vector<Measured> measured = measure(methods, n, settings.frames, triangles);
+        for (std::size_t i = 0; i < methods.size(); ++i) {
+            const Measured& m = measured[i];
+            CollisionBenchRow row;
+            row.bunnies = n;
+            row.triangles = triangles;
+            row.method = methods[i].name;
+            row.median_ms = median(m.ms);
+            row.object_pairs = m.object_pairs;
+            row.triangle_pairs = m.triangle_pairs;
+            row.intersecting = m.intersecting;
+            row.missed = m.missed;
+            row.invented = m.invented;
+            rows.push_back(row);
+            if (on_row) on_row(rows.back());
+        }
+    }
+    return rows;
+}
+
+} // namespace vissort::bench
