@@ -136,7 +136,9 @@ struct FastCpuOracle::Impl {
     /// Tile rows of band b of bands: [first, last).
     void bandRows(uint32_t b, uint32_t bands, int32_t& first, int32_t& last) const;
     /// The depths of one tile, kTileSize rows of kTileSize floats (fast_rows.h).
-    float* tileDepths(std::size_t tile) const { return depth_.data() + tile * kTileSize * kTileSize; }
+    float* tileDepths(std::size_t tile) const {
+        return depth_.data() + tile * kTileSize * kTileSize;
+    }
     /// Where pixel (x, y) is stored.
     float* pixel(uint32_t x, uint32_t y) const {
         return tileDepths(std::size_t(y / kTileSize) * tiles_x_ + x / kTileSize) +
@@ -500,7 +502,8 @@ uint32_t FastCpuOracle::Impl::bandsFor(std::size_t count) const {
     return std::min(threads_ * kBandsPerThread, tiles_y_);
 }
 
-void FastCpuOracle::Impl::bandRows(uint32_t b, uint32_t bands, int32_t& first, int32_t& last) const {
+void FastCpuOracle::Impl::bandRows(uint32_t b, uint32_t bands, int32_t& first,
+                                   int32_t& last) const {
     first = int32_t(uint64_t(b) * tiles_y_ / bands);
     last = int32_t(uint64_t(b + 1) * tiles_y_ / bands);
 }
