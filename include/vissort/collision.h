@@ -22,6 +22,8 @@
 
 namespace vissort {
 
+class WorkerPool;
+
 enum class CollisionMethod {
     vissort, // visibility-ordering culling along view directions, then the exact test
     brute,   // every triangle pair of every box-overlapping object pair: the ground truth
@@ -71,6 +73,9 @@ struct CollisionSettings {
     /// vissort: threads for the per-object and per-pair work, the calling thread included;
     /// 0: one per core (std::thread::hardware_concurrency). The pairs never depend on it.
     uint32_t threads = 1;
+    /// vissort: the pool those threads come from (it must outlive the detector); null: the
+    /// process's shared pool (WorkerPool::shared), grown to `threads`. Never one per detector.
+    WorkerPool* pool = nullptr;
 };
 
 /// What one frame cost and how much each stage culled.

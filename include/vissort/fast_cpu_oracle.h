@@ -19,24 +19,24 @@
 //    before and their bounds updated after, without the per-tile set-up that costs more than
 //    the few pixels it has in each tile;
 //  - backToFrontPass and queryAgainst can split the tile rows into screen bands (one per thread,
-//    claimed in turn): each band runs the whole sequence on its own tiles, and the answers are
-//    OR-ed across bands. Off by default (FastCpuOracleOptions::threads).
+//    claimed in turn) on a WorkerPool (worker_pool.h): each band runs the whole sequence on its
+//    own tiles, and the answers are OR-ed across bands. Off by default
+//    (FastCpuOracleOptions::threads).
 // Conservative mode (FastCpuOracleOptions::mode, for collision culling) matches
 // CpuOracle(RasterMode::conservative) the same way: each edge's bias grows to its rise over half a
 // pixel and the snapping margin, the pixel range to every square the grown snapped box touches,
 // and each fragment moves by the set-up's depth spread over the pixel (nearer for draws, farther
 // for queries) before it is rounded; the tile shortcuts then hold unchanged.
 
-#include <array>
-#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <span>
-#include <vector>
 
 #include "vissort/geometry_oracle.h"
 
 namespace vissort {
+
+class WorkerPool;  // worker_pool.h
 
 /// What the oracle did since bind (or resetStats), for benchmarks and tests.
 struct FastCpuOracleStats {
@@ -53,32 +53,24 @@ struct FastCpuOracleOptions {
     /// Exact or conservative sampling, with CpuOracle's rules for each (cpu_oracle.h): the same
     /// answers and depth buffer as CpuOracle(mode).
     RasterMode mode = RasterMode::exact;
-    /// Walk rows 8 pixels at a time with AVX2 when the CPU supports it (checked once). The
-    /// environment variable VISSORT_SIMD=0 also turns it off (for benchmarks of the fallback).
+    /// Walk rows 8 pixels at a time with AVX2 when the CPU supports it (checked once); false
+    /// forces the scalar fallback (for benchmarks of it).
     bool allow_simd = true;
     /// Threads for the pass-level batches (backToFrontPass, queryAgainst), the calling thread
-    /// included; 1 = all work on the calling thread. 0 (the default) = the environment variable
-    /// VISSORT_THREADS if set (VISSORT_THREADS=0: std::thread::hardware_concurrency()), else 1.
+    /// included, clamped to [1, 256]: 1 (the default) = all work on the calling thread;
+    /// 0 = std::thread::hardware_concurrency(). Ignored when pool is given (its threads are used).
     /// Why not every core by default: on the 2-core reference machine a banded pass 1 alone runs
     /// 1.7x faster, but triangle-level Vis-sort of the bunnies got slower per frame (the set-ups
     /// and tiles a worker touched migrate back to the calling thread's core for the next bind,
-    /// pass 2 and the group tests). The workers start on the first parallel pass and live as long
-    /// as the oracle.
-    uint32_t threads = 0;
+    /// pass 2 and the group tests).
+    uint32_t threads = 1;
     /// Passes with fewer primitives than this stay on the calling thread: waking the workers
     /// costs more than a small pass (tests set 0 to exercise the bands on small inputs).
     uint32_t parallel_threshold = 1024;
+    /// The workers for the bands; must outlive the oracle. Null = WorkerPool::shared(), grown to
+    /// threads on the first parallel pass (one pool per process, however many oracles).
+    WorkerPool* pool = nullptr;
 };
-
-namespace detail {
-class FastWorkerPool;
-struct TileWalk;
-struct TileDraw;
-struct SmallWalk;
-struct SmallDraw;
-struct FastSetup;
-enum class LaneSetup : uint8_t;
-} // namespace detail
 
 class FastCpuOracle final : public GeometryOracle {
 public:
@@ -98,7 +90,7 @@ public:
     void bind(PositionsView positions, const ViewProjection& view,
               std::span<const PrimitiveRange> primitives) override;
 
-    uint32_t primitiveCount() const override { return uint32_t(primitives_.size()); }
+    uint32_t primitiveCount() const override;
     void clear() override;
     /// Depth test LESS, writes on. primitive must be < primitiveCount().
     void draw(uint32_t primitive) override;
@@ -116,97 +108,23 @@ public:
                       std::span<uint8_t> behind) override;
 
     /// True when rows are walked with AVX2 (allowed, and the CPU has it).
-    bool usesSimd() const { return use_simd_; }
+    bool usesSimd() const;
     /// Threads the pass-level batches use (at least 1).
-    uint32_t threadCount() const { return threads_; }
+    uint32_t threadCount() const;
 
     /// The depth buffer: width() * height() floats, row-major from the top row; equal bit for bit
     /// to CpuOracle's after the same clears and draws. (Clears are lazy, per tile: this writes
     /// out the tiles still waiting for one.)
     std::span<const float> depthBuffer() const;
-    uint32_t width() const { return width_; }
-    uint32_t height() const { return height_; }
-    /// Fan triangles set up by the last bind (clipping may split or drop triangles).
-    std::size_t setupCount() const;
+    uint32_t width() const;
+    uint32_t height() const;
 
-    const FastCpuOracleStats& stats() const { return stats_; }
-    void resetStats() { stats_ = {}; }
+    const FastCpuOracleStats& stats() const;
+    void resetStats();
 
 private:
-    /// Walks the tiles of s in tile rows [ty_begin, ty_end); counts into stats.
-    template <bool kDraw>
-    bool rasterize(const detail::FastSetup& s, int32_t ty_begin, int32_t ty_end,
-                   FastCpuOracleStats& stats);
-    /// rasterize for a triangle whose pixel bounds span at most detail::kSmallTiles tiles each
-    /// way (most triangles of a detailed mesh): one walk over its bounds (fast_rows.h), the tiles
-    /// cleared and culled beforehand, their bounds updated after, none of the per-tile set-up that
-    /// costs more than the few pixels a small triangle has in each tile. Rows of tile rows
-    /// [ty_first, ty_last] only.
-    template <bool kDraw>
-    bool rasterizeSmall(const detail::FastSetup& s, int32_t ty_first, int32_t ty_last,
-                        FastCpuOracleStats& stats);
-    /// Runs band(b, stats of b) for b = 0..bands-1 on the calling thread and the workers (each
-    /// claims the next band when done); then adds the bands' tile counts to stats_.
-    template <class Band>
-    void runBands(uint32_t bands, Band&& band);
-    /// Bands for a pass over count primitives: 1 when small or single-threaded, else a few per
-    /// thread, at most one per tile row.
-    uint32_t bandsFor(std::size_t count) const;
-    /// Tile rows of band b of bands: [first, last).
-    void bandRows(uint32_t b, uint32_t bands, int32_t& first, int32_t& last) const;
-    /// The depths of one tile, kTileSize rows of kTileSize floats (fast_rows.h).
-    float* tileDepths(std::size_t tile) const { return depth_.data() + tile * kTileSize * kTileSize; }
-    /// Where pixel (x, y) is stored.
-    float* pixel(uint32_t x, uint32_t y) const {
-        return tileDepths(std::size_t(y / kTileSize) * tiles_x_ + x / kTileSize) +
-               (y % kTileSize) * kTileSize + x % kTileSize;
-    }
-    /// Writes out the pending clear of one tile: its pixels +infinity, bounds +infinity.
-    void clearTile(std::size_t tile) const;
-
-    uint32_t width_ = 0, height_ = 0;
-    uint32_t tiles_x_ = 0, tiles_y_ = 0;
-    std::vector<PrimitiveRange> primitives_;
-    // Primitive p's fan triangles are setups_[primitive_setups_[p], primitive_setups_[p + 1]).
-    std::vector<uint32_t> primitive_setups_;
-    std::vector<detail::FastSetup> setups_;
-    std::vector<uint32_t> bind_triangles_;  // the triangles of every primitive, in bind order
-    // Per tile, in one struct so that a tile's bounds and epoch share a cache line (the tiles a
-    // pass touches are scattered over a buffer larger than the caches: one miss, not three).
-    // Clearing is lazy: clear() starts a new epoch, and a tile whose epoch is older holds only
-    // +infinity, whatever its pixels say, until clearTile writes that out (on its first draw, or
-    // in depthBuffer(), which is why the states are mutable: the logical contents never change).
-    // min is a lower bound on every stored depth (exact after a depth-tested draw; after a draw
-    // whose fragments all pass, its depth bounds' lower end rounded to float); max is an upper
-    // bound on every stored depth (exact after clear and after a depth-tested draw that covers
-    // the whole tile, the upper end rounded after a passing draw that covers it, otherwise left
-    // as it was: stored depths only decrease).
-    struct TileState {
-        float min, max;
-        uint64_t epoch;
-    };
-    mutable std::vector<float> depth_;      // tile by tile (fast_rows.h), padded to whole tiles
-    mutable std::vector<float> row_major_;  // depthBuffer()'s copy
-    mutable std::vector<TileState> tiles_;
-    uint64_t epoch_ = 1;
-    FastCpuOracleStats stats_;
-
-    bool conservative_ = false;
-    bool use_simd_ = false;
-    // The pixel walks (src/raster/fast_rows.h): AVX2 or scalar, chosen at construction.
-    void (*draw_tile_)(const detail::TileWalk&, detail::TileDraw&) = nullptr;
-    bool (*query_tile_)(const detail::TileWalk&) = nullptr;
-    void (*fill_tile_)(const detail::TileWalk&) = nullptr;
-    void (*draw_small_)(const detail::SmallWalk&, detail::SmallDraw&) = nullptr;
-    bool (*query_small_)(const detail::SmallWalk&) = nullptr;
-    // The batch set-up (src/raster/fast_setup.h): AVX2, or null for the scalar one only.
-    void (*setup_quad_)(const std::array<double, 16>&, const float*, const float*, const float*,
-                        const uint32_t*, uint32_t, uint32_t, detail::FastSetup*,
-                        detail::LaneSetup*) = nullptr;
-    uint32_t threads_ = 1;
-    uint32_t parallel_threshold_ = 0;
-    std::unique_ptr<detail::FastWorkerPool> pool_;  // started on the first parallel pass
-    std::vector<FastCpuOracleStats> band_stats_;    // one per band, reused
+    struct Impl;  // src/raster/fast_cpu_oracle.cpp
+    std::unique_ptr<Impl> impl_;
 };
 
 } // namespace vissort

@@ -16,7 +16,7 @@
 #include "collide/object_culling.h"
 #include "collide/refit_bvh.h"
 #include "collide/triangle_intersection.h"
-#include "raster/fast_worker_pool.h"
+#include "vissort/worker_pool.h"
 
 namespace vissort::detail {
 namespace {
@@ -29,8 +29,11 @@ public:
           threads_(settings.threads != 0 ? settings.threads
                                          : std::max(1u, std::thread::hardware_concurrency())),
           workers_(threads_) {
-        if (threads_ > 1)
-            pool_ = std::make_unique<FastWorkerPool>(threads_);
+        if (threads_ > 1) {
+            pool_ = settings.pool != nullptr ? settings.pool : &WorkerPool::shared();
+            pool_->reserve(threads_);
+            threads_ = std::min(threads_, pool_->threadCount());
+        }
     }
 
     void collide(PositionsView positions, CollisionResult& result) override {
@@ -136,7 +139,7 @@ private:
     std::vector<RefitBvh> trees_;
     uint32_t threads_;
     std::vector<Worker> workers_;
-    std::unique_ptr<FastWorkerPool> pool_;
+    WorkerPool* pool_ = nullptr;  // the caller's or the shared one; null: single-threaded
     CandidatePairs candidates_;
     std::vector<Box3f> object_boxes_;
     std::vector<uint32_t> sweep_order_; // overlappingBoxPairs' scratch

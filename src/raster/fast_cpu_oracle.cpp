@@ -23,16 +23,15 @@
 #include <cassert>
 #include <atomic>
 #include <cmath>
-#include <cstdlib>
-#include <cstring>
 #include <limits>
 #include <thread>
 #include <type_traits>
+#include <vector>
 
 #include "raster/cpu_rasterizer.h"
 #include "raster/fast_rows.h"
 #include "raster/fast_setup.h"
-#include "raster/fast_worker_pool.h"
+#include "vissort/worker_pool.h"
 
 namespace vissort {
 namespace {
@@ -99,34 +98,123 @@ double rowTerm(const detail::FastSetup& s, int32_t y) { return s.ddy * ((double(
 
 } // namespace
 
-FastCpuOracle::FastCpuOracle() : FastCpuOracle(Options{}) {}
+// Everything behind FastCpuOracle's interface. Its methods are the oracle's: each public method
+// makes one call here, and the per-tile and per-pixel loops run without further indirection.
+struct FastCpuOracle::Impl {
+    explicit Impl(const Options& options);
 
-FastCpuOracle::FastCpuOracle(const Options& options)
+    void bind(PositionsView positions, const ViewProjection& view,
+              std::span<const PrimitiveRange> primitives);
+    void draw(uint32_t primitive);
+    bool anyBehind(uint32_t primitive);
+    // The banded passes; bands >= 2 (bandsFor), else the oracle runs the sequential definition.
+    void backToFrontPass(uint32_t bands, std::span<const uint32_t> sequence,
+                         std::span<const uint8_t> query, std::span<uint8_t> behind);
+    void queryAgainst(uint32_t bands, std::span<const uint32_t> occluders,
+                      std::span<const uint32_t> targets, std::span<uint8_t> behind);
+    std::span<const float> depthBuffer() const;
+
+    /// Walks the tiles of s in tile rows [ty_begin, ty_end); counts into stats.
+    template <bool kDraw>
+    bool rasterize(const detail::FastSetup& s, int32_t ty_begin, int32_t ty_end,
+                   FastCpuOracleStats& stats);
+    /// rasterize for a triangle whose pixel bounds span at most detail::kSmallTiles tiles each
+    /// way (most triangles of a detailed mesh): one walk over its bounds (fast_rows.h), the tiles
+    /// cleared and culled beforehand, their bounds updated after, none of the per-tile set-up that
+    /// costs more than the few pixels a small triangle has in each tile. Rows of tile rows
+    /// [ty_first, ty_last] only.
+    template <bool kDraw>
+    bool rasterizeSmall(const detail::FastSetup& s, int32_t ty_first, int32_t ty_last,
+                        FastCpuOracleStats& stats);
+    /// Runs band(b, stats of b) for b = 0..bands-1 on the calling thread and the pool's workers
+    /// (each claims the next band when done); then adds the bands' tile counts to stats_.
+    template <class Band>
+    void runBands(uint32_t bands, Band&& band);
+    /// Bands for a pass over count primitives: 1 when small or single-threaded, else a few per
+    /// thread, at most one per tile row.
+    uint32_t bandsFor(std::size_t count) const;
+    /// Tile rows of band b of bands: [first, last).
+    void bandRows(uint32_t b, uint32_t bands, int32_t& first, int32_t& last) const;
+    /// The depths of one tile, kTileSize rows of kTileSize floats (fast_rows.h).
+    float* tileDepths(std::size_t tile) const {
+        return depth_.data() + tile * kTileSize * kTileSize;
+    }
+    /// Where pixel (x, y) is stored.
+    float* pixel(uint32_t x, uint32_t y) const {
+        return tileDepths(std::size_t(y / kTileSize) * tiles_x_ + x / kTileSize) +
+               (y % kTileSize) * kTileSize + x % kTileSize;
+    }
+    /// Writes out the pending clear of one tile: its pixels +infinity, bounds +infinity.
+    void clearTile(std::size_t tile) const;
+
+    uint32_t width_ = 0, height_ = 0;
+    uint32_t tiles_x_ = 0, tiles_y_ = 0;
+    std::vector<PrimitiveRange> primitives_;
+    // Primitive p's fan triangles are setups_[primitive_setups_[p], primitive_setups_[p + 1]).
+    std::vector<uint32_t> primitive_setups_;
+    std::vector<detail::FastSetup> setups_;
+    std::vector<uint32_t> bind_triangles_;  // the triangles of every primitive, in bind order
+    // Per tile, in one struct so that a tile's bounds and epoch share a cache line (the tiles a
+    // pass touches are scattered over a buffer larger than the caches: one miss, not three).
+    // Clearing is lazy: clear() starts a new epoch, and a tile whose epoch is older holds only
+    // +infinity, whatever its pixels say, until clearTile writes that out (on its first draw, or
+    // in depthBuffer(), which is why the states are mutable: the logical contents never change).
+    // min is a lower bound on every stored depth (exact after a depth-tested draw; after a draw
+    // whose fragments all pass, its depth bounds' lower end rounded to float); max is an upper
+    // bound on every stored depth (exact after clear and after a depth-tested draw that covers
+    // the whole tile, the upper end rounded after a passing draw that covers it, otherwise left
+    // as it was: stored depths only decrease).
+    struct TileState {
+        float min, max;
+        uint64_t epoch;
+    };
+    mutable std::vector<float> depth_;      // tile by tile (fast_rows.h), padded to whole tiles
+    mutable std::vector<float> row_major_;  // depthBuffer()'s copy
+    mutable std::vector<TileState> tiles_;
+    uint64_t epoch_ = 1;
+    FastCpuOracleStats stats_;
+    // The oracle's depthTolerance(), copied here by every draw, query and pass.
+    float depth_tolerance_ = kDepthTolerance;
+
+    bool conservative_ = false;
+    bool use_simd_ = false;
+    // The pixel walks (src/raster/fast_rows.h): AVX2 or scalar, chosen at construction.
+    void (*draw_tile_)(const detail::TileWalk&, detail::TileDraw&) = nullptr;
+    bool (*query_tile_)(const detail::TileWalk&) = nullptr;
+    void (*fill_tile_)(const detail::TileWalk&) = nullptr;
+    void (*draw_small_)(const detail::SmallWalk&, detail::SmallDraw&) = nullptr;
+    bool (*query_small_)(const detail::SmallWalk&) = nullptr;
+    // The batch set-up (src/raster/fast_setup.h): AVX2, or null for the scalar one only.
+    void (*setup_quad_)(const std::array<double, 16>&, const float*, const float*, const float*,
+                        const uint32_t*, uint32_t, uint32_t, detail::FastSetup*,
+                        detail::LaneSetup*) = nullptr;
+    uint32_t threads_ = 1;
+    uint32_t parallel_threshold_ = 0;
+    // The caller's pool (Options::pool), or WorkerPool::shared() from the first parallel pass.
+    WorkerPool* pool_ = nullptr;
+    std::vector<FastCpuOracleStats> band_stats_;  // one per band, reused
+};
+
+FastCpuOracle::Impl::Impl(const Options& options)
     : conservative_(options.mode == RasterMode::conservative) {
-    bool allow_simd = options.allow_simd;
-    if (const char* simd = std::getenv("VISSORT_SIMD"); simd != nullptr && std::strcmp(simd, "0") == 0)
-        allow_simd = false;
-    const detail::RowKernels kernels = detail::selectRowKernels(allow_simd, use_simd_);
+    const detail::RowKernels kernels = detail::selectRowKernels(options.allow_simd, use_simd_);
     draw_tile_ = kernels.draw;
     query_tile_ = kernels.query;
     fill_tile_ = kernels.fill;
     draw_small_ = kernels.draw_small;
     query_small_ = kernels.query_small;
     if (use_simd_) setup_quad_ = detail::avx2SetupQuad();  // the same AVX2 check
-    threads_ = options.threads;
-    if (threads_ == 0) {
-        const char* env = std::getenv("VISSORT_THREADS");
-        threads_ = env == nullptr ? 1 : uint32_t(std::strtoul(env, nullptr, 10));
-        if (threads_ == 0) threads_ = std::thread::hardware_concurrency();
+    threads_ = options.threads == 0 ? std::thread::hardware_concurrency() : options.threads;
+    if (options.pool != nullptr) {
+        pool_ = options.pool;
+        threads_ = pool_->threadCount();
     }
     threads_ = std::clamp<uint32_t>(threads_, 1, 256);
     parallel_threshold_ = options.parallel_threshold;
 }
 
-FastCpuOracle::~FastCpuOracle() = default;
-
-void FastCpuOracle::bind(PositionsView positions, const ViewProjection& view,
-                         std::span<const PrimitiveRange> primitives) {
+void FastCpuOracle::Impl::bind(PositionsView positions, const ViewProjection& view,
+                               std::span<const PrimitiveRange> primitives) {
     assert(view.width >= 1 && view.width <= detail::kMaxViewportSize);
     assert(view.height >= 1 && view.height <= detail::kMaxViewportSize);
     assert(positions.y.size() == positions.x.size() && positions.z.size() == positions.x.size());
@@ -191,16 +279,12 @@ void FastCpuOracle::bind(PositionsView positions, const ViewProjection& view,
     epoch_ = 1;  // every tile pending a clear
 }
 
-std::size_t FastCpuOracle::setupCount() const { return setups_.size(); }
-
-void FastCpuOracle::clear() { ++epoch_; }
-
-void FastCpuOracle::clearTile(std::size_t tile) const {
+void FastCpuOracle::Impl::clearTile(std::size_t tile) const {
     std::fill_n(depth_.begin() + std::ptrdiff_t(tile * kTilePixels), kTilePixels, kInfinity);
     tiles_[tile] = {kInfinity, kInfinity, epoch_};
 }
 
-std::span<const float> FastCpuOracle::depthBuffer() const {
+std::span<const float> FastCpuOracle::Impl::depthBuffer() const {
     for (std::size_t tile = 0; tile < tiles_.size(); ++tile)
         if (tiles_[tile].epoch != epoch_) clearTile(tile);
     row_major_.resize(std::size_t(width_) * height_);
@@ -211,8 +295,8 @@ std::span<const float> FastCpuOracle::depthBuffer() const {
 }
 
 template <bool kDraw>
-bool FastCpuOracle::rasterize(const detail::FastSetup& s, int32_t ty_begin, int32_t ty_end,
-                              FastCpuOracleStats& stats) {
+bool FastCpuOracle::Impl::rasterize(const detail::FastSetup& s, int32_t ty_begin, int32_t ty_end,
+                                    FastCpuOracleStats& stats) {
     const int32_t tx_first = s.px_min >> kTileShift, tx_last = s.px_max >> kTileShift;
     const int32_t ty_first = std::max(s.py_min >> kTileShift, ty_begin);
     const int32_t ty_last = std::min(s.py_max >> kTileShift, ty_end - 1);
@@ -332,8 +416,8 @@ bool FastCpuOracle::rasterize(const detail::FastSetup& s, int32_t ty_begin, int3
 }
 
 template <bool kDraw>
-bool FastCpuOracle::rasterizeSmall(const detail::FastSetup& s, int32_t ty_first, int32_t ty_last,
-                                   FastCpuOracleStats& stats) {
+bool FastCpuOracle::Impl::rasterizeSmall(const detail::FastSetup& s, int32_t ty_first,
+                                         int32_t ty_last, FastCpuOracleStats& stats) {
     detail::SmallWalk walk;
     walk.depth = depth_.data();
     walk.tiles_x = tiles_x_;
@@ -391,14 +475,14 @@ bool FastCpuOracle::rasterizeSmall(const detail::FastSetup& s, int32_t ty_first,
     }
 }
 
-void FastCpuOracle::draw(uint32_t primitive) {
+void FastCpuOracle::Impl::draw(uint32_t primitive) {
     assert(primitive < primitives_.size());
     ++stats_.draws;
     const uint32_t first = primitive_setups_[primitive], last = primitive_setups_[primitive + 1];
     for (uint32_t i = first; i < last; ++i) rasterize<true>(setups_[i], 0, int32_t(tiles_y_), stats_);
 }
 
-bool FastCpuOracle::anyBehind(uint32_t primitive) {
+bool FastCpuOracle::Impl::anyBehind(uint32_t primitive) {
     assert(primitive < primitives_.size());
     ++stats_.queries;
     const uint32_t first = primitive_setups_[primitive], last = primitive_setups_[primitive + 1];
@@ -413,21 +497,25 @@ bool FastCpuOracle::anyBehind(uint32_t primitive) {
 // one thread 6.0 ms. Bands are still claimed in turn, so more per thread is one constant away.
 constexpr uint32_t kBandsPerThread = 1;
 
-uint32_t FastCpuOracle::bandsFor(std::size_t count) const {
+uint32_t FastCpuOracle::Impl::bandsFor(std::size_t count) const {
     if (threads_ <= 1 || count < parallel_threshold_ || count == 0 || tiles_y_ < 2) return 1;
     return std::min(threads_ * kBandsPerThread, tiles_y_);
 }
 
-void FastCpuOracle::bandRows(uint32_t b, uint32_t bands, int32_t& first, int32_t& last) const {
+void FastCpuOracle::Impl::bandRows(uint32_t b, uint32_t bands, int32_t& first,
+                                   int32_t& last) const {
     first = int32_t(uint64_t(b) * tiles_y_ / bands);
     last = int32_t(uint64_t(b + 1) * tiles_y_ / bands);
 }
 
 template <class Band>
-void FastCpuOracle::runBands(uint32_t bands, Band&& band) {
+void FastCpuOracle::Impl::runBands(uint32_t bands, Band&& band) {
     if (band_stats_.size() < bands) band_stats_.resize(threads_ * kBandsPerThread);  // once
     for (uint32_t b = 0; b < bands; ++b) band_stats_[b] = {};
-    if (!pool_) pool_ = std::make_unique<detail::FastWorkerPool>(threads_);
+    if (pool_ == nullptr) {
+        pool_ = &WorkerPool::shared();
+        pool_->reserve(threads_);  // grown once, to the largest count an oracle asks
+    }
     struct Context {
         std::remove_reference_t<Band>* band;
         FastCpuOracleStats* stats;
@@ -459,15 +547,10 @@ void FastCpuOracle::runBands(uint32_t bands, Band&& band) {
 // it is behind in some tile, so the answer is the OR over bands. Answers are set to 0 first, then
 // a band that finds a fragment behind stores 1 (a relaxed atomic store: every writer writes the
 // same value, and the pool's join publishes it); a band skips a query another band has answered.
-void FastCpuOracle::backToFrontPass(std::span<const uint32_t> sequence,
-                                    std::span<const uint8_t> query, std::span<uint8_t> behind) {
-    assert(query.size() == sequence.size() && behind.size() == sequence.size());
-    const uint32_t bands = bandsFor(sequence.size());
-    if (bands <= 1) {
-        OcclusionOracle::backToFrontPass(sequence, query, behind);
-        return;
-    }
-    clear();
+void FastCpuOracle::Impl::backToFrontPass(uint32_t bands, std::span<const uint32_t> sequence,
+                                          std::span<const uint8_t> query,
+                                          std::span<uint8_t> behind) {
+    ++epoch_;  // clear()
     for (std::size_t i = 0; i < sequence.size(); ++i) {
         assert(sequence[i] < primitives_.size());
         if (query[i]) {
@@ -499,15 +582,10 @@ void FastCpuOracle::backToFrontPass(std::span<const uint32_t> sequence,
 
 // As backToFrontPass: each band draws every occluder into its rows, then answers every target
 // there; the answers are OR-ed across bands.
-void FastCpuOracle::queryAgainst(std::span<const uint32_t> occluders,
-                                 std::span<const uint32_t> targets, std::span<uint8_t> behind) {
-    assert(behind.size() == targets.size());
-    const uint32_t bands = bandsFor(occluders.size() + targets.size());
-    if (bands <= 1) {
-        OcclusionOracle::queryAgainst(occluders, targets, behind);
-        return;
-    }
-    clear();
+void FastCpuOracle::Impl::queryAgainst(uint32_t bands, std::span<const uint32_t> occluders,
+                                       std::span<const uint32_t> targets,
+                                       std::span<uint8_t> behind) {
+    ++epoch_;  // clear()
     std::fill(behind.begin(), behind.end(), uint8_t(0));
     stats_.draws += occluders.size();
     stats_.queries += targets.size();
@@ -532,6 +610,63 @@ void FastCpuOracle::queryAgainst(std::span<const uint32_t> occluders,
                 }
         }
     });
+}
+
+// The interface: one call into Impl each.
+
+FastCpuOracle::FastCpuOracle() : FastCpuOracle(Options{}) {}
+
+FastCpuOracle::FastCpuOracle(const Options& options) : impl_(std::make_unique<Impl>(options)) {}
+
+FastCpuOracle::~FastCpuOracle() = default;
+
+void FastCpuOracle::bind(PositionsView positions, const ViewProjection& view,
+                         std::span<const PrimitiveRange> primitives) {
+    impl_->bind(positions, view, primitives);
+}
+
+uint32_t FastCpuOracle::primitiveCount() const { return uint32_t(impl_->primitives_.size()); }
+void FastCpuOracle::clear() { ++impl_->epoch_; }
+std::span<const float> FastCpuOracle::depthBuffer() const { return impl_->depthBuffer(); }
+bool FastCpuOracle::usesSimd() const { return impl_->use_simd_; }
+uint32_t FastCpuOracle::threadCount() const { return impl_->threads_; }
+uint32_t FastCpuOracle::width() const { return impl_->width_; }
+uint32_t FastCpuOracle::height() const { return impl_->height_; }
+const FastCpuOracleStats& FastCpuOracle::stats() const { return impl_->stats_; }
+void FastCpuOracle::resetStats() { impl_->stats_ = {}; }
+
+void FastCpuOracle::draw(uint32_t primitive) {
+    impl_->depth_tolerance_ = depth_tolerance_;
+    impl_->draw(primitive);
+}
+
+bool FastCpuOracle::anyBehind(uint32_t primitive) {
+    impl_->depth_tolerance_ = depth_tolerance_;
+    return impl_->anyBehind(primitive);
+}
+
+void FastCpuOracle::backToFrontPass(std::span<const uint32_t> sequence,
+                                    std::span<const uint8_t> query, std::span<uint8_t> behind) {
+    assert(query.size() == sequence.size() && behind.size() == sequence.size());
+    const uint32_t bands = impl_->bandsFor(sequence.size());
+    if (bands <= 1) {
+        OcclusionOracle::backToFrontPass(sequence, query, behind);
+        return;
+    }
+    impl_->depth_tolerance_ = depth_tolerance_;
+    impl_->backToFrontPass(bands, sequence, query, behind);
+}
+
+void FastCpuOracle::queryAgainst(std::span<const uint32_t> occluders,
+                                 std::span<const uint32_t> targets, std::span<uint8_t> behind) {
+    assert(behind.size() == targets.size());
+    const uint32_t bands = impl_->bandsFor(occluders.size() + targets.size());
+    if (bands <= 1) {
+        OcclusionOracle::queryAgainst(occluders, targets, behind);
+        return;
+    }
+    impl_->depth_tolerance_ = depth_tolerance_;
+    impl_->queryAgainst(bands, occluders, targets, behind);
 }
 
 } // namespace vissort

@@ -14,11 +14,13 @@
 #include <cstring>
 #include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "vissort/cpu_oracle.h"
 #include "vissort/scene.h"
 #include "vissort/vis_sort.h"
+#include "vissort/worker_pool.h"
 
 namespace vissort {
 namespace {
@@ -470,7 +472,12 @@ TEST(FastCpuOracle, OptionsChooseTheRowWalkAndThreads) {
     EXPECT_FALSE(scalar.usesSimd());
     EXPECT_EQ(scalar.threadCount(), 3u);
     const FastCpuOracle defaults;
-    EXPECT_GE(defaults.threadCount(), 1u);
+    EXPECT_EQ(defaults.threadCount(), 1u);  // all work on the calling thread unless asked
+    options.threads = 0;                    // one per core
+    const FastCpuOracle per_core(options);
+    EXPECT_EQ(per_core.threadCount(), std::clamp(std::thread::hardware_concurrency(), 1u, 256u));
+    options.threads = 1000;
+    EXPECT_EQ(FastCpuOracle(options).threadCount(), 256u);
 }
 
 TEST(FastCpuOracle, PassesOnALargeViewportMatchWithEveryBandCount) {
@@ -521,6 +528,145 @@ TEST(FastCpuOracle, VisSortOrderMatchesReferenceOnBunnies) {
             }
         }
     }
+}
+
+// What one oracle leaves after Vis-sort over a scene: for comparing runs.
+struct SortRun {
+    VisibilityOrder order;
+    std::vector<float> depths;
+    uint64_t draws = 0, queries = 0;
+};
+
+SortRun sortWith(const FastCpuOracleOptions& options, const Scene& scene,
+                 const ViewProjection& view, std::span<const PrimitiveRange> primitives,
+                 std::span<const uint32_t> start) {
+    FastCpuOracle fast(options);
+    fast.bind(scene.positions, view, primitives);
+    SortRun run;
+    run.order = visSort(fast, start);
+    const std::span<const float> depths = fast.depthBuffer();
+    run.depths.assign(depths.begin(), depths.end());
+    run.draws = fast.stats().draws;
+    run.queries = fast.stats().queries;
+    return run;
+}
+
+void expectSameRun(const SortRun& got, const SortRun& expected) {
+    EXPECT_EQ(got.order.order, expected.order.order);
+    EXPECT_EQ(got.order.cycles, expected.order.cycles);
+    EXPECT_EQ(got.order.stats.queries, expected.order.stats.queries);
+    EXPECT_EQ(got.draws, expected.draws);
+    EXPECT_EQ(got.queries, expected.queries);
+    EXPECT_TRUE(sameBits(got.depths, expected.depths));
+}
+
+// Two oracles with 2 threads each, sorting from two threads at once (they share
+// WorkerPool::shared(), whose runs take turns): the same orders, counts and depth buffers as the
+// same sorts one after the other. Run under ThreadSanitizer in CI (scripts/test.sh --tsan).
+TEST(FastCpuOracleThreads, TwoOraclesOnTwoThreadsMatchSequentialRuns) {
+    const Result<Scene> loaded = loadScene("builtin:bunnies?n=2");
+    ASSERT_TRUE(loaded) << loaded.error;
+    const Scene& scene = *loaded.value;
+    const auto primitives = scene.trianglePrimitives();
+    std::vector<uint32_t> start(primitives.size());
+    for (uint32_t i = 0; i < start.size(); ++i) start[i] = uint32_t(start.size()) - 1 - i;
+    FastCpuOracleOptions options;
+    options.threads = 2;
+    options.parallel_threshold = 0;
+    CameraSpec spec = scene.camera ? *scene.camera : defaultCamera(scene.positions.bounds());
+    std::array<ViewProjection, 2> views;
+    for (int k = 0; k < 2; ++k) {
+        spec.projection = k == 0 ? Projection::perspective : Projection::orthographic;
+        views[k] = frameCamera(spec, scene.positions.bounds(), 96 + 32 * k, 80);
+    }
+    std::array<SortRun, 2> sequential;
+    for (int k = 0; k < 2; ++k)
+        sequential[k] = sortWith(options, scene, views[k], primitives, start);
+    ASSERT_GT(sequential[0].queries, 0u);
+
+    constexpr int kRounds = 3;
+    std::array<std::vector<SortRun>, 2> concurrent;
+    std::array<std::thread, 2> threads;
+    for (int k = 0; k < 2; ++k)
+        threads[k] = std::thread([&, k] {
+            for (int round = 0; round < kRounds; ++round)
+                concurrent[k].push_back(sortWith(options, scene, views[k], primitives, start));
+        });
+    for (std::thread& t : threads) t.join();
+    for (int k = 0; k < 2; ++k)
+        for (int round = 0; round < kRounds; ++round) {
+            SCOPED_TRACE("oracle " + std::to_string(k) + ", round " + std::to_string(round));
+            expectSameRun(concurrent[k][round], sequential[k]);
+        }
+}
+
+// A pool passed in options is the one used: its thread count is the oracle's, its runs count the
+// banded passes, and the shared pool is left alone; the answers stay the reference's.
+TEST(FastCpuOracleThreads, CallerPoolIsUsed) {
+    const TrianglePositions p = randomSoup(11, 300, 0.05, 0.8);
+    std::vector<PrimitiveRange> primitives;
+    for (uint32_t t = 0; t < p.triangleCount(); ++t) primitives.push_back({t, 1});
+    const ViewProjection view = viewOf(p.bounds(), Projection::perspective, 200, 150);
+    WorkerPool pool(3);
+    EXPECT_EQ(pool.threadCount(), 3u);
+    FastCpuOracleOptions options;
+    options.threads = 2;  // ignored: the pool's count is used
+    options.parallel_threshold = 0;
+    options.pool = &pool;
+    FastCpuOracle fast(options);
+    EXPECT_EQ(fast.threadCount(), 3u);
+    CpuOracle reference;
+    fast.bind(p, view, primitives);
+    reference.bind(p, view, primitives);
+    std::vector<uint32_t> sequence(primitives.size());
+    for (uint32_t i = 0; i < sequence.size(); ++i) sequence[i] = i;
+    const std::vector<uint8_t> query(sequence.size(), 1);
+    std::vector<uint8_t> expected(sequence.size()), got(sequence.size());
+    const uint64_t shared_runs = WorkerPool::shared().runCount();
+    reference.backToFrontPass(sequence, query, expected);
+    fast.backToFrontPass(sequence, query, got);
+    EXPECT_EQ(got, expected);
+    EXPECT_TRUE(sameBits(fast.depthBuffer(), reference.depthBuffer()));
+    const std::span<const uint32_t> occluders(sequence.data(), sequence.size() / 2);
+    const std::span<const uint32_t> targets(sequence.data() + sequence.size() / 2,
+                                            sequence.size() - sequence.size() / 2);
+    expected.resize(targets.size());
+    got.resize(targets.size());
+    reference.queryAgainst(occluders, targets, expected);
+    fast.queryAgainst(occluders, targets, got);
+    EXPECT_EQ(got, expected);
+    EXPECT_EQ(pool.runCount(), 2u);
+    EXPECT_EQ(WorkerPool::shared().runCount(), shared_runs);
+}
+
+// The pool itself: every task runs once per run, on as many threads as asked, when runs come from
+// several threads at once and the pool grows between them.
+TEST(FastCpuOracleThreads, WorkerPoolRunsFromSeveralThreadsTakeTurns) {
+    WorkerPool pool(2);
+    constexpr int kRuns = 200;
+    constexpr uint32_t kCallers = 3;
+    std::array<std::array<uint32_t, 4>, kCallers> counts{};  // per caller, per task index
+    std::array<std::thread, kCallers> callers;
+    for (uint32_t c = 0; c < kCallers; ++c)
+        callers[c] = std::thread([&, c] {
+            if (c == 2) pool.reserve(4);
+            for (int r = 0; r < kRuns; ++r) {
+                const uint32_t tasks = std::min<uint32_t>(1 + uint32_t(r) % 4, pool.threadCount());
+                // Each task writes its own counter: another caller's run never overlaps.
+                pool.run(
+                    tasks,
+                    [](void* context, uint32_t index) {
+                        ++(*static_cast<std::array<uint32_t, 4>*>(context))[index];
+                    },
+                    &counts[c]);
+            }
+        });
+    for (std::thread& t : callers) t.join();
+    EXPECT_EQ(pool.threadCount(), 4u);
+    EXPECT_EQ(pool.runCount(), uint64_t(kRuns) * kCallers);
+    for (uint32_t c = 0; c < kCallers; ++c) EXPECT_EQ(counts[c][0], uint32_t(kRuns));
+    pool.reserve(2);  // never shrinks
+    EXPECT_EQ(pool.threadCount(), 4u);
 }
 
 } // namespace
