@@ -62,7 +62,7 @@ CameraSpec defaultCamera(const Bounds& scene_bounds, double aspect = 1.0);
 ViewProjection frameCamera(const CameraSpec& camera, const Bounds& scene_bounds, uint32_t width,
                            uint32_t height);
 
-/// Empty when the camera is usable, else a one-line description of what is wrong.
+/// Whether the camera is usable; the error says in one line what is wrong.
 Status validateCamera(const CameraSpec& camera);
 
 } // namespace vissort

@@ -99,7 +99,7 @@ struct CollisionResult {
     CollisionStats stats;
 };
 
-/// Empty when the settings are usable, else a one-line description of what is wrong.
+/// Whether the settings are usable; the error says in one line what is wrong.
 Status validateCollisionSettings(const CollisionSettings& settings);
 
 namespace detail {

@@ -34,7 +34,7 @@ ImageError compareImages(const std::vector<uint8_t>& a, const std::vector<uint8_
 std::vector<uint8_t> errorMap(const std::vector<uint8_t>& image,
                               const std::vector<uint8_t>& reference);
 
-/// Writes 8-bit RGBA as PNG; empty on success, else a one-line message.
+/// Writes 8-bit RGBA as PNG; on failure a one-line message naming the file.
 Status writePng(const std::string& path, uint32_t width, uint32_t height,
                 const std::vector<uint8_t>& rgba8);
 

@@ -56,15 +56,10 @@ void RenderMesh::update(PositionsView positions, std::vector<float>& vertices) {
     face_normals_.resize(corners); // 3 floats per triangle
     for (std::size_t t = 0; t < corners / 3; ++t) {
         const std::size_t c = t * 3;
-        const double ex = double(positions.x[c + 1]) - positions.x[c];
-        const double ey = double(positions.y[c + 1]) - positions.y[c];
-        const double ez = double(positions.z[c + 1]) - positions.z[c];
-        const double fx = double(positions.x[c + 2]) - positions.x[c];
-        const double fy = double(positions.y[c + 2]) - positions.y[c];
-        const double fz = double(positions.z[c + 2]) - positions.z[c];
+        const Vec3 corner = positions.corner(c);
         // The cross product's length is twice the area: the sum weights faces by area.
-        const float n[3] = {float(ey * fz - ez * fy), float(ez * fx - ex * fz),
-                            float(ex * fy - ey * fx)};
+        const Vec3 normal = cross(positions.corner(c + 1) - corner, positions.corner(c + 2) - corner);
+        const float n[3] = {float(normal.x), float(normal.y), float(normal.z)};
         for (int i = 0; i < 3; ++i) {
             face_normals_[t * 3 + i] = n[i];
             for (int k = 0; k < 3; ++k)
