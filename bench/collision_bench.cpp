@@ -90,13 +90,15 @@ std::vector<CollisionContender> collisionContenders() {
     return list;
 }
 
-std::vector<CollisionBenchRow> runCollisionBench(
-    const CollisionBenchSettings& settings, const std::function<void(uint32_t)>& on_count,
-    const std::function<void(const CollisionBenchRow&)>& on_row) {
+std::vector<CollisionBenchRow>
+runCollisionBench(const CollisionBenchSettings& settings,
+                  const std::function<void(uint32_t)>& on_count,
+                  const std::function<void(const CollisionBenchRow&)>& on_row) {
     const std::vector<CollisionContender> methods = collisionContenders();
     std::vector<CollisionBenchRow> rows;
     for (uint32_t n : settings.counts) {
-        if (on_count) on_count(n);
+        if (on_count)
+            on_count(n);
         std::size_t triangles = 0;
         const std::vector<Measured> measured = measure(methods, n, settings.frames, triangles);
         for (std::size_t i = 0; i < methods.size(); ++i) {
@@ -112,7 +114,8 @@ std::vector<CollisionBenchRow> runCollisionBench(
             row.missed = m.missed;
             row.invented = m.invented;
             rows.push_back(row);
-            if (on_row) on_row(rows.back());
+            if (on_row)
+                on_row(rows.back());
         }
     }
     return rows;

@@ -29,21 +29,21 @@ struct CollisionBenchRow {
     std::string method;
     double median_ms = 0;                                          // over the timed frames
     double object_pairs = 0, triangle_pairs = 0, intersecting = 0; // means per timed frame
-    uint64_t missed = 0, invented = 0;  // against brute, over every timed frame
+    uint64_t missed = 0, invented = 0; // against brute, over every timed frame
 };
 
 struct CollisionBenchSettings {
-    std::vector<uint32_t> counts = {18, 36, 72, 144};  // bunnies, each 1..1000
-    int frames = 30;  // timed frames (>= 1), after one untimed that builds what later ones refit
+    std::vector<uint32_t> counts = {18, 36, 72, 144}; // bunnies, each 1..1000
+    int frames = 30; // timed frames (>= 1), after one untimed that builds what later ones refit
 };
 
 /// Measures every contender on builtin:bunnies?n=N for each count; methods take turns in a
 /// rotating order so that none always runs on a cold cache. on_count runs before each count is
 /// measured and on_row after each row (progress); both may be empty. Throws std::runtime_error
 /// when a scene cannot be made.
-std::vector<CollisionBenchRow> runCollisionBench(
-    const CollisionBenchSettings& settings,
-    const std::function<void(uint32_t bunnies)>& on_count = {},
-    const std::function<void(const CollisionBenchRow&)>& on_row = {});
+std::vector<CollisionBenchRow>
+runCollisionBench(const CollisionBenchSettings& settings,
+                  const std::function<void(uint32_t bunnies)>& on_count = {},
+                  const std::function<void(const CollisionBenchRow&)>& on_row = {});
 
 } // namespace vissort::bench

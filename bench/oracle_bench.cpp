@@ -78,8 +78,10 @@ Result<OracleBenchResult> runOracleBench(const OracleBenchSettings& settings) {
             makeRightTriangleWorkload(c.count, c.leg, c.width, c.height);
         const double pixels = c.count * c.leg * c.leg / 2;
         for (OracleKind kind : kinds) {
-            Result<std::unique_ptr<GeometryOracle>> made = makeOracle(kind, settings.oracle_options);
-            if (!made) return Failed::failure(made.error);
+            Result<std::unique_ptr<GeometryOracle>> made =
+                makeOracle(kind, settings.oracle_options);
+            if (!made)
+                return Failed::failure(made.error);
             GeometryOracle* oracle = made.value->get();
             const SyntheticResult r = runSynthetic(*oracle, w, settings.repeat);
             if (c.setup_bound) {
@@ -120,7 +122,8 @@ Result<OracleBenchResult> runOracleBench(const OracleBenchSettings& settings) {
         result.gl_line = "gl: not measured, " + context.error;
     }
 #else
-    result.gl_line = "gl: not measured, this vissort was built without OpenGL (VISSORT_WITH_GL=OFF)";
+    result.gl_line =
+        "gl: not measured, this vissort was built without OpenGL (VISSORT_WITH_GL=OFF)";
 #endif
     struct RealWorkload {
         const char* name;
@@ -139,10 +142,13 @@ Result<OracleBenchResult> runOracleBench(const OracleBenchSettings& settings) {
         const CameraSpec base =
             scene.camera.value_or(defaultCamera(scene.positions.bounds(), 1024.0 / 768));
         for (const auto& [kind, frames] : real_oracles) {
-            Result<std::unique_ptr<GeometryOracle>> made = makeOracle(kind, settings.oracle_options);
-            if (!made) return Failed::failure(made.error);
+            Result<std::unique_ptr<GeometryOracle>> made =
+                makeOracle(kind, settings.oracle_options);
+            if (!made)
+                return Failed::failure(made.error);
             GeometryOracle* oracle = made.value->get();
-            SceneOrderer orderer(scene.objectPrimitives(), uint32_t(scene.triangleCount()), workload.level, *oracle);
+            SceneOrderer orderer(scene.objectPrimitives(), uint32_t(scene.triangleCount()),
+                                 workload.level, *oracle);
             FrameDriver driver(scene, base, CameraPath::orbit, 1024, 768);
             std::vector<double> ms, queries, iterations;
             for (int f = 0; f < frames; ++f) {

@@ -13,17 +13,17 @@
 namespace vissort::bench {
 
 struct OracleBenchSettings {
-    int repeat = 3;      // runs per synthetic case (the best is kept), 1..100
-    int frames = 11;     // frames of the real workloads, the first untimed, 2..1000
-    int gl_frames = 5;   // frames through the gl oracle (at most frames), 2..1000
-    OracleOptions oracle_options;  // every oracle's (threads, SIMD)
+    int repeat = 3;               // runs per synthetic case (the best is kept), 1..100
+    int frames = 11;              // frames of the real workloads, the first untimed, 2..1000
+    int gl_frames = 5;            // frames through the gl oracle (at most frames), 2..1000
+    OracleOptions oracle_options; // every oracle's (threads, SIMD)
 };
 
 /// One figure: a workload through one oracle.
 struct OracleBenchRow {
     std::string workload, oracle, unit;
     double value = 0;
-    std::string detail;  // the real workloads: queries and iterations per frame
+    std::string detail; // the real workloads: queries and iterations per frame
 };
 
 struct OracleBenchResult {

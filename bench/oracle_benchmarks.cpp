@@ -16,11 +16,11 @@
 #include <memory>
 #include <vector>
 
+#include "support/oracle_workloads.h"
 #include "vissort/camera_path.h"
 #include "vissort/cpu_oracle.h"
 #include "vissort/fast_cpu_oracle.h"
 #include "vissort/frame_driver.h"
-#include "support/oracle_workloads.h"
 #include "vissort/scene.h"
 #include "vissort/scene_orderer.h"
 
@@ -31,7 +31,8 @@ namespace {
 uint64_t fieldPixels(const ScreenTriangleWorkload& field) {
     CpuOracle oracle;
     oracle.bind(field.positions, field.view, field.primitives);
-    for (uint32_t i = 0; i < field.background; ++i) oracle.draw(i);
+    for (uint32_t i = 0; i < field.background; ++i)
+        oracle.draw(i);
     return oracle.stats().fragments_drawn;
 }
 
@@ -44,12 +45,13 @@ void drawBackToFront(benchmark::State& state, uint32_t count, double leg, uint32
     oracle.bind(field.positions, field.view, field.primitives);
     for (auto _ : state) {
         oracle.clear();
-        for (uint32_t i = 0; i < field.background; ++i) oracle.draw(i);
+        for (uint32_t i = 0; i < field.background; ++i)
+            oracle.draw(i);
         benchmark::ClobberMemory();
     }
     state.SetItemsProcessed(int64_t(state.iterations()) * count);
-    state.counters["pixels_per_second"] =
-        benchmark::Counter(double(pixels) * double(state.iterations()), benchmark::Counter::kIsRate);
+    state.counters["pixels_per_second"] = benchmark::Counter(
+        double(pixels) * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 
 template <class Oracle>
@@ -62,42 +64,65 @@ void queryAgainstBackground(benchmark::State& state, uint32_t count, double leg,
     oracle.draw(field.background);
     uint64_t behind = 0;
     for (auto _ : state)
-        for (uint32_t i = 0; i < field.background; ++i) behind += oracle.anyBehind(i);
-    if (behind != 0) state.SkipWithError("a triangle in front of the background answered behind");
+        for (uint32_t i = 0; i < field.background; ++i)
+            behind += oracle.anyBehind(i);
+    if (behind != 0)
+        state.SkipWithError("a triangle in front of the background answered behind");
     state.SetItemsProcessed(int64_t(state.iterations()) * count);
-    state.counters["pixels_per_second"] =
-        benchmark::Counter(double(pixels) * double(state.iterations()), benchmark::Counter::kIsRate);
+    state.counters["pixels_per_second"] = benchmark::Counter(
+        double(pixels) * double(state.iterations()), benchmark::Counter::kIsRate);
 }
 
 // Setup-bound: 10 px legs at 1920 x 1080.
-void BM_SetupBoundDraw_Cpu(benchmark::State& s) { drawBackToFront<CpuOracle>(s, 100000, 10, 1920, 1080); }
-void BM_SetupBoundDraw_Fast(benchmark::State& s) { drawBackToFront<FastCpuOracle>(s, 100000, 10, 1920, 1080); }
-void BM_SetupBoundQuery_Cpu(benchmark::State& s) { queryAgainstBackground<CpuOracle>(s, 100000, 10, 1920, 1080); }
-void BM_SetupBoundQuery_Fast(benchmark::State& s) { queryAgainstBackground<FastCpuOracle>(s, 100000, 10, 1920, 1080); }
+void BM_SetupBoundDraw_Cpu(benchmark::State& s) {
+    drawBackToFront<CpuOracle>(s, 100000, 10, 1920, 1080);
+}
+void BM_SetupBoundDraw_Fast(benchmark::State& s) {
+    drawBackToFront<FastCpuOracle>(s, 100000, 10, 1920, 1080);
+}
+void BM_SetupBoundQuery_Cpu(benchmark::State& s) {
+    queryAgainstBackground<CpuOracle>(s, 100000, 10, 1920, 1080);
+}
+void BM_SetupBoundQuery_Fast(benchmark::State& s) {
+    queryAgainstBackground<FastCpuOracle>(s, 100000, 10, 1920, 1080);
+}
 BENCHMARK(BM_SetupBoundDraw_Cpu)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SetupBoundDraw_Fast)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SetupBoundQuery_Cpu)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SetupBoundQuery_Fast)->Unit(benchmark::kMillisecond);
 
 // Fill-bound: 100 px and 500 px legs at 1600 x 1200.
-template <class Oracle>
-void fillDraw(benchmark::State& s) {
+template <class Oracle> void fillDraw(benchmark::State& s) {
     const double leg = double(s.range(0));
     drawBackToFront<Oracle>(s, leg >= 500 ? 200 : 2000, leg, 1600, 1200);
 }
-template <class Oracle>
-void fillQuery(benchmark::State& s) {
+template <class Oracle> void fillQuery(benchmark::State& s) {
     const double leg = double(s.range(0));
     queryAgainstBackground<Oracle>(s, leg >= 500 ? 200 : 2000, leg, 1600, 1200);
 }
-BENCHMARK(fillDraw<CpuOracle>)->Name("BM_FillBoundDraw_Cpu")->Arg(100)->Arg(500)->Unit(benchmark::kMillisecond);
-BENCHMARK(fillDraw<FastCpuOracle>)->Name("BM_FillBoundDraw_Fast")->Arg(100)->Arg(500)->Unit(benchmark::kMillisecond);
-BENCHMARK(fillQuery<CpuOracle>)->Name("BM_FillBoundQuery_Cpu")->Arg(100)->Arg(500)->Unit(benchmark::kMillisecond);
-BENCHMARK(fillQuery<FastCpuOracle>)->Name("BM_FillBoundQuery_Fast")->Arg(100)->Arg(500)->Unit(benchmark::kMillisecond);
+BENCHMARK(fillDraw<CpuOracle>)
+    ->Name("BM_FillBoundDraw_Cpu")
+    ->Arg(100)
+    ->Arg(500)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(fillDraw<FastCpuOracle>)
+    ->Name("BM_FillBoundDraw_Fast")
+    ->Arg(100)
+    ->Arg(500)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(fillQuery<CpuOracle>)
+    ->Name("BM_FillBoundQuery_Cpu")
+    ->Arg(100)
+    ->Arg(500)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(fillQuery<FastCpuOracle>)
+    ->Name("BM_FillBoundQuery_Fast")
+    ->Arg(100)
+    ->Arg(500)
+    ->Unit(benchmark::kMillisecond);
 
 // Real workload: triangle-level Vis-sort of the 18 bunnies along an orbit, 10 coherent frames.
-template <class Oracle>
-void bunniesOrbit(benchmark::State& state) {
+template <class Oracle> void bunniesOrbit(benchmark::State& state) {
     const Result<Scene> loaded = loadScene("builtin:bunnies");
     if (!loaded) {
         state.SkipWithError(loaded.error.c_str());
@@ -106,9 +131,9 @@ void bunniesOrbit(benchmark::State& state) {
     const Scene& scene = *loaded.value;
     constexpr int kFrames = 10;
     constexpr uint32_t kWidth = 1024, kHeight = 768;
-    const CameraSpec base = scene.camera ? *scene.camera
-                                         : defaultCamera(scene.positions.bounds(),
-                                                         double(kWidth) / kHeight);
+    const CameraSpec base = scene.camera
+                                ? *scene.camera
+                                : defaultCamera(scene.positions.bounds(), double(kWidth) / kHeight);
     // Every frame made before timing: the loop measures ordering alone.
     FrameDriver driver(scene, base, CameraPath::orbit, kWidth, kHeight);
     std::vector<TrianglePositions> positions(kFrames);
@@ -125,7 +150,8 @@ void bunniesOrbit(benchmark::State& state) {
     double milliseconds = 0;
     for (auto _ : state) {
         Oracle oracle;
-        SceneOrderer orderer(scene.objectPrimitives(), uint32_t(scene.triangleCount()), OrderLevel::triangle, oracle);
+        SceneOrderer orderer(scene.objectPrimitives(), uint32_t(scene.triangleCount()),
+                             OrderLevel::triangle, oracle);
         for (int f = 0; f < kFrames; ++f) {
             const FrameOrder order = orderer.orderFrame(positions[f], views[f]);
             queries += order.stats.queries;
@@ -139,8 +165,14 @@ void bunniesOrbit(benchmark::State& state) {
     state.counters["iterations_per_frame"] = double(iterations) / double(frames);
     state.counters["triangles"] = double(scene.triangleCount());
 }
-BENCHMARK(bunniesOrbit<CpuOracle>)->Name("BM_BunniesOrbitTriangles_Cpu")->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK(bunniesOrbit<FastCpuOracle>)->Name("BM_BunniesOrbitTriangles_Fast")->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(bunniesOrbit<CpuOracle>)
+    ->Name("BM_BunniesOrbitTriangles_Cpu")
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+BENCHMARK(bunniesOrbit<FastCpuOracle>)
+    ->Name("BM_BunniesOrbitTriangles_Fast")
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 } // namespace
 } // namespace vissort

@@ -24,18 +24,21 @@ const TransparencyFamily kFamilies[] = {
 
 } // namespace
 
-std::span<const TransparencyFamily> transparencyFamilies() { return kFamilies; }
+std::span<const TransparencyFamily> transparencyFamilies() {
+    return kFamilies;
+}
 
-Result<std::vector<TransparencyBenchRow>> runTransparencyBench(
-    const TransparencyBenchSettings& settings,
-    const std::function<void(const TransparencyFamily&)>& on_family,
-    const std::function<void(const TransparencyBenchRow&)>& on_row) {
+Result<std::vector<TransparencyBenchRow>>
+runTransparencyBench(const TransparencyBenchSettings& settings,
+                     const std::function<void(const TransparencyFamily&)>& on_family,
+                     const std::function<void(const TransparencyBenchRow&)>& on_row) {
     using Rows = Result<std::vector<TransparencyBenchRow>>;
     const int frames = settings.frames;
     const uint32_t width = settings.width, height = settings.height;
     std::vector<TransparencyBenchRow> rows;
     for (const TransparencyFamily& family : kFamilies) {
-        if (on_family) on_family(family);
+        if (on_family)
+            on_family(family);
         for (uint32_t depth : settings.depths) {
             TransparencyBenchRow row;
             row.family = family.name;
@@ -85,7 +88,8 @@ Result<std::vector<TransparencyBenchRow>> runTransparencyBench(
             // really had, in front of the opaque surfaces.
             row.seen = row.methods[kTransparencyPeel].passes - 1;
             rows.push_back(std::move(row));
-            if (on_row) on_row(rows.back());
+            if (on_row)
+                on_row(rows.back());
         }
     }
     return Rows{std::move(rows), {}};

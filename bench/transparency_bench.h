@@ -30,43 +30,43 @@ inline constexpr std::size_t kTransparencyVissort = 0, kTransparencyPeel = 1,
 struct TransparencyFamily {
     const char* name;
     const char* description;
-    std::string (*scene)(uint32_t depth);  // the scene specification of depth D
+    std::string (*scene)(uint32_t depth); // the scene specification of depth D
 };
 /// slabs, then plant.
 std::span<const TransparencyFamily> transparencyFamilies();
 
 /// One method on one scene.
 struct TransparencyMeasured {
-    double ms = 0;        // median over the timed frames
-    double order_ms = 0;  // median over the timed frames
-    uint32_t passes = 0;  // the most in a frame
+    double ms = 0;       // median over the timed frames
+    double order_ms = 0; // median over the timed frames
+    uint32_t passes = 0; // the most in a frame
     uint64_t fragments = 0;
-    int max_abs = 0;  // against linked-list, the worst frame
-    double rmse = 0;  // against linked-list, the worst frame
+    int max_abs = 0; // against linked-list, the worst frame
+    double rmse = 0; // against linked-list, the worst frame
 };
 
 /// Every method on one scene of a family.
 struct TransparencyBenchRow {
     std::string family, specification;
     uint32_t depth = 0;
-    uint32_t seen = 0;  // the most transparent layers at a pixel: depth peeling's passes - 1
-    std::vector<TransparencyMeasured> methods;  // in kTransparencyMethods order
+    uint32_t seen = 0; // the most transparent layers at a pixel: depth peeling's passes - 1
+    std::vector<TransparencyMeasured> methods; // in kTransparencyMethods order
 };
 
 struct TransparencyBenchSettings {
-    std::shared_ptr<GlContext> context;  // the renderers' (the caller's, non-null)
+    std::shared_ptr<GlContext> context; // the renderers' (the caller's, non-null)
     uint32_t width = 1024, height = 1024;
-    OrderLevel level = OrderLevel::multistage;  // vissort's, with the cpu oracle
-    int frames = 3;  // on an orbit, the first untimed: 2..100
+    OrderLevel level = OrderLevel::multistage; // vissort's, with the cpu oracle
+    int frames = 3;                            // on an orbit, the first untimed: 2..100
     std::vector<uint32_t> depths = {2, 4, 8, 16, 32, 64};
 };
 
 /// Renders every method on every family at every depth. on_family runs before a family's rows,
 /// on_row after each row (progress); both may be empty. A one-line message when a scene cannot
 /// be made.
-Result<std::vector<TransparencyBenchRow>> runTransparencyBench(
-    const TransparencyBenchSettings& settings,
-    const std::function<void(const TransparencyFamily&)>& on_family = {},
-    const std::function<void(const TransparencyBenchRow&)>& on_row = {});
+Result<std::vector<TransparencyBenchRow>>
+runTransparencyBench(const TransparencyBenchSettings& settings,
+                     const std::function<void(const TransparencyFamily&)>& on_family = {},
+                     const std::function<void(const TransparencyBenchRow&)>& on_row = {});
 
 } // namespace vissort::bench

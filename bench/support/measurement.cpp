@@ -24,6 +24,8 @@ std::string machineName() {
     return "unknown CPU";
 }
 
-unsigned hardwareThreads() { return std::thread::hardware_concurrency(); }
+unsigned hardwareThreads() {
+    return std::thread::hardware_concurrency();
+}
 
 } // namespace vissort::bench

@@ -7,7 +7,9 @@ namespace vissort {
 namespace {
 
 // [0, 1) from 53 random bits: the same numbers from every standard library.
-double unitRandom(std::mt19937_64& rng) { return double(rng() >> 11) * 0x1.0p-53; }
+double unitRandom(std::mt19937_64& rng) {
+    return double(rng() >> 11) * 0x1.0p-53;
+}
 
 void addTriangle(TrianglePositions& p, std::size_t t, const Vec3 (&corners)[3]) {
     for (int c = 0; c < 3; ++c) {

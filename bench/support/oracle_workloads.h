@@ -14,7 +14,7 @@ struct ScreenTriangleWorkload {
     TrianglePositions positions;            // world = pixel coordinates (x right, y down), z = d
     ViewProjection view;                    // orthographic, maps world x,y to pixels 1:1
     std::vector<PrimitiveRange> primitives; // one per triangle
-    uint32_t background = 0;                // id of a full-screen quad at the far depth (2 triangles)
+    uint32_t background = 0; // id of a full-screen quad at the far depth (2 triangles)
 };
 
 /// count random right triangles with legs of leg_px pixels, inside a width x height image, at

@@ -25,7 +25,7 @@ struct CameraSpec {
     Vec3 eye{0, 0, 5};
     Vec3 target{0, 0, 0};
     Vec3 up{0, 1, 0};
-    double fov_degrees = 45.0;  // vertical field of view
+    double fov_degrees = 45.0; // vertical field of view
     Vec3 ortho_direction{0, 0, -1};
 };
 
@@ -33,12 +33,12 @@ struct CameraSpec {
 struct ViewProjection {
     Projection projection = Projection::perspective;
     uint32_t width = 1024, height = 1024;
-    std::array<double, 16> view{};        // world -> eye space (camera looks along -z)
-    std::array<double, 16> projection_matrix{};  // eye -> clip space, z_clip / w_clip = d
-    double near = 0.1, far = 1.0;         // far is unused (infinite) for perspective
-    Vec3 eye_position;                    // perspective eye; orthographic: the eye plane's centre,
-                                          // 2r before the sphere's centre (behind the near plane)
-    Vec3 forward;                         // unit view direction
+    std::array<double, 16> view{};              // world -> eye space (camera looks along -z)
+    std::array<double, 16> projection_matrix{}; // eye -> clip space, z_clip / w_clip = d
+    double near = 0.1, far = 1.0;               // far is unused (infinite) for perspective
+    Vec3 eye_position; // perspective eye; orthographic: the eye plane's centre,
+                       // 2r before the sphere's centre (behind the near plane)
+    Vec3 forward;      // unit view direction
 
     /// Depth d of a world point (see the header comment); may be outside [0,1) when clipped.
     double depthOf(const Vec3& world) const;

@@ -3,18 +3,18 @@
 
 #include <string>
 
-#include "vissort/enum_names.h"
 #include "vissort/camera.h"
+#include "vissort/enum_names.h"
 
 namespace vissort {
 
 enum class CameraPath {
-    fixed,       // "static": the same camera every frame
-    orbit,       // the eye, target and up (or the orthographic direction) turn 3 degrees per
-                 // frame about the vertical axis through the scene's centre
-    flythrough,  // the eye flies inside the scene on a horizontal circle of radius 0.6 r around
-                 // the centre, 2 degrees per frame, looking along its direction of travel;
-                 // an orthographic camera has no inside, so it orbits instead
+    fixed,      // "static": the same camera every frame
+    orbit,      // the eye, target and up (or the orthographic direction) turn 3 degrees per
+                // frame about the vertical axis through the scene's centre
+    flythrough, // the eye flies inside the scene on a horizontal circle of radius 0.6 r around
+                // the centre, 2 degrees per frame, looking along its direction of travel;
+                // an orthographic camera has no inside, so it orbits instead
 };
 
 inline constexpr EnumName<CameraPath> kCameraPathNames[] = {

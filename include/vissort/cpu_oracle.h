@@ -94,7 +94,7 @@ private:
     RasterMode mode_;
     uint32_t width_ = 0, height_ = 0;
     std::vector<PrimitiveRange> primitives_;
-    std::vector<ClipCorner> corners_;  // 3 per triangle, clip space
+    std::vector<ClipCorner> corners_; // 3 per triangle, clip space
     std::vector<float> depth_;
     CpuOracleStats stats_;
 };

@@ -12,13 +12,13 @@ namespace vissort {
 
 /// Surfaces crossed per pixel: the most, the mean over covered pixels, and the histogram.
 struct DepthComplexity {
-    uint32_t width = 0, height = 0;   // the grid of rays cast
-    uint64_t max = 0;                 // the most triangles one ray crosses
-    uint64_t covered_pixels = 0;      // rays that cross at least one triangle
-    uint64_t hits = 0;                // triangles crossed, over every ray
-    double mean = 0;                  // hits / covered_pixels; 0 when nothing is covered
-    std::vector<uint64_t> histogram;  // histogram[d]: pixels whose ray crosses d triangles,
-                                      // d = 0..max (max + 1 entries)
+    uint32_t width = 0, height = 0;  // the grid of rays cast
+    uint64_t max = 0;                // the most triangles one ray crosses
+    uint64_t covered_pixels = 0;     // rays that cross at least one triangle
+    uint64_t hits = 0;               // triangles crossed, over every ray
+    double mean = 0;                 // hits / covered_pixels; 0 when nothing is covered
+    std::vector<uint64_t> histogram; // histogram[d]: pixels whose ray crosses d triangles,
+                                     // d = 0..max (max + 1 entries)
 };
 
 /// The largest side of estimateDepthComplexity's ray grid by default: enough for a histogram,

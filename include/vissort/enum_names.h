@@ -10,8 +10,7 @@
 
 namespace vissort {
 
-template <class E>
-struct EnumName {
+template <class E> struct EnumName {
     E value;
     const char* name;
 };
@@ -22,19 +21,19 @@ Result<E> parseEnum(std::span<const EnumName<E>> table, std::string_view text,
                     std::string_view what);
 
 /// The name of value in table; "?" when it has none (a programming mistake).
-template <class E>
-const char* enumName(std::span<const EnumName<E>> table, E value) {
+template <class E> const char* enumName(std::span<const EnumName<E>> table, E value) {
     for (const EnumName<E>& entry : table)
-        if (entry.value == value) return entry.name;
+        if (entry.value == value)
+            return entry.name;
     return "?";
 }
 
 /// Every name of table: "a, b, c" (for help text).
-template <class E>
-std::string enumNames(std::span<const EnumName<E>> table) {
+template <class E> std::string enumNames(std::span<const EnumName<E>> table) {
     std::string names;
     for (const EnumName<E>& entry : table) {
-        if (!names.empty()) names += ", ";
+        if (!names.empty())
+            names += ", ";
         names += entry.name;
     }
     return names;
@@ -44,10 +43,12 @@ template <class E>
 Result<E> parseEnum(std::span<const EnumName<E>> table, std::string_view text,
                     std::string_view what) {
     for (const EnumName<E>& entry : table)
-        if (text == entry.name) return {entry.value, {}};
+        if (text == entry.name)
+            return {entry.value, {}};
     std::string expected;
     for (std::size_t i = 0; i < table.size(); ++i) {
-        if (i > 0) expected += i + 1 == table.size() ? " or " : ", ";
+        if (i > 0)
+            expected += i + 1 == table.size() ? " or " : ", ";
         expected += table[i].name;
     }
     return Result<E>::failure("unknown " + std::string(what) + " '" + std::string(text) +

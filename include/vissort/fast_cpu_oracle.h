@@ -36,16 +36,16 @@
 
 namespace vissort {
 
-class WorkerPool;  // worker_pool.h
+class WorkerPool; // worker_pool.h
 
 /// What the oracle did since bind (or resetStats), for benchmarks and tests.
 struct FastCpuOracleStats {
-    uint64_t draws = 0;            // draw calls
-    uint64_t queries = 0;          // anyBehind calls
-    uint64_t tiles_visited = 0;    // tiles of fan triangles' bounding boxes looked at
-    uint64_t tiles_culled = 0;     // ... decided without per-pixel work: outside an edge, or by
-                                   // depth bounds (query: nothing behind; draw: nothing passes)
-    uint64_t tiles_accepted = 0;   // query tiles answered "behind" without per-pixel work
+    uint64_t draws = 0;          // draw calls
+    uint64_t queries = 0;        // anyBehind calls
+    uint64_t tiles_visited = 0;  // tiles of fan triangles' bounding boxes looked at
+    uint64_t tiles_culled = 0;   // ... decided without per-pixel work: outside an edge, or by
+                                 // depth bounds (query: nothing behind; draw: nothing passes)
+    uint64_t tiles_accepted = 0; // query tiles answered "behind" without per-pixel work
 };
 
 /// How FastCpuOracle may use the machine. The answers and the depth buffer never depend on it.
@@ -123,7 +123,7 @@ public:
     void resetStats();
 
 private:
-    struct Impl;  // src/raster/fast_cpu_oracle.cpp
+    struct Impl; // src/raster/fast_cpu_oracle.cpp
     std::unique_ptr<Impl> impl_;
 };
 

@@ -44,9 +44,9 @@ private:
     CameraPath path_ = CameraPath::fixed;
     uint32_t width_ = 0, height_ = 0;
     bool has_view_ = false;
-    Bounds first_bounds_;  // the path turns about the scene at t = 0, the same every frame
+    Bounds first_bounds_; // the path turns about the scene at t = 0, the same every frame
     int frame_ = -1;
-    TrianglePositions buffer_;  // a dynamic scene's positions, reused
+    TrianglePositions buffer_; // a dynamic scene's positions, reused
     PositionsView positions_;
     CameraSpec camera_;
     ViewProjection view_;

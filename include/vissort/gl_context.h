@@ -14,9 +14,9 @@
 namespace vissort {
 
 enum class GlPlatform {
-    automatic,    // "auto": a hardware EGL device if there is one, else surfaceless
-    device,       // "device": an EGL device (hardware first, else Mesa's software device)
-    surfaceless,  // "surfaceless": Mesa's surfaceless platform
+    automatic,   // "auto": a hardware EGL device if there is one, else surfaceless
+    device,      // "device": an EGL device (hardware first, else Mesa's software device)
+    surfaceless, // "surfaceless": Mesa's surfaceless platform
 };
 
 inline constexpr EnumName<GlPlatform> kGlPlatformNames[] = {
@@ -34,11 +34,11 @@ inline const char* glPlatformName(GlPlatform platform) {
 
 /// What a context runs on, as EGL and OpenGL name it.
 struct GlContextInfo {
-    std::string platform;  // "device" or "surfaceless"
-    std::string device;    // the EGL device's driver or "Mesa software device"; empty on surfaceless
-    std::string vendor;    // GL_VENDOR
-    std::string renderer;  // GL_RENDERER
-    std::string version;   // GL_VERSION
+    std::string platform; // "device" or "surfaceless"
+    std::string device;   // the EGL device's driver or "Mesa software device"; empty on surfaceless
+    std::string vendor;   // GL_VENDOR
+    std::string renderer; // GL_RENDERER
+    std::string version;  // GL_VERSION
 };
 
 class GlContext {

@@ -47,9 +47,9 @@ namespace vissort {
 
 /// What the oracle did since bind (or resetStats).
 struct GlOracleStats {
-    uint64_t draws = 0;       // primitives drawn (those skipped by conditional rendering count)
-    uint64_t queries = 0;     // occlusion queries issued
-    uint64_t draw_calls = 0;  // glDrawArrays and glMultiDrawArrays calls
+    uint64_t draws = 0;      // primitives drawn (those skipped by conditional rendering count)
+    uint64_t queries = 0;    // occlusion queries issued
+    uint64_t draw_calls = 0; // glDrawArrays and glMultiDrawArrays calls
 };
 
 class GlOracle final : public GeometryOracle {

@@ -32,15 +32,15 @@ public:
     ///   if query[i]: behind[i] = anyBehind(sequence[i]);  then always draw(sequence[i]).
     /// No draw depends on an answer, so a backend may answer every query at the end.
     /// query and behind have sequence.size() entries; behind[i] is untouched where !query[i].
-    virtual void backToFrontPass(std::span<const uint32_t> sequence,
-                                 std::span<const uint8_t> query, std::span<uint8_t> behind);
+    virtual void backToFrontPass(std::span<const uint32_t> sequence, std::span<const uint8_t> query,
+                                 std::span<uint8_t> behind);
 
     /// Vis-sort's pass 2. Clears, then for i = 0 up to sequence.size()-1:
     ///   if query[i]: behind[i] = anyBehind(sequence[i]); draw only if behind[i];
     ///   else draw(sequence[i]).
     /// Here a draw depends on its own query's answer (conditional rendering on a GPU).
-    virtual void frontToBackPass(std::span<const uint32_t> sequence,
-                                 std::span<const uint8_t> query, std::span<uint8_t> behind);
+    virtual void frontToBackPass(std::span<const uint32_t> sequence, std::span<const uint8_t> query,
+                                 std::span<uint8_t> behind);
 
     /// Group test: clears, draws every occluder, then behind[i] = anyBehind(targets[i]).
     virtual void queryAgainst(std::span<const uint32_t> occluders,

@@ -15,11 +15,11 @@
 namespace vissort {
 
 enum class OracleKind {
-    cpu,            // "cpu": the tiled CPU rasterizer (fast_cpu_oracle.h), the default
-    cpu_reference,  // "cpu-reference": the plain rasterizer that defines the cpu answers
-                    // (cpu_oracle.h); cpu gives identical answers, faster
-    exact,          // "exact": ray casting at pixel centres in double (exact_oracle.h)
-    gl,             // "gl": OpenGL occlusion queries through headless EGL (gl_oracle.h)
+    cpu,           // "cpu": the tiled CPU rasterizer (fast_cpu_oracle.h), the default
+    cpu_reference, // "cpu-reference": the plain rasterizer that defines the cpu answers
+                   // (cpu_oracle.h); cpu gives identical answers, faster
+    exact,         // "exact": ray casting at pixel centres in double (exact_oracle.h)
+    gl,            // "gl": OpenGL occlusion queries through headless EGL (gl_oracle.h)
 };
 
 inline constexpr EnumName<OracleKind> kOracleKindNames[] = {
@@ -33,7 +33,9 @@ inline constexpr EnumName<OracleKind> kOracleKindNames[] = {
 inline Result<OracleKind> parseOracleKind(std::string_view name) {
     return parseEnum<OracleKind>(kOracleKindNames, name, "oracle");
 }
-inline const char* oracleName(OracleKind kind) { return enumName<OracleKind>(kOracleKindNames, kind); }
+inline const char* oracleName(OracleKind kind) {
+    return enumName<OracleKind>(kOracleKindNames, kind);
+}
 
 /// How an oracle samples and may use the machine. Its answers never depend on threads or SIMD.
 struct OracleOptions {
@@ -50,7 +52,8 @@ struct OracleOptions {
 /// mode: asking for one throws std::invalid_argument (a caller's mistake). The gl oracle uses
 /// the process's shared context (GlContext::shared); when there is none, or vissort was built
 /// without OpenGL, the result is a one-line message naming what is missing.
-Result<std::unique_ptr<GeometryOracle>> makeOracle(OracleKind kind, const OracleOptions& options = {});
+Result<std::unique_ptr<GeometryOracle>> makeOracle(OracleKind kind,
+                                                   const OracleOptions& options = {});
 
 /// True when this build has the gl oracle (VISSORT_WITH_GL).
 bool hasGlOracle();

@@ -15,8 +15,7 @@
 namespace vissort {
 
 /// Either a value or a one-line error message naming the problem.
-template <class T>
-struct Result {
+template <class T> struct Result {
     std::optional<T> value;
     std::string error;
 
@@ -26,7 +25,7 @@ struct Result {
 
 /// Success or a one-line error message: the Result of an operation with no value.
 struct Status {
-    std::string error;  // empty on success
+    std::string error; // empty on success
 
     explicit operator bool() const { return error.empty(); }
     static Status ok() { return {}; }

@@ -18,7 +18,7 @@ struct SceneObject {
     std::string name;
     Rgba colour;
     bool transparent = false;
-    uint32_t first_triangle = 0;  // triangle ids are global, object 0's triangles first
+    uint32_t first_triangle = 0; // triangle ids are global, object 0's triangles first
     uint32_t triangle_count = 0;
 };
 
@@ -33,9 +33,9 @@ public:
 struct Scene {
     std::string name;
     std::vector<SceneObject> objects;
-    TrianglePositions positions;  // at t = 0
+    TrianglePositions positions; // at t = 0
     std::optional<CameraSpec> camera;
-    std::shared_ptr<const Animation> animation;  // null for static scenes
+    std::shared_ptr<const Animation> animation; // null for static scenes
 
     bool isDynamic() const { return animation != nullptr; }
     std::size_t triangleCount() const { return positions.triangleCount(); }

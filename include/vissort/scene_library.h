@@ -15,7 +15,7 @@ using SceneParameters = std::map<std::string, std::string>;
 
 struct BuiltinSceneInfo {
     std::string name;
-    std::string summary;  // one line, with the parameters and their defaults
+    std::string summary; // one line, with the parameters and their defaults
 };
 
 /// The names and one-line descriptions of every built-in scene.

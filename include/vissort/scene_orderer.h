@@ -9,17 +9,17 @@
 #include <string>
 #include <vector>
 
-#include "vissort/enum_names.h"
 #include "vissort/camera.h"
+#include "vissort/enum_names.h"
 #include "vissort/geometry_oracle.h"
 #include "vissort/vis_sort.h"
 
 namespace vissort {
 
 enum class OrderLevel {
-    object,      // one primitive per object; ids are object ids
-    triangle,    // one primitive per triangle; ids are triangle ids
-    multistage,  // objects first, then the triangles of each object or cycle; triangle ids
+    object,     // one primitive per object; ids are object ids
+    triangle,   // one primitive per triangle; ids are triangle ids
+    multistage, // objects first, then the triangles of each object or cycle; triangle ids
 };
 
 inline constexpr EnumName<OrderLevel> kOrderLevelNames[] = {
@@ -37,10 +37,10 @@ inline const char* orderLevelName(OrderLevel level) {
 
 struct FrameOrder {
     OrderLevel level = OrderLevel::object;
-    std::vector<uint32_t> order;                // front to back: object or triangle ids
-    std::vector<std::vector<uint32_t>> cycles;  // in the same ids, each ascending
-    VisSortStats stats;                         // summed over every stage
-    double milliseconds = 0;                    // wall time of orderFrame
+    std::vector<uint32_t> order;               // front to back: object or triangle ids
+    std::vector<std::vector<uint32_t>> cycles; // in the same ids, each ascending
+    VisSortStats stats;                        // summed over every stage
+    double milliseconds = 0;                   // wall time of orderFrame
 };
 
 /// The primitives whose ids a level's orders hold: the objects' ranges at object level, else one
@@ -51,10 +51,10 @@ std::vector<PrimitiveRange> levelPrimitives(std::span<const PrimitiveRange> obje
 /// The same for a scene (vissort::Scene, or anything with objectPrimitives() and
 /// triangleCount()): a template, so that ordering does not depend on the scene layer.
 template <class SceneLike>
-    requires requires(const SceneLike& s) {
-        s.objectPrimitives();
-        s.triangleCount();
-    }
+requires requires(const SceneLike& s) {
+    s.objectPrimitives();
+    s.triangleCount();
+}
 std::vector<PrimitiveRange> primitivesOf(const SceneLike& scene, OrderLevel level) {
     return levelPrimitives(scene.objectPrimitives(), uint32_t(scene.triangleCount()), level);
 }
@@ -72,8 +72,8 @@ public:
     /// objects: each object's contiguous triangle range, in object id order (copied);
     /// triangle_count: the triangles of the positions given to orderFrame, every object's
     /// range within it. The oracle is bound anew every frame and must outlive the orderer.
-    SceneOrderer(std::span<const PrimitiveRange> objects, uint32_t triangle_count,
-                 OrderLevel level, GeometryOracle& oracle);
+    SceneOrderer(std::span<const PrimitiveRange> objects, uint32_t triangle_count, OrderLevel level,
+                 GeometryOracle& oracle);
 
     /// Orders the triangles at `positions` (triangle_count of them) seen through view into out.
     /// out's vectors and the orderer's buffers keep their capacity: once they have grown, a frame
@@ -99,19 +99,19 @@ private:
     uint32_t triangle_count_;
     OrderLevel level_;
     GeometryOracle& oracle_;
-    std::vector<PrimitiveRange> primitives_;  // stage 1's: triangles at triangle level, else objects
-    std::vector<uint32_t> previous_order_;           // last frame, at level_ (objects for multistage)
-    std::vector<uint32_t> previous_triangle_rank_;   // multistage: last frame's triangle positions
+    std::vector<PrimitiveRange> primitives_; // stage 1's: triangles at triangle level, else objects
+    std::vector<uint32_t> previous_order_;   // last frame, at level_ (objects for multistage)
+    std::vector<uint32_t> previous_triangle_rank_; // multistage: last frame's triangle positions
     // Reused every frame, so that a steady-state frame without cycles allocates nothing
     // (tests/order/orderer_allocation_tests.cpp).
     VisSortWorkspace workspace_;
     VisibilityOrder sorted_, group_sorted_;
     std::vector<PrimitiveRange> group_;
     std::vector<uint32_t> group_start_;
-    std::vector<PrimitiveRange> bound_;      // primitives in start order, as bound
-    std::vector<uint32_t> identity_;         // 0..n-1: the start list of the bound primitives
-    std::vector<int32_t> cycle_of_;          // multistage: object -> its cycle in stage 1, or -1
-    std::vector<uint32_t> triangle_rank_;    // multistage: this frame's triangle positions
+    std::vector<PrimitiveRange> bound_;   // primitives in start order, as bound
+    std::vector<uint32_t> identity_;      // 0..n-1: the start list of the bound primitives
+    std::vector<int32_t> cycle_of_;       // multistage: object -> its cycle in stage 1, or -1
+    std::vector<uint32_t> triangle_rank_; // multistage: this frame's triangle positions
 };
 
 } // namespace vissort

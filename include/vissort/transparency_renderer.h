@@ -27,8 +27,8 @@
 #include <string>
 #include <vector>
 
-#include "vissort/enum_names.h"
 #include "vissort/camera.h"
+#include "vissort/enum_names.h"
 #include "vissort/geometry_oracle.h"
 #include "vissort/gl_context.h"
 #include "vissort/image.h"
@@ -41,9 +41,9 @@ namespace vissort {
 enum class BlendMethod { vissort, unsorted, centroid, peel, dual_peel, linked_list, weighted };
 
 inline constexpr EnumName<BlendMethod> kBlendMethodNames[] = {
-    {BlendMethod::vissort, "vissort"},         {BlendMethod::unsorted, "unsorted"},
-    {BlendMethod::centroid, "centroid"},       {BlendMethod::peel, "peel"},
-    {BlendMethod::dual_peel, "dual-peel"},     {BlendMethod::linked_list, "linked-list"},
+    {BlendMethod::vissort, "vissort"},     {BlendMethod::unsorted, "unsorted"},
+    {BlendMethod::centroid, "centroid"},   {BlendMethod::peel, "peel"},
+    {BlendMethod::dual_peel, "dual-peel"}, {BlendMethod::linked_list, "linked-list"},
     {BlendMethod::weighted, "weighted"},
 };
 /// A method by name, or "unknown method 'NAME' (expected ...)".
@@ -54,7 +54,9 @@ inline const char* blendMethodName(BlendMethod method) {
     return enumName<BlendMethod>(kBlendMethodNames, method);
 }
 /// Every method's name, comma-separated, for help and error messages.
-inline std::string blendMethodNames() { return enumNames<BlendMethod>(kBlendMethodNames); }
+inline std::string blendMethodNames() {
+    return enumNames<BlendMethod>(kBlendMethodNames);
+}
 
 /// The oracle's depth tolerance for exact blending: negative, so that a fragment counts as behind
 /// unless it is in front by more than 2^-16. Surfaces whose depths come that close anywhere then
@@ -124,8 +126,7 @@ public:
 
     /// Renders the scene at `positions` (scene.frame(t)) through view. Successive frames reuse
     /// the previous order (coherence), as SceneOrderer does.
-    Image render(PositionsView positions, const ViewProjection& view,
-                 RenderStats& stats);
+    Image render(PositionsView positions, const ViewProjection& view, RenderStats& stats);
 
     /// Draws these triangles (scene triangle ids, e.g. collidingTriangles() of a collision
     /// result) in a strong magenta, nearly opaque, in every method, from the next render on;

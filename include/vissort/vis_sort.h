@@ -13,13 +13,13 @@ namespace vissort {
 
 /// What one ordering cost, counted in oracle operations.
 struct VisSortStats {
-    uint64_t queries = 0;     // anyBehind answers asked for
-    uint64_t draws = 0;       // primitives drawn into the depth buffer
-    uint64_t clears = 0;      // depth buffer clears (one per pass or group test)
-    uint32_t iterations = 0;  // Vis-sort iterations (pass 1 + pass 2)
-    uint32_t stuck_iterations = 0;  // iterations that output nothing (a cycle was met)
-    uint64_t cycle_queries = 0;     // of queries, those spent finding cycles
-    uint64_t cycle_draws = 0;       // of draws, those spent finding cycles
+    uint64_t queries = 0;          // anyBehind answers asked for
+    uint64_t draws = 0;            // primitives drawn into the depth buffer
+    uint64_t clears = 0;           // depth buffer clears (one per pass or group test)
+    uint32_t iterations = 0;       // Vis-sort iterations (pass 1 + pass 2)
+    uint32_t stuck_iterations = 0; // iterations that output nothing (a cycle was met)
+    uint64_t cycle_queries = 0;    // of queries, those spent finding cycles
+    uint64_t cycle_draws = 0;      // of draws, those spent finding cycles
 };
 
 struct VisibilityOrder {

@@ -12,19 +12,17 @@
 namespace vissort {
 
 /// The state after one iteration (pass 1 + pass 2), for tracing the algorithm.
-template <class T>
-struct VisSort1dStep {
-    std::vector<T> monotone_run;  // M after pass 1, front to back
-    std::vector<T> sorted;        // S after pass 2
-    std::vector<T> unsorted;      // I after pass 2
+template <class T> struct VisSort1dStep {
+    std::vector<T> monotone_run; // M after pass 1, front to back
+    std::vector<T> sorted;       // S after pass 2
+    std::vector<T> unsorted;     // I after pass 2
 };
 
-template <class T>
-struct VisSort1dResult {
+template <class T> struct VisSort1dResult {
     std::vector<T> sorted;
-    uint64_t comparisons = 0;  // calls to the strict weak order
+    uint64_t comparisons = 0; // calls to the strict weak order
     uint32_t iterations = 0;
-    std::vector<VisSort1dStep<T>> trace;  // filled when requested
+    std::vector<VisSort1dStep<T>> trace; // filled when requested
 };
 
 /// Sorts input ascending with Vis-sort, comparing elements only against running minima.
@@ -35,7 +33,7 @@ template <class T, class Less>
 VisSort1dResult<T> visSort1d(std::span<const T> input, Less less, bool keep_trace = false) {
     VisSort1dResult<T> result;
     std::vector<T> unsorted(input.begin(), input.end());
-    std::vector<uint8_t> in_monotone_run(unsorted.size(), 0);  // M, persistent across iterations
+    std::vector<uint8_t> in_monotone_run(unsorted.size(), 0); // M, persistent across iterations
     auto counted_less = [&](const T& a, const T& b) {
         ++result.comparisons;
         return less(a, b);
@@ -49,19 +47,21 @@ VisSort1dResult<T> visSort1d(std::span<const T> input, Less less, bool keep_trac
             const T& x = unsorted[i];
             if (!in_monotone_run[i] && (!running_min || !counted_less(*running_min, x)))
                 in_monotone_run[i] = 1;
-            if (!running_min || counted_less(x, *running_min)) running_min = &x;
+            if (!running_min || counted_less(x, *running_min))
+                running_min = &x;
         }
         if (keep_trace) {
             VisSort1dStep<T> step;
             for (std::size_t i = 0; i < unsorted.size(); ++i)
-                if (in_monotone_run[i]) step.monotone_run.push_back(unsorted[i]);
+                if (in_monotone_run[i])
+                    step.monotone_run.push_back(unsorted[i]);
             result.trace.push_back(std::move(step));
         }
         // Pass 2, front to back: x in M moves to S if x <= the minimum of the unsorted elements
         // before it; everything after it is >= x already, because x is in M.
         std::vector<T> still_unsorted;
         std::vector<uint8_t> still_in_run;
-        std::size_t min_index = SIZE_MAX;  // index into still_unsorted
+        std::size_t min_index = SIZE_MAX; // index into still_unsorted
         for (std::size_t i = 0; i < unsorted.size(); ++i) {
             const T& x = unsorted[i];
             if (in_monotone_run[i] &&

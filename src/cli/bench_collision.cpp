@@ -13,7 +13,7 @@
 #include "collision_bench.h"
 #include "support/measurement.h"
 #if VISSORT_WITH_GL
-#include "vissort/transparency_renderer.h"  // writePng
+#include "vissort/transparency_renderer.h" // writePng
 #endif
 
 namespace vissort::cli {
@@ -34,8 +34,7 @@ int runCollisionBench(const BenchOptions& options) {
 
     std::cout << "bench collision: builtin:bunnies?n=N, " << frames
               << " timed frames each after one untimed; " << bench::machineName() << ", "
-              << bench::hardwareThreads()
-              << " cores (vissort-1t and the peers: one thread)\n";
+              << bench::hardwareThreads() << " cores (vissort-1t and the peers: one thread)\n";
     std::cout << std::setw(5) << "N" << std::setw(12) << "method" << std::setw(11) << "median ms"
               << std::setw(13) << "object pairs" << std::setw(15) << "triangle pairs"
               << std::setw(13) << "intersecting" << std::setw(8) << "missed" << std::setw(10)
@@ -82,11 +81,10 @@ int runCollisionBench(const BenchOptions& options) {
         return fail(kExitFailure, "--plot: this vissort was built without OpenGL "
                                   "(VISSORT_WITH_GL=OFF) and writes no PNG");
 #else
-        const Strip plot =
-            plotLines(series, "collision: ms per frame, deforming bunnies (" + bench::machineName() + ")",
-                      "bunnies N (builtin:bunnies?n=N)", "ms per frame", 900, 560);
-        if (Status error = writePng(options.plot_path, plot.width, plot.height, plot.rgba);
-            !error)
+        const Strip plot = plotLines(
+            series, "collision: ms per frame, deforming bunnies (" + bench::machineName() + ")",
+            "bunnies N (builtin:bunnies?n=N)", "ms per frame", 900, 560);
+        if (Status error = writePng(options.plot_path, plot.width, plot.height, plot.rgba); !error)
             return fail(kExitFailure, error.error);
 #endif
     }

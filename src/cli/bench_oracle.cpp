@@ -29,7 +29,8 @@ int runOracleBench(const BenchOptions& options) {
     std::cout << "vissort bench oracle on " << bench::machineName() << ", "
               << bench::hardwareThreads() << " hardware threads\n";
     const Result<bench::OracleBenchResult> result = bench::runOracleBench(settings);
-    if (!result) return fail(kExitFailure, result.error);
+    if (!result)
+        return fail(kExitFailure, result.error);
     std::cout << result.value->gl_line << '\n';
     std::cout << std::left;
     for (const bench::OracleBenchRow& row : result.value->rows) {

@@ -30,7 +30,8 @@ int runTransparencyBench(const BenchOptions& options) {
     settings.width = width;
     settings.height = height;
     const Result<OrderLevel> parsed_level = parseOrderLevel(options.level);
-    if (!parsed_level) return fail(kExitUsage, "--level: " + parsed_level.error);
+    if (!parsed_level)
+        return fail(kExitUsage, "--level: " + parsed_level.error);
     const OrderLevel level = *parsed_level.value;
     settings.level = level;
     if (!parseCounts(options.depths, settings.depths))
@@ -98,10 +99,12 @@ int runTransparencyBench(const BenchOptions& options) {
     std::cout << "\n(x): a method's time over vissort's; seen: the most transparent layers at a "
                  "pixel, from depth peeling's passes\n";
     if (!options.json_path.empty()) {
-        const nlohmann::json document = {
-            {"machine", bench::machineName()}, {"gl_renderer", gl.renderer},
-            {"size", {width, height}},  {"level", orderLevelName(level)},
-            {"frames", frames},         {"rows", rows}};
+        const nlohmann::json document = {{"machine", bench::machineName()},
+                                         {"gl_renderer", gl.renderer},
+                                         {"size", {width, height}},
+                                         {"level", orderLevelName(level)},
+                                         {"frames", frames},
+                                         {"rows", rows}};
         if (const int code = writeJsonFile(options.json_path, document); code != kExitOk)
             return code;
     }

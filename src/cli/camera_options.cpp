@@ -14,7 +14,8 @@ constexpr uint64_t kMaxPixels = uint64_t(kMaxSide) * kMaxSide / 4;
 constexpr int kMaxFrames = 100000;
 
 bool parseDouble(std::string_view text, double& value) {
-    if (text.empty()) return false;
+    if (text.empty())
+        return false;
     const char* end = text.data() + text.size();
     auto [ptr, ec] = std::from_chars(text.data(), end, value);
     return ec == std::errc() && ptr == end && std::isfinite(value);
@@ -28,8 +29,7 @@ std::string parseVec3(const std::string& option, const std::string& text, Vec3& 
         const bool last = i == 2;
         if ((comma == std::string::npos) != last)
             return option + " expects X,Y,Z (three finite numbers), got '" + text + "'";
-        const std::string_view part(text.data() + start,
-                                    (last ? text.size() : comma) - start);
+        const std::string_view part(text.data() + start, (last ? text.size() : comma) - start);
         if (!parseDouble(part, v[i]))
             return option + " expects X,Y,Z (three finite numbers), got '" + text + "'";
         start = comma + 1;
@@ -80,12 +80,14 @@ void addViewOptions(CLI::App& command, ViewOptions& options) {
 }
 
 std::string resolveView(const ViewOptions& options, const Scene& scene, ResolvedView& view) {
-    if (auto error = parseSize(options.size, view.width, view.height); !error.empty()) return error;
+    if (auto error = parseSize(options.size, view.width, view.height); !error.empty())
+        return error;
     if (options.frames < 1 || options.frames > kMaxFrames)
         return "--frames must be between 1 and " + std::to_string(kMaxFrames);
     view.frames = options.frames;
     const Result<CameraPath> path = parseCameraPath(options.path);
-    if (!path) return "--path: " + path.error;
+    if (!path)
+        return "--path: " + path.error;
     view.path = *path.value;
 
     const bool perspective_given =
@@ -104,18 +106,23 @@ std::string resolveView(const ViewOptions& options, const Scene& scene, Resolved
         if (perspective_given && view.camera.projection == Projection::orthographic)
             view.camera = defaultCamera(bounds, aspect);
         if (!options.eye.empty())
-            if (auto e = parseVec3("--eye", options.eye, view.camera.eye); !e.empty()) return e;
+            if (auto e = parseVec3("--eye", options.eye, view.camera.eye); !e.empty())
+                return e;
         if (!options.target.empty())
             if (auto e = parseVec3("--target", options.target, view.camera.target); !e.empty())
                 return e;
         if (!options.up.empty())
-            if (auto e = parseVec3("--up", options.up, view.camera.up); !e.empty()) return e;
-        if (options.fov) view.camera.fov_degrees = *options.fov;
+            if (auto e = parseVec3("--up", options.up, view.camera.up); !e.empty())
+                return e;
+        if (options.fov)
+            view.camera.fov_degrees = *options.fov;
     }
     if (auto e = validateCamera(view.camera).error; !e.empty()) {
         // Name where the bad camera came from: the user's options, or the scene file.
-        if (!options.ortho_dir.empty()) return "--ortho-dir: " + e;
-        if (perspective_given) return "--eye/--target/--up/--fov: " + e;
+        if (!options.ortho_dir.empty())
+            return "--ortho-dir: " + e;
+        if (perspective_given)
+            return "--eye/--target/--up/--fov: " + e;
         return "the scene's camera: " + e;
     }
     return {};

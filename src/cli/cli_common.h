@@ -15,9 +15,9 @@ namespace vissort::cli {
 
 // Distinct codes so scripts can tell a mistyped command from a bad input file.
 inline constexpr int kExitOk = 0;
-inline constexpr int kExitFailure = 1;  // could not write an output, or an internal failure
-inline constexpr int kExitUsage = 2;    // bad command-line syntax or values
-inline constexpr int kExitInput = 3;    // the scene or a mesh could not be loaded
+inline constexpr int kExitFailure = 1; // could not write an output, or an internal failure
+inline constexpr int kExitUsage = 2;   // bad command-line syntax or values
+inline constexpr int kExitInput = 3;   // the scene or a mesh could not be loaded
 
 /// Prints "vissort: error: MESSAGE" on one line to stderr and returns code.
 int fail(int code, const std::string& message);

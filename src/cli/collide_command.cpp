@@ -9,9 +9,9 @@
 #include "cli/commands.h"
 #include "cli/json_output.h"
 #include "cli/obj_output.h"
+#include "support/measurement.h"
 #include "vissort/collision.h"
 #include "vissort/frame_driver.h"
-#include "support/measurement.h"
 
 namespace vissort::cli {
 namespace {
@@ -81,7 +81,8 @@ CLI::App* addCollideCommand(CLI::App& app, CollideOptions& options) {
 int runCollide(const CollideOptions& options) {
     CollisionSettings settings;
     const Result<CollisionMethod> method = parseCollisionMethod(options.method);
-    if (!method) return fail(kExitUsage, "--method: " + method.error);
+    if (!method)
+        return fail(kExitUsage, "--method: " + method.error);
     settings.method = *method.value;
     if (auto error = parseSize(options.size, settings.width, settings.height); !error.empty())
         return fail(kExitUsage, error);

@@ -30,7 +30,7 @@ int runInfo(const InfoOptions& options);
 struct BenchOptions {
     std::string what;
     int repeat = 3;
-    std::optional<int> frames;  // each benchmark has its own default
+    std::optional<int> frames; // each benchmark has its own default
     int gl_frames = 5;
     std::string size = "1024x1024";
     std::string level = "multistage";

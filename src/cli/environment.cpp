@@ -27,10 +27,13 @@ Status applyEnvironment() {
     setenv("LP_NUM_THREADS", "0", 0);
     if (std::string_view threads = variable("VISSORT_THREADS"); !threads.empty()) {
         uint32_t value = 0;
-        const auto [end, error] = std::from_chars(threads.data(), threads.data() + threads.size(), value);
+        const auto [end, error] =
+            std::from_chars(threads.data(), threads.data() + threads.size(), value);
         if (error != std::errc{} || end != threads.data() + threads.size() || value > 256)
-            return Status::failure("VISSORT_THREADS must be a whole number from 0 (one per core) to "
-                                   "256, not '" + std::string(threads) + "'");
+            return Status::failure(
+                "VISSORT_THREADS must be a whole number from 0 (one per core) to "
+                "256, not '" +
+                std::string(threads) + "'");
         oracle_options.threads = value;
     }
     if (std::string_view simd = variable("VISSORT_SIMD"); !simd.empty()) {
@@ -42,13 +45,17 @@ Status applyEnvironment() {
     if (std::string_view platform = variable("VISSORT_GL_PLATFORM"); !platform.empty()) {
         Result<GlPlatform> parsed = parseGlPlatform(platform);
         // Only the commands that need OpenGL fail: the cpu oracle still works.
-        if (parsed) GlContext::setSharedPlatform(*parsed.value);
-        else GlContext::refuseShared("no OpenGL context: VISSORT_GL_PLATFORM: " + parsed.error);
+        if (parsed)
+            GlContext::setSharedPlatform(*parsed.value);
+        else
+            GlContext::refuseShared("no OpenGL context: VISSORT_GL_PLATFORM: " + parsed.error);
     }
 #endif
     return Status::ok();
 }
 
-const OracleOptions& environmentOracleOptions() { return oracle_options; }
+const OracleOptions& environmentOracleOptions() {
+    return oracle_options;
+}
 
 } // namespace vissort::cli

@@ -12,8 +12,9 @@ namespace vissort::cli {
 CLI::App* addInfoCommand(CLI::App& app, InfoOptions& options) {
     CLI::App* command = app.add_subcommand("info", "Describe a scene: objects, triangles, bounds, "
                                                    "depth complexity from a view");
-    command->add_option("scene", options.scene,
-                        "Mesh file, JSON scene, or builtin:NAME?key=value&... (optional with --gl)");
+    command->add_option(
+        "scene", options.scene,
+        "Mesh file, JSON scene, or builtin:NAME?key=value&... (optional with --gl)");
     command->add_flag("--gl", options.gl,
                       "Print the OpenGL context's EGL platform, vendor, renderer and version "
                       "(VISSORT_GL_PLATFORM=auto|device|surfaceless picks the platform)");
@@ -28,7 +29,8 @@ int printGlInfo() {
     return failWithoutGl("info --gl");
 #else
     Result<std::shared_ptr<GlContext>> context = GlContext::shared();
-    if (!context) return fail(kExitFailure, context.error);
+    if (!context)
+        return fail(kExitFailure, context.error);
     const GlContextInfo& info = (*context.value)->info();
     std::cout << "OpenGL: " << info.version << '\n'
               << "  renderer: " << info.renderer << '\n'
@@ -43,20 +45,24 @@ int printGlInfo() {
 
 int runInfo(const InfoOptions& options) {
     if (options.gl) {
-        if (const int code = printGlInfo(); code != kExitOk) return code;
-        if (options.scene.empty()) return kExitOk;
+        if (const int code = printGlInfo(); code != kExitOk)
+            return code;
+        if (options.scene.empty())
+            return kExitOk;
     } else if (options.scene.empty()) {
         return fail(kExitUsage, "info needs a scene, or --gl (run 'vissort info --help')");
     }
     std::optional<Scene> scene = loadSceneOrReport(options.scene);
-    if (!scene) return kExitInput;
+    if (!scene)
+        return kExitInput;
     ResolvedView view;
     if (auto error = resolveView(options.view, *scene, view); !error.empty())
         return fail(kExitUsage, error);
 
     const Bounds bounds = scene->positions.bounds();
     std::size_t transparent = 0;
-    for (const SceneObject& o : scene->objects) transparent += o.transparent ? 1 : 0;
+    for (const SceneObject& o : scene->objects)
+        transparent += o.transparent ? 1 : 0;
     std::cout << "scene: " << (scene->name.empty() ? options.scene : scene->name) << '\n'
               << "objects: " << scene->objects.size() << " (" << transparent << " transparent)\n"
               << "triangles: " << scene->triangleCount() << '\n'
@@ -66,15 +72,17 @@ int runInfo(const InfoOptions& options) {
               << "], radius " << bounds.radius() << '\n';
     for (std::size_t i = 0; i < std::min<std::size_t>(scene->objects.size(), 10); ++i) {
         const SceneObject& o = scene->objects[i];
-        std::cout << "  object " << i << " '" << o.name << "': " << o.triangle_count
-                  << " triangles" << (o.transparent ? ", transparent" : "") << '\n';
+        std::cout << "  object " << i << " '" << o.name << "': " << o.triangle_count << " triangles"
+                  << (o.transparent ? ", transparent" : "") << '\n';
     }
-    if (scene->objects.size() > 10) std::cout << "  ...\n";
+    if (scene->objects.size() > 10)
+        std::cout << "  ...\n";
 
     const DepthComplexity depth =
         estimateDepthComplexity(scene->positions, view.camera, bounds, view.width, view.height);
     std::cout << "depth complexity (" << depth.width << 'x' << depth.height << " rays, "
-              << (view.camera.projection == Projection::perspective ? "perspective" : "orthographic")
+              << (view.camera.projection == Projection::perspective ? "perspective"
+                                                                    : "orthographic")
               << "): max " << depth.max << ", mean " << depth.mean << " over "
               << depth.covered_pixels << " covered pixels\n";
     return kExitOk;

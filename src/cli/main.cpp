@@ -9,8 +9,9 @@ int main(int argc, char** argv) {
     using namespace vissort::cli;
     CLI::App app{"vissort: visibility ordering of 3D geometry with occlusion queries (Vis-sort)"};
     app.require_subcommand(1);
-    app.footer("Run 'vissort order --help' for the camera, --size, --level, --oracle, --frames and\n"
-               "output options; docs/ and README.md explain the algorithm and the scene formats.");
+    app.footer(
+        "Run 'vissort order --help' for the camera, --size, --level, --oracle, --frames and\n"
+        "output options; docs/ and README.md explain the algorithm and the scene formats.");
     OrderOptions order;
     InfoOptions info;
     CLI::App* order_command = addOrderCommand(app, order);
@@ -34,11 +35,16 @@ int main(int argc, char** argv) {
     if (vissort::Status environment = applyEnvironment(); !environment)
         return fail(kExitFailure, environment.error);
     try {
-        if (order_command->parsed()) return runOrder(order);
-        if (info_command->parsed()) return runInfo(info);
-        if (bench_command->parsed()) return runBench(bench);
-        if (render_command->parsed()) return runRender(render);
-        if (collide_command->parsed()) return runCollide(collide);
+        if (order_command->parsed())
+            return runOrder(order);
+        if (info_command->parsed())
+            return runInfo(info);
+        if (bench_command->parsed())
+            return runBench(bench);
+        if (render_command->parsed())
+            return runRender(render);
+        if (collide_command->parsed())
+            return runCollide(collide);
     } catch (const std::bad_alloc&) {
         return fail(kExitFailure, "out of memory (try a smaller --size or scene)");
     } catch (const std::exception& e) {

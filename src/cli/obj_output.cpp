@@ -5,8 +5,7 @@
 namespace vissort::cli {
 
 bool writePrimitivesObj(const std::string& path, const std::string& comment,
-                        PositionsView positions,
-                        std::span<const PrimitiveRange> primitives) {
+                        PositionsView positions, std::span<const PrimitiveRange> primitives) {
     std::ofstream out(path);
     if (!out)
         return false;

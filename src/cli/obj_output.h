@@ -13,7 +13,6 @@ namespace vissort::cli {
 /// id order (so with primitives tiling the triangles in order, face i of the file is triangle
 /// i), after a `# comment` line. False when the file cannot be written.
 bool writePrimitivesObj(const std::string& path, const std::string& comment,
-                        PositionsView positions,
-                        std::span<const PrimitiveRange> primitives);
+                        PositionsView positions, std::span<const PrimitiveRange> primitives);
 
 } // namespace vissort::cli

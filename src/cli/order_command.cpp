@@ -17,7 +17,8 @@ namespace {
 
 nlohmann::json frameRecord(const FrameOrder& frame, bool back_to_front) {
     std::vector<uint32_t> order = frame.order;
-    if (back_to_front) std::reverse(order.begin(), order.end());
+    if (back_to_front)
+        std::reverse(order.begin(), order.end());
     return {{"order", order},
             {"level", orderLevelName(frame.level)},
             {"cycles", frame.cycles},
@@ -43,15 +44,16 @@ void printFrame(int index, const FrameOrder& frame) {
 
 CLI::App* addOrderCommand(CLI::App& app, OrderOptions& options) {
     CLI::App* command = app.add_subcommand("order", "Compute a visibility order of a scene");
-    command->add_option("scene", options.scene,
-                        "Mesh file, JSON scene, or builtin:NAME?key=value&...")
+    command
+        ->add_option("scene", options.scene, "Mesh file, JSON scene, or builtin:NAME?key=value&...")
         ->required();
     addViewOptions(*command, options.view);
     command->add_option("--level", options.level, "object, triangle or multistage")
         ->capture_default_str();
-    command->add_option("--oracle", options.oracle,
-                        "cpu, cpu-reference, exact or gl (OpenGL through headless EGL; "
-                        "VISSORT_GL_PLATFORM=auto|device|surfaceless picks the EGL platform)")
+    command
+        ->add_option("--oracle", options.oracle,
+                     "cpu, cpu-reference, exact or gl (OpenGL through headless EGL; "
+                     "VISSORT_GL_PLATFORM=auto|device|surfaceless picks the EGL platform)")
         ->capture_default_str();
     command->add_flag("--back-to-front", options.back_to_front,
                       "Output back to front (default front to back)");
@@ -63,21 +65,27 @@ CLI::App* addOrderCommand(CLI::App& app, OrderOptions& options) {
 
 int runOrder(const OrderOptions& options) {
     const Result<OrderLevel> parsed_level = parseOrderLevel(options.level);
-    if (!parsed_level) return fail(kExitUsage, "--level: " + parsed_level.error);
+    if (!parsed_level)
+        return fail(kExitUsage, "--level: " + parsed_level.error);
     const OrderLevel level = *parsed_level.value;
     const Result<OracleKind> parsed_oracle = parseOracleKind(options.oracle);
-    if (!parsed_oracle) return fail(kExitUsage, "--oracle: " + parsed_oracle.error);
+    if (!parsed_oracle)
+        return fail(kExitUsage, "--oracle: " + parsed_oracle.error);
     const OracleKind oracle_kind = *parsed_oracle.value;
     std::optional<Scene> scene = loadSceneOrReport(options.scene);
-    if (!scene) return kExitInput;
+    if (!scene)
+        return kExitInput;
     ResolvedView view;
     if (auto error = resolveView(options.view, *scene, view); !error.empty())
         return fail(kExitUsage, error);
 
-    Result<std::unique_ptr<GeometryOracle>> made = makeOracle(oracle_kind, environmentOracleOptions());
-    if (!made) return fail(kExitFailure, made.error);
+    Result<std::unique_ptr<GeometryOracle>> made =
+        makeOracle(oracle_kind, environmentOracleOptions());
+    if (!made)
+        return fail(kExitFailure, made.error);
     std::unique_ptr<GeometryOracle> oracle = std::move(*made.value);
-    SceneOrderer orderer(scene->objectPrimitives(), uint32_t(scene->triangleCount()), level, *oracle);
+    SceneOrderer orderer(scene->objectPrimitives(), uint32_t(scene->triangleCount()), level,
+                         *oracle);
     FrameDriver driver(*scene, view.camera, view.path, view.width, view.height);
     nlohmann::json frames = nlohmann::json::array();
     FrameOrder last;
@@ -101,17 +109,21 @@ int runOrder(const OrderOptions& options) {
     std::cout << "order (" << (options.back_to_front ? "back to front" : "front to back") << ") of "
               << last.order.size() << ' ' << unit << ':';
     std::vector<uint32_t> shown = last.order;
-    if (options.back_to_front) std::reverse(shown.begin(), shown.end());
-    for (std::size_t i = 0; i < std::min<std::size_t>(shown.size(), 20); ++i) std::cout << ' ' << shown[i];
+    if (options.back_to_front)
+        std::reverse(shown.begin(), shown.end());
+    for (std::size_t i = 0; i < std::min<std::size_t>(shown.size(), 20); ++i)
+        std::cout << ' ' << shown[i];
     std::cout << (shown.size() > 20 ? " ...\n" : "\n");
     std::cout << "cycles: " << last.cycles.size();
     for (std::size_t c = 0; c < std::min<std::size_t>(last.cycles.size(), 5); ++c) {
         std::cout << (c ? "; " : " (") << last.cycles[c].size() << " primitives";
-        if (c + 1 == std::min<std::size_t>(last.cycles.size(), 5)) std::cout << ')';
+        if (c + 1 == std::min<std::size_t>(last.cycles.size(), 5))
+            std::cout << ')';
     }
     std::cout << "\nlast frame: " << last.stats.iterations << " iterations, " << last.stats.queries
               << " queries, " << last.stats.draws << " draws, " << last.milliseconds << " ms";
-    if (view.frames > 1) std::cout << "; mean " << total_ms / view.frames << " ms per frame";
+    if (view.frames > 1)
+        std::cout << "; mean " << total_ms / view.frames << " ms per frame";
     std::cout << '\n';
 
     if (!options.json_path.empty()) {
@@ -120,7 +132,8 @@ int runOrder(const OrderOptions& options) {
         document["oracle"] = oracleName(oracle_kind);
         document["back_to_front"] = options.back_to_front;
         document["size"] = {view.width, view.height};
-        if (view.frames > 1) document["frames"] = std::move(frames);
+        if (view.frames > 1)
+            document["frames"] = std::move(frames);
         if (const int code = writeJsonFile(options.json_path, document); code != kExitOk)
             return code;
     }

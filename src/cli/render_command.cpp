@@ -11,8 +11,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
-#include "cli/environment.h"
 #include "cli/comparison_strip.h"
+#include "cli/environment.h"
 #include "cli/json_output.h"
 #include "vissort/collision.h"
 #include "vissort/frame_driver.h"
@@ -98,8 +98,7 @@ int renderEveryMethod(const RenderOptions& options, RenderSettings settings, con
     }
     tiles.insert(tiles.end(), maps.begin(), maps.end());
     const Strip strip = composeStrip(tiles, view.width, view.height, uint32_t(std::size(kShown)));
-    if (Status error = writePng(options.output, strip.width, strip.height, strip.rgba);
-        !error)
+    if (Status error = writePng(options.output, strip.width, strip.height, strip.rgba); !error)
         return fail(kExitFailure, error.error);
     std::cout << options.output << ": every method (top) and its error against linked-list "
               << "(below: grey within 1/255, yellow to red beyond)\n";
@@ -179,14 +178,17 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
 }
 
 #if !VISSORT_WITH_GL
-int runRender(const RenderOptions&) { return failWithoutGl("render"); }
+int runRender(const RenderOptions&) {
+    return failWithoutGl("render");
+}
 #else
 int runRender(const RenderOptions& options) {
     RenderSettings settings;
     const bool all_methods = options.method == "all";
     if (!all_methods) {
         const Result<BlendMethod> method = parseBlendMethod(options.method);
-        if (!method) return fail(kExitUsage, "--method: " + method.error + " or all");
+        if (!method)
+            return fail(kExitUsage, "--method: " + method.error + " or all");
         settings.method = *method.value;
     }
     if (all_methods && options.highlight_collisions)
@@ -197,14 +199,17 @@ int runRender(const RenderOptions& options) {
     BlendMethod reference_method{};
     if (!options.reference.empty()) {
         const Result<BlendMethod> reference = parseBlendMethod(options.reference);
-        if (!reference) return fail(kExitUsage, "--reference: " + reference.error);
+        if (!reference)
+            return fail(kExitUsage, "--reference: " + reference.error);
         reference_method = *reference.value;
     }
     const Result<OrderLevel> level = parseOrderLevel(options.level);
-    if (!level) return fail(kExitUsage, "--level: " + level.error);
+    if (!level)
+        return fail(kExitUsage, "--level: " + level.error);
     settings.level = *level.value;
     const Result<OracleKind> oracle = parseOracleKind(options.oracle);
-    if (!oracle) return fail(kExitUsage, "--oracle: " + oracle.error);
+    if (!oracle)
+        return fail(kExitUsage, "--oracle: " + oracle.error);
     settings.oracle = *oracle.value;
     settings.oracle_options = environmentOracleOptions();
     if (!(options.alpha > 0.0 && options.alpha <= 1.0))
@@ -213,7 +218,8 @@ int runRender(const RenderOptions& options) {
         return fail(kExitUsage, "--shading must be lit or flat, got '" + options.shading + "'");
     settings.flat_shading = options.shading == "flat";
     const Result<RenderSettings::OrderCheck> check = parseOrderCheck(options.check);
-    if (!check) return fail(kExitUsage, "--check: " + check.error);
+    if (!check)
+        return fail(kExitUsage, "--check: " + check.error);
     settings.check = *check.value;
     // At least one fragment (24 bytes); at most a petabyte, far beyond any driver.
     if (!(options.list_memory_mib >= 1.0 / 1024 && options.list_memory_mib <= 1e9))
@@ -256,7 +262,8 @@ int runRender(const RenderOptions& options) {
     if (options.highlight_collisions) {
         CollisionSettings collision_settings;
         collision_settings.threads = 0;
-        collisions = std::make_unique<CollisionDetector>(scene->objectPrimitives(), collision_settings);
+        collisions =
+            std::make_unique<CollisionDetector>(scene->objectPrimitives(), collision_settings);
     }
     FrameDriver driver(*scene, view.camera, view.path, view.width, view.height);
     nlohmann::json frames = nlohmann::json::array();
@@ -270,7 +277,8 @@ int runRender(const RenderOptions& options) {
             const std::vector<uint32_t> triangles = collidingTriangles(collided.pairs);
             highlighted = triangles.size();
             renderer.setHighlightedTriangles(triangles);
-            if (reference) reference->setHighlightedTriangles(triangles);
+            if (reference)
+                reference->setHighlightedTriangles(triangles);
         }
         RenderStats stats;
         const std::vector<uint8_t> pixels = renderer.render(positions, vp, stats).toRgba8();
@@ -301,7 +309,7 @@ int runRender(const RenderOptions& options) {
                 const std::string map_path =
                     view.frames > 1 ? framePath(options.error_map, f) : options.error_map;
                 if (Status e = writePng(map_path, view.width, view.height,
-                                      errorMap(pixels, reference_pixels));
+                                        errorMap(pixels, reference_pixels));
                     !e)
                     return fail(kExitFailure, e.error);
             }

@@ -15,7 +15,8 @@ std::vector<Vec3> defaultCollisionDirections() {
 
 std::vector<CollisionMethod> collisionMethods() {
     std::vector<CollisionMethod> methods;
-    for (const EnumName<CollisionMethod>& entry : kCollisionMethodNames) methods.push_back(entry.value);
+    for (const EnumName<CollisionMethod>& entry : kCollisionMethodNames)
+        methods.push_back(entry.value);
     return methods;
 }
 

@@ -125,8 +125,7 @@ void RefitBvh::appendCut(const Box3f& region, uint32_t max_size, std::vector<uin
     }
 }
 
-uint64_t overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b,
-                                  PositionsView positions,
+uint64_t overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b, PositionsView positions,
                                   std::vector<std::pair<uint32_t, uint32_t>>& pairs,
                                   std::vector<std::pair<uint32_t, uint32_t>>& stack) {
     const auto na = a.nodes(), nb = b.nodes();

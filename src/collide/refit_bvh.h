@@ -61,8 +61,7 @@ Box3f triangleBox(PositionsView positions, uint32_t t);
 /// Every pair (ta, tb) of a triangle of a and one of b whose boxes overlap and whose diagonal
 /// extents overlap too (triangle_boxes.h), appended to pairs; stack is scratch. Returns how many
 /// pairs' boxes overlapped (before the diagonals).
-uint64_t overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b,
-                                  PositionsView positions,
+uint64_t overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b, PositionsView positions,
                                   std::vector<std::pair<uint32_t, uint32_t>>& pairs,
                                   std::vector<std::pair<uint32_t, uint32_t>>& stack);
 

@@ -139,7 +139,7 @@ private:
     std::vector<RefitBvh> trees_;
     uint32_t threads_;
     std::vector<Worker> workers_;
-    WorkerPool* pool_ = nullptr;  // the caller's or the shared one; null: single-threaded
+    WorkerPool* pool_ = nullptr; // the caller's or the shared one; null: single-threaded
     CandidatePairs candidates_;
     std::vector<Box3f> object_boxes_;
     std::vector<uint32_t> sweep_order_; // overlappingBoxPairs' scratch

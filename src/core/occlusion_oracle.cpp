@@ -9,7 +9,8 @@ void OcclusionOracle::backToFrontPass(std::span<const uint32_t> sequence,
     assert(query.size() == sequence.size() && behind.size() == sequence.size());
     clear();
     for (std::size_t i = sequence.size(); i-- > 0;) {
-        if (query[i]) behind[i] = anyBehind(sequence[i]) ? 1 : 0;
+        if (query[i])
+            behind[i] = anyBehind(sequence[i]) ? 1 : 0;
         draw(sequence[i]);
     }
 }
@@ -21,7 +22,8 @@ void OcclusionOracle::frontToBackPass(std::span<const uint32_t> sequence,
     for (std::size_t i = 0; i < sequence.size(); ++i) {
         if (query[i]) {
             behind[i] = anyBehind(sequence[i]) ? 1 : 0;
-            if (behind[i]) draw(sequence[i]);
+            if (behind[i])
+                draw(sequence[i]);
         } else {
             draw(sequence[i]);
         }
@@ -32,8 +34,10 @@ void OcclusionOracle::queryAgainst(std::span<const uint32_t> occluders,
                                    std::span<const uint32_t> targets, std::span<uint8_t> behind) {
     assert(behind.size() == targets.size());
     clear();
-    for (uint32_t p : occluders) draw(p);
-    for (std::size_t i = 0; i < targets.size(); ++i) behind[i] = anyBehind(targets[i]) ? 1 : 0;
+    for (uint32_t p : occluders)
+        draw(p);
+    for (std::size_t i = 0; i < targets.size(); ++i)
+        behind[i] = anyBehind(targets[i]) ? 1 : 0;
 }
 
 } // namespace vissort

@@ -87,17 +87,20 @@ std::vector<std::vector<uint32_t>> findSourceCycles(OcclusionOracle& oracle,
     enum : uint8_t { kUnknown = 0, kInSource = 1, kDownstream = 2 };
     std::vector<uint8_t>& walk_state = scratch.walk_state;
     walk_state.resize(oracle.primitiveCount(), kUnknown);
-    std::vector<uint32_t>& position = scratch.position;  // in stuck, valid for stuck primitives
+    std::vector<uint32_t>& position = scratch.position; // in stuck, valid for stuck primitives
     position.resize(oracle.primitiveCount());
-    for (std::size_t i = 0; i < stuck.size(); ++i) position[stuck[i]] = uint32_t(i);
+    for (std::size_t i = 0; i < stuck.size(); ++i)
+        position[stuck[i]] = uint32_t(i);
     std::vector<uint32_t>& outside = scratch.outside;
     std::vector<uint8_t>& behind = scratch.behind;
 
     std::vector<std::vector<uint32_t>> sources;
     std::size_t next_start = 0;
     for (uint32_t walk = 0; walk < max_walks; ++walk) {
-        while (next_start < stuck.size() && walk_state[stuck[next_start]] != kUnknown) ++next_start;
-        if (next_start == stuck.size()) break;
+        while (next_start < stuck.size() && walk_state[stuck[next_start]] != kUnknown)
+            ++next_start;
+        if (next_start == stuck.size())
+            break;
         // path[k + 1] holds an occluder of a member of path[k]; each entry is strongly connected.
         std::vector<std::vector<uint32_t>> path{{stuck[next_start]}};
         path_index[stuck[next_start]] = 0;
@@ -125,24 +128,29 @@ std::vector<std::vector<uint32_t>> findSourceCycles(OcclusionOracle& oracle,
             if (!have_occluder) {
                 outside.clear();
                 for (uint32_t p : stuck)
-                    if (path_index[p] != top) outside.push_back(p);
+                    if (path_index[p] != top)
+                        outside.push_back(p);
                 behind.assign(component.size(), 0);
-                if (!outside.empty()) tester.test(outside, component, behind);
+                if (!outside.empty())
+                    tester.test(outside, component, behind);
                 const auto occluded = std::find(behind.begin(), behind.end(), 1);
                 if (occluded == behind.end()) {
                     // Nothing else that is stuck occludes the component: a source. Stuck order.
                     std::vector<uint32_t> members;
                     for (uint32_t p : stuck)
-                        if (path_index[p] == top) members.push_back(p);
+                        if (path_index[p] == top)
+                            members.push_back(p);
                     sources.push_back(std::move(members));
                     found_source = true;
                     break;
                 }
                 scratch.candidates.assign(outside.begin(), outside.end());
-                occluder = tester.findOccluder(scratch.candidates, component[occluded - behind.begin()]);
+                occluder =
+                    tester.findOccluder(scratch.candidates, component[occluded - behind.begin()]);
             }
             // Reaching a found source, or what lies behind one, puts the whole path behind it.
-            if (walk_state[occluder] != kUnknown) break;
+            if (walk_state[occluder] != kUnknown)
+                break;
             extendPath(path, path_index, occluder);
         }
         const uint8_t state = found_source ? kInSource : kDownstream;
@@ -152,7 +160,8 @@ std::vector<std::vector<uint32_t>> findSourceCycles(OcclusionOracle& oracle,
                 path_index[p] = kNotOnPath;
             }
     }
-    for (uint32_t p : stuck) walk_state[p] = kUnknown;
+    for (uint32_t p : stuck)
+        walk_state[p] = kUnknown;
     return sources;
 }
 

@@ -19,10 +19,12 @@ namespace {
 constexpr uint32_t kWalksPerStuckIteration = 8;
 
 bool isPermutation(std::span<const uint32_t> ids, uint32_t n) {
-    if (ids.size() != n) return false;
+    if (ids.size() != n)
+        return false;
     std::vector<uint8_t> seen(n, 0);
     for (uint32_t id : ids) {
-        if (id >= n || seen[id]) return false;
+        if (id >= n || seen[id])
+            return false;
         seen[id] = 1;
     }
     return true;
@@ -70,11 +72,13 @@ private:
             query_[i] = in_monotone_run_[i] ? 0 : 1;
             queries += query_[i];
         }
-        if (queries == 0) return;  // everything is in M: no pass needed
+        if (queries == 0)
+            return; // everything is in M: no pass needed
         oracle_.backToFrontPass(unsorted_, query_, behind_);
         count(queries, unsorted_.size());
         for (std::size_t i = 0; i < unsorted_.size(); ++i)
-            if (query_[i] && !behind_[i]) in_monotone_run_[i] = 1;
+            if (query_[i] && !behind_[i])
+                in_monotone_run_[i] = 1;
     }
 
     // Pass 2, front to back. Constraint 2: p in M is output only if no fragment of p lies behind
@@ -129,9 +133,9 @@ private:
     // cycle-breaking rule), several per stuck iteration when the walks find them, and go on; M
     // stays valid because primitives are only removed.
     void outputSourceCycles() {
-        std::vector<std::vector<uint32_t>> sources = detail::findSourceCycles(
-            oracle_, unsorted_, in_monotone_run_, kWalksPerStuckIteration, result_.stats,
-            workspace_);
+        std::vector<std::vector<uint32_t>> sources =
+            detail::findSourceCycles(oracle_, unsorted_, in_monotone_run_, kWalksPerStuckIteration,
+                                     result_.stats, workspace_);
         for (const auto& cycle : sources)
             for (uint32_t p : cycle) {
                 in_cycle_[p] = 1;
@@ -139,14 +143,16 @@ private:
             }
         std::size_t kept = 0;
         for (std::size_t i = 0; i < unsorted_.size(); ++i) {
-            if (in_cycle_[unsorted_[i]]) continue;
+            if (in_cycle_[unsorted_[i]])
+                continue;
             unsorted_[kept] = unsorted_[i];
             in_monotone_run_[kept++] = in_monotone_run_[i];
         }
         unsorted_.resize(kept);
         in_monotone_run_.resize(kept);
         for (auto& cycle : sources) {
-            for (uint32_t p : cycle) in_cycle_[p] = 0;
+            for (uint32_t p : cycle)
+                in_cycle_[p] = 0;
             if (cycle.size() > 1) {
                 std::sort(cycle.begin(), cycle.end());
                 result_.cycles.push_back(std::move(cycle));
@@ -161,11 +167,11 @@ private:
     }
 
     OcclusionOracle& oracle_;
-    std::vector<uint32_t>& unsorted_;        // the list I, front to back
-    std::vector<uint8_t>& in_monotone_run_;  // M, parallel to unsorted_
-    std::vector<uint8_t>& query_;            // per-pass scratch
+    std::vector<uint32_t>& unsorted_;       // the list I, front to back
+    std::vector<uint8_t>& in_monotone_run_; // M, parallel to unsorted_
+    std::vector<uint8_t>& query_;           // per-pass scratch
     std::vector<uint8_t>& behind_;
-    std::vector<uint8_t>& in_cycle_;         // per primitive, zero between cycles
+    std::vector<uint8_t>& in_cycle_; // per primitive, zero between cycles
     VisSortWorkspace& workspace_;
     VisibilityOrder& result_;
 };

@@ -18,11 +18,11 @@ struct WorkerPool::State {
     void work(uint32_t index, uint64_t seen);
     void grow(uint32_t threads);
 
-    std::mutex run_mutex;  // held for a whole run, and while growing
+    std::mutex run_mutex; // held for a whole run, and while growing
     std::vector<std::thread> threads;
-    std::mutex mutex;      // guards what follows, up to thread_count
+    std::mutex mutex; // guards what follows, up to thread_count
     std::condition_variable wake, done;
-    uint64_t generation = 0;  // bumped per run; workers wait for a new one
+    uint64_t generation = 0; // bumped per run; workers wait for a new one
     uint32_t tasks = 0, pending = 0;
     void (*task)(void*, uint32_t) = nullptr;
     void* context = nullptr;
@@ -51,21 +51,25 @@ void WorkerPool::State::work(uint32_t index, uint64_t seen) {
         {
             std::unique_lock lock(mutex);
             wake.wait(lock, [&] { return stop || generation != seen; });
-            if (stop) return;
+            if (stop)
+                return;
             seen = generation;
-            if (index >= tasks) continue;  // not needed this run
+            if (index >= tasks)
+                continue; // not needed this run
             task_now = task;
             context_now = context;
         }
         task_now(context_now, index);
         std::lock_guard lock(mutex);
-        if (--pending == 0) done.notify_one();
+        if (--pending == 0)
+            done.notify_one();
     }
 }
 
 WorkerPool::WorkerPool(uint32_t threads) : state_(std::make_unique<State>()) {
     assert(threads >= 1);
-    if (threads > 1) state_->grow(threads);
+    if (threads > 1)
+        state_->grow(threads);
 }
 
 WorkerPool::~WorkerPool() {
@@ -74,7 +78,8 @@ WorkerPool::~WorkerPool() {
         state_->stop = true;
     }
     state_->wake.notify_all();
-    for (std::thread& t : state_->threads) t.join();
+    for (std::thread& t : state_->threads)
+        t.join();
 }
 
 WorkerPool& WorkerPool::shared() {
@@ -87,12 +92,16 @@ uint32_t WorkerPool::threadCount() const {
 }
 
 void WorkerPool::reserve(uint32_t threads) {
-    if (threads <= threadCount()) return;
+    if (threads <= threadCount())
+        return;
     std::lock_guard run_lock(state_->run_mutex);
-    if (threads > state_->thread_count.load(std::memory_order_relaxed)) state_->grow(threads);
+    if (threads > state_->thread_count.load(std::memory_order_relaxed))
+        state_->grow(threads);
 }
 
-uint64_t WorkerPool::runCount() const { return state_->runs.load(std::memory_order_relaxed); }
+uint64_t WorkerPool::runCount() const {
+    return state_->runs.load(std::memory_order_relaxed);
+}
 
 void WorkerPool::run(uint32_t tasks, void (*task)(void*, uint32_t), void* context) {
     State& s = *state_;

@@ -22,10 +22,12 @@ DepthComplexity measureDepthComplexity(PositionsView positions, const ViewProjec
         const uint64_t n = hits.endHit(p) - hits.firstHit(p);
         result.covered_pixels += n > 0 ? 1 : 0;
         result.max = std::max(result.max, n);
-        if (n >= result.histogram.size()) result.histogram.resize(n + 1, 0);
+        if (n >= result.histogram.size())
+            result.histogram.resize(n + 1, 0);
         ++result.histogram[n];
     }
-    if (result.histogram.empty()) result.histogram.assign(1, 0);
+    if (result.histogram.empty())
+        result.histogram.assign(1, 0);
     result.mean = result.covered_pixels ? double(result.hits) / double(result.covered_pixels) : 0.0;
     return result;
 }

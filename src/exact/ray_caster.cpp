@@ -20,8 +20,7 @@ namespace vissort::detail {
 namespace {
 
 // Owns one Embree handle (device or scene) and releases it once: non-copyable RAII.
-template <class Handle, void (*release)(Handle)>
-class EmbreeHandle {
+template <class Handle, void (*release)(Handle)> class EmbreeHandle {
 public:
     explicit EmbreeHandle(Handle handle) : handle_(handle) {}
     ~EmbreeHandle() {
@@ -152,7 +151,7 @@ struct PixelHit {
 struct RowBlock {
     std::vector<uint32_t> hit_counts; // one per pixel of the block
     std::vector<PixelHit> hits;
-    std::vector<uint8_t> near_edge;   // one per pixel of the block
+    std::vector<uint8_t> near_edge; // one per pixel of the block
 };
 
 class BlockCaster {
@@ -211,9 +210,11 @@ private:
             const bool at_centre =
                 std::any_of(candidates_.begin(), candidates_.end(),
                             [&](const Candidate& c) { return c.triangle == corner.triangle; });
-            if (at_centre) continue;
+            if (at_centre)
+                continue;
             const double depth = intersect(corner, o, dir).depth;
-            if (depth >= 0.0 && depth <= 1.0) return true;
+            if (depth >= 0.0 && depth <= 1.0)
+                return true;
         }
         return false;
     }
@@ -252,11 +253,13 @@ private:
                                   return a.triangle == b.triangle;
                               }),
                   out.end());
-        if (!mark_near_edges_) return;
+        if (!mark_near_edges_)
+            return;
         near_edge = 0;
         for (int i = 0; i < 4 && !near_edge; ++i)
-            near_edge = meetsAnother(px + 0.5 + ((i & 1) ? kRobustPixelMargin : -kRobustPixelMargin),
-                                     py + 0.5 + ((i & 2) ? kRobustPixelMargin : -kRobustPixelMargin));
+            near_edge =
+                meetsAnother(px + 0.5 + ((i & 1) ? kRobustPixelMargin : -kRobustPixelMargin),
+                             py + 0.5 + ((i & 2) ? kRobustPixelMargin : -kRobustPixelMargin));
     }
 
     RayTriangle rayCandidate(const Candidate& candidate, const Vec3& o, const Vec3& dir) const {
@@ -267,7 +270,8 @@ private:
 
     bool covers(const Candidate& candidate, const Vec3& o, const Vec3& dir) const {
         const RayTriangle hit = rayCandidate(candidate, o, dir);
-        if (hit.det == 0.0 || !std::isfinite(hit.det)) return false;
+        if (hit.det == 0.0 || !std::isfinite(hit.det))
+            return false;
         const double u = hit.u_det / hit.det;
         const double v = hit.v_det / hit.det;
         return u > 0 && v > 0 && 1.0 - u - v > 0;
@@ -305,8 +309,8 @@ constexpr std::size_t kParallelThreshold = 64 * 64;
 
 } // namespace
 
-AllHits castAllHits(PositionsView positions, const ViewProjection& view,
-                    unsigned thread_count, bool mark_near_edges) {
+AllHits castAllHits(PositionsView positions, const ViewProjection& view, unsigned thread_count,
+                    bool mark_near_edges) {
     assert(positions.x.size() == positions.y.size() && positions.x.size() == positions.z.size());
     assert(positions.x.size() % 3 == 0);
     assert(positions.triangleCount() < std::numeric_limits<uint32_t>::max());
@@ -357,7 +361,8 @@ AllHits castAllHits(PositionsView positions, const ViewProjection& view,
     result.triangles.reserve(total_hits);
     result.depths.reserve(total_hits);
     result.robust.reserve(total_hits);
-    if (mark_near_edges) result.near_edge.reserve(result.pixelCount());
+    if (mark_near_edges)
+        result.near_edge.reserve(result.pixelCount());
     std::size_t pixel = 0;
     for (const RowBlock& block : blocks) {
         if (mark_near_edges)

@@ -54,7 +54,7 @@ struct AllHits {
 /// mark_near_edges also casts the four corner rays of each pixel's margin square (five rays a
 /// pixel) to fill AllHits::near_edge. Throws std::runtime_error when no Embree device can be
 /// created.
-AllHits castAllHits(PositionsView positions, const ViewProjection& view,
-                    unsigned thread_count = 0, bool mark_near_edges = false);
+AllHits castAllHits(PositionsView positions, const ViewProjection& view, unsigned thread_count = 0,
+                    bool mark_near_edges = false);
 
 } // namespace vissort::detail

@@ -10,10 +10,16 @@
 namespace vissort {
 namespace {
 
-glm::dvec3 toGlm(const Vec3& v) { return {v.x, v.y, v.z}; }
-Vec3 fromGlm(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+glm::dvec3 toGlm(const Vec3& v) {
+    return {v.x, v.y, v.z};
+}
+Vec3 fromGlm(const glm::dvec3& v) {
+    return {v.x, v.y, v.z};
+}
 
-glm::dmat4 toMat(const std::array<double, 16>& m) { return glm::make_mat4(m.data()); }
+glm::dmat4 toMat(const std::array<double, 16>& m) {
+    return glm::make_mat4(m.data());
+}
 
 std::array<double, 16> fromMat(const glm::dmat4& m) {
     std::array<double, 16> out{};
@@ -31,14 +37,18 @@ bool isFinite(const Vec3& v) {
 }
 
 // A sphere of radius 0 (one point) still gets a usable frame.
-double framingRadius(const Bounds& b) { return b.radius() > 0 ? b.radius() : 1.0; }
+double framingRadius(const Bounds& b) {
+    return b.radius() > 0 ? b.radius() : 1.0;
+}
 
 } // namespace
 
 static std::string cameraProblem(const CameraSpec& camera) {
     if (camera.projection == Projection::orthographic) {
-        if (!isFinite(camera.ortho_direction)) return "orthographic direction must be finite and below 1e30";
-        if (glm::length(toGlm(camera.ortho_direction)) < 1e-12) return "orthographic direction is zero";
+        if (!isFinite(camera.ortho_direction))
+            return "orthographic direction must be finite and below 1e30";
+        if (glm::length(toGlm(camera.ortho_direction)) < 1e-12)
+            return "orthographic direction is zero";
         return {};
     }
     if (!isFinite(camera.eye) || !isFinite(camera.target) || !isFinite(camera.up))
@@ -46,9 +56,11 @@ static std::string cameraProblem(const CameraSpec& camera) {
     if (!(camera.fov_degrees > 0 && camera.fov_degrees < 180))
         return "field of view must be between 0 and 180 degrees (exclusive)";
     const glm::dvec3 forward = toGlm(camera.target) - toGlm(camera.eye);
-    if (glm::length(forward) < 1e-12) return "camera eye and target coincide";
+    if (glm::length(forward) < 1e-12)
+        return "camera eye and target coincide";
     const glm::dvec3 up = toGlm(camera.up);
-    if (glm::length(up) < 1e-12) return "camera up vector is zero";
+    if (glm::length(up) < 1e-12)
+        return "camera up vector is zero";
     if (glm::length(glm::cross(glm::normalize(forward), glm::normalize(up))) < 1e-9)
         return "camera up vector is parallel to the view direction";
     return {};
@@ -127,7 +139,8 @@ std::array<double, 4> ViewProjection::toClip(const Vec3& world) const {
 
 double ViewProjection::depthOf(const Vec3& world) const {
     const double z = -(toMat(view) * glm::dvec4(toGlm(world), 1.0)).z;
-    if (projection == Projection::perspective) return 1.0 - near / z;
+    if (projection == Projection::perspective)
+        return 1.0 - near / z;
     return (z - near) / (far - near);
 }
 
@@ -147,6 +160,8 @@ void ViewProjection::pixelRay(double px, double py, Vec3& origin, Vec3& directio
     }
 }
 
-Status validateCamera(const CameraSpec& camera) { return Status{cameraProblem(camera)}; }
+Status validateCamera(const CameraSpec& camera) {
+    return Status{cameraProblem(camera)};
+}
 
 } // namespace vissort

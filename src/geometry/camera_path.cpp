@@ -13,12 +13,15 @@ Vec3 turnAboutVertical(const Vec3& p, const Vec3& centre, double radians) {
     return {centre.x + c * dx + s * dz, p.y, centre.z - s * dx + c * dz};
 }
 
-double degrees(double d) { return d * std::numbers::pi / 180.0; }
+double degrees(double d) {
+    return d * std::numbers::pi / 180.0;
+}
 
 } // namespace
 
 CameraSpec cameraOnPath(const CameraSpec& base, CameraPath path, int frame, const Bounds& bounds) {
-    if (path == CameraPath::fixed) return base;
+    if (path == CameraPath::fixed)
+        return base;
     CameraSpec camera = base;
     const Vec3 centre = bounds.centre();
     if (path == CameraPath::orbit || camera.projection == Projection::orthographic) {
@@ -35,7 +38,8 @@ CameraSpec cameraOnPath(const CameraSpec& base, CameraPath path, int frame, cons
     }
     const double r = bounds.radius() > 0 ? bounds.radius() : 1.0;
     const double angle = degrees(2.0 * frame), ahead = angle + degrees(10.0);
-    camera.eye = {centre.x + 0.6 * r * std::cos(angle), centre.y, centre.z + 0.6 * r * std::sin(angle)};
+    camera.eye = {centre.x + 0.6 * r * std::cos(angle), centre.y,
+                  centre.z + 0.6 * r * std::sin(angle)};
     camera.target = {centre.x + 0.6 * r * std::cos(ahead), centre.y,
                      centre.z + 0.6 * r * std::sin(ahead)};
     camera.up = {0, 1, 0};

@@ -11,12 +11,14 @@ void Bounds::add(const Vec3& p) {
 }
 
 Vec3 Bounds::centre() const {
-    if (isEmpty()) return {};
+    if (isEmpty())
+        return {};
     return (min + max) / 2;
 }
 
 double Bounds::radius() const {
-    if (isEmpty()) return 0;
+    if (isEmpty())
+        return 0;
     return length(max - min) / 2;
 }
 
@@ -28,7 +30,8 @@ void TrianglePositions::resize(std::size_t triangles) {
 
 Bounds PositionsView::bounds() const {
     Bounds b;
-    for (std::size_t i = 0; i < x.size(); ++i) b.add(corner(i));
+    for (std::size_t i = 0; i < x.size(); ++i)
+        b.add(corner(i));
     return b;
 }
 

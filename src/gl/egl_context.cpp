@@ -21,7 +21,8 @@ namespace {
 
 // Whether a space-separated extension string names ext (the whole word).
 bool hasExtension(const char* extensions, const char* ext) {
-    if (extensions == nullptr) return false;
+    if (extensions == nullptr)
+        return false;
     const std::size_t length = std::strlen(ext);
     for (const char* p = extensions; (p = std::strstr(p, ext)) != nullptr; p += length)
         if ((p == extensions || p[-1] == ' ') && (p[length] == ' ' || p[length] == '\0'))
@@ -31,16 +32,26 @@ bool hasExtension(const char* extensions, const char* ext) {
 
 std::string eglErrorName(EGLint error) {
     switch (error) {
-    case EGL_NOT_INITIALIZED: return "EGL_NOT_INITIALIZED";
-    case EGL_BAD_ACCESS: return "EGL_BAD_ACCESS";
-    case EGL_BAD_ALLOC: return "EGL_BAD_ALLOC";
-    case EGL_BAD_ATTRIBUTE: return "EGL_BAD_ATTRIBUTE";
-    case EGL_BAD_CONFIG: return "EGL_BAD_CONFIG";
-    case EGL_BAD_CONTEXT: return "EGL_BAD_CONTEXT";
-    case EGL_BAD_DISPLAY: return "EGL_BAD_DISPLAY";
-    case EGL_BAD_MATCH: return "EGL_BAD_MATCH";
-    case EGL_BAD_PARAMETER: return "EGL_BAD_PARAMETER";
-    default: return "EGL error " + std::to_string(error);
+    case EGL_NOT_INITIALIZED:
+        return "EGL_NOT_INITIALIZED";
+    case EGL_BAD_ACCESS:
+        return "EGL_BAD_ACCESS";
+    case EGL_BAD_ALLOC:
+        return "EGL_BAD_ALLOC";
+    case EGL_BAD_ATTRIBUTE:
+        return "EGL_BAD_ATTRIBUTE";
+    case EGL_BAD_CONFIG:
+        return "EGL_BAD_CONFIG";
+    case EGL_BAD_CONTEXT:
+        return "EGL_BAD_CONTEXT";
+    case EGL_BAD_DISPLAY:
+        return "EGL_BAD_DISPLAY";
+    case EGL_BAD_MATCH:
+        return "EGL_BAD_MATCH";
+    case EGL_BAD_PARAMETER:
+        return "EGL_BAD_PARAMETER";
+    default:
+        return "EGL error " + std::to_string(error);
     }
 }
 
@@ -65,13 +76,16 @@ Result<Display> deviceDisplay(const char* client_extensions, bool hardware_only)
     if (count > 0 && !query_devices(count, devices.data(), &count))
         return Result<Display>::failure("cannot enumerate EGL devices");
     for (bool software : {false, true}) {
-        if (software && hardware_only) break;
+        if (software && hardware_only)
+            break;
         for (EGLDeviceEXT device : devices) {
             const char* extensions = query_string(device, EGL_EXTENSIONS);
-            if (hasExtension(extensions, "EGL_MESA_device_software") != software) continue;
+            if (hasExtension(extensions, "EGL_MESA_device_software") != software)
+                continue;
             Display d;
             d.display = eglGetPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, device, nullptr);
-            if (d.display == EGL_NO_DISPLAY) continue;
+            if (d.display == EGL_NO_DISPLAY)
+                continue;
             d.platform = "device";
             if (software) {
                 d.device = "Mesa software device";
@@ -107,14 +121,19 @@ Result<Display> chooseDisplay(GlPlatform platform) {
     if (client_extensions == nullptr)
         return Result<Display>::failure("EGL has no client extensions (no EGL 1.5 driver)");
     switch (platform) {
-    case GlPlatform::device: return deviceDisplay(client_extensions, false);
-    case GlPlatform::surfaceless: return surfacelessDisplay(client_extensions);
-    case GlPlatform::automatic: break;
+    case GlPlatform::device:
+        return deviceDisplay(client_extensions, false);
+    case GlPlatform::surfaceless:
+        return surfacelessDisplay(client_extensions);
+    case GlPlatform::automatic:
+        break;
     }
     Result<Display> device = deviceDisplay(client_extensions, true);
-    if (device) return device;
+    if (device)
+        return device;
     Result<Display> surfaceless = surfacelessDisplay(client_extensions);
-    if (surfaceless) return surfaceless;
+    if (surfaceless)
+        return surfaceless;
     return Result<Display>::failure(device.error + ", and " + surfaceless.error);
 }
 
@@ -136,7 +155,8 @@ struct GlContext::Impl {
     // The display is left initialized: EGL displays are process-wide, and terminating one would
     // pull it from under any other context on it.
     ~Impl() {
-        if (context == EGL_NO_CONTEXT) return;
+        if (context == EGL_NO_CONTEXT)
+            return;
         if (eglGetCurrentContext() == context)
             eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         eglDestroyContext(display, context);
@@ -146,7 +166,9 @@ struct GlContext::Impl {
 GlContext::GlContext(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 GlContext::~GlContext() = default;
 
-const GlContextInfo& GlContext::info() const { return impl_->info; }
+const GlContextInfo& GlContext::info() const {
+    return impl_->info;
+}
 
 void GlContext::makeCurrent() const {
     if (eglGetCurrentContext() != impl_->context)
@@ -156,22 +178,25 @@ void GlContext::makeCurrent() const {
 Result<std::shared_ptr<GlContext>> GlContext::create(GlPlatform platform) {
     using Made = Result<std::shared_ptr<GlContext>>;
     Result<Display> chosen = chooseDisplay(platform);
-    if (!chosen) return Made::failure("no OpenGL context: " + chosen.error);
+    if (!chosen)
+        return Made::failure("no OpenGL context: " + chosen.error);
     auto impl = std::make_unique<Impl>();
     impl->display = chosen.value->display;
     impl->info.platform = chosen.value->platform;
     impl->info.device = chosen.value->device;
     const auto failure = [&](const std::string& what) {
         return Made::failure("no OpenGL context on the EGL " + impl->info.platform +
-                               " platform: " + what + " (" + eglErrorName(eglGetError()) + ")");
+                             " platform: " + what + " (" + eglErrorName(eglGetError()) + ")");
     };
 
     EGLint major = 0, minor = 0;
-    if (!eglInitialize(impl->display, &major, &minor)) return failure("eglInitialize failed");
+    if (!eglInitialize(impl->display, &major, &minor))
+        return failure("eglInitialize failed");
     const char* extensions = eglQueryString(impl->display, EGL_EXTENSIONS);
     if (!hasExtension(extensions, "EGL_KHR_surfaceless_context"))
         return failure("the display cannot make a context current without a surface");
-    if (!eglBindAPI(EGL_OPENGL_API)) return failure("no desktop OpenGL");
+    if (!eglBindAPI(EGL_OPENGL_API))
+        return failure("no desktop OpenGL");
     // Nothing is drawn to a surface, so any config will do; none at all where allowed.
     EGLConfig config = EGL_NO_CONFIG_KHR;
     if (!hasExtension(extensions, "EGL_KHR_no_config_context")) {
@@ -180,11 +205,16 @@ Result<std::shared_ptr<GlContext>> GlContext::create(GlPlatform platform) {
         if (!eglChooseConfig(impl->display, wanted, &config, 1, &count) || count < 1)
             return failure("no config for desktop OpenGL");
     }
-    const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+    const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                 4,
+                                 EGL_CONTEXT_MINOR_VERSION,
+                                 5,
                                  EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                 EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+                                 EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                 EGL_NONE};
     impl->context = eglCreateContext(impl->display, config, EGL_NO_CONTEXT, attributes);
-    if (impl->context == EGL_NO_CONTEXT) return failure("no OpenGL 4.5 core profile context");
+    if (impl->context == EGL_NO_CONTEXT)
+        return failure("no OpenGL 4.5 core profile context");
     if (!eglMakeCurrent(impl->display, EGL_NO_SURFACE, EGL_NO_SURFACE, impl->context))
         return failure("cannot make the context current");
     impl->info.vendor = glString(GL_VENDOR);
@@ -196,7 +226,7 @@ Result<std::shared_ptr<GlContext>> GlContext::create(GlPlatform platform) {
 namespace {
 std::mutex shared_mutex;
 GlPlatform shared_platform = GlPlatform::automatic;
-std::string shared_refusal;  // non-empty: shared() fails with it
+std::string shared_refusal; // non-empty: shared() fails with it
 } // namespace
 
 void GlContext::setSharedPlatform(GlPlatform platform) {
@@ -213,13 +243,15 @@ void GlContext::refuseShared(std::string reason) {
 Result<std::shared_ptr<GlContext>> GlContext::shared() {
     static std::weak_ptr<GlContext> current;
     std::lock_guard<std::mutex> lock(shared_mutex);
-    if (!shared_refusal.empty()) return Result<std::shared_ptr<GlContext>>::failure(shared_refusal);
+    if (!shared_refusal.empty())
+        return Result<std::shared_ptr<GlContext>>::failure(shared_refusal);
     if (std::shared_ptr<GlContext> context = current.lock()) {
         context->makeCurrent();
         return {context, ""};
     }
     Result<std::shared_ptr<GlContext>> created = create(shared_platform);
-    if (created) current = *created.value;
+    if (created)
+        current = *created.value;
     return created;
 }
 

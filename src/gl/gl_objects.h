@@ -8,20 +8,21 @@
 namespace vissort::detail {
 
 /// One GL object name, deleted by Delete{}(name) unless 0.
-template <class Delete>
-class GlObject {
+template <class Delete> class GlObject {
 public:
     GlObject() = default;
     explicit GlObject(GLuint name) : name_(name) {}
     ~GlObject() {
-        if (name_ != 0) Delete{}(name_);
+        if (name_ != 0)
+            Delete{}(name_);
     }
     GlObject(const GlObject&) = delete;
     GlObject& operator=(const GlObject&) = delete;
     GlObject(GlObject&& other) noexcept : name_(std::exchange(other.name_, 0)) {}
     GlObject& operator=(GlObject&& other) noexcept {
         if (this != &other) {
-            if (name_ != 0) Delete{}(name_);
+            if (name_ != 0)
+                Delete{}(name_);
             name_ = std::exchange(other.name_, 0);
         }
         return *this;

@@ -46,22 +46,23 @@ struct GlOracle::Impl {
     detail::GlProgram program;
     GLint matrix_location = -1, offset_location = -1;
     detail::GlVertexArray vertex_array;
-    detail::GlBuffer corners;         // x of every corner, then y, then z
-    std::size_t corner_capacity = 0;  // corners the buffer holds
+    detail::GlBuffer corners;        // x of every corner, then y, then z
+    std::size_t corner_capacity = 0; // corners the buffer holds
     detail::GlFramebuffer framebuffer;
     detail::GlRenderbuffer depth;
     uint32_t width = 0, height = 0;
     std::vector<PrimitiveRange> primitives;
-    std::vector<GLuint> queries;  // one per element of a pass, reused
+    std::vector<GLuint> queries; // one per element of a pass, reused
     // Draws waiting to go out as one glMultiDrawArrays, and the state they and queries need.
     std::vector<GLint> first_corners;
     std::vector<GLsizei> corner_counts;
     enum class Mode { unset, draw, query } mode = Mode::unset;
-    float tolerance = kDepthTolerance;  // the oracle's, taken at every call
+    float tolerance = kDepthTolerance; // the oracle's, taken at every call
     GlOracleStats stats;
 
     void setMode(Mode wanted) {
-        if (mode == wanted) return;
+        if (mode == wanted)
+            return;
         mode = wanted;
         const bool query = wanted == Mode::query;
         glDepthFunc(query ? GL_GREATER : GL_LESS);
@@ -73,14 +74,16 @@ struct GlOracle::Impl {
     void queueDraw(uint32_t p) {
         assert(p < primitives.size());
         ++stats.draws;
-        if (primitives[p].triangle_count == 0) return;
+        if (primitives[p].triangle_count == 0)
+            return;
         first_corners.push_back(GLint(primitives[p].first_triangle * 3));
         corner_counts.push_back(GLsizei(primitives[p].triangle_count * 3));
     }
 
     // Sends the queued draws, in order.
     void flushDraws() {
-        if (first_corners.empty()) return;
+        if (first_corners.empty())
+            return;
         setMode(Mode::draw);
         glMultiDrawArrays(GL_TRIANGLES, first_corners.data(), corner_counts.data(),
                           GLsizei(first_corners.size()));
@@ -92,7 +95,8 @@ struct GlOracle::Impl {
     // Draws primitive p alone in the current mode.
     void drawNow(uint32_t p) {
         assert(p < primitives.size());
-        if (primitives[p].triangle_count == 0) return;
+        if (primitives[p].triangle_count == 0)
+            return;
         glDrawArrays(GL_TRIANGLES, GLint(primitives[p].first_triangle * 3),
                      GLsizei(primitives[p].triangle_count * 3));
         ++stats.draw_calls;
@@ -115,7 +119,8 @@ struct GlOracle::Impl {
     }
 
     void ensureQueries(std::size_t count) {
-        if (queries.size() >= count) return;
+        if (queries.size() >= count)
+            return;
         const std::size_t old = queries.size();
         queries.resize(count);
         glGenQueries(GLsizei(count - old), queries.data() + old);
@@ -143,7 +148,7 @@ struct GlOracle::Impl {
     void clearDepth() {
         first_corners.clear();
         corner_counts.clear();
-        setMode(Mode::draw);  // glClear leaves the depth buffer alone while depth writes are off
+        setMode(Mode::draw); // glClear leaves the depth buffer alone while depth writes are off
         glClear(GL_DEPTH_BUFFER_BIT);
     }
 
@@ -157,7 +162,8 @@ struct GlOracle::Impl {
     // Reads the answers once, after every query of the pass has been issued.
     void readAnswers(std::span<const uint8_t> query, std::span<uint8_t> behind) const {
         for (std::size_t i = 0; i < behind.size(); ++i)
-            if (query.empty() || query[i]) behind[i] = answer(queries[i]) ? 1 : 0;
+            if (query.empty() || query[i])
+                behind[i] = answer(queries[i]) ? 1 : 0;
     }
 };
 
@@ -196,15 +202,17 @@ void GlOracle::bind(PositionsView positions, const ViewProjection& view,
     d.context->makeCurrent();
     const std::size_t corners = positions.x.size();
     if (corners > std::size_t(std::numeric_limits<GLint>::max()))
-        throw std::runtime_error("the OpenGL oracle draws at most 2^31 - 1 corners; the scene has " +
-                                 std::to_string(corners));
+        throw std::runtime_error(
+            "the OpenGL oracle draws at most 2^31 - 1 corners; the scene has " +
+            std::to_string(corners));
     if (view.width != d.width || view.height != d.height) {
         GLint largest = 0;
         glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &largest);
         if (view.width > uint32_t(largest) || view.height > uint32_t(largest))
             throw std::runtime_error("the OpenGL driver's framebuffers reach " +
                                      std::to_string(largest) + " pixels on a side, not " +
-                                     std::to_string(view.width) + "x" + std::to_string(view.height));
+                                     std::to_string(view.width) + "x" +
+                                     std::to_string(view.height));
         glNamedRenderbufferStorage(d.depth.get(), GL_DEPTH_COMPONENT32F, GLsizei(view.width),
                                    GLsizei(view.height));
         glNamedFramebufferRenderbuffer(d.framebuffer.get(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
@@ -213,7 +221,8 @@ void GlOracle::bind(PositionsView positions, const ViewProjection& view,
         glNamedFramebufferReadBuffer(d.framebuffer.get(), GL_NONE);
         if (glCheckNamedFramebufferStatus(d.framebuffer.get(), GL_FRAMEBUFFER) !=
             GL_FRAMEBUFFER_COMPLETE)
-            throw std::runtime_error("the OpenGL driver cannot render to a 32-bit float depth buffer");
+            throw std::runtime_error(
+                "the OpenGL driver cannot render to a 32-bit float depth buffer");
         d.width = view.width;
         d.height = view.height;
     }
@@ -243,7 +252,9 @@ void GlOracle::bind(PositionsView positions, const ViewProjection& view,
     d.clearDepth();
 }
 
-uint32_t GlOracle::primitiveCount() const { return uint32_t(impl_->primitives.size()); }
+uint32_t GlOracle::primitiveCount() const {
+    return uint32_t(impl_->primitives.size());
+}
 
 void GlOracle::clear() {
     impl_->begin(depth_tolerance_);
@@ -271,7 +282,8 @@ void GlOracle::backToFrontPass(std::span<const uint32_t> sequence, std::span<con
     Impl& d = *impl_;
     d.beginPass(sequence.size(), depth_tolerance_);
     for (std::size_t i = sequence.size(); i-- > 0;) {
-        if (query[i]) d.issueQuery(sequence[i], d.queries[i]);
+        if (query[i])
+            d.issueQuery(sequence[i], d.queries[i]);
         d.queueDraw(sequence[i]);
     }
     d.flushDraws();
@@ -305,9 +317,11 @@ void GlOracle::queryAgainst(std::span<const uint32_t> occluders, std::span<const
     assert(behind.size() == targets.size());
     Impl& d = *impl_;
     d.beginPass(targets.size(), depth_tolerance_);
-    for (uint32_t p : occluders) d.queueDraw(p);
-    for (std::size_t i = 0; i < targets.size(); ++i) d.issueQuery(targets[i], d.queries[i]);
-    d.readAnswers({}, behind);  // every target was queried
+    for (uint32_t p : occluders)
+        d.queueDraw(p);
+    for (std::size_t i = 0; i < targets.size(); ++i)
+        d.issueQuery(targets[i], d.queries[i]);
+    d.readAnswers({}, behind); // every target was queried
 }
 
 std::vector<float> GlOracle::depthBuffer() const {
@@ -321,8 +335,14 @@ std::vector<float> GlOracle::depthBuffer() const {
     return depths;
 }
 
-const GlContext& GlOracle::context() const { return *impl_->context; }
-const GlOracleStats& GlOracle::stats() const { return impl_->stats; }
-void GlOracle::resetStats() { impl_->stats = {}; }
+const GlContext& GlOracle::context() const {
+    return *impl_->context;
+}
+const GlOracleStats& GlOracle::stats() const {
+    return impl_->stats;
+}
+void GlOracle::resetStats() {
+    impl_->stats = {};
+}
 
 } // namespace vissort

@@ -12,7 +12,8 @@ void requireStatus(GLuint name, GLenum status, GetStatus get_status, GetLog get_
                    const char* failure) {
     GLint ok = GL_FALSE;
     get_status(name, status, &ok);
-    if (ok == GL_TRUE) return;
+    if (ok == GL_TRUE)
+        return;
     char log[1024] = {};
     get_log(name, sizeof(log), nullptr, log);
     throw std::runtime_error(std::string(failure) + ": " + log);
@@ -23,7 +24,7 @@ GlShader compile(GLenum stage, const char* source) {
     glShaderSource(shader.get(), 1, &source, nullptr);
     glCompileShader(shader.get());
     requireStatus(shader.get(), GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog,
-                  stage == GL_VERTEX_SHADER     ? "OpenGL vertex shader does not compile"
+                  stage == GL_VERTEX_SHADER    ? "OpenGL vertex shader does not compile"
                   : stage == GL_COMPUTE_SHADER ? "OpenGL compute shader does not compile"
                                                : "OpenGL fragment shader does not compile");
     return shader;

@@ -23,7 +23,8 @@ Result<std::unique_ptr<GeometryOracle>> makeOracle(OracleKind kind, const Oracle
         fast.allow_simd = options.allow_simd;
         return {std::make_unique<FastCpuOracle>(fast), {}};
     }
-    case OracleKind::cpu_reference: return {std::make_unique<CpuOracle>(options.mode), {}};
+    case OracleKind::cpu_reference:
+        return {std::make_unique<CpuOracle>(options.mode), {}};
     case OracleKind::exact:
         if (options.mode != RasterMode::exact)
             throw std::invalid_argument("the exact oracle has no conservative mode (use cpu)");
@@ -33,7 +34,8 @@ Result<std::unique_ptr<GeometryOracle>> makeOracle(OracleKind kind, const Oracle
             throw std::invalid_argument("the gl oracle has no conservative mode (use cpu)");
 #if VISSORT_WITH_GL
         Result<std::shared_ptr<GlContext>> context = GlContext::shared();
-        if (!context) return Made::failure(context.error);
+        if (!context)
+            return Made::failure(context.error);
         return {std::make_unique<GlOracle>(*context.value), {}};
 #else
         return Made::failure("this vissort was built without OpenGL (VISSORT_WITH_GL=OFF): the gl "
@@ -52,6 +54,8 @@ bool hasGlOracle() {
 #endif
 }
 
-std::vector<OracleKind> benchmarkedOracles() { return {OracleKind::cpu_reference, OracleKind::cpu}; }
+std::vector<OracleKind> benchmarkedOracles() {
+    return {OracleKind::cpu_reference, OracleKind::cpu};
+}
 
 } // namespace vissort

@@ -23,7 +23,8 @@ std::vector<uint32_t> depthKeyOrder(PositionsView positions, const ViewProjectio
             farthest = std::max(farthest, z);
         }
         // A primitive crossing the near plane starts at it; one wholly behind it is invisible.
-        if (farthest >= view.near) key[p] = std::max(nearest, view.near);
+        if (farthest >= view.near)
+            key[p] = std::max(nearest, view.near);
     }
     std::vector<uint32_t> order(primitives.size());
     std::iota(order.begin(), order.end(), 0u);

@@ -25,9 +25,11 @@ void addStats(VisSortStats& total, const VisSortStats& part) {
 
 std::vector<PrimitiveRange> levelPrimitives(std::span<const PrimitiveRange> objects,
                                             uint32_t triangle_count, OrderLevel level) {
-    if (level == OrderLevel::object) return {objects.begin(), objects.end()};
+    if (level == OrderLevel::object)
+        return {objects.begin(), objects.end()};
     std::vector<PrimitiveRange> triangles(triangle_count);
-    for (uint32_t t = 0; t < triangle_count; ++t) triangles[t] = {t, 1};
+    for (uint32_t t = 0; t < triangle_count; ++t)
+        triangles[t] = {t, 1};
     return triangles;
 }
 
@@ -59,16 +61,19 @@ void SceneOrderer::sortFrom(PositionsView positions, const ViewProjection& view,
                             std::span<const uint32_t> start, VisibilityOrder& into) {
     const std::size_t n = primitives.size();
     bound_.resize(n);
-    for (std::size_t i = 0; i < n; ++i) bound_[i] = primitives[start[i]];
+    for (std::size_t i = 0; i < n; ++i)
+        bound_[i] = primitives[start[i]];
     if (identity_.size() != n) {
         identity_.resize(n);
         std::iota(identity_.begin(), identity_.end(), 0u);
     }
     oracle_.bind(positions, view, bound_);
     visSort(oracle_, identity_, into, workspace_);
-    for (uint32_t& p : into.order) p = start[p];
+    for (uint32_t& p : into.order)
+        p = start[p];
     for (std::vector<uint32_t>& cycle : into.cycles) {
-        for (uint32_t& p : cycle) p = start[p];
+        for (uint32_t& p : cycle)
+            p = start[p];
         std::sort(cycle.begin(), cycle.end());
     }
 }
@@ -83,7 +88,7 @@ void SceneOrderer::orderFrame(PositionsView positions, const ViewProjection& vie
         orderMultistage(positions, view, out);
     } else {
         sortPrimitives(positions, view, primitives_, previous_order_, sorted_);
-        previous_order_ = sorted_.order;  // copy-assignments: the vectors keep their capacity
+        previous_order_ = sorted_.order; // copy-assignments: the vectors keep their capacity
         out.order = sorted_.order;
         out.cycles = sorted_.cycles;
         out.stats = sorted_.stats;
@@ -114,7 +119,8 @@ void SceneOrderer::orderMultistage(PositionsView positions, const ViewProjection
     std::vector<int32_t>& cycle_of = cycle_of_;
     cycle_of.assign(objects_.size(), -1);
     for (std::size_t c = 0; c < objects.cycles.size(); ++c)
-        for (uint32_t object : objects.cycles[c]) cycle_of[object] = int32_t(c);
+        for (uint32_t object : objects.cycles[c])
+            cycle_of[object] = int32_t(c);
 
     const std::size_t triangle_count = triangle_count_;
     const bool have_ranks = previous_triangle_rank_.size() == triangle_count;
@@ -154,7 +160,8 @@ void SceneOrderer::orderMultistage(PositionsView positions, const ViewProjection
             frame.order.push_back(group[local].first_triangle);
         }
         for (auto& cycle : triangles.cycles) {
-            for (uint32_t& local : cycle) local = group[local].first_triangle;
+            for (uint32_t& local : cycle)
+                local = group[local].first_triangle;
             std::sort(cycle.begin(), cycle.end());
             frame.cycles.push_back(std::move(cycle));
         }

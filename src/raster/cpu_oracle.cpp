@@ -12,8 +12,7 @@
 namespace vissort {
 namespace {
 
-template <class Corner>
-detail::ClipVertex toClipVertex(const Corner& corner) {
+template <class Corner> detail::ClipVertex toClipVertex(const Corner& corner) {
     return {corner.x, corner.y, corner.z, corner.w};
 }
 
@@ -28,8 +27,7 @@ void CpuOracle::bind(PositionsView positions, const ViewProjection& view,
     height_ = view.height;
     primitives_.assign(primitives.begin(), primitives.end());
     for ([[maybe_unused]] const PrimitiveRange& range : primitives_)
-        assert(uint64_t(range.first_triangle) + range.triangle_count <=
-               positions.triangleCount());
+        assert(uint64_t(range.first_triangle) + range.triangle_count <= positions.triangleCount());
 
     const detail::Matrix4 m = detail::multiply(view.projection_matrix, view.view);
     const std::size_t corner_count = positions.triangleCount() * 3;
@@ -55,7 +53,8 @@ void CpuOracle::draw(uint32_t primitive) {
     const auto write = [&](uint32_t px, uint32_t py, float depth) {
         ++fragments;
         float& stored = depth_[std::size_t(py) * width_ + px];
-        if (depth < stored) stored = depth;
+        if (depth < stored)
+            stored = depth;
         return false;
     };
     for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count; ++t) {
@@ -65,9 +64,9 @@ void CpuOracle::draw(uint32_t primitive) {
         if (mode_ == RasterMode::exact) {
             detail::rasterizeTriangle(a, b, d, width_, height_, write);
         } else {
-            detail::rasterizeTriangleConservative(
-                a, b, d, width_, height_,
-                [&](uint32_t px, uint32_t py, float nearest, float) { return write(px, py, nearest); });
+            detail::rasterizeTriangleConservative(a, b, d, width_, height_,
+                                                  [&](uint32_t px, uint32_t py, float nearest,
+                                                      float) { return write(px, py, nearest); });
         }
     }
     stats_.fragments_drawn += fragments;
@@ -83,8 +82,8 @@ bool CpuOracle::anyBehind(uint32_t primitive) {
         ++fragments;
         return depth > depth_[std::size_t(py) * width_ + px] + depth_tolerance_;
     };
-    for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count && !behind;
-         ++t) {
+    for (uint32_t t = range.first_triangle;
+         t < range.first_triangle + range.triangle_count && !behind; ++t) {
         const std::size_t c = std::size_t(t) * 3;
         const auto a = toClipVertex(corners_[c]), b = toClipVertex(corners_[c + 1]),
                    d = toClipVertex(corners_[c + 2]);
@@ -92,8 +91,9 @@ bool CpuOracle::anyBehind(uint32_t primitive) {
             behind = detail::rasterizeTriangle(a, b, d, width_, height_, test);
         } else {
             behind = detail::rasterizeTriangleConservative(
-                a, b, d, width_, height_,
-                [&](uint32_t px, uint32_t py, float, float farthest) { return test(px, py, farthest); });
+                a, b, d, width_, height_, [&](uint32_t px, uint32_t py, float, float farthest) {
+                    return test(px, py, farthest);
+                });
         }
     }
     stats_.fragments_tested += fragments;

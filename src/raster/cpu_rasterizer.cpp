@@ -10,14 +10,20 @@ namespace vissort::detail {
 namespace {
 
 // Floor and ceiling of v / 2^kSubpixelBits; >> on a negative int64_t is arithmetic since C++20.
-int64_t floorToPixels(int64_t v) { return v >> kSubpixelBits; }
-int64_t ceilToPixels(int64_t v) { return -((-v) >> kSubpixelBits); }
+int64_t floorToPixels(int64_t v) {
+    return v >> kSubpixelBits;
+}
+int64_t ceilToPixels(int64_t v) {
+    return -((-v) >> kSubpixelBits);
+}
 
 // With the vertices ordered for a positive doubled area and y pointing down, the interior lies
 // where every edge function is positive. A top edge is horizontal with the interior below it:
 // it runs towards +x (dy == 0, dx > 0). A left edge has the interior on its right: it runs
 // upwards on screen (dy < 0). Pixel centres exactly on those edges belong to the triangle.
-int64_t topLeftBias(int64_t dx, int64_t dy) { return (dy == 0 && dx > 0) || dy < 0 ? 1 : 0; }
+int64_t topLeftBias(int64_t dx, int64_t dy) {
+    return (dy == 0 && dx > 0) || dy < 0 ? 1 : 0;
+}
 
 } // namespace
 
@@ -39,19 +45,21 @@ int64_t snapToFixed(double v) {
 
 namespace {
 
-bool setupImpl(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
-               uint32_t width, uint32_t height, TriangleSetup& s) {
+bool setupImpl(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, uint32_t width,
+               uint32_t height, TriangleSetup& s) {
     std::array<ScreenVertex, 3> v{a, b, c};
     const double limit = double(kMaxSnapped) / double(kSubpixelScale);
     for (const ScreenVertex& p : v)
-        if (!(std::abs(p.x) <= limit && std::abs(p.y) <= limit)) return false;  // also NaN
+        if (!(std::abs(p.x) <= limit && std::abs(p.y) <= limit))
+            return false; // also NaN
     for (int i = 0; i < 3; ++i) {
         s.x[i] = snapToFixed(v[i].x);
         s.y[i] = snapToFixed(v[i].y);
     }
     const int64_t doubled_area =
         (s.x[1] - s.x[0]) * (s.y[2] - s.y[0]) - (s.y[1] - s.y[0]) * (s.x[2] - s.x[0]);
-    if (doubled_area == 0) return false;
+    if (doubled_area == 0)
+        return false;
     if (doubled_area < 0) {
         // Both windings are drawn: reorder so that the interior is where edge functions are > 0.
         std::swap(v[1], v[2]);
@@ -73,7 +81,8 @@ bool setupImpl(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex&
     s.px_max = std::min<int64_t>(floorToPixels(max_x - half), int64_t(width) - 1);
     s.py_min = std::max<int64_t>(ceilToPixels(min_y - half), 0);
     s.py_max = std::min<int64_t>(floorToPixels(max_y - half), int64_t(height) - 1);
-    if (s.px_min > s.px_max || s.py_min > s.py_max) return false;
+    if (s.px_min > s.px_max || s.py_min > s.py_max)
+        return false;
 
     // The depth plane goes through the unsnapped vertices: d is affine in screen space for both
     // projections (camera.h), so this is exact up to rounding.
@@ -110,7 +119,7 @@ bool setupConservative(const ScreenVertex& a, const ScreenVertex& b, const Scree
     const double limit = double(kMaxSnapped) / double(kSubpixelScale);
     for (const ScreenVertex& p : v)
         if (!(std::abs(p.x) <= limit && std::abs(p.y) <= limit && std::isfinite(p.d)))
-            return false;  // also NaN
+            return false; // also NaN
     for (int i = 0; i < 3; ++i) {
         s.x[i] = snapToFixed(v[i].x);
         s.y[i] = snapToFixed(v[i].y);
@@ -125,7 +134,8 @@ bool setupConservative(const ScreenVertex& a, const ScreenVertex& b, const Scree
     s.px_max = std::min<int64_t>(floorToPixels(max_x), int64_t(width) - 1);
     s.py_min = std::max<int64_t>(ceilToPixels(min_y) - 1, 0);
     s.py_max = std::min<int64_t>(floorToPixels(max_y), int64_t(height) - 1);
-    if (s.px_min > s.px_max || s.py_min > s.py_max) return false;  // off screen
+    if (s.px_min > s.px_max || s.py_min > s.py_max)
+        return false; // off screen
     s.bias = {0, 0, 0};
 
     const double d_min = std::min({v[0].d, v[1].d, v[2].d});

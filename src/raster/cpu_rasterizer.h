@@ -42,7 +42,8 @@ inline Matrix4 multiply(const Matrix4& a, const Matrix4& b) {
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r) {
             double sum = 0;
-            for (int k = 0; k < 4; ++k) sum += a[4 * k + r] * b[4 * c + k];
+            for (int k = 0; k < 4; ++k)
+                sum += a[4 * k + r] * b[4 * c + k];
             out[4 * c + r] = sum;
         }
     return out;
@@ -54,7 +55,8 @@ inline ClipVertex toClipSpace(const Matrix4& m, float x, float y, float z) {
     double clip[4];
     for (int r = 0; r < 4; ++r) {
         double sum = 0;
-        for (int k = 0; k < 4; ++k) sum += m[4 * k + r] * p[k];
+        for (int k = 0; k < 4; ++k)
+            sum += m[4 * k + r] * p[k];
         clip[r] = sum;
     }
     return {clip[0], clip[1], clip[2], clip[3]};
@@ -68,8 +70,8 @@ struct ScreenVertex {
 /// Everything needed to walk one fan triangle's pixels. Vertices are ordered so that the snapped
 /// doubled area is positive; edge i runs from vertex i to vertex (i + 1) % 3.
 struct TriangleSetup {
-    std::array<int64_t, 3> x{}, y{};  // 24.8 fixed point
-    std::array<int64_t, 3> bias{};    // 1 on top-left edges, 0 elsewhere: covered iff E + bias > 0
+    std::array<int64_t, 3> x{}, y{}; // 24.8 fixed point
+    std::array<int64_t, 3> bias{};   // 1 on top-left edges, 0 elsewhere: covered iff E + bias > 0
     // Depth plane d(sx, sy) = d0 + ddx (sx - x0) + ddy (sy - y0), in double.
     double x0 = 0, y0 = 0, d0 = 0, ddx = 0, ddy = 0;
     // Inclusive pixel range whose centres may be covered (conservative mode: whose squares may
@@ -115,16 +117,19 @@ inline float depthAt(const TriangleSetup& s, int64_t px, int64_t py) {
 
 /// Calls visit(px, py, depth) for every pixel whose centre the set-up triangle covers, rows top
 /// to bottom, left to right. Stops, returning true, as soon as visit returns true.
-template <class Visit>
-bool walkTriangle(const TriangleSetup& s, Visit&& visit) {
+template <class Visit> bool walkTriangle(const TriangleSetup& s, Visit&& visit) {
     for (int64_t py = s.py_min; py <= s.py_max; ++py) {
         const int64_t cy = py * kSubpixelScale + kSubpixelScale / 2;
         for (int64_t px = s.px_min; px <= s.px_max; ++px) {
             const int64_t cx = px * kSubpixelScale + kSubpixelScale / 2;
-            if (edgeFunction(s, 0, cx, cy) + s.bias[0] <= 0) continue;
-            if (edgeFunction(s, 1, cx, cy) + s.bias[1] <= 0) continue;
-            if (edgeFunction(s, 2, cx, cy) + s.bias[2] <= 0) continue;
-            if (visit(uint32_t(px), uint32_t(py), depthAt(s, px, py))) return true;
+            if (edgeFunction(s, 0, cx, cy) + s.bias[0] <= 0)
+                continue;
+            if (edgeFunction(s, 1, cx, cy) + s.bias[1] <= 0)
+                continue;
+            if (edgeFunction(s, 2, cx, cy) + s.bias[2] <= 0)
+                continue;
+            if (visit(uint32_t(px), uint32_t(py), depthAt(s, px, py)))
+                return true;
         }
     }
     return false;
@@ -133,8 +138,7 @@ bool walkTriangle(const TriangleSetup& s, Visit&& visit) {
 /// Conservative walk (cpu_oracle.h): calls visit(px, py, nearest, farthest) for every pixel
 /// whose square the set-up triangle may touch, with the plane's nearest and farthest depth over
 /// that square. Stops, returning true, as soon as visit returns true.
-template <class Visit>
-bool walkTriangleConservative(const TriangleSetup& s, Visit&& visit) {
+template <class Visit> bool walkTriangleConservative(const TriangleSetup& s, Visit&& visit) {
     // An edge function's largest value over a pixel square grown by the margin.
     std::array<int64_t, 3> reach;
     for (int i = 0; i < 3; ++i) {
@@ -146,11 +150,14 @@ bool walkTriangleConservative(const TriangleSetup& s, Visit&& visit) {
         const int64_t cy = py * kSubpixelScale + kSubpixelScale / 2;
         for (int64_t px = s.px_min; px <= s.px_max; ++px) {
             const int64_t cx = px * kSubpixelScale + kSubpixelScale / 2;
-            if (edgeFunction(s, 0, cx, cy) + reach[0] < 0) continue;
-            if (edgeFunction(s, 1, cx, cy) + reach[1] < 0) continue;
-            if (edgeFunction(s, 2, cx, cy) + reach[2] < 0) continue;
-            const double centre = s.d0 + s.ddx * ((double(px) + 0.5) - s.x0) +
-                                  s.ddy * ((double(py) + 0.5) - s.y0);
+            if (edgeFunction(s, 0, cx, cy) + reach[0] < 0)
+                continue;
+            if (edgeFunction(s, 1, cx, cy) + reach[1] < 0)
+                continue;
+            if (edgeFunction(s, 2, cx, cy) + reach[2] < 0)
+                continue;
+            const double centre =
+                s.d0 + s.ddx * ((double(px) + 0.5) - s.x0) + s.ddy * ((double(py) + 0.5) - s.y0);
             if (visit(uint32_t(px), uint32_t(py), float(centre - s.spread),
                       float(centre + s.spread)))
                 return true;
@@ -167,15 +174,19 @@ bool forEachFanTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVert
                         uint32_t width, uint32_t height, bool conservative, Walk&& walk) {
     std::array<ClipVertex, kMaxPolygonVertices> polygon;
     const int count = clipTriangle(a, b, c, polygon);
-    if (count < 3) return false;
+    if (count < 3)
+        return false;
     std::array<ScreenVertex, kMaxPolygonVertices> screen;
-    for (int i = 0; i < count; ++i) screen[i] = toScreen(polygon[i], width, height);
+    for (int i = 0; i < count; ++i)
+        screen[i] = toScreen(polygon[i], width, height);
     TriangleSetup setup;
     for (int i = 1; i + 1 < count; ++i) {
         const bool ok =
-            conservative ? setupConservative(screen[0], screen[i], screen[i + 1], width, height, setup)
-                         : setupTriangle(screen[0], screen[i], screen[i + 1], width, height, setup);
-        if (ok && walk(setup)) return true;
+            conservative
+                ? setupConservative(screen[0], screen[i], screen[i + 1], width, height, setup)
+                : setupTriangle(screen[0], screen[i], screen[i + 1], width, height, setup);
+        if (ok && walk(setup))
+            return true;
     }
     return false;
 }

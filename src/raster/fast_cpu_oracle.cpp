@@ -20,8 +20,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cassert>
 #include <atomic>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <thread>
@@ -37,7 +37,7 @@ namespace vissort {
 namespace {
 
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
-constexpr int kTileShift = 3;  // kTileSize = 8
+constexpr int kTileShift = 3; // kTileSize = 8
 static_assert(FastCpuOracle::kTileSize == 1u << kTileShift);
 static_assert(FastCpuOracle::kTileSize == detail::kTileRowFloats);
 constexpr std::size_t kTilePixels = std::size_t(detail::kTileRowFloats) * detail::kTileRowFloats;
@@ -54,8 +54,7 @@ double spreadOf(const detail::FastSetup& s, bool conservative) {
 
 // What a draw (nearest depth over the pixel) or a query (farthest) adds to each fragment's double
 // value before rounding; -0.0 in exact mode, which changes no value (fast_rows.h).
-template <bool kDraw>
-double fragmentOffset(double spread, bool conservative) {
+template <bool kDraw> double fragmentOffset(double spread, bool conservative) {
     return conservative ? (kDraw ? -spread : spread) : -0.0;
 }
 
@@ -80,16 +79,20 @@ detail::TriangleWalk triangleWalk(const detail::FastSetup& s, double spread, boo
 }
 
 // The plane's column and row terms of rule 6: ddx ((x + 0.5) - x0) and ddy ((y + 0.5) - y0).
-double columnTerm(const detail::FastSetup& s, int32_t x) { return s.ddx * ((double(x) + 0.5) - s.x0); }
-double rowTerm(const detail::FastSetup& s, int32_t y) { return s.ddy * ((double(y) + 0.5) - s.y0); }
+double columnTerm(const detail::FastSetup& s, int32_t x) {
+    return s.ddx * ((double(x) + 0.5) - s.x0);
+}
+double rowTerm(const detail::FastSetup& s, int32_t y) {
+    return s.ddy * ((double(y) + 0.5) - s.y0);
+}
 
 // Bounds on the double depth value v of every fragment over a rectangle whose corner columns have
 // terms ax0, ax1 and corner rows by0, by1 (see the file comment), offset included (its rounding
 // is within the margin, spread its size). Inlined: it runs once per tile a triangle visits, and a
 // call with results through memory cost 7% of tile-culled queries.
 [[gnu::always_inline]] inline void depthBounds(const detail::FastSetup& s, double ax0, double ax1,
-                                               double by0, double by1, double offset,
-                                               double spread, double& lowest, double& highest) {
+                                               double by0, double by1, double offset, double spread,
+                                               double& lowest, double& highest) {
     const double margin = kDepthMargin * (std::abs(s.d0) + std::max(std::abs(ax0), std::abs(ax1)) +
                                           std::max(std::abs(by0), std::abs(by1)) + spread);
     lowest = s.d0 + std::min(ax0, ax1) + std::min(by0, by1) + offset - margin;
@@ -128,8 +131,7 @@ struct FastCpuOracle::Impl {
                         FastCpuOracleStats& stats);
     /// Runs band(b, stats of b) for b = 0..bands-1 on the calling thread and the pool's workers
     /// (each claims the next band when done); then adds the bands' tile counts to stats_.
-    template <class Band>
-    void runBands(uint32_t bands, Band&& band);
+    template <class Band> void runBands(uint32_t bands, Band&& band);
     /// Bands for a pass over count primitives: 1 when small or single-threaded, else a few per
     /// thread, at most one per tile row.
     uint32_t bandsFor(std::size_t count) const;
@@ -153,7 +155,7 @@ struct FastCpuOracle::Impl {
     // Primitive p's fan triangles are setups_[primitive_setups_[p], primitive_setups_[p + 1]).
     std::vector<uint32_t> primitive_setups_;
     std::vector<detail::FastSetup> setups_;
-    std::vector<uint32_t> bind_triangles_;  // the triangles of every primitive, in bind order
+    std::vector<uint32_t> bind_triangles_; // the triangles of every primitive, in bind order
     // Per tile, in one struct so that a tile's bounds and epoch share a cache line (the tiles a
     // pass touches are scattered over a buffer larger than the caches: one miss, not three).
     // Clearing is lazy: clear() starts a new epoch, and a tile whose epoch is older holds only
@@ -168,8 +170,8 @@ struct FastCpuOracle::Impl {
         float min, max;
         uint64_t epoch;
     };
-    mutable std::vector<float> depth_;      // tile by tile (fast_rows.h), padded to whole tiles
-    mutable std::vector<float> row_major_;  // depthBuffer()'s copy
+    mutable std::vector<float> depth_;     // tile by tile (fast_rows.h), padded to whole tiles
+    mutable std::vector<float> row_major_; // depthBuffer()'s copy
     mutable std::vector<TileState> tiles_;
     uint64_t epoch_ = 1;
     FastCpuOracleStats stats_;
@@ -192,7 +194,7 @@ struct FastCpuOracle::Impl {
     uint32_t parallel_threshold_ = 0;
     // The caller's pool (Options::pool), or WorkerPool::shared() from the first parallel pass.
     WorkerPool* pool_ = nullptr;
-    std::vector<FastCpuOracleStats> band_stats_;  // one per band, reused
+    std::vector<FastCpuOracleStats> band_stats_; // one per band, reused
 };
 
 FastCpuOracle::Impl::Impl(const Options& options)
@@ -203,7 +205,8 @@ FastCpuOracle::Impl::Impl(const Options& options)
     fill_tile_ = kernels.fill;
     draw_small_ = kernels.draw_small;
     query_small_ = kernels.query_small;
-    if (use_simd_) setup_quad_ = detail::avx2SetupQuad();  // the same AVX2 check
+    if (use_simd_)
+        setup_quad_ = detail::avx2SetupQuad(); // the same AVX2 check
     threads_ = options.threads == 0 ? std::thread::hardware_concurrency() : options.threads;
     if (options.pool != nullptr) {
         pool_ = options.pool;
@@ -224,8 +227,7 @@ void FastCpuOracle::Impl::bind(PositionsView positions, const ViewProjection& vi
     tiles_y_ = (height_ + kTileSize - 1) / kTileSize;
     primitives_.assign(primitives.begin(), primitives.end());
     for ([[maybe_unused]] const PrimitiveRange& range : primitives_)
-        assert(uint64_t(range.first_triangle) + range.triangle_count <=
-               positions.triangleCount());
+        assert(uint64_t(range.first_triangle) + range.triangle_count <= positions.triangleCount());
 
     // Set-ups are laid out in primitive order (a primitive's fan triangles are contiguous), so a
     // walk over primitives in id order reads memory forward; triangles of no primitive are never
@@ -233,7 +235,8 @@ void FastCpuOracle::Impl::bind(PositionsView positions, const ViewProjection& vi
     const detail::Matrix4 m = detail::multiply(view.projection_matrix, view.view);
     bind_triangles_.clear();
     for (const PrimitiveRange& range : primitives_)
-        for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count; ++t)
+        for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count;
+             ++t)
             bind_triangles_.push_back(t);
     const std::size_t n = bind_triangles_.size();
     primitive_setups_.resize(primitives_.size() + 1);
@@ -259,8 +262,7 @@ void FastCpuOracle::Impl::bind(PositionsView positions, const ViewProjection& vi
                 if (lanes[l] == detail::LaneSetup::ready) {
                     quad[l].narrow = detail::edgesFitInt32(quad[l]);
                     setups_.push_back(quad[l]);
-                }
-                else if (lanes[l] == detail::LaneSetup::scalar)
+                } else if (lanes[l] == detail::LaneSetup::scalar)
                     detail::appendFastSetups(m, positions, bind_triangles_[i + l], width_, height_,
                                              conservative_, setups_);
             }
@@ -276,7 +278,7 @@ void FastCpuOracle::Impl::bind(PositionsView positions, const ViewProjection& vi
 
     depth_.resize(std::size_t(tiles_x_) * tiles_y_ * kTilePixels);
     tiles_.assign(std::size_t(tiles_x_) * tiles_y_, TileState{kInfinity, kInfinity, 0});
-    epoch_ = 1;  // every tile pending a clear
+    epoch_ = 1; // every tile pending a clear
 }
 
 void FastCpuOracle::Impl::clearTile(std::size_t tile) const {
@@ -286,7 +288,8 @@ void FastCpuOracle::Impl::clearTile(std::size_t tile) const {
 
 std::span<const float> FastCpuOracle::Impl::depthBuffer() const {
     for (std::size_t tile = 0; tile < tiles_.size(); ++tile)
-        if (tiles_[tile].epoch != epoch_) clearTile(tile);
+        if (tiles_[tile].epoch != epoch_)
+            clearTile(tile);
     row_major_.resize(std::size_t(width_) * height_);
     for (uint32_t y = 0; y < height_; ++y)
         for (uint32_t x = 0; x < width_; ++x)
@@ -300,13 +303,15 @@ bool FastCpuOracle::Impl::rasterize(const detail::FastSetup& s, int32_t ty_begin
     const int32_t tx_first = s.px_min >> kTileShift, tx_last = s.px_max >> kTileShift;
     const int32_t ty_first = std::max(s.py_min >> kTileShift, ty_begin);
     const int32_t ty_last = std::min(s.py_max >> kTileShift, ty_end - 1);
-    if (ty_first > ty_last) return false;  // outside the band
+    if (ty_first > ty_last)
+        return false; // outside the band
     if (tx_last - tx_first < detail::kSmallTiles && ty_last - ty_first < detail::kSmallTiles)
         return rasterizeSmall<kDraw>(s, ty_first, ty_last, stats);
     const int32_t last_x = int32_t(width_) - 1, last_y = int32_t(height_) - 1;
     detail::TileWalk walk;
     const double spread = spreadOf(s, conservative_);
-    static_cast<detail::TriangleWalk&>(walk) = triangleWalk<kDraw>(s, spread, conservative_, depth_tolerance_);
+    static_cast<detail::TriangleWalk&>(walk) =
+        triangleWalk<kDraw>(s, spread, conservative_, depth_tolerance_);
     for (int32_t ty = ty_first; ty <= ty_last; ++ty) {
         // Rows of the tile within the viewport, then within the triangle's bounding box.
         const int32_t vy0 = ty << kTileShift, vy1 = std::min(vy0 + int32_t(kTileSize) - 1, last_y);
@@ -377,7 +382,8 @@ bool FastCpuOracle::Impl::rasterize(const detail::FastSetup& s, int32_t ty_begin
                     ++stats.tiles_culled;
                     continue;
                 }
-                // Every pixel covered, every fragment > the tile's max + tolerance: behind somewhere.
+                // Every pixel covered, every fragment > the tile's max + tolerance: behind
+                // somewhere.
                 if (full_tile && float(lowest) > state.max + depth_tolerance_) {
                     ++stats.tiles_accepted;
                     return true;
@@ -392,23 +398,27 @@ bool FastCpuOracle::Impl::rasterize(const detail::FastSetup& s, int32_t ty_begin
             walk.lane_last = x1 - vx0;
             walk.rows = y1 - y0 + 1;
             walk.all_covered = inside_all;
-            for (int e = 0; e < 3; ++e) walk.edge[e] = edge_row[e];
+            for (int e = 0; e < 3; ++e)
+                walk.edge[e] = edge_row[e];
             if constexpr (kDraw) {
                 if (all_pass) {
                     fill_tile_(walk);
                     // Bounds from the depth bounds instead of the pixels: every fragment written
                     // lies in [float(lowest), float(highest)].
                     state.min = std::min(state.min, float(lowest));
-                    if (full_tile) state.max = float(highest);
+                    if (full_tile)
+                        state.max = float(highest);
                     continue;
                 }
                 detail::TileDraw result;
                 draw_tile_(walk, result);
                 state.min = std::min(state.min, result.written_min);
                 // A draw covering the whole tile visited every stored depth: the bound is exact.
-                if (full_tile) state.max = result.stored_max;
+                if (full_tile)
+                    state.max = result.stored_max;
             } else {
-                if (query_tile_(walk)) return true;
+                if (query_tile_(walk))
+                    return true;
             }
         }
     }
@@ -431,7 +441,8 @@ bool FastCpuOracle::Impl::rasterizeSmall(const detail::FastSetup& s, int32_t ty_
                        int64_t(walk.py_min) * s.edge_step_y[e];
     // narrow holds over the whole bounds, so over the band's rows too.
     const double spread = spreadOf(s, conservative_);
-    static_cast<detail::TriangleWalk&>(walk) = triangleWalk<kDraw>(s, spread, conservative_, depth_tolerance_);
+    static_cast<detail::TriangleWalk&>(walk) =
+        triangleWalk<kDraw>(s, spread, conservative_, depth_tolerance_);
     double lowest, highest;
     depthBounds(s, columnTerm(s, walk.px_min), columnTerm(s, walk.px_max), rowTerm(s, walk.py_min),
                 rowTerm(s, walk.py_max), walk.offset, spread, lowest, highest);
@@ -446,7 +457,8 @@ bool FastCpuOracle::Impl::rasterizeSmall(const detail::FastSetup& s, int32_t ty_
             const std::size_t tile = std::size_t(ty) * tiles_x_ + std::size_t(tx);
             bool& live = walk.live[ty - ty_first][tx - tx_first];
             if constexpr (kDraw) {
-                if (tiles_[tile].epoch != epoch_) clearTile(tile);
+                if (tiles_[tile].epoch != epoch_)
+                    clearTile(tile);
                 // Every fragment >= the tile's max >= every stored depth: none passes LESS.
                 live = lowest < double(tiles_[tile].max);
             } else {
@@ -458,7 +470,8 @@ bool FastCpuOracle::Impl::rasterizeSmall(const detail::FastSetup& s, int32_t ty_
             stats.tiles_culled += live ? 0 : 1;
             any |= live;
         }
-    if (!any) return false;
+    if (!any)
+        return false;
     const bool simd_walk = use_simd_ && walk.narrow;
     if constexpr (kDraw) {
         detail::SmallDraw drawn;
@@ -479,7 +492,8 @@ void FastCpuOracle::Impl::draw(uint32_t primitive) {
     assert(primitive < primitives_.size());
     ++stats_.draws;
     const uint32_t first = primitive_setups_[primitive], last = primitive_setups_[primitive + 1];
-    for (uint32_t i = first; i < last; ++i) rasterize<true>(setups_[i], 0, int32_t(tiles_y_), stats_);
+    for (uint32_t i = first; i < last; ++i)
+        rasterize<true>(setups_[i], 0, int32_t(tiles_y_), stats_);
 }
 
 bool FastCpuOracle::Impl::anyBehind(uint32_t primitive) {
@@ -487,7 +501,8 @@ bool FastCpuOracle::Impl::anyBehind(uint32_t primitive) {
     ++stats_.queries;
     const uint32_t first = primitive_setups_[primitive], last = primitive_setups_[primitive + 1];
     for (uint32_t i = first; i < last; ++i)
-        if (rasterize<false>(setups_[i], 0, int32_t(tiles_y_), stats_)) return true;
+        if (rasterize<false>(setups_[i], 0, int32_t(tiles_y_), stats_))
+            return true;
     return false;
 }
 
@@ -498,7 +513,8 @@ bool FastCpuOracle::Impl::anyBehind(uint32_t primitive) {
 constexpr uint32_t kBandsPerThread = 1;
 
 uint32_t FastCpuOracle::Impl::bandsFor(std::size_t count) const {
-    if (threads_ <= 1 || count < parallel_threshold_ || count == 0 || tiles_y_ < 2) return 1;
+    if (threads_ <= 1 || count < parallel_threshold_ || count == 0 || tiles_y_ < 2)
+        return 1;
     return std::min(threads_ * kBandsPerThread, tiles_y_);
 }
 
@@ -508,26 +524,28 @@ void FastCpuOracle::Impl::bandRows(uint32_t b, uint32_t bands, int32_t& first,
     last = int32_t(uint64_t(b + 1) * tiles_y_ / bands);
 }
 
-template <class Band>
-void FastCpuOracle::Impl::runBands(uint32_t bands, Band&& band) {
-    if (band_stats_.size() < bands) band_stats_.resize(threads_ * kBandsPerThread);  // once
-    for (uint32_t b = 0; b < bands; ++b) band_stats_[b] = {};
+template <class Band> void FastCpuOracle::Impl::runBands(uint32_t bands, Band&& band) {
+    if (band_stats_.size() < bands)
+        band_stats_.resize(threads_ * kBandsPerThread); // once
+    for (uint32_t b = 0; b < bands; ++b)
+        band_stats_[b] = {};
     if (pool_ == nullptr) {
         pool_ = &WorkerPool::shared();
-        pool_->reserve(threads_);  // grown once, to the largest count an oracle asks
+        pool_->reserve(threads_); // grown once, to the largest count an oracle asks
     }
     struct Context {
         std::remove_reference_t<Band>* band;
         FastCpuOracleStats* stats;
         uint32_t bands;
-        std::atomic<uint32_t> next{0};  // the next band to claim
+        std::atomic<uint32_t> next{0}; // the next band to claim
     };
     Context context{&band, band_stats_.data(), bands};
     pool_->run(
         std::min(threads_, bands),
         [](void* c, uint32_t) {
             Context& context = *static_cast<Context*>(c);
-            for (uint32_t b; (b = context.next.fetch_add(1, std::memory_order_relaxed)) < context.bands;) {
+            for (uint32_t b;
+                 (b = context.next.fetch_add(1, std::memory_order_relaxed)) < context.bands;) {
                 // Counted on this thread's stack: the bands' entries share cache lines.
                 FastCpuOracleStats stats;
                 (*context.band)(b, stats);
@@ -550,7 +568,7 @@ void FastCpuOracle::Impl::runBands(uint32_t bands, Band&& band) {
 void FastCpuOracle::Impl::backToFrontPass(uint32_t bands, std::span<const uint32_t> sequence,
                                           std::span<const uint8_t> query,
                                           std::span<uint8_t> behind) {
-    ++epoch_;  // clear()
+    ++epoch_; // clear()
     for (std::size_t i = 0; i < sequence.size(); ++i) {
         assert(sequence[i] < primitives_.size());
         if (query[i]) {
@@ -585,7 +603,7 @@ void FastCpuOracle::Impl::backToFrontPass(uint32_t bands, std::span<const uint32
 void FastCpuOracle::Impl::queryAgainst(uint32_t bands, std::span<const uint32_t> occluders,
                                        std::span<const uint32_t> targets,
                                        std::span<uint8_t> behind) {
-    ++epoch_;  // clear()
+    ++epoch_; // clear()
     std::fill(behind.begin(), behind.end(), uint8_t(0));
     stats_.draws += occluders.size();
     stats_.queries += targets.size();
@@ -601,7 +619,8 @@ void FastCpuOracle::Impl::queryAgainst(uint32_t bands, std::span<const uint32_t>
         for (std::size_t i = 0; i < targets.size(); ++i) {
             assert(targets[i] < primitives_.size());
             std::atomic_ref<uint8_t> answer(behind[i]);
-            if (answer.load(std::memory_order_relaxed) != 0) continue;
+            if (answer.load(std::memory_order_relaxed) != 0)
+                continue;
             const uint32_t last = primitive_setups_[targets[i] + 1];
             for (uint32_t k = primitive_setups_[targets[i]]; k < last; ++k)
                 if (rasterize<false>(setups_[k], first_row, last_row, stats)) {
@@ -625,15 +644,33 @@ void FastCpuOracle::bind(PositionsView positions, const ViewProjection& view,
     impl_->bind(positions, view, primitives);
 }
 
-uint32_t FastCpuOracle::primitiveCount() const { return uint32_t(impl_->primitives_.size()); }
-void FastCpuOracle::clear() { ++impl_->epoch_; }
-std::span<const float> FastCpuOracle::depthBuffer() const { return impl_->depthBuffer(); }
-bool FastCpuOracle::usesSimd() const { return impl_->use_simd_; }
-uint32_t FastCpuOracle::threadCount() const { return impl_->threads_; }
-uint32_t FastCpuOracle::width() const { return impl_->width_; }
-uint32_t FastCpuOracle::height() const { return impl_->height_; }
-const FastCpuOracleStats& FastCpuOracle::stats() const { return impl_->stats_; }
-void FastCpuOracle::resetStats() { impl_->stats_ = {}; }
+uint32_t FastCpuOracle::primitiveCount() const {
+    return uint32_t(impl_->primitives_.size());
+}
+void FastCpuOracle::clear() {
+    ++impl_->epoch_;
+}
+std::span<const float> FastCpuOracle::depthBuffer() const {
+    return impl_->depthBuffer();
+}
+bool FastCpuOracle::usesSimd() const {
+    return impl_->use_simd_;
+}
+uint32_t FastCpuOracle::threadCount() const {
+    return impl_->threads_;
+}
+uint32_t FastCpuOracle::width() const {
+    return impl_->width_;
+}
+uint32_t FastCpuOracle::height() const {
+    return impl_->height_;
+}
+const FastCpuOracleStats& FastCpuOracle::stats() const {
+    return impl_->stats_;
+}
+void FastCpuOracle::resetStats() {
+    impl_->stats_ = {};
+}
 
 void FastCpuOracle::draw(uint32_t primitive) {
     impl_->depth_tolerance_ = depth_tolerance_;

@@ -16,8 +16,7 @@ constexpr float kInfinity = std::numeric_limits<float>::infinity();
 // true; returns whether it did. The fragment is rule 6's float: the column term
 // d0 + ddx ((px + 0.5) - x0), shared by every row, plus the row term, as in the reference, plus
 // the walk's offset last.
-template <class Pixel>
-bool forEachCovered(const TileWalk& w, Pixel&& pixel) {
+template <class Pixel> bool forEachCovered(const TileWalk& w, Pixel&& pixel) {
     double column[8];
     for (int32_t k = w.lane_first; k <= w.lane_last; ++k)
         column[k] = w.d0 + w.ddx * ((double(w.vx0 + k) + 0.5) - w.x0);
@@ -31,9 +30,11 @@ bool forEachCovered(const TileWalk& w, Pixel&& pixel) {
             e0 += w.step_x[0];
             e1 += w.step_x[1];
             e2 += w.step_x[2];
-            if (covered && pixel(row[k], float((column[k] + row_term) + w.offset))) return true;
+            if (covered && pixel(row[k], float((column[k] + row_term) + w.offset)))
+                return true;
         }
-        for (int e = 0; e < 3; ++e) edge_row[e] += w.step_y[e];
+        for (int e = 0; e < 3; ++e)
+            edge_row[e] += w.step_y[e];
     }
     return false;
 }
@@ -60,14 +61,14 @@ void fillTileScalar(const TileWalk& w) {
 
 bool queryTileScalar(const TileWalk& w) {
     const float tolerance = w.tolerance;
-    return forEachCovered(w, [tolerance](float depth, float frag) { return frag > depth + tolerance; });
+    return forEachCovered(
+        w, [tolerance](float depth, float frag) { return frag > depth + tolerance; });
 }
 
 // Calls pixel(depth, fragment) for every covered pixel of the live tiles of a small walk, row by
 // row, until it returns true; returns whether it did. Exact int64_t edge functions, and rule 6's
 // expression as in forEachCovered.
-template <class Pixel>
-bool forEachSmallCovered(const SmallWalk& w, Pixel&& pixel) {
+template <class Pixel> bool forEachSmallCovered(const SmallWalk& w, Pixel&& pixel) {
     const int32_t tx0 = w.px_min >> 3, ty0 = w.py_min >> 3;
     int64_t edge_row[3] = {w.edge[0], w.edge[1], w.edge[2]};
     for (int32_t py = w.py_min; py <= w.py_max; ++py) {
@@ -80,7 +81,8 @@ bool forEachSmallCovered(const SmallWalk& w, Pixel&& pixel) {
             e1 += w.step_x[1];
             e2 += w.step_x[2];
             const int32_t tile_column = (px >> 3) - tx0;
-            if (!covered || !w.live[tile_row][tile_column]) continue;
+            if (!covered || !w.live[tile_row][tile_column])
+                continue;
             float* tile = w.depth + (std::size_t(py >> 3) * w.tiles_x + std::size_t(px >> 3)) *
                                         (kTileRowFloats * kTileRowFloats);
             float& depth = tile[(py & 7) * kTileRowFloats + (px & 7)];
@@ -88,13 +90,15 @@ bool forEachSmallCovered(const SmallWalk& w, Pixel&& pixel) {
             if (pixel(depth, float((column + row_term) + w.offset), tile_row, tile_column))
                 return true;
         }
-        for (int e = 0; e < 3; ++e) edge_row[e] += w.step_y[e];
+        for (int e = 0; e < 3; ++e)
+            edge_row[e] += w.step_y[e];
     }
     return false;
 }
 
 void drawSmallScalar(const SmallWalk& w, SmallDraw& out) {
-    for (auto& row : out.written_min) std::fill(std::begin(row), std::end(row), kInfinity);
+    for (auto& row : out.written_min)
+        std::fill(std::begin(row), std::end(row), kInfinity);
     forEachSmallCovered(w, [&](float& depth, float frag, int32_t tile_row, int32_t tile_column) {
         if (frag < depth) {
             depth = frag;
@@ -129,7 +133,8 @@ RowKernels scalarRowKernels() {
 
 RowKernels selectRowKernels(bool allow_simd, bool& uses_simd) {
     uses_simd = false;
-    if (!allow_simd || !cpuHasAvx2()) return scalarRowKernels();
+    if (!allow_simd || !cpuHasAvx2())
+        return scalarRowKernels();
     const RowKernels avx2{avx2DrawTile(), avx2QueryTile(), avx2FillTile(), avx2DrawSmall(),
                           avx2QuerySmall()};
     if (avx2.draw == nullptr || avx2.query == nullptr || avx2.fill == nullptr ||

@@ -21,27 +21,27 @@ constexpr int32_t kTileRowFloats = 8;
 
 /// What every walk of one fan triangle shares, whichever pixels it covers.
 struct TriangleWalk {
-    bool narrow;             // every walked value of every edge fits in int32_t (decided at bind
-                             // for the whole triangle; the AVX2 walks then test on 32 bits)
-    int64_t step_x[3];       // change of E_e from column px to px + 1
-    int64_t step_y[3];       // change of E_e from row py to py + 1
-    double d0, ddx, ddy, x0, y0_plane;  // the depth plane (TriangleSetup's d0, ddx, ddy, x0, y0)
+    bool narrow;       // every walked value of every edge fits in int32_t (decided at bind
+                       // for the whole triangle; the AVX2 walks then test on 32 bits)
+    int64_t step_x[3]; // change of E_e from column px to px + 1
+    int64_t step_y[3]; // change of E_e from row py to py + 1
+    double d0, ddx, ddy, x0, y0_plane; // the depth plane (TriangleSetup's d0, ddx, ddy, x0, y0)
     // Added to each fragment's double value before rounding: -0.0 in exact mode (adding it
     // changes no value, not even a zero's sign); in conservative mode -spread for draws and
     // +spread for queries (cpu_oracle.h).
     double offset;
-    float tolerance;         // the oracle's depth tolerance: behind iff frag > stored + tolerance
+    float tolerance; // the oracle's depth tolerance: behind iff frag > stored + tolerance
 };
 
 /// The pixels of one tile that a fan triangle's bounding box overlaps. Lane k is column vx0 + k.
 struct TileWalk : TriangleWalk {
-    float* origin;           // depth of pixel (vx0, y0): the tile's first column, first row walked
-    int32_t vx0, y0;         // column of lane 0; first row walked
-    int32_t lane_first;      // walked lanes [lane_first, lane_last], within the viewport
+    float* origin;      // depth of pixel (vx0, y0): the tile's first column, first row walked
+    int32_t vx0, y0;    // column of lane 0; first row walked
+    int32_t lane_first; // walked lanes [lane_first, lane_last], within the viewport
     int32_t lane_last;
-    int32_t rows;            // rows walked, y0 .. y0 + rows - 1
-    bool all_covered;        // every walked pixel is inside all three edges: no edge tests
-    int64_t edge[3];         // E_e + bias_e at pixel (vx0 + lane_first, y0)
+    int32_t rows;     // rows walked, y0 .. y0 + rows - 1
+    bool all_covered; // every walked pixel is inside all three edges: no edge tests
+    int64_t edge[3];  // E_e + bias_e at pixel (vx0 + lane_first, y0)
 };
 
 /// What a draw did to its tile: the least depth it wrote (+infinity if none) and the greatest
@@ -67,12 +67,12 @@ constexpr int32_t kSmallTiles = 3;
 /// costs more than the few pixels a small triangle has in each tile. The caller has cleared the
 /// tiles it touches and decided which ones to walk.
 struct SmallWalk : TriangleWalk {
-    float* depth;                     // the tile-major depth buffer
-    std::size_t tiles_x;              // tiles per row of the buffer
-    int32_t px_min, px_max;           // pixels walked, inclusive, within kSmallTiles tile columns
-    int32_t py_min, py_max;           // rows walked, inclusive, within kSmallTiles tile rows
-    bool live[kSmallTiles][kSmallTiles];  // [tile row][tile column], from the first: walk it
-    int64_t edge[3];         // E_e + bias_e at pixel (px_min, py_min); covered iff all > 0
+    float* depth;           // the tile-major depth buffer
+    std::size_t tiles_x;    // tiles per row of the buffer
+    int32_t px_min, px_max; // pixels walked, inclusive, within kSmallTiles tile columns
+    int32_t py_min, py_max; // rows walked, inclusive, within kSmallTiles tile rows
+    bool live[kSmallTiles][kSmallTiles]; // [tile row][tile column], from the first: walk it
+    int64_t edge[3]; // E_e + bias_e at pixel (px_min, py_min); covered iff all > 0
 };
 
 /// What a small draw did: the least depth it wrote in each tile (+infinity where none).

@@ -20,15 +20,15 @@ bool edgesFitInt32(const FastSetup& s) {
         const int64_t span_x = int64_t(s.px_max - s.px_min) * s.edge_step_x[e];
         const int64_t span_y = int64_t(s.py_max - s.py_min) * s.edge_step_y[e];
         const int64_t lowest = corner + std::min<int64_t>(span_x, 0) + std::min<int64_t>(span_y, 0);
-        const int64_t highest = corner + std::max<int64_t>(span_x, 0) + std::max<int64_t>(span_y, 0);
+        const int64_t highest =
+            corner + std::max<int64_t>(span_x, 0) + std::max<int64_t>(span_y, 0);
         fit &= lowest >= -int64_t(INT32_MAX) && highest <= int64_t(INT32_MAX);
     }
     return fit;
 }
 
-void appendFastSetups(const Matrix4& clip, PositionsView positions, std::size_t t,
-                      uint32_t width, uint32_t height, bool conservative,
-                      std::vector<FastSetup>& out) {
+void appendFastSetups(const Matrix4& clip, PositionsView positions, std::size_t t, uint32_t width,
+                      uint32_t height, bool conservative, std::vector<FastSetup>& out) {
     std::array<ClipVertex, 3> corners;
     std::array<ClipVertex, kMaxPolygonVertices> polygon;
     std::array<ScreenVertex, kMaxPolygonVertices> screen;
@@ -38,8 +38,10 @@ void appendFastSetups(const Matrix4& clip, PositionsView positions, std::size_t 
     }
     // Rules 2-4 and the set-up of rules 5-6, by the reference's own functions.
     const int count = clipTriangle(corners[0], corners[1], corners[2], polygon);
-    if (count < 3) return;
-    for (int i = 0; i < count; ++i) screen[i] = toScreen(polygon[i], width, height);
+    if (count < 3)
+        return;
+    for (int i = 0; i < count; ++i)
+        screen[i] = toScreen(polygon[i], width, height);
     TriangleSetup ts;
     for (int i = 1; i + 1 < count; ++i) {
         const ScreenVertex& a = screen[0];
@@ -47,7 +49,8 @@ void appendFastSetups(const Matrix4& clip, PositionsView positions, std::size_t 
         const ScreenVertex& c = screen[i + 1];
         const bool set_up = conservative ? setupConservative(a, b, c, width, height, ts)
                                          : setupTriangle(a, b, c, width, height, ts);
-        if (!set_up) continue;
+        if (!set_up)
+            continue;
         FastSetup s;
         constexpr int64_t half = kSubpixelScale / 2;
         for (int e = 0; e < 3; ++e) {
@@ -56,9 +59,9 @@ void appendFastSetups(const Matrix4& clip, PositionsView positions, std::size_t 
             // Conservative: covered when E + reach >= 0, reach = the edge function's rise over
             // half a pixel and the margin on each axis (cpu_oracle.h), i.e. E + reach + 1 > 0.
             // Below 2^39.
-            const int64_t bias = conservative
-                                     ? (std::abs(dx) + std::abs(dy)) * (half + kConservativeMargin) + 1
-                                     : ts.bias[e];
+            const int64_t bias =
+                conservative ? (std::abs(dx) + std::abs(dy)) * (half + kConservativeMargin) + 1
+                             : ts.bias[e];
             // E_e at the centre of pixel (0, 0), (128, 128) in 24.8 fixed point: below 2^61.
             s.edge_at_origin[e] = dx * (half - ts.y[e]) - dy * (half - ts.x[e]) + bias;
             s.edge_step_x[e] = -dy * kSubpixelScale;

@@ -21,12 +21,12 @@ namespace vissort::detail {
 /// folded into edge_at_origin: the top-left rule's 0 or 1, or in conservative mode the edge's
 /// rise over half a pixel and the margin, plus 1).
 struct FastSetup {
-    int64_t edge_at_origin[3];  // E_i + bias_i at the centre of pixel (0, 0)
-    int64_t edge_step_x[3];     // change of E_i from pixel px to px + 1
-    int64_t edge_step_y[3];     // change of E_i from row py to py + 1
-    double x0, y0, d0, ddx, ddy;  // depth plane, as in TriangleSetup
-    double spread;  // conservative mode: TriangleSetup::spread (unset in exact mode)
-    int32_t px_min, px_max, py_min, py_max;  // inclusive, clamped to the viewport
+    int64_t edge_at_origin[3];   // E_i + bias_i at the centre of pixel (0, 0)
+    int64_t edge_step_x[3];      // change of E_i from pixel px to px + 1
+    int64_t edge_step_y[3];      // change of E_i from row py to py + 1
+    double x0, y0, d0, ddx, ddy; // depth plane, as in TriangleSetup
+    double spread;               // conservative mode: TriangleSetup::spread (unset in exact mode)
+    int32_t px_min, px_max, py_min, py_max; // inclusive, clamped to the viewport
     // Every edge function fits in int32_t over the pixel bounds (edgesFitInt32), so the AVX2
     // walks may test edges on 32-bit lanes. Decided once per bind, not per draw or query.
     bool narrow;
@@ -39,15 +39,14 @@ bool edgesFitInt32(const FastSetup& s);
 /// Clips, snaps and sets up triangle t of positions (corners 3t .. 3t + 2) for a width x height
 /// viewport, clip being projection * view (rule 1); appends its fan triangles to out (none when
 /// it covers no pixel). Conservative: CpuOracle's conservative rules (cpu_oracle.h).
-void appendFastSetups(const Matrix4& clip, PositionsView positions, std::size_t t,
-                      uint32_t width, uint32_t height, bool conservative,
-                      std::vector<FastSetup>& out);
+void appendFastSetups(const Matrix4& clip, PositionsView positions, std::size_t t, uint32_t width,
+                      uint32_t height, bool conservative, std::vector<FastSetup>& out);
 
 /// What a batch set-up did with each of its triangles.
 enum class LaneSetup : uint8_t {
-    empty,   // finished: the triangle covers no pixel centre (appendFastSetups appends nothing)
-    ready,   // finished: one fan triangle, equal to what appendFastSetups appends
-    scalar,  // not attempted (clipping needed, non-finite or out-of-range input): use the scalar
+    empty,  // finished: the triangle covers no pixel centre (appendFastSetups appends nothing)
+    ready,  // finished: one fan triangle, equal to what appendFastSetups appends
+    scalar, // not attempted (clipping needed, non-finite or out-of-range input): use the scalar
 };
 
 /// Exact-mode set-up of the four triangles triangles[0..3] (ids into the corner arrays x, y, z of

@@ -56,7 +56,8 @@ VISSORT_AVX2 inline __m128i snap(__m256d v) {
 // whose centre (256 p + 128) is >= v, <= v. Arithmetic shifts, as there.
 VISSORT_AVX2 inline __m128i firstCentreFrom(__m128i v) {
     const __m128i half = _mm_set1_epi32(int32_t(kSubpixelScale / 2));
-    return _mm_sub_epi32(_mm_setzero_si128(), _mm_srai_epi32(_mm_sub_epi32(half, v), kSubpixelBits));
+    return _mm_sub_epi32(_mm_setzero_si128(),
+                         _mm_srai_epi32(_mm_sub_epi32(half, v), kSubpixelBits));
 }
 VISSORT_AVX2 inline __m128i lastCentreTo(__m128i v) {
     const __m128i half = _mm_set1_epi32(int32_t(kSubpixelScale / 2));
@@ -71,7 +72,7 @@ VISSORT_AVX2 void setupQuadAvx2(const Matrix4& m, const float* x, const float* y
     const __m256d sign = _mm256_set1_pd(-0.0);
     const __m256d limit = _mm256_set1_pd(double(kMaxSnapped) / double(kSubpixelScale));
     __m256d ok = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
-    __m256d sx[3], sy[3], sd[3];  // screen vertices (rule 4), corner k of the four triangles
+    __m256d sx[3], sy[3], sd[3]; // screen vertices (rule 4), corner k of the four triangles
     for (int k = 0; k < 3; ++k) {
         alignas(32) double in[3][4];
         for (int l = 0; l < 4; ++l) {
@@ -119,8 +120,9 @@ VISSORT_AVX2 void setupQuadAvx2(const Matrix4& m, const float* x, const float* y
         fx[k] = snap(sx[k]);
         fy[k] = snap(sy[k]);
     }
-    const __m256i area = _mm256_sub_epi64(product(_mm_sub_epi32(fx[1], fx[0]), _mm_sub_epi32(fy[2], fy[0])),
-                                          product(_mm_sub_epi32(fy[1], fy[0]), _mm_sub_epi32(fx[2], fx[0])));
+    const __m256i area =
+        _mm256_sub_epi64(product(_mm_sub_epi32(fx[1], fx[0]), _mm_sub_epi32(fy[2], fy[0])),
+                         product(_mm_sub_epi32(fy[1], fy[0]), _mm_sub_epi32(fx[2], fx[0])));
     const __m256i zero64 = _mm256_setzero_si256();
     const __m256i no_area = _mm256_cmpeq_epi64(area, zero64);
     const __m256i negative = _mm256_cmpgt_epi64(zero64, area);
@@ -147,14 +149,15 @@ VISSORT_AVX2 void setupQuadAvx2(const Matrix4& m, const float* x, const float* y
         const int j = (e + 1) % 3;
         const __m128i dx = _mm_sub_epi32(fx[j], fx[e]), dy = _mm_sub_epi32(fy[j], fy[e]);
         // Top edge (dy == 0, dx > 0) or left edge (dy < 0): 1, else 0.
-        const __m128i top_left = _mm_or_si128(
-            _mm_and_si128(_mm_cmpeq_epi32(dy, zero32), _mm_cmpgt_epi32(dx, zero32)),
-            _mm_cmpgt_epi32(zero32, dy));
+        const __m128i top_left =
+            _mm_or_si128(_mm_and_si128(_mm_cmpeq_epi32(dy, zero32), _mm_cmpgt_epi32(dx, zero32)),
+                         _mm_cmpgt_epi32(zero32, dy));
         const __m128i bias = _mm_and_si128(top_left, _mm_set1_epi32(1));
         edge[e] = _mm256_add_epi64(_mm256_sub_epi64(product(dx, _mm_sub_epi32(half32, fy[e])),
                                                     product(dy, _mm_sub_epi32(half32, fx[e]))),
                                    _mm256_cvtepi32_epi64(bias));
-        step_x[e] = _mm256_slli_epi64(_mm256_cvtepi32_epi64(_mm_sub_epi32(zero32, dy)), kSubpixelBits);
+        step_x[e] =
+            _mm256_slli_epi64(_mm256_cvtepi32_epi64(_mm_sub_epi32(zero32, dy)), kSubpixelBits);
         step_y[e] = _mm256_slli_epi64(_mm256_cvtepi32_epi64(dx), kSubpixelBits);
     }
 
@@ -178,9 +181,11 @@ VISSORT_AVX2 void setupQuadAvx2(const Matrix4& m, const float* x, const float* y
     const __m256d det = _mm256_sub_pd(_mm256_mul_pd(e1x, e2y), _mm256_mul_pd(e2x, e1y));
     const __m256d has_det = _mm256_cmp_pd(det, zero, _CMP_NEQ_UQ);
     const __m256d ddx = _mm256_and_pd(
-        has_det, _mm256_div_pd(_mm256_sub_pd(_mm256_mul_pd(e1d, e2y), _mm256_mul_pd(e2d, e1y)), det));
+        has_det,
+        _mm256_div_pd(_mm256_sub_pd(_mm256_mul_pd(e1d, e2y), _mm256_mul_pd(e2d, e1y)), det));
     const __m256d ddy = _mm256_and_pd(
-        has_det, _mm256_div_pd(_mm256_sub_pd(_mm256_mul_pd(e2d, e1x), _mm256_mul_pd(e1d, e2x)), det));
+        has_det,
+        _mm256_div_pd(_mm256_sub_pd(_mm256_mul_pd(e2d, e1x), _mm256_mul_pd(e1d, e2x)), det));
 
     alignas(32) int64_t edge_out[3][4], step_x_out[3][4], step_y_out[3][4];
     alignas(32) double plane[5][4];
@@ -199,7 +204,8 @@ VISSORT_AVX2 void setupQuadAvx2(const Matrix4& m, const float* x, const float* y
     _mm_store_si128(reinterpret_cast<__m128i*>(bounds[1]), px_max);
     _mm_store_si128(reinterpret_cast<__m128i*>(bounds[2]), py_min);
     _mm_store_si128(reinterpret_cast<__m128i*>(bounds[3]), py_max);
-    _mm_store_si128(reinterpret_cast<__m128i*>(empty), _mm_or_si128(narrowMask(no_area), no_centres));
+    _mm_store_si128(reinterpret_cast<__m128i*>(empty),
+                    _mm_or_si128(narrowMask(no_area), no_centres));
     _mm_store_si128(reinterpret_cast<__m128i*>(okay), narrowMask(_mm256_castpd_si256(ok)));
     for (int l = 0; l < 4; ++l) {
         if (okay[l] == 0) {
@@ -226,20 +232,24 @@ VISSORT_AVX2 void setupQuadAvx2(const Matrix4& m, const float* x, const float* y
         s.px_max = bounds[1][l];
         s.py_min = bounds[2][l];
         s.py_max = bounds[3][l];
-        s.narrow = false;  // the caller's (edgesFitInt32)
+        s.narrow = false; // the caller's (edgesFitInt32)
     }
 }
 
 } // namespace
 
-SetupQuadFn avx2SetupQuad() { return setupQuadAvx2; }
+SetupQuadFn avx2SetupQuad() {
+    return setupQuadAvx2;
+}
 
 } // namespace vissort::detail
 
 #else
 
 namespace vissort::detail {
-SetupQuadFn avx2SetupQuad() { return nullptr; }
+SetupQuadFn avx2SetupQuad() {
+    return nullptr;
+}
 } // namespace vissort::detail
 
 #endif

@@ -15,12 +15,18 @@ enum class Plane { near, far, left, right, bottom, top };
 
 double signedDistance(const ClipVertex& v, Plane plane) {
     switch (plane) {
-    case Plane::near: return v.z;
-    case Plane::far: return v.w - v.z;
-    case Plane::left: return kGuardBand * v.w + v.x;
-    case Plane::right: return kGuardBand * v.w - v.x;
-    case Plane::bottom: return kGuardBand * v.w + v.y;
-    case Plane::top: return kGuardBand * v.w - v.y;
+    case Plane::near:
+        return v.z;
+    case Plane::far:
+        return v.w - v.z;
+    case Plane::left:
+        return kGuardBand * v.w + v.x;
+    case Plane::right:
+        return kGuardBand * v.w - v.x;
+    case Plane::bottom:
+        return kGuardBand * v.w + v.y;
+    case Plane::top:
+        return kGuardBand * v.w - v.y;
     }
     return 0;
 }
@@ -34,9 +40,12 @@ bool insideAllPlanes(const ClipVertex& v) {
 }
 
 bool lexicographicallyLess(const ClipVertex& a, const ClipVertex& b) {
-    if (a.x != b.x) return a.x < b.x;
-    if (a.y != b.y) return a.y < b.y;
-    if (a.z != b.z) return a.z < b.z;
+    if (a.x != b.x)
+        return a.x < b.x;
+    if (a.y != b.y)
+        return a.y < b.y;
+    if (a.z != b.z)
+        return a.z < b.z;
     return a.w < b.w;
 }
 
@@ -64,11 +73,13 @@ int clipToPlane(const Polygon& in, int count, Plane plane, Polygon& out) {
         const bool current_inside = dist_current >= 0;
         const bool next_inside = dist_next >= 0;
         if (current_inside) {
-            if (written == kMaxPolygonVertices) return -1;
+            if (written == kMaxPolygonVertices)
+                return -1;
             out[written++] = current;
         }
         if (current_inside != next_inside) {
-            if (written == kMaxPolygonVertices) return -1;
+            if (written == kMaxPolygonVertices)
+                return -1;
             out[written++] = cutEdge(current, dist_current, next, dist_next);
         }
     }
@@ -82,26 +93,30 @@ bool isFinite(const ClipVertex& v) {
 } // namespace
 
 int clipTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, Polygon& out) {
-    if (!isFinite(a) || !isFinite(b) || !isFinite(c)) return 0;
+    if (!isFinite(a) || !isFinite(b) || !isFinite(c))
+        return 0;
     out[0] = a;
     out[1] = b;
     out[2] = c;
     // Most triangles lie inside every plane: each pass below would then keep the three vertices
     // as they are, in order, so the result is the same without the passes.
-    if (insideAllPlanes(a) & insideAllPlanes(b) & insideAllPlanes(c)) return a.w > 0 && b.w > 0 && c.w > 0 ? 3 : 0;
+    if (insideAllPlanes(a) & insideAllPlanes(b) & insideAllPlanes(c))
+        return a.w > 0 && b.w > 0 && c.w > 0 ? 3 : 0;
     Polygon scratch;
     int count = 3;
     // Ping-pong between out and scratch; six planes, so the result ends up back in out.
     Polygon* from = &out;
     Polygon* to = &scratch;
-    for (Plane plane : {Plane::near, Plane::far, Plane::left, Plane::right, Plane::bottom,
-                        Plane::top}) {
+    for (Plane plane :
+         {Plane::near, Plane::far, Plane::left, Plane::right, Plane::bottom, Plane::top}) {
         count = clipToPlane(*from, count, plane, *to);
-        if (count < 3) return 0;
+        if (count < 3)
+            return 0;
         std::swap(from, to);
     }
     for (int i = 0; i < count; ++i)
-        if (!(out[i].w > 0)) return 0;
+        if (!(out[i].w > 0))
+            return 0;
     return count;
 }
 

@@ -58,7 +58,8 @@ void RenderMesh::update(PositionsView positions, std::vector<float>& vertices) {
         const std::size_t c = t * 3;
         const Vec3 corner = positions.corner(c);
         // The cross product's length is twice the area: the sum weights faces by area.
-        const Vec3 normal = cross(positions.corner(c + 1) - corner, positions.corner(c + 2) - corner);
+        const Vec3 normal =
+            cross(positions.corner(c + 1) - corner, positions.corner(c + 2) - corner);
         const float n[3] = {float(normal.x), float(normal.y), float(normal.z)};
         for (int i = 0; i < 3; ++i) {
             face_normals_[t * 3 + i] = n[i];

@@ -26,8 +26,9 @@ SceneGeometry::SceneGeometry(const Scene& scene, std::span<const float> object_c
     elements_ = createBuffer();
     highlighted_ = createBuffer();
     highlight_flags_.assign(scene.triangleCount(), 0);
-    glNamedBufferStorage(highlighted_.get(), GLsizeiptr(highlight_flags_.size() * sizeof(uint32_t) + 4),
-                         nullptr, GL_DYNAMIC_STORAGE_BIT);
+    glNamedBufferStorage(highlighted_.get(),
+                         GLsizeiptr(highlight_flags_.size() * sizeof(uint32_t) + 4), nullptr,
+                         GL_DYNAMIC_STORAGE_BIT);
     // Zero-size storage is an error in OpenGL: every buffer gets a few spare bytes.
     const std::vector<uint32_t>& corner_objects = mesh_.cornerObjects();
     glNamedBufferStorage(objects_.get(), GLsizeiptr(corner_objects.size() * sizeof(uint32_t) + 4),
@@ -87,8 +88,10 @@ void SceneGeometry::setTriangles(std::span<const uint32_t> opaque,
 void SceneGeometry::setHighlighted(std::span<const uint32_t> triangles) {
     std::fill(highlight_flags_.begin(), highlight_flags_.end(), 0u);
     for (uint32_t t : triangles)
-        if (t < highlight_flags_.size()) highlight_flags_[t] = 1;
-    glNamedBufferSubData(highlighted_.get(), 0, GLsizeiptr(highlight_flags_.size() * sizeof(uint32_t)),
+        if (t < highlight_flags_.size())
+            highlight_flags_[t] = 1;
+    glNamedBufferSubData(highlighted_.get(), 0,
+                         GLsizeiptr(highlight_flags_.size() * sizeof(uint32_t)),
                          highlight_flags_.data());
     highlighting_ = !triangles.empty();
 }
@@ -107,7 +110,8 @@ void SceneGeometry::setView(GLuint program, const ViewProjection& view) const {
     glProgramUniform1i(program, glGetUniformLocation(program, "orthographic"),
                        view.projection == Projection::orthographic ? 1 : 0);
     glProgramUniform1i(program, glGetUniformLocation(program, "unlit"), flat_ ? 1 : 0);
-    glProgramUniform1i(program, glGetUniformLocation(program, "highlighting"), highlighting_ ? 1 : 0);
+    glProgramUniform1i(program, glGetUniformLocation(program, "highlighting"),
+                       highlighting_ ? 1 : 0);
 }
 
 void SceneGeometry::bind() const {

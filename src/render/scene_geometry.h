@@ -50,7 +50,7 @@ private:
     std::vector<float> vertex_data_;
     std::vector<uint32_t> element_data_;
     std::size_t opaque_count_ = 0, transparent_count_ = 0;
-    std::vector<uint32_t> highlight_flags_;  // one per triangle
+    std::vector<uint32_t> highlight_flags_; // one per triangle
     bool flat_ = false;
     bool highlighting_ = false;
 };

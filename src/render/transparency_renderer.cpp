@@ -28,8 +28,7 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
         .count();
 }
 
-void copyCorners(PositionsView from, std::span<const uint32_t> triangles,
-                 TrianglePositions& to) {
+void copyCorners(PositionsView from, std::span<const uint32_t> triangles, TrianglePositions& to) {
     to.resize(triangles.size());
     for (std::size_t t = 0; t < triangles.size(); ++t)
         for (std::size_t k = 0; k < 3; ++k) {
@@ -95,8 +94,7 @@ struct TransparencyRenderer::Impl {
 
     // This frame's back-to-front sequence of transparent triangles (scene triangle ids), for the
     // methods that order per frame.
-    void buildSequence(PositionsView positions, const ViewProjection& view,
-                       RenderStats& stats) {
+    void buildSequence(PositionsView positions, const ViewProjection& view, RenderStats& stats) {
         sequence.clear();
         if (part.scene_triangle.empty())
             return;
@@ -292,16 +290,18 @@ TransparencyRenderer::TransparencyRenderer(std::shared_ptr<GlContext> context, c
                 d.opaque_triangles.push_back(object.first_triangle + t);
     }
     d.part = transparentPart(scene, transparent);
-    d.primitives = levelPrimitives(d.part.objects, uint32_t(d.part.scene_triangle.size()),
-                                   settings.level);
+    d.primitives =
+        levelPrimitives(d.part.objects, uint32_t(d.part.scene_triangle.size()), settings.level);
     if (settings.method == BlendMethod::unsorted && !d.part.scene_triangle.empty()) {
         // Submission order, every frame the same.
         d.sequence.triangles = d.part.scene_triangle;
         d.sequence.segments.push_back({0, uint32_t(d.part.scene_triangle.size()), false, {}});
     }
     if (settings.method == BlendMethod::vissort && !d.part.scene_triangle.empty()) {
-        Result<std::unique_ptr<GeometryOracle>> oracle = makeOracle(settings.oracle, settings.oracle_options);
-        if (!oracle) throw std::runtime_error(oracle.error);
+        Result<std::unique_ptr<GeometryOracle>> oracle =
+            makeOracle(settings.oracle, settings.oracle_options);
+        if (!oracle)
+            throw std::runtime_error(oracle.error);
         d.oracle = std::move(*oracle.value);
         d.oracle->setDepthTolerance(kBlendingDepthTolerance);
         d.orderer = std::make_unique<SceneOrderer>(

@@ -66,18 +66,18 @@ private:
 };
 
 /// n (18), seed (1): the paper's dynamic scene, bouncing and deforming Stanford bunnies.
-Result<Scene> makeBunniesScene(const SceneParameters &parameters);
+Result<Scene> makeBunniesScene(const SceneParameters& parameters);
 /// layers (8), seed (1): rows of pipe racks, tanks and steel; depth complexity about 2 layers.
-Result<Scene> makePlantScene(const SceneParameters &parameters);
+Result<Scene> makePlantScene(const SceneParameters& parameters);
 /// layers (8), seed (1): a stack of tilted, non-intersecting quads along z.
-Result<Scene> makeSlabsScene(const SceneParameters &parameters);
+Result<Scene> makeSlabsScene(const SceneParameters& parameters);
 /// n (1000), seed (1): random triangles, one per cell of a jittered grid, never intersecting.
-Result<Scene> makeSoupScene(const SceneParameters &parameters);
+Result<Scene> makeSoupScene(const SceneParameters& parameters);
 
 /// The rigid part of the bunnies' motion, exposed so tests can check the bounding spheres.
 /// Bunny i's bounding sphere (radius 1 at rest, 1 + kBunnyWobble deformed) is centred at
 /// bunnyCentreAt(animation, i, t). Returns false when `animation` is not a bunnies animation.
-bool bunnyCentreAt(const Animation &animation, std::size_t bunny, double t, Vec3 &centre);
+bool bunnyCentreAt(const Animation& animation, std::size_t bunny, double t, Vec3& centre);
 
 /// Amplitude of the bunnies' deformation along the vertex normals (model units).
 inline constexpr double kBunnyWobble = 0.05;

@@ -31,7 +31,7 @@ constexpr double kWaveTemporalFrequency = 2;                 // radians per seco
 constexpr float kAlpha = 0.5f;
 constexpr double kGoldenFraction = 0.6180339887498949; // spreads successive hues evenly
 
-glm::dvec3 toGlm(const Vec3 &v) {
+glm::dvec3 toGlm(const Vec3& v) {
     return {v.x, v.y, v.z};
 }
 
@@ -75,17 +75,17 @@ public:
     std::size_t bunnyCount() const { return bunnies_.size(); }
 
     glm::dvec3 centreAt(std::size_t bunny, double t) const {
-        const BunnyMotion &motion = bunnies_[bunny];
+        const BunnyMotion& motion = bunnies_[bunny];
         const glm::dvec3 line = motion.start + motion.velocity * t;
         return {foldIntoRange(line.x, half_range_), foldIntoRange(line.y, half_range_),
                 foldIntoRange(line.z, half_range_)};
     }
 
-    void positionsAt(double t, TrianglePositions &out) const override {
+    void positionsAt(double t, TrianglePositions& out) const override {
         const std::size_t corners_per_bunny = corner_vertex_.size();
         out.resize(corners_per_bunny / 3 * bunnies_.size());
         for (std::size_t bunny = 0; bunny < bunnies_.size(); ++bunny) {
-            const BunnyMotion &motion = bunnies_[bunny];
+            const BunnyMotion& motion = bunnies_[bunny];
             // Constant angular velocity in world space: the spin is applied after the start pose.
             const glm::dquat spin = glm::angleAxis(motion.spin_rate * t, motion.spin_axis);
             const glm::dmat3 rotation = glm::mat3_cast(spin * motion.orientation);
@@ -95,7 +95,7 @@ public:
             const double wave_sin = kBunnyWobble * std::sin(wave_angle);
             const std::size_t first = bunny * corners_per_bunny;
             for (std::size_t corner = 0; corner < corners_per_bunny; ++corner) {
-                const RestVertex &vertex = vertices_[corner_vertex_[corner]];
+                const RestVertex& vertex = vertices_[corner_vertex_[corner]];
                 const double offset = vertex.sin_y * wave_cos + vertex.cos_y * wave_sin;
                 const glm::dvec3 world =
                     rotation * (vertex.position + offset * vertex.normal) + centre;
@@ -125,7 +125,7 @@ Result<RestMesh> loadRestBunny() {
                                           "built-in mesh bunny-lowres.obj");
     if (!loaded)
         return Result<RestMesh>::failure(loaded.error);
-    const TrianglePositions &positions = loaded.value->positions;
+    const TrianglePositions& positions = loaded.value->positions;
     const Bounds bounds = positions.bounds();
     if (positions.triangleCount() == 0 || !(bounds.radius() > 0))
         return Result<RestMesh>::failure("built-in mesh bunny-lowres.obj has no extent");
@@ -149,15 +149,15 @@ Result<RestMesh> loadRestBunny() {
     }
     // The unnormalised cross product has length twice the face area: summing it weights by area.
     for (std::size_t corner = 0; corner < corner_count; corner += 3) {
-        RestVertex *v[3] = {&mesh.vertices[mesh.corner_vertex[corner]],
+        RestVertex* v[3] = {&mesh.vertices[mesh.corner_vertex[corner]],
                             &mesh.vertices[mesh.corner_vertex[corner + 1]],
                             &mesh.vertices[mesh.corner_vertex[corner + 2]]};
         const glm::dvec3 face =
             glm::cross(v[1]->position - v[0]->position, v[2]->position - v[0]->position);
-        for (RestVertex *vertex : v)
+        for (RestVertex* vertex : v)
             vertex->normal += face;
     }
-    for (RestVertex &vertex : mesh.vertices) {
+    for (RestVertex& vertex : mesh.vertices) {
         const double length = glm::length(vertex.normal);
         vertex.normal = length > 0 ? vertex.normal / length : glm::dvec3(0);
         vertex.sin_y = std::sin(kWaveSpatialFrequency * vertex.position.y);
@@ -166,13 +166,13 @@ Result<RestMesh> loadRestBunny() {
     return Result<RestMesh>{std::move(mesh), {}};
 }
 
-glm::dvec3 randomUnitVector(SceneRandom &random) {
+glm::dvec3 randomUnitVector(SceneRandom& random) {
     return toGlm(random.unitVector());
 }
 
 } // namespace
 
-Result<Scene> makeBunniesScene(const SceneParameters &parameters) {
+Result<Scene> makeBunniesScene(const SceneParameters& parameters) {
     ParameterReader reader("builtin:bunnies", parameters);
     const auto count = static_cast<std::size_t>(reader.integer("n", 18, 1, 10'000));
     const uint64_t seed = reader.seed("seed", 1);
@@ -200,7 +200,7 @@ Result<Scene> makeBunniesScene(const SceneParameters &parameters) {
     scene.name = "builtin:bunnies";
     std::vector<BunnyMotion> bunnies(count);
     for (std::size_t i = 0; i < count; ++i) {
-        BunnyMotion &motion = bunnies[i];
+        BunnyMotion& motion = bunnies[i];
         for (int axis = 0; axis < 3; ++axis)
             motion.start[axis] = random.uniform(-half_range, half_range);
         const std::array<double, 4> q = random.rotation();
@@ -233,8 +233,8 @@ Result<Scene> makeBunniesScene(const SceneParameters &parameters) {
     return Result<Scene>{std::move(scene), {}};
 }
 
-bool bunnyCentreAt(const Animation &animation, std::size_t bunny, double t, Vec3 &centre) {
-    const auto *bunnies = dynamic_cast<const BunniesAnimation *>(&animation);
+bool bunnyCentreAt(const Animation& animation, std::size_t bunny, double t, Vec3& centre) {
+    const auto* bunnies = dynamic_cast<const BunniesAnimation*>(&animation);
     if (!bunnies || bunny >= bunnies->bunnyCount())
         return false;
     const glm::dvec3 c = bunnies->centreAt(bunny, t);

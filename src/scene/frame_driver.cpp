@@ -22,9 +22,10 @@ void FrameDriver::seek(int frame) {
         scene_->frame(frame * kFrameInterval, buffer_);
         positions_ = buffer_.view();
     } else {
-        positions_ = scene_->positions.view();  // static: every frame is t = 0
+        positions_ = scene_->positions.view(); // static: every frame is t = 0
     }
-    if (!has_view_) return;
+    if (!has_view_)
+        return;
     camera_ = cameraOnPath(base_, path_, frame, first_bounds_);
     view_ = frameCamera(camera_, positions_.bounds(), width_, height_);
 }

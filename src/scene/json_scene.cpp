@@ -30,55 +30,66 @@ constexpr uint64_t kMaxTriangles = 50'000'000;
 // Thrown by the readers below and caught in loadJsonScene, which turns it into a Result
 // failure: the nesting is deep and every step can fail, so unwinding keeps the readers short.
 struct JsonSceneError {
-    std::string message;  // "<where>: <problem>", without the file name
+    std::string message; // "<where>: <problem>", without the file name
 };
 
 [[noreturn]] void fail(const std::string& where, const std::string& problem) {
     throw JsonSceneError{where + ": " + problem};
 }
 
-void expectKeys(const Json& value, const std::string& where, std::initializer_list<const char*> allowed) {
-    if (!value.is_object()) fail(where, "expected an object");
+void expectKeys(const Json& value, const std::string& where,
+                std::initializer_list<const char*> allowed) {
+    if (!value.is_object())
+        fail(where, "expected an object");
     for (const auto& item : value.items()) {
-        if (std::find_if(allowed.begin(), allowed.end(), [&](const char* k) { return item.key() == k; }) !=
-            allowed.end())
+        if (std::find_if(allowed.begin(), allowed.end(),
+                         [&](const char* k) { return item.key() == k; }) != allowed.end())
             continue;
         std::string list;
-        for (const char* k : allowed) list += std::string(list.empty() ? "" : ", ") + k;
+        for (const char* k : allowed)
+            list += std::string(list.empty() ? "" : ", ") + k;
         fail(where, "unknown key '" + item.key() + "' (allowed: " + list + ")");
     }
 }
 
 double readNumber(const Json& value, const std::string& where) {
-    if (!value.is_number()) fail(where, "expected a number");
+    if (!value.is_number())
+        fail(where, "expected a number");
     const double number = value.get<double>();
-    if (!std::isfinite(number)) fail(where, "number is not finite");
+    if (!std::isfinite(number))
+        fail(where, "number is not finite");
     return number;
 }
 
 glm::dvec3 readVec3(const Json& value, const std::string& where) {
-    if (!value.is_array() || value.size() != 3) fail(where, "expected an array of 3 numbers");
+    if (!value.is_array() || value.size() != 3)
+        fail(where, "expected an array of 3 numbers");
     return {readNumber(value[0], where + "[0]"), readNumber(value[1], where + "[1]"),
             readNumber(value[2], where + "[2]")};
 }
 
 glm::dvec3 readDirection(const Json& value, const std::string& where) {
     const glm::dvec3 direction = readVec3(value, where);
-    if (glm::length(direction) == 0.0) fail(where, "direction must not be zero");
+    if (glm::length(direction) == 0.0)
+        fail(where, "direction must not be zero");
     return glm::normalize(direction);
 }
 
 std::string readString(const Json& value, const std::string& where) {
-    if (!value.is_string()) fail(where, "expected a string");
+    if (!value.is_string())
+        fail(where, "expected a string");
     return value.get<std::string>();
 }
 
 bool readBool(const Json& value, const std::string& where) {
-    if (!value.is_boolean()) fail(where, "expected true or false");
+    if (!value.is_boolean())
+        fail(where, "expected true or false");
     return value.get<bool>();
 }
 
-Vec3 toVec3(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+Vec3 toVec3(const glm::dvec3& v) {
+    return {v.x, v.y, v.z};
+}
 
 /// Rotation about a unit axis through the origin (right-handed: counter-clockwise looking down
 /// the axis towards the origin).
@@ -95,14 +106,17 @@ glm::dmat3 readRotation(const Json& value, const std::string& where) {
                axisRotation({1, 0, 0}, angles.x);
     }
     expectKeys(value, where, {"axis", "degrees"});
-    if (!value.contains("axis") || !value.contains("degrees")) fail(where, "needs both axis and degrees");
-    return axisRotation(readDirection(value["axis"], where + ".axis"), readNumber(value["degrees"], where + ".degrees"));
+    if (!value.contains("axis") || !value.contains("degrees"))
+        fail(where, "needs both axis and degrees");
+    return axisRotation(readDirection(value["axis"], where + ".axis"),
+                        readNumber(value["degrees"], where + ".degrees"));
 }
 
 glm::dvec3 readScale(const Json& value, const std::string& where) {
-    const glm::dvec3 scale = value.is_array() ? readVec3(value, where)
-                                              : glm::dvec3(readNumber(value, where));
-    if (scale.x == 0 || scale.y == 0 || scale.z == 0) fail(where, "scale must not be zero");
+    const glm::dvec3 scale =
+        value.is_array() ? readVec3(value, where) : glm::dvec3(readNumber(value, where));
+    if (scale.x == 0 || scale.y == 0 || scale.z == 0)
+        fail(where, "scale must not be zero");
     return scale;
 }
 
@@ -113,7 +127,8 @@ Rgba readColour(const Json& value, const std::string& where) {
     for (std::size_t i = 0; i < value.size(); ++i) {
         const std::string channel = where + "[" + std::to_string(i) + "]";
         const double c = readNumber(value[i], channel);
-        if (c < 0 || c > 1) fail(channel, "colour channels must be in [0, 1]");
+        if (c < 0 || c > 1)
+            fail(channel, "colour channels must be in [0, 1]");
         channels[i] = static_cast<float>(c);
     }
     return {channels[0], channels[1], channels[2], channels[3]};
@@ -123,7 +138,8 @@ CameraSpec readCamera(const Json& value, const std::string& where) {
     expectKeys(value, where, {"eye", "target", "up", "fov", "ortho_dir"});
     CameraSpec camera;
     if (value.contains("ortho_dir")) {
-        if (value.size() != 1) fail(where, "ortho_dir cannot be combined with eye, target, up or fov");
+        if (value.size() != 1)
+            fail(where, "ortho_dir cannot be combined with eye, target, up or fov");
         camera.projection = Projection::orthographic;
         camera.ortho_direction = toVec3(readDirection(value["ortho_dir"], where + ".ortho_dir"));
     } else {
@@ -132,11 +148,14 @@ CameraSpec readCamera(const Json& value, const std::string& where) {
         camera.projection = Projection::perspective;
         camera.eye = toVec3(readVec3(value["eye"], where + ".eye"));
         camera.target = toVec3(readVec3(value["target"], where + ".target"));
-        if (value.contains("up")) camera.up = toVec3(readVec3(value["up"], where + ".up"));
-        if (value.contains("fov")) camera.fov_degrees = readNumber(value["fov"], where + ".fov");
+        if (value.contains("up"))
+            camera.up = toVec3(readVec3(value["up"], where + ".up"));
+        if (value.contains("fov"))
+            camera.fov_degrees = readNumber(value["fov"], where + ".fov");
     }
     const std::string problem = validateCamera(camera).error;
-    if (!problem.empty()) fail(where, problem);
+    if (!problem.empty())
+        fail(where, problem);
     return camera;
 }
 
@@ -144,12 +163,12 @@ CameraSpec readCamera(const Json& value, const std::string& where) {
 Scene makeBox() {
     // Each face: the outward axis, then a corner order that winds counter-clockwise around it.
     static constexpr int kFaces[6][4][3] = {
-        {{1, -1, -1}, {1, 1, -1}, {1, 1, 1}, {1, -1, 1}},      // +x
-        {{-1, -1, -1}, {-1, -1, 1}, {-1, 1, 1}, {-1, 1, -1}},  // -x
-        {{-1, 1, -1}, {-1, 1, 1}, {1, 1, 1}, {1, 1, -1}},      // +y
-        {{-1, -1, -1}, {1, -1, -1}, {1, -1, 1}, {-1, -1, 1}},  // -y
-        {{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}},      // +z
-        {{-1, -1, -1}, {-1, 1, -1}, {1, 1, -1}, {1, -1, -1}},  // -z
+        {{1, -1, -1}, {1, 1, -1}, {1, 1, 1}, {1, -1, 1}},     // +x
+        {{-1, -1, -1}, {-1, -1, 1}, {-1, 1, 1}, {-1, 1, -1}}, // -x
+        {{-1, 1, -1}, {-1, 1, 1}, {1, 1, 1}, {1, 1, -1}},     // +y
+        {{-1, -1, -1}, {1, -1, -1}, {1, -1, 1}, {-1, -1, 1}}, // -y
+        {{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}},     // +z
+        {{-1, -1, -1}, {-1, 1, -1}, {1, 1, -1}, {1, -1, -1}}, // -z
     };
     Scene box;
     box.positions.resize(12);
@@ -169,10 +188,10 @@ Scene makeBox() {
 /// Constant linear and angular velocity of one JSON object (all its meshes move rigidly).
 struct RigidMotion {
     uint32_t first_triangle = 0, triangle_count = 0;
-    glm::dvec3 velocity{0.0};    // units per second
-    glm::dvec3 spin_axis{0, 0, 1};  // unit
+    glm::dvec3 velocity{0.0};      // units per second
+    glm::dvec3 spin_axis{0, 0, 1}; // unit
     double spin_degrees_per_second = 0;
-    glm::dvec3 spin_centre{0.0};  // the object's bounding-box centre at t = 0
+    glm::dvec3 spin_centre{0.0}; // the object's bounding-box centre at t = 0
 };
 
 /// Moves each animated object rigidly from its t = 0 positions; the others stay put.
@@ -184,7 +203,8 @@ public:
     void positionsAt(double t, TrianglePositions& out) const override {
         out = rest_;
         for (const RigidMotion& motion : motions_) {
-            const glm::dmat3 rotation = axisRotation(motion.spin_axis, motion.spin_degrees_per_second * t);
+            const glm::dmat3 rotation =
+                axisRotation(motion.spin_axis, motion.spin_degrees_per_second * t);
             const glm::dvec3 offset = motion.spin_centre + motion.velocity * t;
             const std::size_t begin = std::size_t{motion.first_triangle} * 3;
             const std::size_t end = begin + std::size_t{motion.triangle_count} * 3;
@@ -206,7 +226,8 @@ private:
 RigidMotion readAnimation(const Json& value, const std::string& where) {
     expectKeys(value, where, {"velocity", "spin"});
     RigidMotion motion;
-    if (value.contains("velocity")) motion.velocity = readVec3(value["velocity"], where + ".velocity");
+    if (value.contains("velocity"))
+        motion.velocity = readVec3(value["velocity"], where + ".velocity");
     if (value.contains("spin")) {
         const Json& spin = value["spin"];
         const std::string spin_where = where + ".spin";
@@ -214,7 +235,8 @@ RigidMotion readAnimation(const Json& value, const std::string& where) {
         if (!spin.contains("axis") || !spin.contains("degrees_per_second"))
             fail(spin_where, "needs both axis and degrees_per_second");
         motion.spin_axis = readDirection(spin["axis"], spin_where + ".axis");
-        motion.spin_degrees_per_second = readNumber(spin["degrees_per_second"], spin_where + ".degrees_per_second");
+        motion.spin_degrees_per_second =
+            readNumber(spin["degrees_per_second"], spin_where + ".degrees_per_second");
     }
     return motion;
 }
@@ -226,35 +248,47 @@ public:
     Scene build(const Json& root, const std::string& default_name) {
         expectKeys(root, "top level", {"name", "description", "camera", "objects"});
         scene_.name = root.contains("name") ? readString(root["name"], "name") : default_name;
-        if (root.contains("description")) readString(root["description"], "description");
-        if (root.contains("camera")) scene_.camera = readCamera(root["camera"], "camera");
-        if (!root.contains("objects")) fail("top level", "missing 'objects'");
+        if (root.contains("description"))
+            readString(root["description"], "description");
+        if (root.contains("camera"))
+            scene_.camera = readCamera(root["camera"], "camera");
+        if (!root.contains("objects"))
+            fail("top level", "missing 'objects'");
         const Json& objects = root["objects"];
-        if (!objects.is_array()) fail("objects", "expected an array");
-        if (objects.empty()) fail("objects", "the scene has no objects");
-        for (std::size_t i = 0; i < objects.size(); ++i) addObject(objects[i], i);
+        if (!objects.is_array())
+            fail("objects", "expected an array");
+        if (objects.empty())
+            fail("objects", "the scene has no objects");
+        for (std::size_t i = 0; i < objects.size(); ++i)
+            addObject(objects[i], i);
         if (!motions_.empty())
-            scene_.animation = std::make_shared<RigidMotionAnimation>(scene_.positions, std::move(motions_));
+            scene_.animation =
+                std::make_shared<RigidMotionAnimation>(scene_.positions, std::move(motions_));
         return std::move(scene_);
     }
 
 private:
     const Scene& source(const Json& object, const std::string& where) {
         const bool has_mesh = object.contains("mesh"), has_shape = object.contains("shape");
-        if (has_mesh == has_shape) fail(where, "needs exactly one of 'mesh' or 'shape'");
+        if (has_mesh == has_shape)
+            fail(where, "needs exactly one of 'mesh' or 'shape'");
         if (has_shape) {
             const std::string shape = readString(object["shape"], where + ".shape");
-            if (shape != "box") fail(where + ".shape", "unknown shape '" + shape + "' (known: box)");
-            if (!box_) box_ = makeBox();
+            if (shape != "box")
+                fail(where + ".shape", "unknown shape '" + shape + "' (known: box)");
+            if (!box_)
+                box_ = makeBox();
             return *box_;
         }
         const std::string mesh = readString(object["mesh"], where + ".mesh");
-        if (mesh.empty()) fail(where + ".mesh", "empty path");
+        if (mesh.empty())
+            fail(where + ".mesh", "empty path");
         const std::string path = (folder_ / mesh).lexically_normal().string();
         auto cached = meshes_.find(path);
         if (cached == meshes_.end()) {
             Result<Scene> loaded = loadMeshFile(path);
-            if (!loaded) fail(where + ".mesh", loaded.error);
+            if (!loaded)
+                fail(where + ".mesh", loaded.error);
             cached = meshes_.emplace(path, std::move(*loaded.value)).first;
         }
         return cached->second;
@@ -262,30 +296,41 @@ private:
 
     void addObject(const Json& object, std::size_t index) {
         const std::string where = "objects[" + std::to_string(index) + "]";
-        expectKeys(object, where, {"name", "mesh", "shape", "translate", "rotate", "scale", "colour",
-                                   "transparent", "animation"});
+        expectKeys(object, where,
+                   {"name", "mesh", "shape", "translate", "rotate", "scale", "colour",
+                    "transparent", "animation"});
         const Scene& part = source(object, where);
 
         std::string name;
-        if (object.contains("name")) name = readString(object["name"], where + ".name");
-        else if (object.contains("mesh")) name = std::filesystem::path(object["mesh"].get<std::string>()).stem().string();
-        else name = "box_" + std::to_string(index);
+        if (object.contains("name"))
+            name = readString(object["name"], where + ".name");
+        else if (object.contains("mesh"))
+            name = std::filesystem::path(object["mesh"].get<std::string>()).stem().string();
+        else
+            name = "box_" + std::to_string(index);
 
         glm::dvec3 scale{1.0}, translate{0.0};
         glm::dmat3 rotate{1.0};
-        if (object.contains("scale")) scale = readScale(object["scale"], where + ".scale");
-        if (object.contains("rotate")) rotate = readRotation(object["rotate"], where + ".rotate");
-        if (object.contains("translate")) translate = readVec3(object["translate"], where + ".translate");
+        if (object.contains("scale"))
+            scale = readScale(object["scale"], where + ".scale");
+        if (object.contains("rotate"))
+            rotate = readRotation(object["rotate"], where + ".rotate");
+        if (object.contains("translate"))
+            translate = readVec3(object["translate"], where + ".translate");
         // Scale, then rotate, then translate.
-        const glm::dmat3 linear = rotate * glm::dmat3(glm::dvec3(scale.x, 0, 0), glm::dvec3(0, scale.y, 0),
-                                                      glm::dvec3(0, 0, scale.z));
+        const glm::dmat3 linear =
+            rotate * glm::dmat3(glm::dvec3(scale.x, 0, 0), glm::dvec3(0, scale.y, 0),
+                                glm::dvec3(0, 0, scale.z));
 
         std::optional<Rgba> colour;
         std::optional<bool> transparent;
-        if (object.contains("colour")) colour = readColour(object["colour"], where + ".colour");
-        if (object.contains("transparent")) transparent = readBool(object["transparent"], where + ".transparent");
+        if (object.contains("colour"))
+            colour = readColour(object["colour"], where + ".colour");
+        if (object.contains("transparent"))
+            transparent = readBool(object["transparent"], where + ".transparent");
         std::optional<RigidMotion> motion;
-        if (object.contains("animation")) motion = readAnimation(object["animation"], where + ".animation");
+        if (object.contains("animation"))
+            motion = readAnimation(object["animation"], where + ".animation");
 
         const std::size_t first_triangle = scene_.triangleCount();
         if (first_triangle + part.triangleCount() > kMaxTriangles)
@@ -293,8 +338,10 @@ private:
         for (const SceneObject& part_object : part.objects) {
             SceneObject added = part_object;
             added.name = part.objects.size() > 1 ? name + "/" + part_object.name : name;
-            added.first_triangle = static_cast<uint32_t>(first_triangle + part_object.first_triangle);
-            if (colour) added.colour = *colour;
+            added.first_triangle =
+                static_cast<uint32_t>(first_triangle + part_object.first_triangle);
+            if (colour)
+                added.colour = *colour;
             added.transparent = transparent ? *transparent : added.colour.a < 1.0f;
             scene_.objects.push_back(std::move(added));
         }
@@ -304,7 +351,9 @@ private:
         out.resize(first_triangle + part.triangleCount());
         Bounds bounds;
         for (std::size_t i = 0; i < part.positions.x.size(); ++i) {
-            const glm::dvec3 p = linear * glm::dvec3(part.positions.x[i], part.positions.y[i], part.positions.z[i]) + translate;
+            const glm::dvec3 p =
+                linear * glm::dvec3(part.positions.x[i], part.positions.y[i], part.positions.z[i]) +
+                translate;
             const std::size_t c = first_corner + i;
             out.x[c] = static_cast<float>(p.x);
             out.y[c] = static_cast<float>(p.y);
@@ -326,7 +375,7 @@ private:
     std::filesystem::path folder_;
     Scene scene_;
     std::optional<Scene> box_;
-    std::map<std::string, Scene> meshes_;  // by normalised path: a mesh used twice is read once
+    std::map<std::string, Scene> meshes_; // by normalised path: a mesh used twice is read once
     std::vector<RigidMotion> motions_;
 };
 
@@ -336,18 +385,26 @@ Result<Scene> loadJsonScene(const std::string& path) {
     std::error_code ec;
     const std::filesystem::path file(path);
     if (!std::filesystem::is_regular_file(file, ec))
-        return Result<Scene>::failure(path + (std::filesystem::exists(file, ec) ? ": not a regular file" : ": file not found"));
+        return Result<Scene>::failure(path + (std::filesystem::exists(file, ec)
+                                                  ? ": not a regular file"
+                                                  : ": file not found"));
     try {
         std::ifstream stream(file, std::ios::binary);
         std::ostringstream text;
         text << stream.rdbuf();
-        if (!stream) return Result<Scene>::failure(path + ": cannot read the file");
-        // nlohmann keeps the last of repeated keys; a repeated key is as likely a mistake as a typo.
+        if (!stream)
+            return Result<Scene>::failure(path + ": cannot read the file");
+        // nlohmann keeps the last of repeated keys; a repeated key is as likely a mistake as a
+        // typo.
         std::vector<std::set<std::string>> keys_per_object;
-        const Json::parser_callback_t reject_duplicates = [&](int, Json::parse_event_t event, Json& parsed) {
-            if (event == Json::parse_event_t::object_start) keys_per_object.emplace_back();
-            else if (event == Json::parse_event_t::object_end) keys_per_object.pop_back();
-            else if (event == Json::parse_event_t::key && !keys_per_object.back().insert(parsed.get<std::string>()).second)
+        const Json::parser_callback_t reject_duplicates = [&](int, Json::parse_event_t event,
+                                                              Json& parsed) {
+            if (event == Json::parse_event_t::object_start)
+                keys_per_object.emplace_back();
+            else if (event == Json::parse_event_t::object_end)
+                keys_per_object.pop_back();
+            else if (event == Json::parse_event_t::key &&
+                     !keys_per_object.back().insert(parsed.get<std::string>()).second)
                 throw JsonSceneError{"duplicate key '" + parsed.get<std::string>() + "'"};
             return true;
         };

@@ -15,7 +15,8 @@ namespace {
 constexpr std::string_view kBuiltinPrefix = "builtin:";
 
 bool endsWithJson(const std::string& path) {
-    if (path.size() < 5) return false;
+    if (path.size() < 5)
+        return false;
     std::string extension = path.substr(path.size() - 5);
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -28,22 +29,27 @@ Result<SceneParameters> parseQuery(const std::string& query, const std::string& 
     std::size_t begin = 0;
     while (begin < query.size()) {
         std::size_t end = query.find('&', begin);
-        if (end == std::string::npos) end = query.size();
+        if (end == std::string::npos)
+            end = query.size();
         const std::string item = query.substr(begin, end - begin);
         const std::size_t equals = item.find('=');
         if (item.empty())
-            return Result<SceneParameters>::failure(specification + ": empty parameter between '&'");
+            return Result<SceneParameters>::failure(specification +
+                                                    ": empty parameter between '&'");
         if (equals == std::string::npos)
             return Result<SceneParameters>::failure(specification + ": parameter '" + item +
                                                     "' needs a value (key=value)");
         const std::string key = item.substr(0, equals);
         if (key.empty())
-            return Result<SceneParameters>::failure(specification + ": parameter '" + item + "' has no key");
+            return Result<SceneParameters>::failure(specification + ": parameter '" + item +
+                                                    "' has no key");
         if (!parameters.emplace(key, item.substr(equals + 1)).second)
-            return Result<SceneParameters>::failure(specification + ": parameter '" + key + "' given twice");
+            return Result<SceneParameters>::failure(specification + ": parameter '" + key +
+                                                    "' given twice");
         begin = end + 1;
         if (end + 1 == query.size())
-            return Result<SceneParameters>::failure(specification + ": empty parameter after the last '&'");
+            return Result<SceneParameters>::failure(specification +
+                                                    ": empty parameter after the last '&'");
     }
     return {std::move(parameters), {}};
 }
@@ -52,24 +58,29 @@ Result<Scene> loadBuiltin(const std::string& specification) {
     const std::string rest = specification.substr(kBuiltinPrefix.size());
     const std::size_t question = rest.find('?');
     const std::string name = rest.substr(0, question);
-    if (name.empty()) return Result<Scene>::failure(specification + ": missing the built-in scene name");
-    Result<SceneParameters> parameters =
-        parseQuery(question == std::string::npos ? std::string() : rest.substr(question + 1), specification);
-    if (!parameters) return Result<Scene>::failure(parameters.error);
+    if (name.empty())
+        return Result<Scene>::failure(specification + ": missing the built-in scene name");
+    Result<SceneParameters> parameters = parseQuery(
+        question == std::string::npos ? std::string() : rest.substr(question + 1), specification);
+    if (!parameters)
+        return Result<Scene>::failure(parameters.error);
     Result<Scene> scene = makeBuiltinScene(name, *parameters.value);
-    if (!scene) return scene;  // its message already names the scene and the parameter
+    if (!scene)
+        return scene; // its message already names the scene and the parameter
     return scene;
 }
 
 } // namespace
 
 Result<Scene> loadScene(const std::string& specification) {
-    if (specification.empty()) return Result<Scene>::failure("empty scene specification");
+    if (specification.empty())
+        return Result<Scene>::failure("empty scene specification");
     try {
         Result<Scene> scene = specification.starts_with(kBuiltinPrefix) ? loadBuiltin(specification)
-                              : endsWithJson(specification)              ? detail::loadJsonScene(specification)
-                                                                         : detail::loadMeshFile(specification);
-        if (!scene) return scene;
+                              : endsWithJson(specification) ? detail::loadJsonScene(specification)
+                                                            : detail::loadMeshFile(specification);
+        if (!scene)
+            return scene;
         if (Status valid = validateScene(*scene.value); !valid)
             return Result<Scene>::failure(specification + ": " + valid.error);
         return scene;

@@ -24,13 +24,15 @@ constexpr uint64_t kMaxTriangles = 50'000'000;
 
 struct MeshInstance {
     unsigned mesh_index = 0;
-    aiMatrix4x4 world;  // node-to-world transform of the node that references the mesh
+    aiMatrix4x4 world; // node-to-world transform of the node that references the mesh
     std::string node_name;
 };
 
 std::string oneLine(std::string text) {
-    std::replace_if(text.begin(), text.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
-    while (!text.empty() && text.back() == ' ') text.pop_back();
+    std::replace_if(
+        text.begin(), text.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+    while (!text.empty() && text.back() == ' ')
+        text.pop_back();
     return text;
 }
 
@@ -39,7 +41,8 @@ void collectInstances(const aiScene& scene, const aiNode& node, const aiMatrix4x
     const aiMatrix4x4 world = parent * node.mTransformation;
     for (unsigned i = 0; i < node.mNumMeshes; ++i) {
         const unsigned mesh_index = node.mMeshes[i];
-        if (mesh_index >= scene.mNumMeshes) continue;  // ValidateDataStructure rejects this first
+        if (mesh_index >= scene.mNumMeshes)
+            continue; // ValidateDataStructure rejects this first
         referenced[mesh_index] = true;
         // The root's name is usually the file name, not an object name.
         out.push_back({mesh_index, world, &node == scene.mRootNode ? "" : node.mName.C_Str()});
@@ -53,18 +56,22 @@ void collectInstances(const aiScene& scene, const aiNode& node, const aiMatrix4x
 std::vector<MeshInstance> meshInstances(const aiScene& scene) {
     std::vector<MeshInstance> instances;
     std::vector<bool> referenced(scene.mNumMeshes, false);
-    if (scene.mRootNode) collectInstances(scene, *scene.mRootNode, aiMatrix4x4(), instances, referenced);
+    if (scene.mRootNode)
+        collectInstances(scene, *scene.mRootNode, aiMatrix4x4(), instances, referenced);
     for (unsigned i = 0; i < scene.mNumMeshes; ++i)
-        if (!referenced[i]) instances.push_back({i, aiMatrix4x4(), ""});
-    std::stable_sort(instances.begin(), instances.end(),
-                     [](const MeshInstance& a, const MeshInstance& b) { return a.mesh_index < b.mesh_index; });
+        if (!referenced[i])
+            instances.push_back({i, aiMatrix4x4(), ""});
+    std::stable_sort(
+        instances.begin(), instances.end(),
+        [](const MeshInstance& a, const MeshInstance& b) { return a.mesh_index < b.mesh_index; });
     return instances;
 }
 
 uint64_t fanTriangleCount(const aiMesh& mesh) {
     uint64_t count = 0;
     for (unsigned f = 0; f < mesh.mNumFaces; ++f)
-        if (mesh.mFaces[f].mNumIndices >= 3) count += mesh.mFaces[f].mNumIndices - 2;
+        if (mesh.mFaces[f].mNumIndices >= 3)
+            count += mesh.mFaces[f].mNumIndices - 2;
     return count;
 }
 
@@ -72,17 +79,20 @@ uint64_t fanTriangleCount(const aiMesh& mesh) {
 /// material of its own (assimp then supplies one named AI_DEFAULT_MATERIAL_NAME).
 Rgba materialColour(const aiScene& scene, unsigned material_index) {
     Rgba colour;
-    if (material_index >= scene.mNumMaterials) return colour;
+    if (material_index >= scene.mNumMaterials)
+        return colour;
     const aiMaterial& material = *scene.mMaterials[material_index];
     aiString name;
-    if (material.Get(AI_MATKEY_NAME, name) == AI_SUCCESS && name == aiString(AI_DEFAULT_MATERIAL_NAME))
+    if (material.Get(AI_MATKEY_NAME, name) == AI_SUCCESS &&
+        name == aiString(AI_DEFAULT_MATERIAL_NAME))
         return colour;
     aiColor4D diffuse;
     if (material.Get(AI_MATKEY_COLOR_DIFFUSE, diffuse) == AI_SUCCESS)
         colour = {diffuse.r, diffuse.g, diffuse.b, diffuse.a};
     // The opacity wins over the diffuse alpha: glTF sets both from the same base colour alpha.
     float opacity = 1.0f;
-    if (material.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS) colour.a = opacity;
+    if (material.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS)
+        colour.a = opacity;
     // Colours outside [0, 1] (HDR, bad files) carry no meaning for ordering.
     const auto unit = [](float v) { return std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 1.0f; };
     return {unit(colour.r), unit(colour.g), unit(colour.b), unit(colour.a)};
@@ -93,25 +103,33 @@ Rgba materialColour(const aiScene& scene, unsigned material_index) {
 std::string objectName(const aiMesh& mesh, const MeshInstance& instance, unsigned instance_count,
                        std::size_t object_id) {
     // assimp's OBJ reader calls the geometry before any `o` or `g` line "defaultobject".
-    const auto named = [](std::string name) { return name == "defaultobject" ? std::string() : name; };
+    const auto named = [](std::string name) {
+        return name == "defaultobject" ? std::string() : name;
+    };
     const std::string mesh_name = named(mesh.mName.C_Str()), node_name = named(instance.node_name);
     const std::string name = mesh_name.empty() ? node_name
-                             : instance_count > 1 && !node_name.empty() ? node_name + "/" + mesh_name
-                                                                        : mesh_name;
+                             : instance_count > 1 && !node_name.empty()
+                                 ? node_name + "/" + mesh_name
+                                 : mesh_name;
     return name.empty() ? "object_" + std::to_string(object_id) : name;
 }
 
-Result<Scene> convertScene(const aiScene& ai_scene, const std::string& label, const std::string& scene_name) {
+Result<Scene> convertScene(const aiScene& ai_scene, const std::string& label,
+                           const std::string& scene_name) {
     const std::vector<MeshInstance> instances = meshInstances(ai_scene);
     uint64_t total = 0;
-    for (const MeshInstance& instance : instances) total += fanTriangleCount(*ai_scene.mMeshes[instance.mesh_index]);
-    if (total == 0) return Result<Scene>::failure(label + ": no triangles in the file");
+    for (const MeshInstance& instance : instances)
+        total += fanTriangleCount(*ai_scene.mMeshes[instance.mesh_index]);
+    if (total == 0)
+        return Result<Scene>::failure(label + ": no triangles in the file");
     if (total > kMaxTriangles)
-        return Result<Scene>::failure(label + ": " + std::to_string(total) + " triangles, more than the limit of " +
+        return Result<Scene>::failure(label + ": " + std::to_string(total) +
+                                      " triangles, more than the limit of " +
                                       std::to_string(kMaxTriangles));
 
     std::vector<unsigned> instance_counts(ai_scene.mNumMeshes, 0);
-    for (const MeshInstance& instance : instances) ++instance_counts[instance.mesh_index];
+    for (const MeshInstance& instance : instances)
+        ++instance_counts[instance.mesh_index];
 
     Scene scene;
     scene.name = scene_name;
@@ -120,9 +138,11 @@ Result<Scene> convertScene(const aiScene& ai_scene, const std::string& label, co
     for (const MeshInstance& instance : instances) {
         const aiMesh& mesh = *ai_scene.mMeshes[instance.mesh_index];
         const uint64_t count = fanTriangleCount(mesh);
-        if (count == 0) continue;  // points and lines only
+        if (count == 0)
+            continue; // points and lines only
         SceneObject object;
-        object.name = objectName(mesh, instance, instance_counts[instance.mesh_index], scene.objects.size());
+        object.name =
+            objectName(mesh, instance, instance_counts[instance.mesh_index], scene.objects.size());
         object.colour = materialColour(ai_scene, mesh.mMaterialIndex);
         object.transparent = object.colour.a < 1.0f;
         object.first_triangle = static_cast<uint32_t>(corner / 3);
@@ -139,7 +159,8 @@ Result<Scene> convertScene(const aiScene& ai_scene, const std::string& label, co
             const aiFace& face = mesh.mFaces[f];
             for (unsigned i = 0; i < face.mNumIndices; ++i)
                 if (face.mIndices[i] >= mesh.mNumVertices)
-                    return Result<Scene>::failure(label + ": mesh " + std::to_string(instance.mesh_index) +
+                    return Result<Scene>::failure(label + ": mesh " +
+                                                  std::to_string(instance.mesh_index) +
                                                   " has a vertex index out of range");
             for (unsigned i = 1; i + 1 < face.mNumIndices; ++i) {
                 put(face.mIndices[0]);
@@ -163,11 +184,12 @@ Result<Scene> convertScene(const aiScene& ai_scene, const std::string& label, co
 // rejects malformed data structures (indices out of range, empty meshes).
 constexpr unsigned kImportFlags = aiProcess_ValidateDataStructure;
 
-Result<Scene> finishImport(Assimp::Importer& importer, const aiScene* ai_scene, const std::string& label,
-                           const std::string& scene_name) {
+Result<Scene> finishImport(Assimp::Importer& importer, const aiScene* ai_scene,
+                           const std::string& label, const std::string& scene_name) {
     if (!ai_scene) {
         std::string reason = oneLine(importer.GetErrorString());
-        if (reason.empty()) reason = "unreadable or unsupported file";
+        if (reason.empty())
+            reason = "unreadable or unsupported file";
         return Result<Scene>::failure(label + ": " + reason);
     }
     return convertScene(*ai_scene, label, scene_name);
@@ -178,8 +200,10 @@ Result<Scene> finishImport(Assimp::Importer& importer, const aiScene* ai_scene, 
 Result<Scene> loadMeshFile(const std::string& path) {
     std::error_code ec;
     const std::filesystem::path file(path);
-    if (!std::filesystem::exists(file, ec)) return Result<Scene>::failure(path + ": file not found");
-    if (!std::filesystem::is_regular_file(file, ec)) return Result<Scene>::failure(path + ": not a regular file");
+    if (!std::filesystem::exists(file, ec))
+        return Result<Scene>::failure(path + ": file not found");
+    if (!std::filesystem::is_regular_file(file, ec))
+        return Result<Scene>::failure(path + ": not a regular file");
     try {
         Assimp::Importer importer;
         const aiScene* ai_scene = importer.ReadFile(path, kImportFlags);
@@ -192,11 +216,14 @@ Result<Scene> loadMeshFile(const std::string& path) {
 
 Result<Scene> loadMeshMemory(const void* data, std::size_t size, const std::string& format_hint,
                              const std::string& label) {
-    if (!data || size == 0) return Result<Scene>::failure(label + ": empty input");
+    if (!data || size == 0)
+        return Result<Scene>::failure(label + ": empty input");
     try {
         Assimp::Importer importer;
-        const aiScene* ai_scene = importer.ReadFileFromMemory(data, size, kImportFlags, format_hint.c_str());
-        return finishImport(importer, ai_scene, label, std::filesystem::path(label).stem().string());
+        const aiScene* ai_scene =
+            importer.ReadFileFromMemory(data, size, kImportFlags, format_hint.c_str());
+        return finishImport(importer, ai_scene, label,
+                            std::filesystem::path(label).stem().string());
     } catch (const std::exception& e) {
         return Result<Scene>::failure(label + ": " + oneLine(e.what()));
     }

@@ -8,9 +8,9 @@ namespace vissort {
 namespace {
 
 struct BuiltinScene {
-    const char *name;
-    const char *summary;
-    Result<Scene> (*make)(const SceneParameters &);
+    const char* name;
+    const char* summary;
+    Result<Scene> (*make)(const SceneParameters&);
 };
 
 constexpr BuiltinScene kBuiltinScenes[] = {
@@ -36,14 +36,14 @@ constexpr BuiltinScene kBuiltinScenes[] = {
 
 std::vector<BuiltinSceneInfo> builtinScenes() {
     std::vector<BuiltinSceneInfo> infos;
-    for (const BuiltinScene &scene : kBuiltinScenes)
+    for (const BuiltinScene& scene : kBuiltinScenes)
         infos.push_back({scene.name, scene.summary});
     return infos;
 }
 
-Result<Scene> makeBuiltinScene(const std::string &name, const SceneParameters &parameters) {
+Result<Scene> makeBuiltinScene(const std::string& name, const SceneParameters& parameters) {
     std::string known;
-    for (const BuiltinScene &scene : kBuiltinScenes) {
+    for (const BuiltinScene& scene : kBuiltinScenes) {
         if (name == scene.name)
             return scene.make(parameters);
         known += (known.empty() ? "" : ", ") + std::string(scene.name);

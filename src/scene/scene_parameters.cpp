@@ -8,8 +8,8 @@ namespace {
 
 // Accepts exactly what std::from_chars accepts and nothing around it: no spaces, no '+', no
 // hexadecimal, no fractions, so "1.5" or "12x" are errors rather than silently 1 or 12.
-template <class Integer> std::errc parseWhole(const std::string &text, Integer &value) {
-    const char *end = text.data() + text.size();
+template <class Integer> std::errc parseWhole(const std::string& text, Integer& value) {
+    const char* end = text.data() + text.size();
     const auto [stop, code] = std::from_chars(text.data(), end, value);
     if (code != std::errc{})
         return code;
@@ -18,10 +18,10 @@ template <class Integer> std::errc parseWhole(const std::string &text, Integer &
 
 } // namespace
 
-ParameterReader::ParameterReader(std::string scene, const SceneParameters &parameters)
+ParameterReader::ParameterReader(std::string scene, const SceneParameters& parameters)
     : scene_(std::move(scene)), parameters_(parameters) {}
 
-const std::string *ParameterReader::find(const std::string &key) {
+const std::string* ParameterReader::find(const std::string& key) {
     known_keys_.insert(key);
     const auto it = parameters_.find(key);
     return it == parameters_.end() ? nullptr : &it->second;
@@ -32,9 +32,9 @@ void ParameterReader::fail(std::string message) {
         first_error_ = scene_ + ": " + std::move(message);
 }
 
-int64_t ParameterReader::integer(const std::string &key, int64_t default_value, int64_t min,
+int64_t ParameterReader::integer(const std::string& key, int64_t default_value, int64_t min,
                                  int64_t max) {
-    const std::string *text = find(key);
+    const std::string* text = find(key);
     if (!text)
         return default_value;
     const std::string range =
@@ -56,8 +56,8 @@ int64_t ParameterReader::integer(const std::string &key, int64_t default_value, 
     return value;
 }
 
-uint64_t ParameterReader::seed(const std::string &key, uint64_t default_value) {
-    const std::string *text = find(key);
+uint64_t ParameterReader::seed(const std::string& key, uint64_t default_value) {
+    const std::string* text = find(key);
     if (!text)
         return default_value;
     uint64_t value = 0;
@@ -76,11 +76,11 @@ uint64_t ParameterReader::seed(const std::string &key, uint64_t default_value) {
 std::string ParameterReader::error() const {
     if (!first_error_.empty())
         return first_error_;
-    for (const auto &[key, value] : parameters_) {
+    for (const auto& [key, value] : parameters_) {
         if (known_keys_.count(key))
             continue;
         std::string accepted;
-        for (const std::string &known : known_keys_)
+        for (const std::string& known : known_keys_)
             accepted += (accepted.empty() ? "" : ", ") + known;
         return scene_ + ": unknown parameter '" + key + "' (accepted: " + accepted + ")";
     }

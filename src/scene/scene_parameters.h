@@ -15,23 +15,23 @@ namespace vissort::detail {
 class ParameterReader {
 public:
     /// `scene` names the scene in messages, e.g. "builtin:bunnies".
-    ParameterReader(std::string scene, const SceneParameters &parameters);
+    ParameterReader(std::string scene, const SceneParameters& parameters);
 
     /// The value of `key` (default_value when absent), a decimal integer in [min, max].
     /// On a problem, records it and returns default_value.
-    int64_t integer(const std::string &key, int64_t default_value, int64_t min, int64_t max);
+    int64_t integer(const std::string& key, int64_t default_value, int64_t min, int64_t max);
     /// The value of `key` (default_value when absent), any decimal integer in [0, 2^64).
-    uint64_t seed(const std::string &key, uint64_t default_value);
+    uint64_t seed(const std::string& key, uint64_t default_value);
 
     /// Empty when every parameter was known and valid, else a one-line message.
     std::string error() const;
 
 private:
-    const std::string *find(const std::string &key);
+    const std::string* find(const std::string& key);
     void fail(std::string message);
 
     std::string scene_;
-    const SceneParameters &parameters_;
+    const SceneParameters& parameters_;
     std::set<std::string> known_keys_;
     std::string first_error_;
 };

@@ -22,7 +22,7 @@ constexpr float kAlpha = 0.4f;
 
 } // namespace
 
-Result<Scene> makeSlabsScene(const SceneParameters &parameters) {
+Result<Scene> makeSlabsScene(const SceneParameters& parameters) {
     ParameterReader reader("builtin:slabs", parameters);
     const auto layers = static_cast<uint32_t>(reader.integer("layers", 8, 1, 100'000));
     const uint64_t seed = reader.seed("seed", 1);
@@ -41,7 +41,7 @@ Result<Scene> makeSlabsScene(const SceneParameters &parameters) {
                                   {kHalfSize, kHalfSize},
                                   {-kHalfSize, kHalfSize}};
     constexpr int kQuadCorners[6] = {0, 1, 2, 0, 2, 3};
-    TrianglePositions &out = scene.positions;
+    TrianglePositions& out = scene.positions;
     for (uint32_t layer = 0; layer < layers; ++layer) {
         // Layers are centred on the origin, layer 0 at the bottom (most negative z).
         const double centre_z = (layer - (layers - 1) / 2.0) * kSpacing;

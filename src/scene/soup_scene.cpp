@@ -27,7 +27,7 @@ constexpr float kAlpha = 0.5f;
 
 } // namespace
 
-Result<Scene> makeSoupScene(const SceneParameters &parameters) {
+Result<Scene> makeSoupScene(const SceneParameters& parameters) {
     ParameterReader reader("builtin:soup", parameters);
     const auto count = static_cast<uint32_t>(reader.integer("n", 1000, 1, kMaxBuiltinTriangles));
     const uint64_t seed = reader.seed("seed", 1);
@@ -51,7 +51,7 @@ Result<Scene> makeSoupScene(const SceneParameters &parameters) {
     scene.name = "builtin:soup";
     scene.positions.resize(count);
     scene.objects.resize(count);
-    TrianglePositions &out = scene.positions;
+    TrianglePositions& out = scene.positions;
     const double origin = -(side / 2.0); // the cube is centred on the origin
     constexpr double kThird = 2 * std::numbers::pi / 3;
     for (uint32_t t = 0; t < count; ++t) {
@@ -78,7 +78,7 @@ Result<Scene> makeSoupScene(const SceneParameters &parameters) {
             out.y[index] = static_cast<float>(centre[1] + p.y);
             out.z[index] = static_cast<float>(centre[2] + p.z);
         }
-        SceneObject &object = scene.objects[t];
+        SceneObject& object = scene.objects[t];
         object.name = "tri_" + std::to_string(t); // short enough to stay in the string's buffer
         object.colour = random.colour(kAlpha);
         object.transparent = true;

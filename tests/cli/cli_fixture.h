@@ -81,7 +81,8 @@ protected:
     // Runs the tool; killed (code 124) after timeout_seconds: a hang fails the test, not the run.
     RunResult run(const std::vector<std::string>& args, int timeout_seconds = 60) {
         RunResult r;
-        std::string command = "timeout " + std::to_string(timeout_seconds) + " " + shellQuote(kTool);
+        std::string command =
+            "timeout " + std::to_string(timeout_seconds) + " " + shellQuote(kTool);
         for (const std::string& a : args)
             command += ' ' + shellQuote(a);
         r.command = command;

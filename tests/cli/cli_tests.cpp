@@ -11,12 +11,12 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <random>
 #include <regex>
+#include <set>
 #include <span>
 #include <sstream>
-#include <map>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -55,21 +55,25 @@ std::vector<std::vector<uint32_t>> cyclesOf(const json& record) {
     }
     for (const json& cycle : record["cycles"]) {
         EXPECT_TRUE(cycle.is_array()) << cycle;
-        if (!cycle.is_array()) continue;
+        if (!cycle.is_array())
+            continue;
         cycles.emplace_back();
         for (const json& id : cycle) {
             EXPECT_TRUE(id.is_number_unsigned()) << id;
-            if (id.is_number_unsigned()) cycles.back().push_back(id.get<uint32_t>());
+            if (id.is_number_unsigned())
+                cycles.back().push_back(id.get<uint32_t>());
         }
     }
     return cycles;
 }
 
 bool isPermutation(std::vector<uint32_t> order, std::size_t n) {
-    if (order.size() != n) return false;
+    if (order.size() != n)
+        return false;
     std::sort(order.begin(), order.end());
     for (std::size_t i = 0; i < n; ++i)
-        if (order[i] != i) return false;
+        if (order[i] != i)
+            return false;
     return true;
 }
 
@@ -81,7 +85,8 @@ void expectFrameRecord(const json& record, std::size_t n, const std::string& lev
     EXPECT_EQ(record["level"], level);
     for (const auto& cycle : cyclesOf(record)) {
         EXPECT_GE(cycle.size(), 2u);
-        for (uint32_t id : cycle) EXPECT_LT(id, n);
+        for (uint32_t id : cycle)
+            EXPECT_LT(id, n);
     }
     ASSERT_TRUE(record.contains("stats") && record["stats"].is_object());
     const json& stats = record["stats"];
@@ -158,7 +163,8 @@ TEST_F(Cli, FramesOnAnOrbit) {
     expectFrameRecord(doc, 4, "object");
     ASSERT_TRUE(doc.contains("frames") && doc["frames"].is_array());
     ASSERT_EQ(doc["frames"].size(), 3u);
-    for (const json& frame : doc["frames"]) expectFrameRecord(frame, 4, "object");
+    for (const json& frame : doc["frames"])
+        expectFrameRecord(frame, 4, "object");
     const json& last = doc["frames"][2];
     EXPECT_EQ(doc["order"], last["order"]);
     EXPECT_EQ(doc["level"], last["level"]);
@@ -179,10 +185,10 @@ TEST_F(Cli, FramesPrintOneLineEach) {
 // --dump-primitives
 
 struct ObjDump {
-    std::vector<std::string> groups;              // names of the `o` lines, in file order
-    std::vector<std::size_t> group_faces;         // faces per group
-    std::vector<double> vx, vy, vz;               // every vertex, in file order
-    std::vector<std::array<long, 3>> faces;       // 1-based vertex indices
+    std::vector<std::string> groups;        // names of the `o` lines, in file order
+    std::vector<std::size_t> group_faces;   // faces per group
+    std::vector<double> vx, vy, vz;         // every vertex, in file order
+    std::vector<std::array<long, 3>> faces; // 1-based vertex indices
 };
 
 ObjDump parseObj(const std::string& text) {
@@ -208,7 +214,8 @@ ObjDump parseObj(const std::string& text) {
             in >> f[0] >> f[1] >> f[2];
             EXPECT_FALSE(in.fail()) << line;
             dump.faces.push_back(f);
-            if (!dump.group_faces.empty()) ++dump.group_faces.back();
+            if (!dump.group_faces.empty())
+                ++dump.group_faces.back();
         }
     }
     return dump;
@@ -233,22 +240,23 @@ void expectDumpMatches(const ObjDump& dump, const TrianglePositions& positions,
             close(dump.vz[c], positions.z[c]))
             continue;
         if (++mismatches <= 5)
-            ADD_FAILURE() << "vertex " << c << ": OBJ (" << dump.vx[c] << ", " << dump.vy[c]
-                          << ", " << dump.vz[c] << ") scene (" << positions.x[c] << ", "
-                          << positions.y[c] << ", " << positions.z[c] << ")";
+            ADD_FAILURE() << "vertex " << c << ": OBJ (" << dump.vx[c] << ", " << dump.vy[c] << ", "
+                          << dump.vz[c] << ") scene (" << positions.x[c] << ", " << positions.y[c]
+                          << ", " << positions.z[c] << ")";
     }
     EXPECT_EQ(mismatches, 0u);
     ASSERT_EQ(dump.faces.size(), positions.triangleCount());
     for (std::size_t t = 0; t < dump.faces.size(); ++t)
-        for (long k = 0; k < 3; ++k) EXPECT_EQ(dump.faces[t][k], long(3 * t) + k + 1);
+        for (long k = 0; k < 3; ++k)
+            EXPECT_EQ(dump.faces[t][k], long(3 * t) + k + 1);
 }
 
 TEST_F(Cli, DumpPrimitivesObjectLevel) {
     const std::string scene_path = dataPath("scenes/three_sticks.json");
     const Scene scene = loadOrDie(scene_path);
     ASSERT_EQ(scene.objects.size(), 3u);
-    const RunResult r = run({"order", scene_path, "--size", "64x64", "--dump-primitives",
-                          path("prims.obj")});
+    const RunResult r =
+        run({"order", scene_path, "--size", "64x64", "--dump-primitives", path("prims.obj")});
     ASSERT_EQ(r.code, 0) << r;
     expectDumpMatches(parseObj(readFile(path("prims.obj"))), scene.frame(0),
                       scene.objectPrimitives());
@@ -259,7 +267,7 @@ TEST_F(Cli, DumpPrimitivesTriangleLevel) {
     const Scene scene = loadOrDie(scene_path);
     ASSERT_EQ(scene.triangleCount(), 36u);
     const RunResult r = run({"order", scene_path, "--size", "64x64", "--level", "triangle",
-                          "--dump-primitives", path("prims.obj")});
+                             "--dump-primitives", path("prims.obj")});
     ASSERT_EQ(r.code, 0) << r;
     expectDumpMatches(parseObj(readFile(path("prims.obj"))), scene.frame(0),
                       scene.trianglePrimitives());
@@ -271,7 +279,7 @@ TEST_F(Cli, DumpPrimitivesIsTheLastFrame) {
     const Scene scene = loadOrDie(scene_path);
     ASSERT_TRUE(scene.isDynamic());
     const RunResult r = run({"order", scene_path, "--size", "48x48", "--frames", "3",
-                          "--dump-primitives", path("prims.obj")});
+                             "--dump-primitives", path("prims.obj")});
     ASSERT_EQ(r.code, 0) << r;
     expectDumpMatches(parseObj(readFile(path("prims.obj"))), scene.frame(2.0 / 30.0),
                       scene.objectPrimitives());
@@ -299,8 +307,8 @@ TEST_F(Cli, StackPerspectiveOrderMatchesGroundTruth) {
     const std::string scene_path = dataPath("scenes/stack.json");
     const Scene scene = loadOrDie(scene_path);
     ASSERT_EQ(scene.objects.size(), 36u);
-    const json doc = orderJson({scene_path, "--eye", "0.6,-0.5,13", "--target", "0.1,0.2,3",
-                                "--up", "0,1,0", "--fov", "42", "--size", "120x90"});
+    const json doc = orderJson({scene_path, "--eye", "0.6,-0.5,13", "--target", "0.1,0.2,3", "--up",
+                                "0,1,0", "--fov", "42", "--size", "120x90"});
     CameraSpec camera;
     camera.projection = Projection::perspective;
     camera.eye = {0.6, -0.5, 13};
@@ -314,8 +322,8 @@ TEST_F(Cli, StackPerspectiveOrderMatchesGroundTruth) {
 TEST_F(Cli, StackOrthographicExactOrderMatchesGroundTruth) {
     const std::string scene_path = dataPath("scenes/stack.json");
     const Scene scene = loadOrDie(scene_path);
-    const json doc = orderJson({scene_path, "--ortho-dir", "0.15,-0.1,-1", "--oracle", "exact",
-                                "--size", "100x80"});
+    const json doc = orderJson(
+        {scene_path, "--ortho-dir", "0.15,-0.1,-1", "--oracle", "exact", "--size", "100x80"});
     EXPECT_EQ(doc.value("oracle", json()), "exact");
     CameraSpec camera;
     camera.projection = Projection::orthographic;
@@ -330,7 +338,7 @@ TEST_F(Cli, StackTriangleLevelOrderMatchesGroundTruth) {
     const json doc = orderJson({scene_path, "--eye", "-0.4,0.3,12", "--target", "0,0,3.5",
                                 "--level", "triangle", "--size", "80x80"});
     ASSERT_EQ(doc.value("level", json()), "triangle");
-    CameraSpec camera = scene.camera.value();  // --up and --fov come from the scene's camera
+    CameraSpec camera = scene.camera.value(); // --up and --fov come from the scene's camera
     camera.eye = {-0.4, 0.3, 12};
     camera.target = {0, 0, 3.5};
     const ViewProjection view = frameCamera(camera, scene.positions.bounds(), 80, 80);
@@ -366,13 +374,14 @@ TEST_F(Cli, InfoOnSlabs) {
 // rasterizers on the synthetic workloads, and OpenGL beside them on the real ones; the same
 // queries per frame from cpu and cpu-reference (identical answers), frame for frame.
 TEST_F(Cli, BenchOracleMeasuresEveryOracleInOneRun) {
-    const RunResult r = run({"bench", "oracle", "--repeat", "1", "--frames", "2", "--json", path("bench.json")});
+    const RunResult r =
+        run({"bench", "oracle", "--repeat", "1", "--frames", "2", "--json", path("bench.json")});
     ASSERT_EQ(r.code, 0) << r;
     EXPECT_NE(r.out.find("gl: "), std::string::npos) << r;
     const json doc = json::parse(readFile(path("bench.json")));
     ASSERT_TRUE(doc.contains("machine")) << doc.dump();
     std::map<std::string, std::set<std::string>> oracles_by_workload;
-    std::map<std::string, std::map<std::string, std::string>> counts;  // workload, oracle
+    std::map<std::string, std::map<std::string, std::string>> counts; // workload, oracle
     for (const json& row : doc["rows"]) {
         EXPECT_GT(row["value"].get<double>(), 0.0) << row.dump();
         const std::string workload = row["workload"], oracle = row["oracle"];
@@ -421,7 +430,6 @@ TEST_F(Cli, OrderHelpMentionsLevel) {
 // ---------------------------------------------------------------------------------------------
 // Errors: the documented exit code and one line "vissort: error: ..." naming the problem
 
-
 TEST_F(Cli, ErrorMissingFile) {
     const std::string missing = path("no_such_scene.obj");
     expectError({"order", missing}, kInput, {missing});
@@ -437,7 +445,8 @@ TEST_F(Cli, ErrorDirectory) {
 TEST_F(Cli, ErrorGarbageObj) {
     std::mt19937 random(7);
     std::string bytes(4096, '\0');
-    for (char& c : bytes) c = char(random() & 0xff);
+    for (char& c : bytes)
+        c = char(random() & 0xff);
     std::ofstream(path("garbage.obj"), std::ios::binary) << bytes;
     expectError({"order", path("garbage.obj")}, kInput, {path("garbage.obj")});
 }
@@ -485,8 +494,8 @@ TEST_F(Cli, ErrorEye) {
 }
 
 TEST_F(Cli, ErrorEyeEqualsTarget) {
-    const RunResult r = run({"order", kBunnies, "--size", "32x32", "--eye", "1,2,3", "--target",
-                          "1,2,3"});
+    const RunResult r =
+        run({"order", kBunnies, "--size", "32x32", "--eye", "1,2,3", "--target", "1,2,3"});
     EXPECT_EQ(r.code, kUsage) << r;
     const auto err_lines = lines(r.err);
     ASSERT_EQ(err_lines.size(), 1u) << r;
@@ -496,7 +505,9 @@ TEST_F(Cli, ErrorEyeEqualsTarget) {
         << "the error should name the option (--eye or --target)" << r;
 }
 
-TEST_F(Cli, ErrorFov) { expectError({"order", kBunnies, "--fov", "0"}, kUsage, {"--fov"}); }
+TEST_F(Cli, ErrorFov) {
+    expectError({"order", kBunnies, "--fov", "0"}, kUsage, {"--fov"});
+}
 
 TEST_F(Cli, ErrorOrthoDir) {
     expectError({"order", kBunnies, "--ortho-dir", "0,0,0"}, kUsage, {"--ortho-dir"});

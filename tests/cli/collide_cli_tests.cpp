@@ -31,8 +31,8 @@ std::vector<std::string> pairLines(const std::string& text) {
 TEST_F(Cli, CollideMatchesBruteForceOver300FramesOfBunnies) {
     for (const char* method : {"vissort", "brute"}) {
         const RunResult r = run({"collide", "builtin:bunnies?n=18", "--frames", "300", "--method",
-                              method, "--pairs-out", path(std::string(method) + ".txt")},
-                             /*timeout_seconds=*/400); // brute force: 8 s in a release build
+                                 method, "--pairs-out", path(std::string(method) + ".txt")},
+                                /*timeout_seconds=*/400); // brute force: 8 s in a release build
         ASSERT_EQ(r.code, 0) << r;
         EXPECT_NE(r.out.find("300 frames"), std::string::npos) << r;
     }
@@ -67,7 +67,7 @@ TEST_F(Cli, EveryExactMethodAgreesOnRealMeshes) {
 
 TEST_F(Cli, CollideJsonHasEveryDocumentedKey) {
     const RunResult r = run({"collide", "builtin:bunnies?n=6", "--frames", "3", "--json",
-                          path("c.json"), "--size", "32x16", "--threads", "2"});
+                             path("c.json"), "--size", "32x16", "--threads", "2"});
     ASSERT_EQ(r.code, 0) << r;
     const json doc = json::parse(readFile(path("c.json")));
     EXPECT_EQ(doc.value("method", json()), "vissort");
@@ -109,9 +109,9 @@ TEST_F(Cli, CollideErrorsAreOneLine) {
 }
 
 TEST_F(Cli, BenchCollisionMeasuresEveryMethod) {
-    std::vector<std::string> args = {"bench", "collision", "--counts", "2,3", "--frames", "2",
-                                     "--json", path("b.json")};
-#if VISSORT_WITH_GL  // the PNG writer is in the GL renderer's target for now
+    std::vector<std::string> args = {"bench",    "collision", "--counts", "2,3",
+                                     "--frames", "2",         "--json",   path("b.json")};
+#if VISSORT_WITH_GL // the PNG writer is in the GL renderer's target for now
     args.insert(args.end(), {"--plot", path("b.png")});
 #endif
     const RunResult r = run(args);

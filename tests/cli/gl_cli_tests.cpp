@@ -33,7 +33,6 @@ TEST_F(Cli, InfoGlNamesTheDriver) {
     EXPECT_NE(both.out.find("triangles: "), std::string::npos) << both;
 }
 
-
 // No OpenGL context (here: an EGL platform that does not exist): one line naming the problem for
 // every command that needs one, and the cpu oracle still works.
 TEST_F(Cli, ErrorNoGlContext) {

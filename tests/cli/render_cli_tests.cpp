@@ -99,7 +99,7 @@ TEST_F(Cli, RenderRunsEveryMethodAndNamesThemInJson) {
     for (const char* method :
          {"vissort", "unsorted", "centroid", "peel", "dual-peel", "linked-list", "weighted"}) {
         const RunResult r = run({"render", "builtin:bunnies?n=3", "--size", "40x30", "--method",
-                              method, "-o", path("out.png"), "--json", path("stats.json")});
+                                 method, "-o", path("out.png"), "--json", path("stats.json")});
         ASSERT_EQ(r.code, 0) << r;
         EXPECT_EQ(json::parse(readFile(path("stats.json"))).value("method", ""), method);
     }
@@ -108,7 +108,7 @@ TEST_F(Cli, RenderRunsEveryMethodAndNamesThemInJson) {
 // --method all: every method and its error map in one PNG, and each one's figures in the JSON.
 TEST_F(Cli, RenderEveryMethodSideBySide) {
     const RunResult r = run({"render", kSticks, "--all-transparent", "--size", "40x30", "--method",
-                          "all", "-o", path("strip.png"), "--json", path("all.json")});
+                             "all", "-o", path("strip.png"), "--json", path("all.json")});
     ASSERT_EQ(r.code, 0) << r;
     const Png strip = readPng(path("strip.png"));
     EXPECT_GT(strip.width, 7 * 40);  // seven columns, with margins
@@ -176,8 +176,8 @@ TEST_F(Cli, RenderErrorsNameTheProblem) {
 
 // Every method and scene at every depth, errors against linked-list, in one run.
 TEST_F(Cli, BenchTransparencyMeasuresEveryMethodInOneRun) {
-    const RunResult r = run({"bench", "transparency", "--size", "48x32", "--depths", "2,6", "--frames",
-                          "2", "--json", path("bench.json")});
+    const RunResult r = run({"bench", "transparency", "--size", "48x32", "--depths", "2,6",
+                             "--frames", "2", "--json", path("bench.json")});
     ASSERT_EQ(r.code, 0) << r;
     const json doc = json::parse(readFile(path("bench.json")));
     EXPECT_TRUE(doc.contains("machine"));
@@ -233,8 +233,9 @@ TEST_F(Cli, RenderHighlightsCollidingTriangles) {
     const RunResult plain =
         run({"render", kInterpenetrating, "--size", "200x150", "-o", path("a.png")});
     ASSERT_EQ(plain.code, 0) << plain;
-    const RunResult marked = run({"render", kInterpenetrating, "--size", "200x150", "-o",
-                               path("b.png"), "--highlight-collisions", "--json", path("b.json")});
+    const RunResult marked =
+        run({"render", kInterpenetrating, "--size", "200x150", "-o", path("b.png"),
+             "--highlight-collisions", "--json", path("b.json")});
     ASSERT_EQ(marked.code, 0) << marked;
     EXPECT_NE(marked.out.find("colliding triangles highlighted"), std::string::npos) << marked;
     EXPECT_EQ(magentaPixels(path("a.png")), 0);

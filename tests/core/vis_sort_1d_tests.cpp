@@ -14,7 +14,10 @@ std::vector<int> longestNonDecreasingLength(const std::vector<int>& v) {
     std::vector<int> tails;
     for (int x : v) {
         auto it = std::upper_bound(tails.begin(), tails.end(), x);
-        if (it == tails.end()) tails.push_back(x); else *it = x;
+        if (it == tails.end())
+            tails.push_back(x);
+        else
+            *it = x;
     }
     return tails;
 }
@@ -50,14 +53,16 @@ TEST(VisSort1d, SortsRandomInputWithDuplicatesStably) {
     std::mt19937 rng(5);
     for (int trial = 0; trial < 200; ++trial) {
         std::vector<std::pair<int, int>> v(rng() % 60);
-        for (std::size_t i = 0; i < v.size(); ++i) v[i] = {int(rng() % 10), int(i)};
+        for (std::size_t i = 0; i < v.size(); ++i)
+            v[i] = {int(rng() % 10), int(i)};
         auto by_key = [](const auto& a, const auto& b) { return a.first < b.first; };
         const auto r = visSort1d<std::pair<int, int>>(v, by_key);
         auto expected = v;
         std::stable_sort(expected.begin(), expected.end(), by_key);
         // Equal keys keep no particular order in Vis-sort; compare keys and the multiset.
         ASSERT_EQ(r.sorted.size(), v.size());
-        for (std::size_t i = 0; i < v.size(); ++i) ASSERT_EQ(r.sorted[i].first, expected[i].first);
+        for (std::size_t i = 0; i < v.size(); ++i)
+            ASSERT_EQ(r.sorted[i].first, expected[i].first);
         auto a = r.sorted, b = v;
         std::sort(a.begin(), a.end());
         std::sort(b.begin(), b.end());
@@ -67,7 +72,8 @@ TEST(VisSort1d, SortsRandomInputWithDuplicatesStably) {
 
 TEST(VisSort1d, SortedInputTakesOneIterationAndFewerThan2nComparisons) {
     std::vector<int> v(1000);
-    for (int i = 0; i < 1000; ++i) v[i] = i;
+    for (int i = 0; i < 1000; ++i)
+        v[i] = i;
     const auto r = visSort1d<int>(v, std::less<int>());
     EXPECT_EQ(r.sorted, v);
     EXPECT_EQ(r.iterations, 1u);
@@ -79,7 +85,8 @@ TEST(VisSort1d, NearlySortedInputStaysWithinThe4kPlus2nBound) {
     for (int trial = 0; trial < 300; ++trial) {
         const int n = 50 + int(rng() % 500);
         std::vector<int> v(n);
-        for (int i = 0; i < n; ++i) v[i] = i;
+        for (int i = 0; i < n; ++i)
+            v[i] = i;
         // Move a few elements to random places.
         const int moves = int(rng() % 8);
         for (int m = 0; m < moves; ++m) {
@@ -99,7 +106,8 @@ TEST(VisSort1d, NearlySortedInputStaysWithinThe4kPlus2nBound) {
 
 TEST(VisSort1d, ReverseSortedInputIsStillSorted) {
     std::vector<int> v(300);
-    for (int i = 0; i < 300; ++i) v[i] = 300 - i;
+    for (int i = 0; i < 300; ++i)
+        v[i] = 300 - i;
     const auto r = visSort1d<int>(v, std::less<int>());
     EXPECT_TRUE(std::is_sorted(r.sorted.begin(), r.sorted.end()));
     EXPECT_EQ(r.sorted.size(), v.size());

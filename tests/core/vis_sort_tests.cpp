@@ -24,7 +24,8 @@ public:
     bool anyBehind(uint32_t p) override {
         ++queries;
         for (uint32_t q = 0; q < drawn_.size(); ++q)
-            if (drawn_[q] && q != p && occludes_[q][p]) return true;
+            if (drawn_[q] && q != p && occludes_[q][p])
+                return true;
         return false;
     }
     const std::vector<std::vector<uint8_t>>& edges() const { return occludes_; }
@@ -49,14 +50,17 @@ std::set<std::vector<uint32_t>> referenceCycles(const GraphOracle& g) {
         for (uint32_t i = 0; i < n; ++i)
             if (reach[i][k])
                 for (uint32_t j = 0; j < n; ++j)
-                    if (reach[k][j]) reach[i][j] = 1;
+                    if (reach[k][j])
+                        reach[i][j] = 1;
     std::set<std::vector<uint32_t>> cycles;
     for (uint32_t i = 0; i < n; ++i) {
         std::vector<uint32_t> component{i};
         for (uint32_t j = 0; j < n; ++j)
-            if (j != i && reach[i][j] && reach[j][i]) component.push_back(j);
+            if (j != i && reach[i][j] && reach[j][i])
+                component.push_back(j);
         std::sort(component.begin(), component.end());
-        if (component.size() > 1) cycles.insert(component);
+        if (component.size() > 1)
+            cycles.insert(component);
     }
     return cycles;
 }
@@ -73,7 +77,8 @@ void expectRespectsEdges(const GraphOracle& g, const VisibilityOrder& r) {
         position[r.order[i]] = i;
     }
     for (std::size_t c = 0; c < r.cycles.size(); ++c)
-        for (uint32_t p : r.cycles[c]) component[p] = n + uint32_t(c);
+        for (uint32_t p : r.cycles[c])
+            component[p] = n + uint32_t(c);
     for (uint32_t a = 0; a < n; ++a)
         for (uint32_t b = 0; b < n; ++b)
             if (a != b && g.edges()[a][b] && component[a] != component[b])
@@ -92,7 +97,8 @@ TEST(VisSort, EmptyAndSingle) {
 
 TEST(VisSort, ChainGivenBackToFrontIsReversed) {
     GraphOracle g(5);
-    for (uint32_t i = 0; i + 1 < 5; ++i) g.addEdge(i, i + 1);  // 0 in front of 1 in front of ...
+    for (uint32_t i = 0; i + 1 < 5; ++i)
+        g.addEdge(i, i + 1); // 0 in front of 1 in front of ...
     const std::vector<uint32_t> reversed{4, 3, 2, 1, 0};
     const auto r = visSort(g, reversed);
     EXPECT_EQ(r.order, identity(5));
@@ -105,8 +111,10 @@ TEST(VisSort, AlreadyOrderedInputCostsOneIterationAndLinearQueries) {
     std::mt19937 rng(3);
     for (int e = 0; e < 600; ++e) {
         uint32_t a = rng() % n, b = rng() % n;
-        if (a > b) std::swap(a, b);
-        if (a != b) g.addEdge(a, b);
+        if (a > b)
+            std::swap(a, b);
+        if (a != b)
+            g.addEdge(a, b);
     }
     const auto r = visSort(g, identity(n));
     EXPECT_EQ(r.order, identity(n));
@@ -118,7 +126,7 @@ TEST(VisSort, TwoCycleIsReportedAndTheRestOrdered) {
     GraphOracle g(4);
     g.addEdge(0, 1);
     g.addEdge(1, 2);
-    g.addEdge(2, 1);  // 1 and 2 overlap each other
+    g.addEdge(2, 1); // 1 and 2 overlap each other
     g.addEdge(2, 3);
     const auto r = visSort(g, identity(4));
     ASSERT_EQ(r.cycles.size(), 1u);
@@ -162,7 +170,8 @@ TEST(VisSort, RandomGraphsMatchBruteForceComponents) {
         const std::set<std::vector<uint32_t>> reported(r.cycles.begin(), r.cycles.end());
         EXPECT_EQ(reported.size(), r.cycles.size()) << "a cycle was reported twice";
         EXPECT_EQ(reported, expected) << "trial " << trial;
-        if (acyclic) EXPECT_TRUE(r.cycles.empty());
+        if (acyclic)
+            EXPECT_TRUE(r.cycles.empty());
     }
 }
 
@@ -172,8 +181,10 @@ TEST(VisSort, CoherentRestartFromTheLastOrderIsCheap) {
     std::mt19937 rng(23);
     for (int e = 0; e < 2000; ++e) {
         uint32_t a = rng() % n, b = rng() % n;
-        if (a > b) std::swap(a, b);
-        if (a != b) g.addEdge(a, b);
+        if (a > b)
+            std::swap(a, b);
+        if (a != b)
+            g.addEdge(a, b);
     }
     std::vector<uint32_t> start = identity(n);
     std::shuffle(start.begin(), start.end(), rng);

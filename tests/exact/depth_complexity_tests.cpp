@@ -58,7 +58,7 @@ void addCoveringQuad(TrianglePositions& positions, double z) {
 // The small quad covers exactly the pixels i in [kI0, kI1), j in [kJ0, kJ1): its edges lie on
 // pixel borders, 0.25 from the nearest centres.
 constexpr uint32_t kI0 = 3, kI1 = 9, kJ0 = 2, kJ1 = 7;
-constexpr uint64_t kSmallPixels = uint64_t(kI1 - kI0) * (kJ1 - kJ0);  // 30
+constexpr uint64_t kSmallPixels = uint64_t(kI1 - kI0) * (kJ1 - kJ0); // 30
 
 void addSmallQuad(TrianglePositions& positions, double z) {
     addRectangle(positions, -4.0 + 0.5 * kI0, -4.0 + 0.5 * kI1, 3.0 - 0.5 * kJ1, 3.0 - 0.5 * kJ0,
@@ -92,7 +92,8 @@ void checkGroundTruth(const TrianglePositions& positions, const ViewProjection& 
             const auto& hits = pixels[std::size_t(j) * view.width + i];
             ASSERT_EQ(hits.size(), expectedCount(i, j, covering)) << "pixel " << i << "," << j;
             for (const test::BruteHit& hit : hits)
-                ASSERT_TRUE(hit.robust) << "pixel " << i << "," << j << " triangle " << hit.triangle;
+                ASSERT_TRUE(hit.robust)
+                    << "pixel " << i << "," << j << " triangle " << hit.triangle;
         }
     }
 }
@@ -109,15 +110,15 @@ DepthComplexity bruteForceResult(const TrianglePositions& positions, const ViewP
         for (const test::BruteHit& hit : pixels[p])
             EXPECT_TRUE(hit.robust) << "pixel " << p << " triangle " << hit.triangle;
         const uint64_t n = pixels[p].size();
-        if (n >= expected.histogram.size()) expected.histogram.resize(n + 1, 0);
+        if (n >= expected.histogram.size())
+            expected.histogram.resize(n + 1, 0);
         ++expected.histogram[n];
         expected.max = std::max(expected.max, n);
         expected.hits += n;
         expected.covered_pixels += n > 0 ? 1 : 0;
     }
-    expected.mean = expected.covered_pixels
-                        ? double(expected.hits) / double(expected.covered_pixels)
-                        : 0.0;
+    expected.mean =
+        expected.covered_pixels ? double(expected.hits) / double(expected.covered_pixels) : 0.0;
     return expected;
 }
 
@@ -161,7 +162,7 @@ TEST(DepthComplexity, StackOfQuadsGivesKnownCounts) {
     EXPECT_EQ(result.height, kHeight);
     EXPECT_EQ(result.max, uint64_t(kStack + 1));
     EXPECT_EQ(result.covered_pixels, kPixels);
-    const uint64_t hits = kPixels * kStack + kSmallPixels;  // 798
+    const uint64_t hits = kPixels * kStack + kSmallPixels; // 798
     EXPECT_EQ(result.hits, hits);
     EXPECT_DOUBLE_EQ(result.mean, double(hits) / double(kPixels));
     std::vector<uint64_t> histogram(kStack + 2, 0);
@@ -200,10 +201,10 @@ TEST(DepthComplexity, UncoveredPixelsCountAsZero) {
 TEST(DepthComplexity, NothingInViewIsAllZero) {
     const ViewProjection view = theView();
     TrianglePositions outside;
-    addRectangle(outside, 5.0, 7.0, -1.0, 1.0, 0.0);    // beside the view (x > 4)
-    addCoveringQuad(outside, -6.0);                      // beyond the far plane (d > 1)
-    addCoveringQuad(outside, 7.0);                       // behind the eye plane (d < 0)
-    addTriangle(outside, {0, 0, 0}, {1, 1, 0}, {2, 2, 0});  // degenerate: never counts
+    addRectangle(outside, 5.0, 7.0, -1.0, 1.0, 0.0);       // beside the view (x > 4)
+    addCoveringQuad(outside, -6.0);                        // beyond the far plane (d > 1)
+    addCoveringQuad(outside, 7.0);                         // behind the eye plane (d < 0)
+    addTriangle(outside, {0, 0, 0}, {1, 1, 0}, {2, 2, 0}); // degenerate: never counts
     for (const TrianglePositions& positions : {TrianglePositions{}, outside}) {
         for (unsigned threads : {1u, 3u}) {
             const DepthComplexity result = measureDepthComplexity(positions, view, threads);
@@ -253,8 +254,8 @@ TEST(DepthComplexity, EstimateCastsAGridWithTheViewsAspectRatio) {
     struct Case {
         uint32_t width, height, max_side, grid_width, grid_height;
     };
-    for (const Case& c : {Case{1000, 500, 64, 64, 32}, Case{300, 900, 45, 15, 45},
-                          Case{4096, 4096, 20, 20, 20}}) {
+    for (const Case& c :
+         {Case{1000, 500, 64, 64, 32}, Case{300, 900, 45, 15, 45}, Case{4096, 4096, 20, 20, 20}}) {
         SCOPED_TRACE(::testing::Message() << c.width << "x" << c.height << " side " << c.max_side);
         const DepthComplexity estimate = estimateDepthComplexity(
             positions, orthographicAlongMinusZ(), framingBounds(), c.width, c.height, c.max_side);
@@ -270,10 +271,10 @@ TEST(DepthComplexity, EstimateCastsAGridWithTheViewsAspectRatio) {
         EXPECT_GT(estimate.histogram[kStack + 1], 0u);
         EXPECT_EQ(estimate.hits, rays * kStack + estimate.histogram[kStack + 1]);
         // Exactly: the independent caster over the same grid of the same camera.
-        expectSameResult(estimate,
-                         bruteForceResult(positions, frameCamera(orthographicAlongMinusZ(),
-                                                                 framingBounds(), c.grid_width,
-                                                                 c.grid_height)));
+        expectSameResult(
+            estimate,
+            bruteForceResult(positions, frameCamera(orthographicAlongMinusZ(), framingBounds(),
+                                                    c.grid_width, c.grid_height)));
     }
 }
 

@@ -133,7 +133,7 @@ TEST(RayCaster, NearEdgesAreMarkedWhereACentreJustMisses) {
     const AllHits hits = castAllHits(positions, view, 1, true);
     ASSERT_EQ(hits.near_edge.size(), hits.pixelCount());
     const auto at = [&](uint32_t px) { return std::size_t(15) * width + px; };
-    EXPECT_EQ(hits.endHit(at(25)) - hits.firstHit(at(25)), 1u);  // the quad behind only
+    EXPECT_EQ(hits.endHit(at(25)) - hits.firstHit(at(25)), 1u); // the quad behind only
     EXPECT_EQ(hits.near_edge[at(25)], 1);
     EXPECT_EQ(hits.near_edge[at(28)], 0);
     EXPECT_EQ(hits.near_edge[at(22)], 0);

@@ -23,7 +23,9 @@ Bounds boxBounds(const Vec3& lo, const Vec3& hi) {
     return b;
 }
 
-Vec3 horizontal(const Vec3& a) { return {a.x, 0, a.z}; }
+Vec3 horizontal(const Vec3& a) {
+    return {a.x, 0, a.z};
+}
 
 // Unsigned angle between two vectors, in degrees.
 double angleDegrees(const Vec3& a, const Vec3& b) {
@@ -40,8 +42,10 @@ double signedTurnDegrees(const Vec3& a, const Vec3& b) {
 // a - b as an angle in (-180, 180].
 double angleDifference(double a, double b) {
     double d = std::fmod(a - b, 360.0);
-    if (d > 180) d -= 360;
-    if (d <= -180) d += 360;
+    if (d > 180)
+        d -= 360;
+    if (d <= -180)
+        d += 360;
     return d;
 }
 
@@ -64,7 +68,7 @@ CameraSpec perspectiveBase() {
     CameraSpec camera;
     camera.projection = Projection::perspective;
     camera.eye = {7, 4, -1};
-    camera.target = {1.5, 0.5, 2.5};  // near the centre, not on it
+    camera.target = {1.5, 0.5, 2.5}; // near the centre, not on it
     camera.up = {0, 1, 0};
     camera.fov_degrees = 35;
     return camera;
@@ -112,8 +116,8 @@ TEST(CameraPathStatic, ReturnsTheBaseCamera) {
 }
 
 TEST(CameraPathOrbit, FrameZeroIsTheBase) {
-    expectSameCamera(cameraOnPath(perspectiveBase(), CameraPath::orbit, 0, kBounds), perspectiveBase(),
-                     1e-15);
+    expectSameCamera(cameraOnPath(perspectiveBase(), CameraPath::orbit, 0, kBounds),
+                     perspectiveBase(), 1e-15);
     expectSameCamera(cameraOnPath(orthographicBase(), CameraPath::orbit, 0, kBounds),
                      orthographicBase(), 1e-15);
 }
@@ -134,7 +138,8 @@ TEST(CameraPathOrbit, TurnsThreeDegreesPerFrameKeepingDistanceAndHeight) {
         EXPECT_NEAR(length(horizontal(offset)), length(horizontal(base_offset)), 1e-12) << where;
         // The turn about the vertical axis, from the base and from the previous frame.
         const double turn = signedTurnDegrees(horizontal(base_offset), horizontal(offset));
-        if (frame == 1) first_sign = turn > 0 ? 1 : -1;
+        if (frame == 1)
+            first_sign = turn > 0 ? 1 : -1;
         const double expected = first_sign * 3.0 * frame;
         EXPECT_NEAR(angleDifference(turn, expected), 0.0, 1e-9) << where;
         const CameraSpec previous = cameraOnPath(base, CameraPath::orbit, frame - 1, kBounds);
@@ -145,8 +150,9 @@ TEST(CameraPathOrbit, TurnsThreeDegreesPerFrameKeepingDistanceAndHeight) {
         const Vec3 view = camera.target - camera.eye;
         EXPECT_NEAR(length(view), length(base_view), 1e-12) << where;
         EXPECT_NEAR(view.y, base_view.y, 1e-12) << where;
-        EXPECT_NEAR(angleDifference(signedTurnDegrees(horizontal(base_view), horizontal(view)), expected),
-                    0.0, 1e-9)
+        EXPECT_NEAR(
+            angleDifference(signedTurnDegrees(horizontal(base_view), horizontal(view)), expected),
+            0.0, 1e-9)
             << where;
         EXPECT_NEAR(camera.target.y, base.target.y, 1e-12) << where;
         // Everything else is kept.
@@ -173,7 +179,8 @@ TEST(CameraPathOrbit, OrthographicDirectionTurns) {
         EXPECT_NEAR(dir.y, base.ortho_direction.y, 1e-12) << where;
         EXPECT_NEAR(length(dir), length(base.ortho_direction), 1e-12) << where;
         double expected = 3.0 * frame;
-        if (expected > 180) expected = 360 - expected;
+        if (expected > 180)
+            expected = 360 - expected;
         EXPECT_NEAR(angleDegrees(horizontal(base.ortho_direction), horizontal(dir)), expected, 1e-5)
             << where;
     }
@@ -213,7 +220,8 @@ TEST(CameraPathFlythrough, StaysInsideAndLooksAhead) {
 TEST(CameraPathFlythrough, DegenerateBoundsStillGiveValidCameras) {
     const Bounds point = boxBounds({1, 2, 3}, {1, 2, 3});
     for (int frame : {0, 1, 45, 180}) {
-        const CameraSpec camera = cameraOnPath(perspectiveBase(), CameraPath::flythrough, frame, point);
+        const CameraSpec camera =
+            cameraOnPath(perspectiveBase(), CameraPath::flythrough, frame, point);
         EXPECT_EQ(validateCamera(camera).error, "") << frame;
         // With radius 0 the path uses radius 1: the circle has radius 0.6.
         EXPECT_NEAR(length(camera.eye - point.centre()), 0.6, 1e-12) << frame;

@@ -19,8 +19,12 @@
 namespace vissort {
 namespace {
 
-glm::dvec3 toGlm(const Vec3& v) { return {v.x, v.y, v.z}; }
-Vec3 fromGlm(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+glm::dvec3 toGlm(const Vec3& v) {
+    return {v.x, v.y, v.z};
+}
+Vec3 fromGlm(const glm::dvec3& v) {
+    return {v.x, v.y, v.z};
+}
 
 Bounds boxBounds(const Vec3& lo, const Vec3& hi) {
     Bounds b;
@@ -126,8 +130,8 @@ TEST(CameraBounds, AddCentreAndRadius) {
     Bounds b;
     b.add({4, 2, 0});
     b.add({1, -2, 5});
-    b.add({2, 0, 12});  // inside in x and y, extends z
-    b.add({3, 1, 6});   // inside: changes nothing
+    b.add({2, 0, 12}); // inside in x and y, extends z
+    b.add({3, 1, 6});  // inside: changes nothing
     EXPECT_EQ(b.min.x, 1);
     EXPECT_EQ(b.min.y, -2);
     EXPECT_EQ(b.min.z, 0);
@@ -145,7 +149,8 @@ TEST(CameraBounds, AddCentreAndRadius) {
 TEST(CameraBounds, TrianglePositionsBounds) {
     TrianglePositions positions;
     positions.resize(2);
-    const float xs[6] = {0, 1, 2, -1, 0, 0}, ys[6] = {0, 0, 3, 0, -1, 0}, zs[6] = {0, 0, 0, 1, 2, -2};
+    const float xs[6] = {0, 1, 2, -1, 0, 0}, ys[6] = {0, 0, 3, 0, -1, 0},
+                zs[6] = {0, 0, 0, 1, 2, -2};
     for (int i = 0; i < 6; ++i) {
         positions.x[i] = xs[i];
         positions.y[i] = ys[i];
@@ -169,8 +174,9 @@ TEST(CameraPerspective, ViewMatrixIsLookAt) {
     const Bounds bounds = boxBounds({-1, -1, -1}, {1, 1, 1});
     const CameraSpec cameras[] = {
         perspectiveCamera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 45),
-        perspectiveCamera({3, 2, -4}, {0.5, -0.2, 0.1}, {0, 2, 0.3}, 60),  // up neither unit nor orthogonal
-        perspectiveCamera({0.2, 0.1, 0.3}, {5, 0, 0}, {0, 0, 1}, 90),      // eye inside the sphere
+        perspectiveCamera({3, 2, -4}, {0.5, -0.2, 0.1}, {0, 2, 0.3},
+                          60), // up neither unit nor orthogonal
+        perspectiveCamera({0.2, 0.1, 0.3}, {5, 0, 0}, {0, 0, 1}, 90), // eye inside the sphere
     };
     for (const CameraSpec& camera : cameras) {
         const ViewProjection vp = frameCamera(camera, bounds, 64, 48);
@@ -222,23 +228,23 @@ TEST(CameraPerspective, HandComputedProjectionScale) {
     const Ndc ndc = toNdc(vp, {1, 1, 0});
     EXPECT_NEAR(ndc.x, 0.1 / 2, 1e-12);
     EXPECT_NEAR(ndc.y, 0.1, 1e-12);
-    const Ndc far_corner = toNdc(vp, {4, -2, 6});  // distance 4
+    const Ndc far_corner = toNdc(vp, {4, -2, 6}); // distance 4
     EXPECT_NEAR(far_corner.x, 1.0 / 2, 1e-12);
     EXPECT_NEAR(far_corner.y, -0.5, 1e-12);
 }
 
 TEST(CameraPerspective, NearPlane) {
-    const Bounds bounds = boxBounds({1, 1, 1}, {3, 3, 3});  // centre (2, 2, 2), r = sqrt(3)
+    const Bounds bounds = boxBounds({1, 1, 1}, {3, 3, 3}); // centre (2, 2, 2), r = sqrt(3)
     const double r = std::sqrt(3.0);
     struct Case {
         Vec3 eye;
         double expected_near;
     };
     const Case cases[] = {
-        {{5, 6, 2}, (5 - r) * 0.99},                       // distance 5, outside
-        {{2, 2, 12}, (10 - r) * 0.99},                     // distance 10
-        {{2.1, 2, 2}, r * 1e-3 * 0.99},                    // inside the sphere
-        {{2, 2, 2 + r * (1 + 1e-4)}, r * 1e-3 * 0.99},     // just outside: r * 1e-3 wins
+        {{5, 6, 2}, (5 - r) * 0.99},                   // distance 5, outside
+        {{2, 2, 12}, (10 - r) * 0.99},                 // distance 10
+        {{2.1, 2, 2}, r * 1e-3 * 0.99},                // inside the sphere
+        {{2, 2, 2 + r * (1 + 1e-4)}, r * 1e-3 * 0.99}, // just outside: r * 1e-3 wins
         {{2, 2 - 1.5 * r, 2}, std::max(0.5 * r, r * 1e-3) * 0.99},
     };
     for (const Case& c : cases) {
@@ -313,8 +319,10 @@ void expectRaysThroughPixelCentres(const ViewProjection& vp, double t_beyond) {
             const Vec3 p = fromGlm(toGlm(origin) + t_beyond * toGlm(direction));
             EXPECT_GT(vp.depthOf(p), 0.0);
             const glm::dvec2 s = toScreen(vp, p);
-            EXPECT_NEAR(s.x, px + 0.5, 1e-9) << vp.width << "x" << vp.height << " pixel " << px << "," << py;
-            EXPECT_NEAR(s.y, py + 0.5, 1e-9) << vp.width << "x" << vp.height << " pixel " << px << "," << py;
+            EXPECT_NEAR(s.x, px + 0.5, 1e-9)
+                << vp.width << "x" << vp.height << " pixel " << px << "," << py;
+            EXPECT_NEAR(s.y, py + 0.5, 1e-9)
+                << vp.width << "x" << vp.height << " pixel " << px << "," << py;
         }
 }
 
@@ -329,7 +337,7 @@ TEST(CameraPixelRay, PerspectiveRaysProjectToPixelCentres) {
         EXPECT_EQ(origin.x, camera.eye.x);
         EXPECT_EQ(origin.y, camera.eye.y);
         EXPECT_EQ(origin.z, camera.eye.z);
-        expectRaysThroughPixelCentres(vp, 10.0);  // beyond near even on slanted rays
+        expectRaysThroughPixelCentres(vp, 10.0); // beyond near even on slanted rays
     }
 }
 
@@ -358,7 +366,7 @@ TEST(CameraPixelRay, RowZeroIsTheTop) {
     const uint32_t w = 21, h = 15;
     const CameraSpec cameras[] = {
         perspectiveCamera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 45),
-        perspectiveCamera({5, 0, 0}, {0, 0, 0}, {0, 0, 1}, 45),  // up is +z here
+        perspectiveCamera({5, 0, 0}, {0, 0, 0}, {0, 0, 1}, 45), // up is +z here
         orthographicCamera({0, 0, -1}),
     };
     for (const CameraSpec& camera : cameras) {
@@ -403,8 +411,8 @@ TEST(CameraPixelRay, ScreenPointsOtherThanCentres) {
 // Orthographic
 
 // Checks that the view frames the sphere with the given image right and up vectors.
-void expectOrthographicFrame(const ViewProjection& vp, const Bounds& bounds, const glm::dvec3& right,
-                             const glm::dvec3& up) {
+void expectOrthographicFrame(const ViewProjection& vp, const Bounds& bounds,
+                             const glm::dvec3& right, const glm::dvec3& up) {
     const glm::dvec3 c = toGlm(bounds.centre());
     const double r = bounds.radius();
     const double aspect = double(vp.width) / double(vp.height);
@@ -423,7 +431,7 @@ void expectOrthographicFrame(const ViewProjection& vp, const Bounds& bounds, con
 }
 
 TEST(CameraOrthographic, LookingDownMinusZ) {
-    const Bounds bounds = boxBounds({-2, -1, 0}, {2, 1, 4});  // centre (0, 0, 2), r = 3
+    const Bounds bounds = boxBounds({-2, -1, 0}, {2, 1, 4}); // centre (0, 0, 2), r = 3
     ASSERT_DOUBLE_EQ(bounds.radius(), 3.0);
     for (auto [w, h] : {std::pair<uint32_t, uint32_t>{200, 100}, {100, 200}, {1, 1}}) {
         const ViewProjection vp = frameCamera(orthographicCamera({0, 0, -1}), bounds, w, h);
@@ -474,7 +482,8 @@ TEST(CameraOrthographic, DepthEnclosesSphereAndIsLinear) {
     const Bounds bounds = boxBounds({-1, 2, -3}, {2, 4, 1});
     const glm::dvec3 c = toGlm(bounds.centre());
     const double r = bounds.radius();
-    for (const glm::dvec3 raw : {glm::dvec3(0, 0, -1), glm::dvec3(1, -0.5, -2), glm::dvec3(0, -1, 0)}) {
+    for (const glm::dvec3 raw :
+         {glm::dvec3(0, 0, -1), glm::dvec3(1, -0.5, -2), glm::dvec3(0, -1, 0)}) {
         const glm::dvec3 dir = glm::normalize(raw);
         const ViewProjection vp = frameCamera(orthographicCamera(fromGlm(raw)), bounds, 32, 32);
         EXPECT_LT(vp.near, vp.far);
@@ -514,16 +523,17 @@ TEST(CameraValidate, RejectsDegenerateCameras) {
     const CameraSpec good = perspectiveCamera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 45);
     EXPECT_EQ(validateCamera(good).error, "");
     EXPECT_EQ(validateCamera(CameraSpec{}).error, "");
-    EXPECT_EQ(validateCamera(perspectiveCamera({1, 2, 3}, {-1, 0.5, 2}, {0.2, 3, 0}, 179.5)).error, "");
+    EXPECT_EQ(validateCamera(perspectiveCamera({1, 2, 3}, {-1, 0.5, 2}, {0.2, 3, 0}, 179.5)).error,
+              "");
     EXPECT_EQ(validateCamera(perspectiveCamera({1, 2, 3}, {-1, 0.5, 2}, {0, 1, 0}, 0.5)).error, "");
 
     const double nan = std::nan(""), inf = INFINITY;
     std::vector<CameraSpec> bad;
-    bad.push_back(perspectiveCamera({1, 2, 3}, {1, 2, 3}, {0, 1, 0}, 45));   // eye == target
-    bad.push_back(perspectiveCamera({0, 0, 5}, {0, 0, 0}, {0, 0, 0}, 45));   // zero up
-    bad.push_back(perspectiveCamera({0, 0, 5}, {0, 0, 0}, {0, 0, -3}, 45));  // up along the view
-    bad.push_back(perspectiveCamera({0, 0, 5}, {0, 0, 0}, {0, 0, 2}, 45));   // up against the view
-    bad.push_back(perspectiveCamera({1, 1, 1}, {0, 0, 0}, {2, 2, 2}, 45));   // parallel, diagonal
+    bad.push_back(perspectiveCamera({1, 2, 3}, {1, 2, 3}, {0, 1, 0}, 45));  // eye == target
+    bad.push_back(perspectiveCamera({0, 0, 5}, {0, 0, 0}, {0, 0, 0}, 45));  // zero up
+    bad.push_back(perspectiveCamera({0, 0, 5}, {0, 0, 0}, {0, 0, -3}, 45)); // up along the view
+    bad.push_back(perspectiveCamera({0, 0, 5}, {0, 0, 0}, {0, 0, 2}, 45));  // up against the view
+    bad.push_back(perspectiveCamera({1, 1, 1}, {0, 0, 0}, {2, 2, 2}, 45));  // parallel, diagonal
     bad.push_back(perspectiveCamera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 0));
     bad.push_back(perspectiveCamera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 180));
     bad.push_back(perspectiveCamera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, -30));
@@ -553,9 +563,9 @@ TEST(CameraValidate, RejectsDegenerateCameras) {
 TEST(CameraDefault, FramesTheWholeBoundingSphere) {
     const Bounds scenes[] = {
         boxBounds({-1, -1, -1}, {1, 1, 1}),
-        boxBounds({10, -3, 100}, {14, 5, 101}),   // off the origin, flat
-        boxBounds({0, 0, 0}, {1e-3, 50, 2e-3}),   // a thin needle
-        boxBounds({2, 3, 4}, {2, 3, 4}),           // a single point (radius 0)
+        boxBounds({10, -3, 100}, {14, 5, 101}), // off the origin, flat
+        boxBounds({0, 0, 0}, {1e-3, 50, 2e-3}), // a thin needle
+        boxBounds({2, 3, 4}, {2, 3, 4}),        // a single point (radius 0)
     };
     for (const Bounds& bounds : scenes) {
         const CameraSpec camera = defaultCamera(bounds);
@@ -570,8 +580,8 @@ TEST(CameraDefault, FramesTheWholeBoundingSphere) {
         // The eye sits in the direction (0.6, 0.5, 1) from the centre, outside the sphere.
         const glm::dvec3 offset = toGlm(camera.eye) - c;
         const double r = bounds.radius() > 0 ? bounds.radius() : 1.0;
-        EXPECT_NEAR(glm::length(glm::normalize(offset) - glm::normalize(glm::dvec3(0.6, 0.5, 1))), 0,
-                    1e-12);
+        EXPECT_NEAR(glm::length(glm::normalize(offset) - glm::normalize(glm::dvec3(0.6, 0.5, 1))),
+                    0, 1e-12);
         EXPECT_GT(glm::length(offset), r);
 
         for (auto [w, h] : {std::pair<uint32_t, uint32_t>{1024, 1024}, {640, 480}, {64, 64}}) {

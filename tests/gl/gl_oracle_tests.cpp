@@ -29,7 +29,8 @@ namespace {
 
 std::shared_ptr<GlContext> context() {
     static const Result<std::shared_ptr<GlContext>> shared = GlContext::shared();
-    if (!shared) ADD_FAILURE() << shared.error;
+    if (!shared)
+        ADD_FAILURE() << shared.error;
     return shared ? *shared.value : nullptr;
 }
 
@@ -100,8 +101,9 @@ TEST_P(GlMatchesCpu, CoverageAndDepths) {
     const auto primitives = primitivesOf(scene, GetParam().level);
     for (Projection projection : {Projection::perspective, Projection::orthographic})
         for (auto [width, height] : {std::pair{1u, 1u}, {17u, 13u}, {203u, 111u}, {640u, 480u}}) {
-            SCOPED_TRACE(std::to_string(width) + "x" + std::to_string(height) +
-                         (projection == Projection::perspective ? " perspective" : " orthographic"));
+            SCOPED_TRACE(
+                std::to_string(width) + "x" + std::to_string(height) +
+                (projection == Projection::perspective ? " perspective" : " orthographic"));
             const ViewProjection view = viewOf(scene, projection, width, height);
             FastCpuOracle cpu;
             GlOracle gl(context());
@@ -118,7 +120,8 @@ TEST_P(GlMatchesCpu, CoverageAndDepths) {
             for (std::size_t i = 0; i < got.size(); ++i) {
                 // The CPU clears to +infinity, OpenGL to 1 (gl_oracle.h).
                 ASSERT_EQ(std::isinf(expected[i]), got[i] == 1.0f) << "pixel " << i;
-                if (std::isinf(expected[i])) continue;
+                if (std::isinf(expected[i]))
+                    continue;
                 ++covered;
                 const double difference = std::abs(double(got[i]) - expected[i]);
                 beyond_tolerance += difference > kDepthTolerance ? 1 : 0;
@@ -150,7 +153,8 @@ TEST_P(GlMatchesCpu, PassesAndSingleCallsAnswerAsCpu) {
     std::mt19937 rng(11);
     const auto n = uint32_t(primitives.size());
     std::size_t behind_total = 0, answers = 0, differing = 0;
-    const auto compare = [&](const std::vector<uint8_t>& got, const std::vector<uint8_t>& expected) {
+    const auto compare = [&](const std::vector<uint8_t>& got,
+                             const std::vector<uint8_t>& expected) {
         for (std::size_t i = 0; i < got.size(); ++i) {
             answers += expected[i] != 7 ? 1 : 0;
             differing += got[i] != expected[i] ? 1 : 0;
@@ -158,23 +162,28 @@ TEST_P(GlMatchesCpu, PassesAndSingleCallsAnswerAsCpu) {
     };
     for (int round = 0; round < 6; ++round) {
         std::vector<uint32_t> sequence(n);
-        for (uint32_t i = 0; i < n; ++i) sequence[i] = i;
+        for (uint32_t i = 0; i < n; ++i)
+            sequence[i] = i;
         std::shuffle(sequence.begin(), sequence.end(), rng);
         std::vector<uint8_t> query(n);
-        for (uint8_t& q : query) q = uint8_t(rng() % 3 != 0);
+        for (uint8_t& q : query)
+            q = uint8_t(rng() % 3 != 0);
         // A marker where a pass must leave the answer alone.
         std::vector<uint8_t> expected(n, 7), got(n, 7);
         cpu.backToFrontPass(sequence, query, expected);
         gl.backToFrontPass(sequence, query, got);
-        for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(got[i] == 7, !query[i]) << "entry " << i;
+        for (std::size_t i = 0; i < n; ++i)
+            ASSERT_EQ(got[i] == 7, !query[i]) << "entry " << i;
         compare(got, expected);
         expected.assign(n, 7);
         got.assign(n, 7);
         cpu.frontToBackPass(sequence, query, expected);
         gl.frontToBackPass(sequence, query, got);
-        for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(got[i] == 7, !query[i]) << "entry " << i;
+        for (std::size_t i = 0; i < n; ++i)
+            ASSERT_EQ(got[i] == 7, !query[i]) << "entry " << i;
         compare(got, expected);
-        for (uint8_t b : expected) behind_total += b == 1;
+        for (uint8_t b : expected)
+            behind_total += b == 1;
         const std::span<const uint32_t> occluders(sequence.data(), n / 2);
         const std::span<const uint32_t> targets(sequence.data() + n / 2, n - n / 2);
         std::vector<uint8_t> expected_group(targets.size()), got_group(targets.size());
@@ -214,8 +223,10 @@ TEST_P(GlMatchesCpu, OrdersEqualCpuAndPassTheGroundTruth) {
         const ViewProjection view = viewOf(scene, projection, 128, 96);
         FastCpuOracle cpu;
         GlOracle gl(context());
-        SceneOrderer cpu_orderer(scene.objectPrimitives(), uint32_t(scene.triangleCount()), GetParam().level, cpu);
-        SceneOrderer gl_orderer(scene.objectPrimitives(), uint32_t(scene.triangleCount()), GetParam().level, gl);
+        SceneOrderer cpu_orderer(scene.objectPrimitives(), uint32_t(scene.triangleCount()),
+                                 GetParam().level, cpu);
+        SceneOrderer gl_orderer(scene.objectPrimitives(), uint32_t(scene.triangleCount()),
+                                GetParam().level, gl);
         const FrameOrder expected = cpu_orderer.orderFrame(scene.positions, view);
         const FrameOrder got = gl_orderer.orderFrame(scene.positions, view);
         EXPECT_EQ(got.order, expected.order);
@@ -252,8 +263,10 @@ TEST(GlOracle, FramesOfADynamicSceneUpdateTheVertexBuffer) {
     const auto primitives = primitivesOf(scene, OrderLevel::object);
     FastCpuOracle cpu;
     GlOracle gl(context());
-    SceneOrderer cpu_orderer(scene.objectPrimitives(), uint32_t(scene.triangleCount()), OrderLevel::object, cpu);
-    SceneOrderer gl_orderer(scene.objectPrimitives(), uint32_t(scene.triangleCount()), OrderLevel::object, gl);
+    SceneOrderer cpu_orderer(scene.objectPrimitives(), uint32_t(scene.triangleCount()),
+                             OrderLevel::object, cpu);
+    SceneOrderer gl_orderer(scene.objectPrimitives(), uint32_t(scene.triangleCount()),
+                            OrderLevel::object, gl);
     TrianglePositions positions;
     for (int f = 0; f < 4; ++f) {
         scene.frame(f * 0.3, positions);
@@ -271,7 +284,8 @@ TEST(GlOracle, StatsCountQueriesDrawsAndCalls) {
     gl.bind(scene.positions, viewOf(scene, Projection::perspective, 64, 64), primitives);
     const auto n = uint32_t(primitives.size());
     std::vector<uint32_t> sequence(n);
-    for (uint32_t i = 0; i < n; ++i) sequence[i] = i;
+    for (uint32_t i = 0; i < n; ++i)
+        sequence[i] = i;
     std::vector<uint8_t> query(n, 0), behind(n, 0);
     query[0] = query[n / 2] = 1;
     gl.resetStats();
@@ -296,7 +310,8 @@ TEST(GlOracle, ErrorsNameTheLimit) {
     }
     // Still usable at a size the driver allows.
     gl.bind(scene.positions, viewOf(scene, Projection::perspective, 32, 32), primitives);
-    for (uint32_t p = 0; p < primitives.size(); ++p) gl.draw(p);
+    for (uint32_t p = 0; p < primitives.size(); ++p)
+        gl.draw(p);
     const std::vector<float> depths = gl.depthBuffer();
     ASSERT_EQ(depths.size(), 32u * 32u);
     EXPECT_LT(*std::min_element(depths.begin(), depths.end()), 1.0f);

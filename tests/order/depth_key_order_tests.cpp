@@ -9,7 +9,7 @@ namespace {
 TEST(DepthKeyOrder, SortsByNearestCornerAndPutsInvisibleLast) {
     TrianglePositions p;
     p.resize(4);
-    const double zs[4] = {-3, -1, -2, 10};  // camera at the origin looking down -z
+    const double zs[4] = {-3, -1, -2, 10}; // camera at the origin looking down -z
     for (int t = 0; t < 4; ++t)
         for (int c = 0; c < 3; ++c) {
             p.x[t * 3 + c] = float(c == 1);

@@ -2,8 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include "vissort/cpu_oracle.h"
 #include "support/oracle_workloads.h"
+#include "vissort/cpu_oracle.h"
 
 namespace vissort {
 namespace {
@@ -27,7 +27,8 @@ TEST(OracleWorkloads, TrianglesLandOnTheirPixelsAtTheirDepth) {
     for (uint32_t t = 0; t < 50; ++t) {
         EXPECT_NEAR(w.positions.x[3 * t + 1] - w.positions.x[3 * t], 16.0, 1e-4);
         EXPECT_NEAR(w.positions.y[3 * t + 2] - w.positions.y[3 * t], 16.0, 1e-4);
-        if (t > 0) EXPECT_LT(w.positions.z[3 * t], w.positions.z[3 * (t - 1)]);
+        if (t > 0)
+            EXPECT_LT(w.positions.z[3 * t], w.positions.z[3 * (t - 1)]);
     }
 }
 
@@ -36,7 +37,8 @@ TEST(OracleWorkloads, DrawsPassInIdOrderAndQueriesFindNothingBehindTheBackground
     CpuOracle oracle;
     oracle.bind(w.positions, w.view, w.primitives);
     oracle.draw(w.background);
-    for (uint32_t i = 0; i < 300; ++i) EXPECT_FALSE(oracle.anyBehind(i));
+    for (uint32_t i = 0; i < 300; ++i)
+        EXPECT_FALSE(oracle.anyBehind(i));
     // Back to front: once drawn, a triangle is never behind what was drawn before it.
     for (uint32_t i = 0; i < 300; ++i) {
         EXPECT_FALSE(oracle.anyBehind(i));
@@ -44,7 +46,8 @@ TEST(OracleWorkloads, DrawsPassInIdOrderAndQueriesFindNothingBehindTheBackground
     }
     // And an earlier (farther) triangle overlapped by a later one is now behind something.
     uint32_t behind = 0;
-    for (uint32_t i = 0; i < 300; ++i) behind += oracle.anyBehind(i) ? 1 : 0;
+    for (uint32_t i = 0; i < 300; ++i)
+        behind += oracle.anyBehind(i) ? 1 : 0;
     EXPECT_GT(behind, 0u);
 }
 

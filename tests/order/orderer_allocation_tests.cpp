@@ -28,7 +28,8 @@ std::atomic<uint64_t> g_allocations{0};
 void* allocate(std::size_t size, std::size_t alignment) {
     if (g_counting.load(std::memory_order_relaxed))
         g_allocations.fetch_add(1, std::memory_order_relaxed);
-    if (size == 0) size = 1;
+    if (size == 0)
+        size = 1;
     void* p = alignment <= alignof(std::max_align_t)
                   ? std::malloc(size)
                   : std::aligned_alloc(alignment, (size + alignment - 1) / alignment * alignment);
@@ -38,12 +39,16 @@ void* allocate(std::size_t size, std::size_t alignment) {
 } // namespace
 
 void* operator new(std::size_t size) {
-    if (void* p = allocate(size, alignof(std::max_align_t))) return p;
+    if (void* p = allocate(size, alignof(std::max_align_t)))
+        return p;
     throw std::bad_alloc();
 }
-void* operator new[](std::size_t size) { return operator new(size); }
+void* operator new[](std::size_t size) {
+    return operator new(size);
+}
 void* operator new(std::size_t size, std::align_val_t alignment) {
-    if (void* p = allocate(size, std::size_t(alignment))) return p;
+    if (void* p = allocate(size, std::size_t(alignment)))
+        return p;
     throw std::bad_alloc();
 }
 void* operator new[](std::size_t size, std::align_val_t alignment) {
@@ -58,21 +63,42 @@ void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
 void* operator new(std::size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
     return allocate(size, std::size_t(alignment));
 }
-void* operator new[](std::size_t size, std::align_val_t alignment,
-                     const std::nothrow_t&) noexcept {
+void* operator new[](std::size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
     return allocate(size, std::size_t(alignment));
 }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete(void* p) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::align_val_t) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, std::align_val_t) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, const std::nothrow_t&) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, const std::nothrow_t&) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept {
+    std::free(p);
+}
 void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept {
     std::free(p);
 }
@@ -87,8 +113,7 @@ class OrdererAllocations : public testing::TestWithParam<OrderLevel> {};
 TEST_P(OrdererAllocations, SteadyStateFramesAllocateNothing) {
     const Scene scene = test::loadTestScene("builtin:bunnies?n=3&seed=2");
     ASSERT_TRUE(scene.isDynamic());
-    Result<std::unique_ptr<GeometryOracle>> oracle =
-        makeOracle(OracleKind::cpu, {.threads = 1});
+    Result<std::unique_ptr<GeometryOracle>> oracle = makeOracle(OracleKind::cpu, {.threads = 1});
     ASSERT_TRUE(oracle) << oracle.error;
     SceneOrderer orderer(scene.objectPrimitives(), uint32_t(scene.triangleCount()), GetParam(),
                          **oracle.value);
@@ -104,12 +129,13 @@ TEST_P(OrdererAllocations, SteadyStateFramesAllocateNothing) {
         g_counting = false;
         const uint64_t allocations = g_allocations;
         std::cout << orderLevelName(GetParam()) << " frame " << f << ": " << allocations
-                  << " allocations, " << frame.cycles.size() << " cycles, "
-                  << frame.stats.queries << " queries\n";
+                  << " allocations, " << frame.cycles.size() << " cycles, " << frame.stats.queries
+                  << " queries\n";
         ASSERT_EQ(frame.order.size(),
                   GetParam() == OrderLevel::object ? scene.objects.size() : scene.triangleCount());
         ASSERT_TRUE(frame.cycles.empty()) << "frame " << f << ": the scene must have no cycle";
-        if (f >= 2) EXPECT_EQ(allocations, 0u) << "frame " << f;
+        if (f >= 2)
+            EXPECT_EQ(allocations, 0u) << "frame " << f;
     }
 }
 

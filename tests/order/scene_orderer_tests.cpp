@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "ground_truth.h"
-#include "test_scene_loading.h"
 #include "tarjan_scc.h"
+#include "test_scene_loading.h"
 #include "vissort/oracles.h"
 #include "vissort/scene_library.h"
 #include "vissort/scene_orderer.h"
@@ -71,7 +71,8 @@ std::set<std::vector<uint32_t>> trueCycles(const Scene& scene, const ViewProject
     std::set<std::vector<uint32_t>> cycles;
     for (auto component : test::stronglyConnectedComponents(graph)) {
         std::sort(component.begin(), component.end());
-        if (component.size() > 1) cycles.insert(component);
+        if (component.size() > 1)
+            cycles.insert(component);
     }
     return cycles;
 }
@@ -103,38 +104,59 @@ TEST_P(OrderAgainstGroundTruth, NoOcclusionIsOrderedBackwards) {
     if (c.level != OrderLevel::multistage) {
         const auto truth = trueCycles(scene, view, primitives);
         for (const auto& true_cycle : truth) {
-            const bool covered = std::any_of(frame.cycles.begin(), frame.cycles.end(), [&](auto& r) {
-                return std::includes(r.begin(), r.end(), true_cycle.begin(), true_cycle.end());
-            });
+            const bool covered =
+                std::any_of(frame.cycles.begin(), frame.cycles.end(), [&](auto& r) {
+                    return std::includes(r.begin(), r.end(), true_cycle.begin(), true_cycle.end());
+                });
             EXPECT_TRUE(covered) << "a true cycle of " << true_cycle.size() << " was not reported";
         }
         if (c.oracle == OracleKind::exact) {
-            const std::set<std::vector<uint32_t>> reported(frame.cycles.begin(), frame.cycles.end());
+            const std::set<std::vector<uint32_t>> reported(frame.cycles.begin(),
+                                                           frame.cycles.end());
             EXPECT_EQ(reported, truth);
         }
     }
 }
 
 const Case kCases[] = {
-    {"tests/data/scenes/disjoint.json", OracleKind::cpu, OrderLevel::object, Projection::perspective, 160, 120},
-    {"tests/data/scenes/disjoint.json", OracleKind::exact, OrderLevel::object, Projection::orthographic, 160, 120},
-    {"tests/data/scenes/disjoint.json", OracleKind::cpu, OrderLevel::triangle, Projection::perspective, 96, 72},
-    {"tests/data/scenes/stack.json", OracleKind::cpu, OrderLevel::object, Projection::perspective, 128, 128},
-    {"tests/data/scenes/stack.json", OracleKind::exact, OrderLevel::object, Projection::orthographic, 128, 128},
-    {"tests/data/scenes/stack.json", OracleKind::cpu, OrderLevel::triangle, Projection::orthographic, 96, 96},
-    {"tests/data/scenes/interpenetrating.json", OracleKind::cpu, OrderLevel::object, Projection::perspective, 160, 120},
-    {"tests/data/scenes/interpenetrating.json", OracleKind::exact, OrderLevel::object, Projection::perspective, 160, 120},
-    {"tests/data/scenes/interpenetrating.json", OracleKind::cpu, OrderLevel::triangle, Projection::orthographic, 96, 72},
-    {"tests/data/scenes/interpenetrating.json", OracleKind::cpu, OrderLevel::multistage, Projection::perspective, 96, 72},
-    {"tests/data/scenes/interpenetrating.json", OracleKind::exact, OrderLevel::multistage, Projection::orthographic, 96, 72},
-    {"tests/data/scenes/three_sticks.json", OracleKind::cpu, OrderLevel::object, Projection::perspective, 128, 128},
-    {"tests/data/scenes/three_sticks.json", OracleKind::exact, OrderLevel::object, Projection::orthographic, 128, 128},
-    {"tests/data/scenes/three_sticks.json", OracleKind::cpu, OrderLevel::triangle, Projection::perspective, 128, 128},
-    {"tests/data/scenes/three_sticks.json", OracleKind::cpu, OrderLevel::multistage, Projection::orthographic, 128, 128},
-    {"builtin:bunnies?n=6&seed=3", OracleKind::cpu, OrderLevel::object, Projection::perspective, 128, 96},
-    {"builtin:bunnies?n=6&seed=3", OracleKind::exact, OrderLevel::triangle, Projection::orthographic, 96, 96},
-    {"builtin:bunnies?n=6&seed=3", OracleKind::cpu, OrderLevel::multistage, Projection::perspective, 96, 96},
-    {"builtin:slabs?layers=40", OracleKind::cpu, OrderLevel::triangle, Projection::perspective, 64, 64},
+    {"tests/data/scenes/disjoint.json", OracleKind::cpu, OrderLevel::object,
+     Projection::perspective, 160, 120},
+    {"tests/data/scenes/disjoint.json", OracleKind::exact, OrderLevel::object,
+     Projection::orthographic, 160, 120},
+    {"tests/data/scenes/disjoint.json", OracleKind::cpu, OrderLevel::triangle,
+     Projection::perspective, 96, 72},
+    {"tests/data/scenes/stack.json", OracleKind::cpu, OrderLevel::object, Projection::perspective,
+     128, 128},
+    {"tests/data/scenes/stack.json", OracleKind::exact, OrderLevel::object,
+     Projection::orthographic, 128, 128},
+    {"tests/data/scenes/stack.json", OracleKind::cpu, OrderLevel::triangle,
+     Projection::orthographic, 96, 96},
+    {"tests/data/scenes/interpenetrating.json", OracleKind::cpu, OrderLevel::object,
+     Projection::perspective, 160, 120},
+    {"tests/data/scenes/interpenetrating.json", OracleKind::exact, OrderLevel::object,
+     Projection::perspective, 160, 120},
+    {"tests/data/scenes/interpenetrating.json", OracleKind::cpu, OrderLevel::triangle,
+     Projection::orthographic, 96, 72},
+    {"tests/data/scenes/interpenetrating.json", OracleKind::cpu, OrderLevel::multistage,
+     Projection::perspective, 96, 72},
+    {"tests/data/scenes/interpenetrating.json", OracleKind::exact, OrderLevel::multistage,
+     Projection::orthographic, 96, 72},
+    {"tests/data/scenes/three_sticks.json", OracleKind::cpu, OrderLevel::object,
+     Projection::perspective, 128, 128},
+    {"tests/data/scenes/three_sticks.json", OracleKind::exact, OrderLevel::object,
+     Projection::orthographic, 128, 128},
+    {"tests/data/scenes/three_sticks.json", OracleKind::cpu, OrderLevel::triangle,
+     Projection::perspective, 128, 128},
+    {"tests/data/scenes/three_sticks.json", OracleKind::cpu, OrderLevel::multistage,
+     Projection::orthographic, 128, 128},
+    {"builtin:bunnies?n=6&seed=3", OracleKind::cpu, OrderLevel::object, Projection::perspective,
+     128, 96},
+    {"builtin:bunnies?n=6&seed=3", OracleKind::exact, OrderLevel::triangle,
+     Projection::orthographic, 96, 96},
+    {"builtin:bunnies?n=6&seed=3", OracleKind::cpu, OrderLevel::multistage, Projection::perspective,
+     96, 96},
+    {"builtin:slabs?layers=40", OracleKind::cpu, OrderLevel::triangle, Projection::perspective, 64,
+     64},
     {"builtin:soup?n=400", OracleKind::cpu, OrderLevel::triangle, Projection::orthographic, 96, 96},
 };
 
@@ -142,14 +164,14 @@ INSTANTIATE_TEST_SUITE_P(Scenes, OrderAgainstGroundTruth, testing::ValuesIn(kCas
 
 TEST(SceneOrderer, StackHasDepthComplexityOver30) {
     const Scene scene = test::loadTestScene("tests/data/scenes/stack.json");
-    const ViewProjection view =
-        frameCamera(*scene.camera, scene.positions.bounds(), 64, 64);
+    const ViewProjection view = frameCamera(*scene.camera, scene.positions.bounds(), 64, 64);
     const auto primitives = primitivesOf(scene, OrderLevel::object);
     auto oracle = oracleOf(OracleKind::cpu);
     ASSERT_TRUE(oracle);
     SceneOrderer orderer = ordererOf(scene, OrderLevel::object, *oracle);
     const FrameOrder frame = orderer.orderFrame(scene.positions, view);
-    const auto check = test::checkVisibilityOrder(scene.positions, view, primitives, frame.order, {});
+    const auto check =
+        test::checkVisibilityOrder(scene.positions, view, primitives, frame.order, {});
     EXPECT_GT(check.max_depth_complexity, 30u);
     EXPECT_EQ(check.violation_count, 0u);
     EXPECT_TRUE(frame.cycles.empty());
@@ -198,7 +220,8 @@ TEST(SceneOrderer, MultistageOutputsEveryTriangleOnce) {
     FrameOrder frame = orderer.orderFrame(scene.positions, view);
     ASSERT_EQ(frame.order.size(), scene.triangleCount());
     std::sort(frame.order.begin(), frame.order.end());
-    for (uint32_t i = 0; i < frame.order.size(); ++i) ASSERT_EQ(frame.order[i], i);
+    for (uint32_t i = 0; i < frame.order.size(); ++i)
+        ASSERT_EQ(frame.order[i], i);
 }
 
 TEST(MakeOracle, ConservativeModeAddsBehindAnswersAndExactOracleRefusesIt) {
@@ -223,7 +246,7 @@ TEST(MakeOracle, ConservativeModeAddsBehindAnswersAndExactOracleRefusesIt) {
             conservative->draw(a);
             for (uint32_t b = 0; b < primitives.size(); ++b) {
                 const bool e = exact->anyBehind(b), c = conservative->anyBehind(b);
-                EXPECT_TRUE(!e || c) << a << " then " << b;  // a superset
+                EXPECT_TRUE(!e || c) << a << " then " << b; // a superset
                 exact_behind += e;
                 conservative_behind += c;
             }

@@ -42,10 +42,10 @@ struct Counts {
     uint64_t exact_behind = 0, added = 0, queries = 0;
 };
 
-Counts compareModes(const TrianglePositions& positions, const ViewProjection& view,
-                    uint32_t seed) {
+Counts compareModes(const TrianglePositions& positions, const ViewProjection& view, uint32_t seed) {
     std::vector<PrimitiveRange> primitives;
-    for (uint32_t t = 0; t < positions.triangleCount(); ++t) primitives.push_back({t, 1});
+    for (uint32_t t = 0; t < positions.triangleCount(); ++t)
+        primitives.push_back({t, 1});
     CpuOracle exact(RasterMode::exact), conservative(RasterMode::conservative);
     exact.bind(positions, view, primitives);
     conservative.bind(positions, view, primitives);
@@ -141,8 +141,9 @@ TEST(ConservativeRaster, EveryPointOfTheTriangleIsInACoveredPixelWithItsDepth) {
         detail::ScreenVertex v[3];
         const double size = round % 3 == 0 ? 0.3 : round % 3 == 1 ? 3.0 : 15.0;
         const double cx = unit() * kWidth, cy = unit() * kHeight;
-        for (auto& p : v) p = {cx + (unit() - 0.5) * size, cy + (unit() - 0.5) * size, unit()};
-        if (round % 5 == 0) {  // edge-on: three collinear screen points, different depths
+        for (auto& p : v)
+            p = {cx + (unit() - 0.5) * size, cy + (unit() - 0.5) * size, unit()};
+        if (round % 5 == 0) { // edge-on: three collinear screen points, different depths
             const double t = unit() * 2 - 0.5;
             v[2].x = v[0].x + t * (v[1].x - v[0].x);
             v[2].y = v[0].y + t * (v[1].y - v[0].y);
@@ -151,20 +152,26 @@ TEST(ConservativeRaster, EveryPointOfTheTriangleIsInACoveredPixelWithItsDepth) {
         for (int i = 0; i < 3; ++i)
             clip[i] = {2 * v[i].x / kWidth - 1, 1 - 2 * v[i].y / kHeight, v[i].d, 1};
         // The screen positions the rasterizer itself computes (rule 4): the ground truth's input.
-        for (int i = 0; i < 3; ++i) v[i] = detail::toScreen(clip[i], kWidth, kHeight);
-        const double area = (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
+        for (int i = 0; i < 3; ++i)
+            v[i] = detail::toScreen(clip[i], kWidth, kHeight);
+        const double area =
+            (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
         degenerate += std::abs(area) < 1e-9;
-        std::vector<float> nearest(kWidth * kHeight, INFINITY), farthest(kWidth * kHeight, -INFINITY);
-        detail::rasterizeTriangleConservative(
-            clip[0], clip[1], clip[2], kWidth, kHeight, [&](uint32_t x, uint32_t y, float lo, float hi) {
-                nearest[y * kWidth + x] = std::min(nearest[y * kWidth + x], lo);
-                farthest[y * kWidth + x] = std::max(farthest[y * kWidth + x], hi);
-                return false;
-            });
+        std::vector<float> nearest(kWidth * kHeight, INFINITY),
+            farthest(kWidth * kHeight, -INFINITY);
+        detail::rasterizeTriangleConservative(clip[0], clip[1], clip[2], kWidth, kHeight,
+                                              [&](uint32_t x, uint32_t y, float lo, float hi) {
+                                                  nearest[y * kWidth + x] =
+                                                      std::min(nearest[y * kWidth + x], lo);
+                                                  farthest[y * kWidth + x] =
+                                                      std::max(farthest[y * kWidth + x], hi);
+                                                  return false;
+                                              });
         for (int k = 0; k < 40; ++k) {
             // A random point, on an edge for every fourth one (a barycentric coordinate of 0).
             double b[3] = {unit(), unit(), unit()};
-            if (k % 4 == 0) b[k % 3] = 0;
+            if (k % 4 == 0)
+                b[k % 3] = 0;
             const double sum = b[0] + b[1] + b[2];
             double px = 0, py = 0, pd = 0;
             for (int i = 0; i < 3; ++i) {
@@ -172,7 +179,8 @@ TEST(ConservativeRaster, EveryPointOfTheTriangleIsInACoveredPixelWithItsDepth) {
                 py += b[i] / sum * v[i].y;
                 pd += b[i] / sum * v[i].d;
             }
-            if (px < 0 || py < 0 || px >= kWidth || py >= kHeight) continue;
+            if (px < 0 || py < 0 || px >= kWidth || py >= kHeight)
+                continue;
             const uint32_t x = uint32_t(px), y = uint32_t(py);
             ++points;
             ASSERT_LE(nearest[y * kWidth + x], pd + 1e-6) << "round " << round << " point " << k;
@@ -196,7 +204,7 @@ TEST(ConservativeRaster, SnappingMarginKeepsSquaresTouchedByAHair) {
     for (int round = 0; round < 20000; ++round) {
         // Edge AB, steep and long, crossing the border x = k at a random height.
         const double k = 8 + double(rng() % 16);
-        const double inside = (0.05 + 0.4 * unit()) / 256;  // how far left of the border
+        const double inside = (0.05 + 0.4 * unit()) / 256; // how far left of the border
         // dx per unit of y: the ends differ by about a sub-pixel unit, so that snapping can move
         // the height where the edge crosses the border by whole pixels.
         const double half_height = 2 + unit() * 5;
@@ -205,15 +213,17 @@ TEST(ConservativeRaster, SnappingMarginKeepsSquaresTouchedByAHair) {
         detail::ScreenVertex v[3];
         v[0] = {k - inside - slope * half, y_cross - half, 0.5};
         v[1] = {k - inside + slope * half, y_cross + half, 0.5};
-        v[2] = {k + 1 + unit() * 4, y_cross + (unit() - 0.5) * 4, 0.5};  // right of the border
+        v[2] = {k + 1 + unit() * 4, y_cross + (unit() - 0.5) * 4, 0.5}; // right of the border
         detail::ClipVertex clip[3];
         for (int i = 0; i < 3; ++i)
             clip[i] = {2 * v[i].x / kSize - 1, 1 - 2 * v[i].y / kSize, v[i].d, 1};
-        for (int i = 0; i < 3; ++i) v[i] = detail::toScreen(clip[i], kSize, kSize);
+        for (int i = 0; i < 3; ++i)
+            v[i] = detail::toScreen(clip[i], kSize, kSize);
         // The point of AB at height y_cross lies left of x = k: pixel (k - 1, y).
         const double t = (y_cross - v[0].y) / (v[1].y - v[0].y);
         const double px = v[0].x + t * (v[1].x - v[0].x);
-        if (!(px < k && px > k - 0.5)) continue;
+        if (!(px < k && px > k - 0.5))
+            continue;
         const uint32_t want_x = uint32_t(k) - 1, want_y = uint32_t(y_cross);
         bool covered = false;
         detail::rasterizeTriangleConservative(clip[0], clip[1], clip[2], kSize, kSize,

@@ -47,7 +47,8 @@ ViewProjection viewOf(const TrianglePositions& p, Projection projection, uint32_
 
 std::size_t finitePixels(const CpuOracle& oracle) {
     const auto depth = oracle.depthBuffer();
-    return std::size_t(std::count_if(depth.begin(), depth.end(), [](float d) { return std::isfinite(d); }));
+    return std::size_t(
+        std::count_if(depth.begin(), depth.end(), [](float d) { return std::isfinite(d); }));
 }
 
 class CpuOracleSemantics : public ::testing::TestWithParam<Projection> {};
@@ -55,8 +56,8 @@ class CpuOracleSemantics : public ::testing::TestWithParam<Projection> {};
 TEST_P(CpuOracleSemantics, FrontQuadHidesBackQuad) {
     TrianglePositions p;
     std::vector<PrimitiveRange> primitives;
-    primitives.push_back(addQuad(p, -1, -1, 1, 1, 0.5));   // 0: A, in front
-    primitives.push_back(addQuad(p, -1, -1, 1, 1, -0.5));  // 1: B, behind A
+    primitives.push_back(addQuad(p, -1, -1, 1, 1, 0.5));  // 0: A, in front
+    primitives.push_back(addQuad(p, -1, -1, 1, 1, -0.5)); // 1: B, behind A
     CpuOracle oracle;
     oracle.bind(p, viewOf(p, GetParam()), primitives);
     EXPECT_EQ(oracle.primitiveCount(), 2u);
@@ -68,13 +69,13 @@ TEST_P(CpuOracleSemantics, FrontQuadHidesBackQuad) {
     EXPECT_GT(finitePixels(oracle), 0u);
     const std::vector<float> after_draw(oracle.depthBuffer().begin(), oracle.depthBuffer().end());
     EXPECT_TRUE(oracle.anyBehind(1));
-    EXPECT_FALSE(oracle.anyBehind(0));  // itself: coplanar
+    EXPECT_FALSE(oracle.anyBehind(0)); // itself: coplanar
     // Queries leave the buffer alone.
     EXPECT_TRUE(std::equal(after_draw.begin(), after_draw.end(), oracle.depthBuffer().begin()));
 
     oracle.clear();
     EXPECT_EQ(finitePixels(oracle), 0u);
-    EXPECT_FALSE(oracle.anyBehind(1));  // nothing drawn: nothing is in front
+    EXPECT_FALSE(oracle.anyBehind(1)); // nothing drawn: nothing is in front
     oracle.draw(1);
     EXPECT_FALSE(oracle.anyBehind(0));
 
@@ -86,12 +87,13 @@ TEST_P(CpuOracleSemantics, FrontQuadHidesBackQuad) {
 TEST_P(CpuOracleSemantics, CoplanarAndIdenticalPrimitivesNeverOcclude) {
     TrianglePositions p;
     std::vector<PrimitiveRange> primitives;
-    primitives.push_back(addQuad(p, -1, -1, 1, 1, 0));        // 0
-    primitives.push_back(addQuad(p, -1, -1, 1, 1, 0));        // 1: identical to 0
+    primitives.push_back(addQuad(p, -1, -1, 1, 1, 0));         // 0
+    primitives.push_back(addQuad(p, -1, -1, 1, 1, 0));         // 1: identical to 0
     primitives.push_back(addQuad(p, -0.5, -0.7, 1.3, 0.8, 0)); // 2: coplanar, overlapping
     // 3: the same square split along the other diagonal.
     primitives.push_back({uint32_t(p.triangleCount()), 2});
-    for (const auto& c : {std::array<float, 2>{-1, -1}, {1, -1}, {-1, 1}, {1, -1}, {1, 1}, {-1, 1}}) {
+    for (const auto& c :
+         {std::array<float, 2>{-1, -1}, {1, -1}, {-1, 1}, {1, -1}, {1, 1}, {-1, 1}}) {
         p.x.push_back(c[0]);
         p.y.push_back(c[1]);
         p.z.push_back(0);
@@ -131,7 +133,7 @@ TEST_P(CpuOracleSemantics, PartialOverlapAndMultiTrianglePrimitives) {
     oracle.clear();
     oracle.draw(2);
     oracle.draw(3);
-    EXPECT_FALSE(oracle.anyBehind(0));  // 0 is in front of both
+    EXPECT_FALSE(oracle.anyBehind(0)); // 0 is in front of both
     oracle.draw(0);
     EXPECT_TRUE(oracle.anyBehind(2) == false && oracle.anyBehind(3));
     EXPECT_EQ(oracle.stats().draws, 5u);
@@ -151,8 +153,9 @@ TEST_P(CpuOracleSemantics, DepthsBeyondTheToleranceOcclude) {
     spec.ortho_direction = {0, 0, -1};
     const ViewProjection vp = frameCamera(spec, p.bounds(), 32, 24);
     const double d0 = vp.depthOf({0, 0, 0});
-    const double slope = (vp.depthOf({0, 0, -1e-3}) - d0) / 1e-3;  // d per unit of -z
-    const double near_step = 0.25 * kDepthTolerance / slope, far_step = 10.0 * kDepthTolerance / slope;
+    const double slope = (vp.depthOf({0, 0, -1e-3}) - d0) / 1e-3; // d per unit of -z
+    const double near_step = 0.25 * kDepthTolerance / slope,
+                 far_step = 10.0 * kDepthTolerance / slope;
     primitives.push_back(addQuad(p, -1, -1, 1, 1, -near_step));
     primitives.push_back(addQuad(p, -1, -1, 1, 1, -far_step));
     oracle.bind(p, vp, primitives);
@@ -175,10 +178,10 @@ TEST_P(CpuOracleSemantics, BlendingToleranceMakesNearTiesOccludeBothWays) {
     spec.ortho_direction = {0, 0, -1};
     const ViewProjection vp = frameCamera(spec, p.bounds(), 32, 24);
     const double slope = (vp.depthOf({0, 0, -1e-3}) - vp.depthOf({0, 0, 0})) / 1e-3;
-    primitives.push_back(addQuad(p, -0.5, -0.5, 1.5, 1.5, 0));  // 1: coplanar with 0
-    primitives.push_back(addQuad(p, -1, -1, 1, 1, 0.25 * kNegativeTolerance / slope));  // 2
+    primitives.push_back(addQuad(p, -0.5, -0.5, 1.5, 1.5, 0)); // 1: coplanar with 0
+    primitives.push_back(addQuad(p, -1, -1, 1, 1, 0.25 * kNegativeTolerance / slope)); // 2
     ASSERT_GT(0.25 * -kNegativeTolerance, 2 * kDepthTolerance);
-    primitives.push_back(addQuad(p, -1, -1, 1, 1, -0.1));  // 3: clearly behind 0
+    primitives.push_back(addQuad(p, -1, -1, 1, 1, -0.1)); // 3: clearly behind 0
     CpuOracle oracle;
     oracle.bind(p, vp, primitives);
     const auto behind = [&](uint32_t drawn, uint32_t queried) {
@@ -247,7 +250,8 @@ TEST(CpuOracle, RebindAndDegenerateGeometry) {
 // The depth buffer of a whole mesh equals, at every pixel away from an edge, the nearest hit of
 // a double-precision ray cast against every triangle.
 TEST(CpuOracle, SpotDepthBufferMatchesRayCast) {
-    const Result<Scene> loaded = loadScene(std::string(VISSORT_SOURCE_DIR) + "/assets/models/spot.obj");
+    const Result<Scene> loaded =
+        loadScene(std::string(VISSORT_SOURCE_DIR) + "/assets/models/spot.obj");
     ASSERT_TRUE(loaded) << loaded.error;
     const Scene& scene = *loaded.value;
     const TrianglePositions& p = scene.positions;
@@ -256,7 +260,8 @@ TEST(CpuOracle, SpotDepthBufferMatchesRayCast) {
     const std::vector<PrimitiveRange> primitives = scene.trianglePrimitives();
     CpuOracle oracle;
     oracle.bind(p, vp, primitives);
-    for (uint32_t i = 0; i < oracle.primitiveCount(); ++i) oracle.draw(i);
+    for (uint32_t i = 0; i < oracle.primitiveCount(); ++i)
+        oracle.draw(i);
     const auto depth = oracle.depthBuffer();
 
     // Pixels within the margin of any projected edge are skipped; the camera frames the whole
@@ -273,8 +278,10 @@ TEST(CpuOracle, SpotDepthBufferMatchesRayCast) {
         }
         const auto [min_x, max_x] = std::minmax({s[0][0], s[1][0], s[2][0]});
         const auto [min_y, max_y] = std::minmax({s[0][1], s[1][1], s[2][1]});
-        const int x0 = std::max(0, int(std::floor(min_x - 1))), x1 = std::min(int(size) - 1, int(max_x + 1));
-        const int y0 = std::max(0, int(std::floor(min_y - 1))), y1 = std::min(int(size) - 1, int(max_y + 1));
+        const int x0 = std::max(0, int(std::floor(min_x - 1))),
+                  x1 = std::min(int(size) - 1, int(max_x + 1));
+        const int y0 = std::max(0, int(std::floor(min_y - 1))),
+                  y1 = std::min(int(size) - 1, int(max_y + 1));
         for (int py = y0; py <= y1; ++py)
             for (int px = x0; px <= x1; ++px) {
                 const std::size_t pixel = std::size_t(py) * size + px;
@@ -284,8 +291,12 @@ TEST(CpuOracle, SpotDepthBufferMatchesRayCast) {
                     const auto& a = s[k];
                     const auto& b = s[(k + 1) % 3];
                     const double ex = b[0] - a[0], ey = b[1] - a[1], len2 = ex * ex + ey * ey;
-                    const double u = len2 > 0 ? std::clamp(((cx - a[0]) * ex + (cy - a[1]) * ey) / len2, 0.0, 1.0) : 0.0;
-                    if (std::hypot(cx - a[0] - u * ex, cy - a[1] - u * ey) < margin) near_edge[pixel] = 1;
+                    const double u =
+                        len2 > 0
+                            ? std::clamp(((cx - a[0]) * ex + (cy - a[1]) * ey) / len2, 0.0, 1.0)
+                            : 0.0;
+                    if (std::hypot(cx - a[0] - u * ex, cy - a[1] - u * ey) < margin)
+                        near_edge[pixel] = 1;
                 }
             }
     }
@@ -293,12 +304,14 @@ TEST(CpuOracle, SpotDepthBufferMatchesRayCast) {
     for (uint32_t py = 0; py < size; ++py)
         for (uint32_t px = 0; px < size; ++px) {
             const std::size_t pixel = std::size_t(py) * size + px;
-            if (near_edge[pixel]) continue;
+            if (near_edge[pixel])
+                continue;
             double nearest = INFINITY;
             for (uint32_t t : candidates[pixel]) {
-                const auto d = test::castDepth(vp, px + 0.5, py + 0.5, p.corner(3 * t), p.corner(3 * t + 1),
-                                               p.corner(3 * t + 2));
-                if (d) nearest = std::min(nearest, *d);
+                const auto d = test::castDepth(vp, px + 0.5, py + 0.5, p.corner(3 * t),
+                                               p.corner(3 * t + 1), p.corner(3 * t + 2));
+                if (d)
+                    nearest = std::min(nearest, *d);
             }
             ++compared;
             if (std::isinf(nearest)) {

@@ -22,7 +22,9 @@ using test::castDepth;
 using test::referenceCovers;
 using test::snappedScreen;
 
-detail::ClipVertex toVertex(const Clip& c) { return {c[0], c[1], c[2], c[3]}; }
+detail::ClipVertex toVertex(const Clip& c) {
+    return {c[0], c[1], c[2], c[3]};
+}
 
 Bounds unitCube() {
     Bounds b;
@@ -71,9 +73,9 @@ struct HitCounter {
 // need no clipping (in front of the near plane, inside the guard band).
 void expectCoverageMatches(const Clip& a, const Clip& b, const Clip& c, uint32_t width,
                            uint32_t height) {
-    const std::array<std::array<int64_t, 2>, 3> snapped{
-        snappedScreen(a, width, height), snappedScreen(b, width, height),
-        snappedScreen(c, width, height)};
+    const std::array<std::array<int64_t, 2>, 3> snapped{snappedScreen(a, width, height),
+                                                        snappedScreen(b, width, height),
+                                                        snappedScreen(c, width, height)};
     std::vector<uint8_t> expected(std::size_t(width) * height, 0);
     for (uint32_t py = 0; py < height; ++py)
         for (uint32_t px = 0; px < width; ++px)
@@ -99,11 +101,14 @@ Clip screenToClip(double sx, double sy, double d, uint32_t width, uint32_t heigh
 TEST(CpuRasterizer, CoverageMatchesExactReferenceOnHalfPixelGrid) {
     // Corners on a half-pixel grid put pixel centres exactly on edges and corners: the ties.
     std::mt19937 rng(1);
-    const std::array<std::array<uint32_t, 2>, 6> sizes{{{1, 1}, {3, 5}, {7, 3}, {16, 16}, {17, 13}, {31, 9}}};
+    const std::array<std::array<uint32_t, 2>, 6> sizes{
+        {{1, 1}, {3, 5}, {7, 3}, {16, 16}, {17, 13}, {31, 9}}};
     for (const auto& [width, height] : sizes) {
         std::uniform_int_distribution<int> gx(-4, int(2 * width) + 4), gy(-4, int(2 * height) + 4);
         for (int i = 0; i < 300; ++i) {
-            const auto corner = [&] { return screenToClip(gx(rng) * 0.5, gy(rng) * 0.5, 0.5, width, height); };
+            const auto corner = [&] {
+                return screenToClip(gx(rng) * 0.5, gy(rng) * 0.5, 0.5, width, height);
+            };
             expectCoverageMatches(corner(), corner(), corner(), width, height);
         }
     }
@@ -141,7 +146,7 @@ TEST(CpuRasterizer, DegenerateTrianglesDrawNothing) {
     const Clip a{0.1, 0.2, 0.5, 1}, b{0.4, -0.3, 0.5, 1};
     EXPECT_TRUE(rasterize(a, a, a, 8, 8).empty());
     EXPECT_TRUE(rasterize(a, b, a, 8, 8).empty());
-    const Clip mid{0.25, -0.05, 0.5, 1};  // on the segment ab
+    const Clip mid{0.25, -0.05, 0.5, 1}; // on the segment ab
     EXPECT_TRUE(rasterize(a, b, mid, 8, 8).empty());
     const double nan = std::nan("");
     EXPECT_TRUE(rasterize({nan, 0, 0.5, 1}, b, mid, 8, 8).empty());
@@ -168,22 +173,26 @@ TEST(CpuRasterizer, BothWindingsCoverTheSamePixels) {
 // past every side of the screen: every pixel centre is hit exactly once.
 TEST(CpuRasterizer, TiledGridCoversEveryPixelOnce) {
     std::mt19937 rng(5);
-    for (const auto& [width, height] : std::array<std::array<uint32_t, 2>, 3>{{{1, 1}, {37, 23}, {160, 120}}}) {
+    for (const auto& [width, height] :
+         std::array<std::array<uint32_t, 2>, 3>{{{1, 1}, {37, 23}, {160, 120}}}) {
         const int cells = 12;
         std::uniform_real_distribution<double> jitter(-0.3, 0.3);
         std::vector<Clip> grid;
         for (int j = 0; j <= cells; ++j)
             for (int i = 0; i <= cells; ++i) {
                 const bool border_x = i == 0 || i == cells, border_y = j == 0 || j == cells;
-                const double sx = (i - 1.0) / (cells - 2) * width + (border_x ? 0 : jitter(rng) * width / cells);
-                const double sy = (j - 1.0) / (cells - 2) * height + (border_y ? 0 : jitter(rng) * height / cells);
+                const double sx =
+                    (i - 1.0) / (cells - 2) * width + (border_x ? 0 : jitter(rng) * width / cells);
+                const double sy = (j - 1.0) / (cells - 2) * height +
+                                  (border_y ? 0 : jitter(rng) * height / cells);
                 grid.push_back(screenToClip(sx, sy, 0.5, width, height));
             }
         HitCounter counter{width, height};
         const auto at = [&](int i, int j) { return grid[std::size_t(j) * (cells + 1) + i]; };
         for (int j = 0; j < cells; ++j)
             for (int i = 0; i < cells; ++i) {
-                const Clip p00 = at(i, j), p10 = at(i + 1, j), p01 = at(i, j + 1), p11 = at(i + 1, j + 1);
+                const Clip p00 = at(i, j), p10 = at(i + 1, j), p01 = at(i, j + 1),
+                           p11 = at(i + 1, j + 1);
                 const bool flip = rng() & 1, diagonal = rng() & 1;
                 const auto add = [&](const Clip& a, const Clip& b, const Clip& c) {
                     flip ? counter.add(a, c, b) : counter.add(a, b, c);
@@ -219,7 +228,8 @@ TEST(CpuRasterizer, TriangleFansCoverEveryPixelOnce) {
         for (int k = 0; k < spokes; ++k) {
             const auto& p = ring[k];
             const auto& q = ring[(k + 1) % spokes];
-            counter.add(screenToClip(cx, cy, 0.5, width, height), screenToClip(p[0], p[1], 0.5, width, height),
+            counter.add(screenToClip(cx, cy, 0.5, width, height),
+                        screenToClip(p[0], p[1], 0.5, width, height),
                         screenToClip(q[0], q[1], 0.5, width, height));
         }
         for (uint32_t py = 0; py < height; ++py)
@@ -232,7 +242,8 @@ TEST(CpuRasterizer, TriangleFansCoverEveryPixelOnce) {
                     const auto& p = ring[k];
                     const auto& q = ring[(k + 1) % spokes];
                     const double ex = q[0] - p[0], ey = q[1] - p[1];
-                    const double dist = (ex * (py + 0.5 - p[1]) - ey * (px + 0.5 - p[0])) / std::hypot(ex, ey);
+                    const double dist =
+                        (ex * (py + 0.5 - p[1]) - ey * (px + 0.5 - p[0])) / std::hypot(ex, ey);
                     inside = std::min(inside, dist);
                 }
                 if (inside > 1e-2) {
@@ -255,7 +266,7 @@ TEST(CpuRasterizer, TiledFloorCrossingNearPlaneIsWatertight) {
     spec.target = {0.2, -0.1, -1};
     Bounds bounds;
     bounds.add({-1, -1, -4});
-    bounds.add({1, 1, -2});  // near ~ 1.98: the floor under the camera is clipped by it
+    bounds.add({1, 1, -2}); // near ~ 1.98: the floor under the camera is clipped by it
     const ViewProjection vp = frameCamera(spec, bounds, width, height);
     const int cells = 10;
     const double extent = 6.0, floor_y = -0.5;
@@ -286,9 +297,12 @@ TEST(CpuRasterizer, TiledFloorCrossingNearPlaneIsWatertight) {
             const std::optional<bool> a = castCoverage(vp, px, py, c00, c10, c11);
             const std::optional<bool> b = castCoverage(vp, px, py, c00, c11, c01);
             std::optional<bool> expected;
-            if ((a && *a) || (b && *b)) expected = true;
-            else if (a && b) expected = false;
-            if (!expected) continue;
+            if ((a && *a) || (b && *b))
+                expected = true;
+            else if (a && b)
+                expected = false;
+            if (!expected)
+                continue;
             EXPECT_EQ(hits, int(*expected)) << px << "," << py;
             ++checked;
             covered += hits;
@@ -302,14 +316,16 @@ TEST(CpuRasterizer, TiledFloorCrossingNearPlaneIsWatertight) {
 void expectCoverageMatchesRayCast(const ViewProjection& vp, const std::array<Vec3, 3>& t,
                                   int& covered_pixels) {
     std::vector<uint8_t> got(std::size_t(vp.width) * vp.height, 0);
-    for (const Fragment& f : rasterize(vp.toClip(t[0]), vp.toClip(t[1]), vp.toClip(t[2]), vp.width, vp.height))
+    for (const Fragment& f :
+         rasterize(vp.toClip(t[0]), vp.toClip(t[1]), vp.toClip(t[2]), vp.width, vp.height))
         ++got[std::size_t(f.py) * vp.width + f.px];
     for (uint32_t py = 0; py < vp.height; ++py)
         for (uint32_t px = 0; px < vp.width; ++px) {
             const int hits = got[std::size_t(py) * vp.width + px];
             ASSERT_LE(hits, 1);
             const std::optional<bool> expected = castCoverage(vp, px, py, t[0], t[1], t[2]);
-            if (!expected) continue;
+            if (!expected)
+                continue;
             ASSERT_EQ(hits, int(*expected)) << "pixel " << px << "," << py;
             covered_pixels += hits;
         }
@@ -326,10 +342,12 @@ TEST(CpuRasterizer, NearPlaneCrossingMatchesRayCast) {
     const ViewProjection vp = frameCamera(spec, bounds, width, height);
     int covered = 0;
     // The camera stands over a big floor triangle whose corners are behind the eye and far away.
-    expectCoverageMatchesRayCast(vp, {Vec3{-50, -0.5, 20}, Vec3{50, -0.5, 20}, Vec3{0.3, -0.4, -60}}, covered);
+    expectCoverageMatchesRayCast(
+        vp, {Vec3{-50, -0.5, 20}, Vec3{50, -0.5, 20}, Vec3{0.3, -0.4, -60}}, covered);
     EXPECT_GT(covered, int(width * height) / 4);
     // A wall the eye is inside of the plane of, tilted so that it crosses the near plane on screen.
-    expectCoverageMatchesRayCast(vp, {Vec3{-0.6, -3, 1}, Vec3{0.5, 3, 2}, Vec3{0.4, -0.2, -9}}, covered);
+    expectCoverageMatchesRayCast(vp, {Vec3{-0.6, -3, 1}, Vec3{0.5, 3, 2}, Vec3{0.4, -0.2, -9}},
+                                 covered);
     // A triangle entirely behind the eye draws nothing.
     int behind = 0;
     expectCoverageMatchesRayCast(vp, {Vec3{-1, -1, 1}, Vec3{1, -1, 1}, Vec3{0, 1, 1}}, behind);
@@ -366,18 +384,25 @@ TEST(CpuRasterizer, DepthMatchesRayPlaneIntersection) {
         const ViewProjection vp = makeView(projection, 48, 40);
         std::size_t fragments = 0;
         for (int i = 0; i < 200; ++i) {
-            const Vec3 p0{coord(rng), coord(rng), coord(rng)}, p1{coord(rng), coord(rng), coord(rng)},
-                p2{coord(rng), coord(rng), coord(rng)};
-            const Vec3 e1{p1.x - p0.x, p1.y - p0.y, p1.z - p0.z}, e2{p2.x - p0.x, p2.y - p0.y, p2.z - p0.z};
-            const Vec3 n{e1.y * e2.z - e1.z * e2.y, e1.z * e2.x - e1.x * e2.z, e1.x * e2.y - e1.y * e2.x};
-            for (const Fragment& f : rasterize(vp.toClip(p0), vp.toClip(p1), vp.toClip(p2), vp.width, vp.height)) {
+            const Vec3 p0{coord(rng), coord(rng), coord(rng)},
+                p1{coord(rng), coord(rng), coord(rng)}, p2{coord(rng), coord(rng), coord(rng)};
+            const Vec3 e1{p1.x - p0.x, p1.y - p0.y, p1.z - p0.z},
+                e2{p2.x - p0.x, p2.y - p0.y, p2.z - p0.z};
+            const Vec3 n{e1.y * e2.z - e1.z * e2.y, e1.z * e2.x - e1.x * e2.z,
+                         e1.x * e2.y - e1.y * e2.x};
+            for (const Fragment& f :
+                 rasterize(vp.toClip(p0), vp.toClip(p1), vp.toClip(p2), vp.width, vp.height)) {
                 Vec3 origin, dir;
                 vp.pixelRay(f.px + 0.5, f.py + 0.5, origin, dir);
                 const double denom = n.x * dir.x + n.y * dir.y + n.z * dir.z;
                 // Nearly edge-on triangles: depth varies too fast across a pixel to compare.
-                if (std::abs(denom) < 1e-3 * std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z)) continue;
-                const double t = (n.x * (p0.x - origin.x) + n.y * (p0.y - origin.y) + n.z * (p0.z - origin.z)) / denom;
-                const double expected = vp.depthOf({origin.x + t * dir.x, origin.y + t * dir.y, origin.z + t * dir.z});
+                if (std::abs(denom) < 1e-3 * std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z))
+                    continue;
+                const double t =
+                    (n.x * (p0.x - origin.x) + n.y * (p0.y - origin.y) + n.z * (p0.z - origin.z)) /
+                    denom;
+                const double expected =
+                    vp.depthOf({origin.x + t * dir.x, origin.y + t * dir.y, origin.z + t * dir.z});
                 ASSERT_NEAR(f.depth, expected, 1e-6 * std::abs(expected)) << f.px << "," << f.py;
                 ++fragments;
             }
@@ -388,9 +413,9 @@ TEST(CpuRasterizer, DepthMatchesRayPlaneIntersection) {
 
 TEST(CpuRasterizer, VisitCanStopEarly) {
     int visits = 0;
-    const bool stopped = detail::rasterizeTriangle(
-        {-1, -1, 0.5, 1}, {3, -1, 0.5, 1}, {-1, 3, 0.5, 1}, 10, 10,
-        [&](uint32_t, uint32_t, float) { return ++visits == 5; });
+    const bool stopped =
+        detail::rasterizeTriangle({-1, -1, 0.5, 1}, {3, -1, 0.5, 1}, {-1, 3, 0.5, 1}, 10, 10,
+                                  [&](uint32_t, uint32_t, float) { return ++visits == 5; });
     EXPECT_TRUE(stopped);
     EXPECT_EQ(visits, 5);
 }
@@ -399,15 +424,16 @@ TEST(CpuRasterizer, VisitCanStopEarly) {
 // next to halves, zero, the limits and random values over the whole allowed range.
 TEST(CpuRasterizer, SnapToFixedRoundsLikeLlround) {
     const double limit = double(detail::kMaxSnapped) / double(detail::kSubpixelScale);
-    std::vector<double> values = {0.0, -0.0, limit, -limit, 1.0 / 512, -1.0 / 512, 3.0 / 512,
-                                  -3.0 / 512, 1000.5 / 256, -1000.5 / 256};
+    std::vector<double> values = {0.0,        -0.0,      limit,      -limit,       1.0 / 512,
+                                  -1.0 / 512, 3.0 / 512, -3.0 / 512, 1000.5 / 256, -1000.5 / 256};
     for (double half : {0.5, 1.5, 2.5, 12345.5, -0.5, -1.5, -2.5, -12345.5}) {
         const double v = half / 256;
         values.insert(values.end(), {v, std::nextafter(v, 0.0), std::nextafter(v, 2 * v)});
     }
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> any(-limit, limit), small(-4, 4);
-    for (int i = 0; i < 100000; ++i) values.push_back(i % 2 ? any(rng) : small(rng));
+    for (int i = 0; i < 100000; ++i)
+        values.push_back(i % 2 ? any(rng) : small(rng));
     for (double v : values)
         ASSERT_EQ(detail::snapToFixed(v), std::llround(v * double(detail::kSubpixelScale))) << v;
 }

@@ -62,15 +62,15 @@ std::vector<FastCpuOracleOptions> rowWalksAndThreads() {
 
 std::string describe(const FastCpuOracleOptions& options) {
     return std::string(options.mode == RasterMode::exact ? "exact, " : "conservative, ") +
-           (options.allow_simd ? "simd" : "scalar") + ", " +
-           std::to_string(options.threads) + " threads";
+           (options.allow_simd ? "simd" : "scalar") + ", " + std::to_string(options.threads) +
+           " threads";
 }
 
 // Random clears, draws and queries, in the same order on both oracles; every answer and, after
 // every draw, the depth buffers compared. Returns how many queries answered true (so that a test
 // can check it exercised both answers); adds the fast oracle's tile counts to totals if given.
-std::size_t compareInterleavingWith(const FastCpuOracleOptions& options,
-                                    const TrianglePositions& p, const ViewProjection& view,
+std::size_t compareInterleavingWith(const FastCpuOracleOptions& options, const TrianglePositions& p,
+                                    const ViewProjection& view,
                                     std::span<const PrimitiveRange> primitives, uint32_t seed,
                                     int operations, FastCpuOracleStats* totals,
                                     float tolerance = kDepthTolerance) {
@@ -85,7 +85,8 @@ std::size_t compareInterleavingWith(const FastCpuOracleOptions& options,
     EXPECT_EQ(fast.width(), reference.width());
     EXPECT_EQ(fast.height(), reference.height());
     EXPECT_TRUE(sameBits(fast.depthBuffer(), reference.depthBuffer()));
-    if (primitives.empty()) return 0;
+    if (primitives.empty())
+        return 0;
     std::mt19937 rng(seed);
     std::uniform_int_distribution<uint32_t> pick(0, uint32_t(primitives.size()) - 1);
     std::uniform_real_distribution<double> action(0, 1);
@@ -135,7 +136,8 @@ std::size_t compareInterleaving(const TrianglePositions& p, const ViewProjection
         for (const FastCpuOracleOptions& options : rowWalks()) {
             const std::size_t b = compareInterleavingWith(options, p, view, primitives, seed,
                                                           operations, totals, tolerance);
-            if (first) behind = b;
+            if (first)
+                behind = b;
             first = false;
         }
     return behind;
@@ -146,7 +148,8 @@ std::size_t compareInterleaving(const TrianglePositions& p, const ViewProjection
 // behind is filled with a marker first, so an entry a pass must not touch is checked too.
 void comparePasses(const TrianglePositions& p, const ViewProjection& view,
                    std::span<const PrimitiveRange> primitives, uint32_t seed) {
-    if (primitives.empty()) return;
+    if (primitives.empty())
+        return;
     for (const FastCpuOracleOptions& options : rowWalksAndThreads()) {
         SCOPED_TRACE(describe(options));
         CpuOracle reference(options.mode);
@@ -156,11 +159,13 @@ void comparePasses(const TrianglePositions& p, const ViewProjection& view,
         std::mt19937 rng(seed);
         for (int round = 0; round < 6; ++round) {
             std::vector<uint32_t> sequence(primitives.size());
-            for (uint32_t i = 0; i < sequence.size(); ++i) sequence[i] = i;
+            for (uint32_t i = 0; i < sequence.size(); ++i)
+                sequence[i] = i;
             std::shuffle(sequence.begin(), sequence.end(), rng);
             sequence.resize(1 + rng() % sequence.size());
             std::vector<uint8_t> query(sequence.size());
-            for (uint8_t& q : query) q = uint8_t(rng() % 4 != 0);
+            for (uint8_t& q : query)
+                q = uint8_t(rng() % 4 != 0);
             std::vector<uint8_t> expected(sequence.size(), 7), got(sequence.size(), 7);
             const int kind = round % 3;
             if (kind == 0) {
@@ -274,7 +279,8 @@ TEST_P(FastCpuOracleMatches, RandomSoupOfSingleTriangles) {
         const TrianglePositions p = randomSoup(seed, 200, 0.02, 0.6);
         const std::vector<PrimitiveRange> primitives = [&] {
             std::vector<PrimitiveRange> r;
-            for (uint32_t t = 0; t < p.triangleCount(); ++t) r.push_back({t, 1});
+            for (uint32_t t = 0; t < p.triangleCount(); ++t)
+                r.push_back({t, 1});
             return r;
         }();
         const ViewProjection view = viewOf(p.bounds(), c.projection, c.width, c.height);
@@ -282,7 +288,7 @@ TEST_P(FastCpuOracleMatches, RandomSoupOfSingleTriangles) {
         compareDrawAllThenQueryAll(p, view, primitives);
     }
     if (c.width * c.height >= 17 * 13) {
-        EXPECT_GT(behind, 0u);  // both answers exercised
+        EXPECT_GT(behind, 0u); // both answers exercised
     }
 }
 
@@ -290,9 +296,11 @@ TEST_P(FastCpuOracleMatches, SoupSeenFromInsideCrossesTheNearPlaneAndScreenEdges
     const Case c = GetParam();
     const TrianglePositions p = randomSoup(11, 300, 0.1, 1.0);
     std::vector<PrimitiveRange> primitives;
-    for (uint32_t t = 0; t + 3 <= p.triangleCount(); t += 3) primitives.push_back({t, 3});
+    for (uint32_t t = 0; t + 3 <= p.triangleCount(); t += 3)
+        primitives.push_back({t, 3});
     // The eye inside the soup: many triangles cross the near plane or lie behind the eye.
-    const ViewProjection view = viewOf(p.bounds(), c.projection, c.width, c.height, {0.1, 0.05, 0.2});
+    const ViewProjection view =
+        viewOf(p.bounds(), c.projection, c.width, c.height, {0.1, 0.05, 0.2});
     compareInterleaving(p, view, primitives, 5, 1500);
     compareDrawAllThenQueryAll(p, view, primitives);
 }
@@ -301,9 +309,11 @@ TEST_P(FastCpuOracleMatches, SharedEdgeGridLayers) {
     const Case c = GetParam();
     const TrianglePositions p = sharedEdgeGrid(9, 3);
     std::vector<PrimitiveRange> per_triangle, per_layer;
-    for (uint32_t t = 0; t < p.triangleCount(); ++t) per_triangle.push_back({t, 1});
+    for (uint32_t t = 0; t < p.triangleCount(); ++t)
+        per_triangle.push_back({t, 1});
     const uint32_t per = uint32_t(p.triangleCount() / 3);
-    for (uint32_t l = 0; l < 3; ++l) per_layer.push_back({l * per, per});
+    for (uint32_t l = 0; l < 3; ++l)
+        per_layer.push_back({l * per, per});
     const ViewProjection view = viewOf(p.bounds(), c.projection, c.width, c.height);
     compareInterleaving(p, view, per_triangle, 7, 2000);
     compareInterleaving(p, view, per_layer, 8, 200);
@@ -317,12 +327,13 @@ TEST_P(FastCpuOracleMatches, BuiltinSlabsAndSoup) {
         const Result<Scene> loaded = loadScene(spec);
         ASSERT_TRUE(loaded) << loaded.error;
         const Scene& scene = *loaded.value;
-        const ViewProjection view =
-            frameCamera([&] {
+        const ViewProjection view = frameCamera(
+            [&] {
                 CameraSpec s = defaultCamera(scene.positions.bounds());
                 s.projection = c.projection;
                 return s;
-            }(), scene.positions.bounds(), c.width, c.height);
+            }(),
+            scene.positions.bounds(), c.width, c.height);
         const auto triangles = scene.trianglePrimitives();
         const auto objects = scene.objectPrimitives();
         compareInterleaving(scene.positions, view, triangles, 21, 1500);
@@ -341,11 +352,13 @@ INSTANTIATE_TEST_SUITE_P(
     caseName);
 
 TEST(FastCpuOracle, SpotMeshBothProjections) {
-    const Result<Scene> loaded = loadScene(std::string(VISSORT_SOURCE_DIR) + "/assets/models/spot.obj");
+    const Result<Scene> loaded =
+        loadScene(std::string(VISSORT_SOURCE_DIR) + "/assets/models/spot.obj");
     ASSERT_TRUE(loaded) << loaded.error;
     const TrianglePositions& p = loaded.value->positions;
     std::vector<PrimitiveRange> triangles;
-    for (uint32_t t = 0; t < p.triangleCount(); ++t) triangles.push_back({t, 1});
+    for (uint32_t t = 0; t < p.triangleCount(); ++t)
+        triangles.push_back({t, 1});
     FastCpuOracleStats totals;
     std::size_t behind = 0;
     for (Projection projection : {Projection::perspective, Projection::orthographic})
@@ -366,7 +379,8 @@ TEST(FastCpuOracle, SpotMeshBothProjections) {
 TEST(FastCpuOracle, LargeViewportWithBigTriangles) {
     const TrianglePositions p = randomSoup(99, 12, 0.8, 2.0);
     std::vector<PrimitiveRange> primitives;
-    for (uint32_t t = 0; t < p.triangleCount(); ++t) primitives.push_back({t, 1});
+    for (uint32_t t = 0; t < p.triangleCount(); ++t)
+        primitives.push_back({t, 1});
     for (Projection projection : {Projection::perspective, Projection::orthographic}) {
         const ViewProjection view = viewOf(p.bounds(), projection, 1600, 1200);
         FastCpuOracleStats totals;
@@ -405,46 +419,48 @@ TEST(FastCpuOracle, WholeTilesAreCulledAndAcceptedWithTheReferenceAnswers) {
     b.add({3, 3, 1});
     const ViewProjection view = viewOf(b, Projection::orthographic, 256, 192, {0, 0, 4});
     for (const FastCpuOracleOptions& options : rowWalks()) {
-    SCOPED_TRACE(describe(options));
-    CpuOracle reference(options.mode);
-    FastCpuOracle fast(options);
-    reference.bind(p, view, primitives);
-    fast.bind(p, view, primitives);
-    const auto both_draw = [&](uint32_t id) {
-        reference.draw(id);
-        fast.draw(id);
-        EXPECT_TRUE(sameBits(fast.depthBuffer(), reference.depthBuffer())) << "after draw " << id;
-    };
-    const auto both_query = [&](uint32_t id) {
-        const bool expected = reference.anyBehind(id);
-        EXPECT_EQ(fast.anyBehind(id), expected) << "query " << id;
-        return expected;
-    };
+        SCOPED_TRACE(describe(options));
+        CpuOracle reference(options.mode);
+        FastCpuOracle fast(options);
+        reference.bind(p, view, primitives);
+        fast.bind(p, view, primitives);
+        const auto both_draw = [&](uint32_t id) {
+            reference.draw(id);
+            fast.draw(id);
+            EXPECT_TRUE(sameBits(fast.depthBuffer(), reference.depthBuffer()))
+                << "after draw " << id;
+        };
+        const auto both_query = [&](uint32_t id) {
+            const bool expected = reference.anyBehind(id);
+            EXPECT_EQ(fast.anyBehind(id), expected) << "query " << id;
+            return expected;
+        };
 
-    // The view is tilted, so the squares are sloped in depth: in conservative mode a primitive's
-    // farthest depth over a pixel lies behind its own nearest, and a self-query answers "behind".
-    const bool self_behind = options.mode == RasterMode::conservative;
-    both_draw(0);
-    EXPECT_TRUE(both_query(1));
-    EXPECT_EQ(both_query(0), self_behind);  // itself: coplanar tiles culled by depth bounds
-    EXPECT_GT(fast.stats().tiles_culled, 0u);
-    fast.resetStats();
-    both_draw(1);  // entirely behind: the tiles inside square 0 culled by depth bounds
-    EXPECT_GT(fast.stats().tiles_culled, 0u);
+        // The view is tilted, so the squares are sloped in depth: in conservative mode a
+        // primitive's farthest depth over a pixel lies behind its own nearest, and a self-query
+        // answers "behind".
+        const bool self_behind = options.mode == RasterMode::conservative;
+        both_draw(0);
+        EXPECT_TRUE(both_query(1));
+        EXPECT_EQ(both_query(0), self_behind); // itself: coplanar tiles culled by depth bounds
+        EXPECT_GT(fast.stats().tiles_culled, 0u);
+        fast.resetStats();
+        both_draw(1); // entirely behind: the tiles inside square 0 culled by depth bounds
+        EXPECT_GT(fast.stats().tiles_culled, 0u);
 
-    // The screen-filling near triangle makes every tile's bounds exact; the far one is then
-    // behind in the first tile, which is wholly covered: accepted without per-pixel work.
-    reference.clear();
-    fast.clear();
-    both_draw(2);
-    fast.resetStats();
-    EXPECT_TRUE(both_query(3));
-    EXPECT_EQ(fast.stats().tiles_accepted, 1u);
-    EXPECT_EQ(both_query(2), self_behind);
-    EXPECT_EQ(both_query(0), self_behind);  // on the plane of 2
-    EXPECT_TRUE(both_query(1));
-    both_draw(3);
-    both_draw(1);
+        // The screen-filling near triangle makes every tile's bounds exact; the far one is then
+        // behind in the first tile, which is wholly covered: accepted without per-pixel work.
+        reference.clear();
+        fast.clear();
+        both_draw(2);
+        fast.resetStats();
+        EXPECT_TRUE(both_query(3));
+        EXPECT_EQ(fast.stats().tiles_accepted, 1u);
+        EXPECT_EQ(both_query(2), self_behind);
+        EXPECT_EQ(both_query(0), self_behind); // on the plane of 2
+        EXPECT_TRUE(both_query(1));
+        both_draw(3);
+        both_draw(1);
     }
 }
 
@@ -456,9 +472,10 @@ TEST(FastCpuOracle, EmptyPrimitivesAndRebind) {
     FastCpuOracle fast;
     fast.bind(p, view, primitives);
     fast.draw(1);
-    fast.bind(p, viewOf(p.bounds(), Projection::orthographic, 7, 9), primitives);  // clears
+    fast.bind(p, viewOf(p.bounds(), Projection::orthographic, 7, 9), primitives); // clears
     EXPECT_EQ(fast.depthBuffer().size(), 63u);
-    for (float d : fast.depthBuffer()) EXPECT_EQ(d, std::numeric_limits<float>::infinity());
+    for (float d : fast.depthBuffer())
+        EXPECT_EQ(d, std::numeric_limits<float>::infinity());
     EXPECT_FALSE(fast.anyBehind(1));
     fast.bind(p, view, {});
     EXPECT_EQ(fast.primitiveCount(), 0u);
@@ -472,8 +489,8 @@ TEST(FastCpuOracle, OptionsChooseTheRowWalkAndThreads) {
     EXPECT_FALSE(scalar.usesSimd());
     EXPECT_EQ(scalar.threadCount(), 3u);
     const FastCpuOracle defaults;
-    EXPECT_EQ(defaults.threadCount(), 1u);  // all work on the calling thread unless asked
-    options.threads = 0;                    // one per core
+    EXPECT_EQ(defaults.threadCount(), 1u); // all work on the calling thread unless asked
+    options.threads = 0;                   // one per core
     const FastCpuOracle per_core(options);
     EXPECT_EQ(per_core.threadCount(), std::clamp(std::thread::hardware_concurrency(), 1u, 256u));
     options.threads = 1000;
@@ -483,7 +500,8 @@ TEST(FastCpuOracle, OptionsChooseTheRowWalkAndThreads) {
 TEST(FastCpuOracle, PassesOnALargeViewportMatchWithEveryBandCount) {
     const TrianglePositions p = randomSoup(5, 400, 0.05, 0.8);
     std::vector<PrimitiveRange> primitives;
-    for (uint32_t t = 0; t < p.triangleCount(); ++t) primitives.push_back({t, 1});
+    for (uint32_t t = 0; t < p.triangleCount(); ++t)
+        primitives.push_back({t, 1});
     for (Projection projection : {Projection::perspective, Projection::orthographic})
         comparePasses(p, viewOf(p.bounds(), projection, 803, 611), primitives, 17);
 }
@@ -504,7 +522,8 @@ TEST(FastCpuOracle, VisSortOrderMatchesReferenceOnBunnies) {
         for (RasterMode mode : {RasterMode::exact, RasterMode::conservative}) {
             const auto& primitives = mode == RasterMode::exact ? triangles : objects;
             std::vector<uint32_t> start(primitives.size());
-            for (uint32_t i = 0; i < start.size(); ++i) start[i] = uint32_t(start.size()) - 1 - i;
+            for (uint32_t i = 0; i < start.size(); ++i)
+                start[i] = uint32_t(start.size()) - 1 - i;
             CpuOracle reference(mode);
             reference.bind(scene.positions, view, primitives);
             const VisibilityOrder expected = visSort(reference, start);
@@ -513,7 +532,8 @@ TEST(FastCpuOracle, VisSortOrderMatchesReferenceOnBunnies) {
             // Determinism: the same order, cycles, counts and final buffer for every row walk
             // and thread count.
             for (const FastCpuOracleOptions& options : rowWalksAndThreads()) {
-                if (options.mode != mode) continue;
+                if (options.mode != mode)
+                    continue;
                 SCOPED_TRACE(describe(options));
                 FastCpuOracle fast(options);
                 fast.bind(scene.positions, view, primitives);
@@ -569,7 +589,8 @@ TEST(FastCpuOracleThreads, TwoOraclesOnTwoThreadsMatchSequentialRuns) {
     const Scene& scene = *loaded.value;
     const auto primitives = scene.trianglePrimitives();
     std::vector<uint32_t> start(primitives.size());
-    for (uint32_t i = 0; i < start.size(); ++i) start[i] = uint32_t(start.size()) - 1 - i;
+    for (uint32_t i = 0; i < start.size(); ++i)
+        start[i] = uint32_t(start.size()) - 1 - i;
     FastCpuOracleOptions options;
     options.threads = 2;
     options.parallel_threshold = 0;
@@ -592,7 +613,8 @@ TEST(FastCpuOracleThreads, TwoOraclesOnTwoThreadsMatchSequentialRuns) {
             for (int round = 0; round < kRounds; ++round)
                 concurrent[k].push_back(sortWith(options, scene, views[k], primitives, start));
         });
-    for (std::thread& t : threads) t.join();
+    for (std::thread& t : threads)
+        t.join();
     for (int k = 0; k < 2; ++k)
         for (int round = 0; round < kRounds; ++round) {
             SCOPED_TRACE("oracle " + std::to_string(k) + ", round " + std::to_string(round));
@@ -605,12 +627,13 @@ TEST(FastCpuOracleThreads, TwoOraclesOnTwoThreadsMatchSequentialRuns) {
 TEST(FastCpuOracleThreads, CallerPoolIsUsed) {
     const TrianglePositions p = randomSoup(11, 300, 0.05, 0.8);
     std::vector<PrimitiveRange> primitives;
-    for (uint32_t t = 0; t < p.triangleCount(); ++t) primitives.push_back({t, 1});
+    for (uint32_t t = 0; t < p.triangleCount(); ++t)
+        primitives.push_back({t, 1});
     const ViewProjection view = viewOf(p.bounds(), Projection::perspective, 200, 150);
     WorkerPool pool(3);
     EXPECT_EQ(pool.threadCount(), 3u);
     FastCpuOracleOptions options;
-    options.threads = 2;  // ignored: the pool's count is used
+    options.threads = 2; // ignored: the pool's count is used
     options.parallel_threshold = 0;
     options.pool = &pool;
     FastCpuOracle fast(options);
@@ -619,7 +642,8 @@ TEST(FastCpuOracleThreads, CallerPoolIsUsed) {
     fast.bind(p, view, primitives);
     reference.bind(p, view, primitives);
     std::vector<uint32_t> sequence(primitives.size());
-    for (uint32_t i = 0; i < sequence.size(); ++i) sequence[i] = i;
+    for (uint32_t i = 0; i < sequence.size(); ++i)
+        sequence[i] = i;
     const std::vector<uint8_t> query(sequence.size(), 1);
     std::vector<uint8_t> expected(sequence.size()), got(sequence.size());
     const uint64_t shared_runs = WorkerPool::shared().runCount();
@@ -645,11 +669,12 @@ TEST(FastCpuOracleThreads, WorkerPoolRunsFromSeveralThreadsTakeTurns) {
     WorkerPool pool(2);
     constexpr int kRuns = 200;
     constexpr uint32_t kCallers = 3;
-    std::array<std::array<uint32_t, 4>, kCallers> counts{};  // per caller, per task index
+    std::array<std::array<uint32_t, 4>, kCallers> counts{}; // per caller, per task index
     std::array<std::thread, kCallers> callers;
     for (uint32_t c = 0; c < kCallers; ++c)
         callers[c] = std::thread([&, c] {
-            if (c == 2) pool.reserve(4);
+            if (c == 2)
+                pool.reserve(4);
             for (int r = 0; r < kRuns; ++r) {
                 const uint32_t tasks = std::min<uint32_t>(1 + uint32_t(r) % 4, pool.threadCount());
                 // Each task writes its own counter: another caller's run never overlaps.
@@ -661,11 +686,13 @@ TEST(FastCpuOracleThreads, WorkerPoolRunsFromSeveralThreadsTakeTurns) {
                     &counts[c]);
             }
         });
-    for (std::thread& t : callers) t.join();
+    for (std::thread& t : callers)
+        t.join();
     EXPECT_EQ(pool.threadCount(), 4u);
     EXPECT_EQ(pool.runCount(), uint64_t(kRuns) * kCallers);
-    for (uint32_t c = 0; c < kCallers; ++c) EXPECT_EQ(counts[c][0], uint32_t(kRuns));
-    pool.reserve(2);  // never shrinks
+    for (uint32_t c = 0; c < kCallers; ++c)
+        EXPECT_EQ(counts[c][0], uint32_t(kRuns));
+    pool.reserve(2); // never shrinks
     EXPECT_EQ(pool.threadCount(), 4u);
 }
 

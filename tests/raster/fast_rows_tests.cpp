@@ -7,14 +7,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
 #include <limits>
 #include <random>
-#include <vector>
-#include <algorithm>
 #include <string>
+#include <vector>
 
 #include "vissort/geometry_oracle.h"
 
@@ -54,9 +54,10 @@ RandomWalk makeWalk(std::mt19937_64& rng, EdgeScale scale) {
         return std::uniform_int_distribution<int64_t>(lo, hi)(rng);
     };
     RandomWalk r{};
-    for (float& d : r.depths) d = unit(rng) < 0.2 ? std::numeric_limits<float>::infinity() : float(0.3 + 0.4 * unit(rng));
+    for (float& d : r.depths)
+        d = unit(rng) < 0.2 ? std::numeric_limits<float>::infinity() : float(0.3 + 0.4 * unit(rng));
     TileWalk& w = r.walk;
-    w.origin = nullptr;  // set by the caller to its copy of the depths
+    w.origin = nullptr; // set by the caller to its copy of the depths
     w.vx0 = int32_t(8 * between(0, 200));
     w.y0 = int32_t(between(0, 1600));
     w.lane_first = int32_t(between(0, 7));
@@ -105,7 +106,8 @@ bool sameBits(const TileDepths& a, const TileDepths& b) {
 TEST(FastRows, Avx2WalksMatchThePortableOnes) {
     bool uses_simd = false;
     const RowKernels simd = selectRowKernels(true, uses_simd);
-    if (!uses_simd) GTEST_SKIP() << "this CPU has no AVX2: only the portable walks run here";
+    if (!uses_simd)
+        GTEST_SKIP() << "this CPU has no AVX2: only the portable walks run here";
     const RowKernels scalar = scalarRowKernels();
     std::mt19937_64 rng(41);
     for (EdgeScale scale : {EdgeScale::small, EdgeScale::at_int32_limit, EdgeScale::huge}) {
@@ -113,7 +115,7 @@ TEST(FastRows, Avx2WalksMatchThePortableOnes) {
         for (int i = 0; i < 20000; ++i) {
             SCOPED_TRACE("scale " + std::to_string(int(scale)) + ", walk " + std::to_string(i));
             RandomWalk r = makeWalk(rng, scale);
-            const int32_t first_row = kTileRowFloats - r.walk.rows;  // the walk's rows of the tile
+            const int32_t first_row = kTileRowFloats - r.walk.rows; // the walk's rows of the tile
             TileDepths a = r.depths, b = r.depths;
             TileWalk wa = r.walk, wb = r.walk;
             wa.origin = a.data() + first_row * kTileRowFloats;
@@ -129,7 +131,8 @@ TEST(FastRows, Avx2WalksMatchThePortableOnes) {
             ASSERT_TRUE(sameBits(a, b));
             ASSERT_EQ(da.written_min, db.written_min);
             ASSERT_EQ(da.stored_max, db.stored_max);
-            for (std::size_t k = 0; k < a.size(); ++k) pixels_written += a[k] != r.depths[k];
+            for (std::size_t k = 0; k < a.size(); ++k)
+                pixels_written += a[k] != r.depths[k];
 
             a = r.depths;
             b = r.depths;
@@ -161,24 +164,26 @@ RandomSmallWalk makeSmallWalk(std::mt19937_64& rng) {
     for (float& d : r.depths)
         d = unit(rng) < 0.2 ? std::numeric_limits<float>::infinity() : float(0.3 + 0.4 * unit(rng));
     SmallWalk& w = r.walk;
-    w.depth = nullptr;  // set by the caller to its copy of the depths
+    w.depth = nullptr; // set by the caller to its copy of the depths
     w.tiles_x = RandomSmallWalk::kTilesX;
     const int32_t tx = int32_t(between(0, 2)), ty = int32_t(between(0, 1));
-    const int32_t tiles_wide = int32_t(between(1, kSmallTiles)), tiles_high = int32_t(between(1, 3));
+    const int32_t tiles_wide = int32_t(between(1, kSmallTiles)),
+                  tiles_high = int32_t(between(1, 3));
     w.px_min = int32_t(8 * tx + between(0, 7));
     w.px_max = int32_t(std::max<int64_t>(w.px_min, 8 * (tx + tiles_wide) - 1 - between(0, 7)));
     w.py_min = int32_t(8 * ty + between(0, 7));
     w.py_max = int32_t(std::max<int64_t>(w.py_min, 8 * (ty + tiles_high) - 1 - between(0, 7)));
     for (auto& row : w.live)
-        for (bool& live : row) live = unit(rng) < 0.8;
+        for (bool& live : row)
+            live = unit(rng) < 0.8;
     w.narrow = true;
     const int64_t span = int64_t(w.px_max - w.px_min) + (w.py_max - w.py_min);
     for (int e = 0; e < 3; ++e) {
         w.step_x[e] = between(-(1 << 20), 1 << 20);
         w.step_y[e] = between(-(1 << 20), 1 << 20);
-        const int64_t reach = span * (1 << 20);  // at most 24 * 2^20 < 2^25
-        w.edge[e] = between(-(int64_t(INT32_MAX) - reach), int64_t(INT32_MAX) - reach) >>
-                    between(0, 8);
+        const int64_t reach = span * (1 << 20); // at most 24 * 2^20 < 2^25
+        w.edge[e] =
+            between(-(int64_t(INT32_MAX) - reach), int64_t(INT32_MAX) - reach) >> between(0, 8);
     }
     randomPlane(rng, w.px_min, w.py_min, w);
     return r;
@@ -187,7 +192,8 @@ RandomSmallWalk makeSmallWalk(std::mt19937_64& rng) {
 TEST(FastRows, Avx2SmallWalksMatchThePortableOnes) {
     bool uses_simd = false;
     const RowKernels simd = selectRowKernels(true, uses_simd);
-    if (!uses_simd) GTEST_SKIP() << "this CPU has no AVX2: only the portable walks run here";
+    if (!uses_simd)
+        GTEST_SKIP() << "this CPU has no AVX2: only the portable walks run here";
     const RowKernels scalar = scalarRowKernels();
     std::mt19937_64 rng(43);
     std::size_t queries_behind = 0, pixels_written = 0;
@@ -208,7 +214,8 @@ TEST(FastRows, Avx2SmallWalksMatchThePortableOnes) {
         simd.draw_small(wb, db);
         ASSERT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(float)), 0);
         ASSERT_EQ(std::memcmp(&da, &db, sizeof(SmallDraw)), 0);
-        for (std::size_t k = 0; k < a.size(); ++k) pixels_written += a[k] != r.depths[k];
+        for (std::size_t k = 0; k < a.size(); ++k)
+            pixels_written += a[k] != r.depths[k];
     }
     // Both answers and real writes were exercised.
     EXPECT_GT(queries_behind, 1000u);

@@ -28,20 +28,25 @@ enum class Kind { inside, crossing, tiny, degenerate, non_finite };
 void addTriangle(TrianglePositions& p, std::mt19937_64& rng, Kind kind) {
     std::uniform_real_distribution<double> unit(-1, 1);
     Vec3 c[3];
-    for (Vec3& v : c) v = {unit(rng), unit(rng), unit(rng)};
+    for (Vec3& v : c)
+        v = {unit(rng), unit(rng), unit(rng)};
     switch (kind) {
-    case Kind::inside: break;
+    case Kind::inside:
+        break;
     case Kind::crossing:
         // Far outside the frame on every side, and through the eye's plane.
-        for (Vec3& v : c) v = {v.x * 300, v.y * 300, v.z * 8};
+        for (Vec3& v : c)
+            v = {v.x * 300, v.y * 300, v.z * 8};
         break;
     case Kind::tiny:
         for (int k = 1; k < 3; ++k)
-            c[k] = {c[0].x + unit(rng) * 1e-3, c[0].y + unit(rng) * 1e-3, c[0].z + unit(rng) * 1e-3};
+            c[k] = {c[0].x + unit(rng) * 1e-3, c[0].y + unit(rng) * 1e-3,
+                    c[0].z + unit(rng) * 1e-3};
         break;
     case Kind::degenerate:
         c[2] = {0.5 * (c[0].x + c[1].x), 0.5 * (c[0].y + c[1].y), 0.5 * (c[0].z + c[1].z)};
-        if (unit(rng) < 0) c[1] = c[0];
+        if (unit(rng) < 0)
+            c[1] = c[0];
         break;
     case Kind::non_finite: {
         const double bad[] = {std::numeric_limits<double>::quiet_NaN(),
@@ -60,34 +65,39 @@ void addTriangle(TrianglePositions& p, std::mt19937_64& rng, Kind kind) {
 
 // Field by field, bit for bit (the struct has padding, which memcmp would compare too).
 bool sameBits(const FastSetup& a, const FastSetup& b) {
-    const auto same = [](const auto& x, const auto& y) { return std::memcmp(&x, &y, sizeof(x)) == 0; };
+    const auto same = [](const auto& x, const auto& y) {
+        return std::memcmp(&x, &y, sizeof(x)) == 0;
+    };
     return same(a.edge_at_origin, b.edge_at_origin) && same(a.edge_step_x, b.edge_step_x) &&
            same(a.edge_step_y, b.edge_step_y) && same(a.x0, b.x0) && same(a.y0, b.y0) &&
-           same(a.d0, b.d0) && same(a.ddx, b.ddx) && same(a.ddy, b.ddy) &&
-           a.px_min == b.px_min && a.px_max == b.px_max && a.py_min == b.py_min &&
-           a.py_max == b.py_max && a.narrow == b.narrow;
+           same(a.d0, b.d0) && same(a.ddx, b.ddx) && same(a.ddy, b.ddy) && a.px_min == b.px_min &&
+           a.px_max == b.px_max && a.py_min == b.py_min && a.py_max == b.py_max &&
+           a.narrow == b.narrow;
 }
 
 TEST(FastSetup, Avx2QuadsMatchTheScalarSetup) {
     bool uses_simd = false;
-    selectRowKernels(true, uses_simd);  // the same run-time check FastCpuOracle makes
+    selectRowKernels(true, uses_simd); // the same run-time check FastCpuOracle makes
     if (!uses_simd || avx2SetupQuad() == nullptr)
         GTEST_SKIP() << "this CPU has no AVX2: only the scalar set-up runs here";
     const SetupQuadFn quad = avx2SetupQuad();
     std::mt19937_64 rng(7);
     TrianglePositions p;
-    const Kind kinds[] = {Kind::inside, Kind::crossing, Kind::tiny, Kind::degenerate, Kind::non_finite};
-    for (int i = 0; i < 4000; ++i) addTriangle(p, rng, kinds[i % 5]);
+    const Kind kinds[] = {Kind::inside, Kind::crossing, Kind::tiny, Kind::degenerate,
+                          Kind::non_finite};
+    for (int i = 0; i < 4000; ++i)
+        addTriangle(p, rng, kinds[i % 5]);
     Bounds bounds;
     bounds.add({-1, -1, -1});
     bounds.add({1, 1, 1});
-    const uint32_t sizes[][2] = {{1, 1}, {3, 5}, {17, 13}, {640, 480}, {1920, 1080}, {65536, 65536}};
+    const uint32_t sizes[][2] = {{1, 1},     {3, 5},       {17, 13},
+                                 {640, 480}, {1920, 1080}, {65536, 65536}};
     std::size_t ready = 0, empty = 0, scalar_by_kind[5] = {};
     for (Projection projection : {Projection::perspective, Projection::orthographic})
         for (const auto& size : sizes) {
             CameraSpec spec;
             spec.projection = projection;
-            spec.eye = {0.4, 0.3, 2.5};  // inside the crossing triangles' depth range
+            spec.eye = {0.4, 0.3, 2.5}; // inside the crossing triangles' depth range
             spec.ortho_direction = {-0.2, -0.1, -1};
             const ViewProjection view = frameCamera(spec, bounds, size[0], size[1]);
             const Matrix4 m = multiply(view.projection_matrix, view.view);
@@ -96,7 +106,8 @@ TEST(FastSetup, Avx2QuadsMatchTheScalarSetup) {
                 const uint32_t triangles[4] = {pick(rng), pick(rng), pick(rng), pick(rng)};
                 FastSetup out[4];
                 LaneSetup lanes[4];
-                quad(m, p.x.data(), p.y.data(), p.z.data(), triangles, size[0], size[1], out, lanes);
+                quad(m, p.x.data(), p.y.data(), p.z.data(), triangles, size[0], size[1], out,
+                     lanes);
                 for (int l = 0; l < 4; ++l) {
                     SCOPED_TRACE("triangle " + std::to_string(triangles[l]) + ", " +
                                  std::to_string(size[0]) + "x" + std::to_string(size[1]));
@@ -113,7 +124,9 @@ TEST(FastSetup, Avx2QuadsMatchTheScalarSetup) {
                         ++empty;
                         ASSERT_TRUE(expected.empty());
                         break;
-                    case LaneSetup::scalar: ++scalar_by_kind[triangles[l] % 5]; break;
+                    case LaneSetup::scalar:
+                        ++scalar_by_kind[triangles[l] % 5];
+                        break;
                     }
                 }
             }

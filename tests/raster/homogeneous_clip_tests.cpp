@@ -28,8 +28,10 @@ TEST(HomogeneousClip, InsideTrianglePassesThroughUnchanged) {
 
 TEST(HomogeneousClip, OutsideTrianglesVanish) {
     Polygon out;
-    EXPECT_EQ(detail::clipTriangle({0, 0, -1, 1}, {1, 0, -2, 1}, {0, 1, -0.5, 1}, out), 0);  // behind near
-    EXPECT_EQ(detail::clipTriangle({0, 0, 2, 1}, {1, 0, 3, 1}, {0, 1, 1.5, 1}, out), 0);     // beyond far
+    EXPECT_EQ(detail::clipTriangle({0, 0, -1, 1}, {1, 0, -2, 1}, {0, 1, -0.5, 1}, out),
+              0); // behind near
+    EXPECT_EQ(detail::clipTriangle({0, 0, 2, 1}, {1, 0, 3, 1}, {0, 1, 1.5, 1}, out),
+              0); // beyond far
     EXPECT_EQ(detail::clipTriangle({40, 0, 0.5, 1}, {50, 0, 0.5, 1}, {45, 1, 0.5, 1}, out), 0);
     EXPECT_EQ(detail::clipTriangle({0, 0, 0.5, 1}, {NAN, 0, 0.5, 1}, {0, 1, 0.5, 1}, out), 0);
 }
@@ -53,16 +55,19 @@ TEST(HomogeneousClip, SharedEdgesAreCutIdentically) {
             // Collinear with a and b in 4D, between them.
             const double dx = b.x - a.x, dy = b.y - a.y, dz = b.z - a.z, dw = b.w - a.w;
             const double len2 = dx * dx + dy * dy + dz * dz + dw * dw;
-            const double t = ((v.x - a.x) * dx + (v.y - a.y) * dy + (v.z - a.z) * dz + (v.w - a.w) * dw) / len2;
+            const double t =
+                ((v.x - a.x) * dx + (v.y - a.y) * dy + (v.z - a.z) * dz + (v.w - a.w) * dw) / len2;
             const double ex = a.x + t * dx - v.x, ey = a.y + t * dy - v.y, ez = a.z + t * dz - v.z,
                          ew = a.w + t * dw - v.w;
             return t > 1e-9 && t < 1 - 1e-9 && ex * ex + ey * ey + ez * ez + ew * ew < 1e-16 * len2;
         };
         for (int k = 0; k < n1; ++k) {
-            if (!onAb(first[k])) continue;
+            if (!onAb(first[k]))
+                continue;
             // A cut on ab that first keeps is inside every plane, so second keeps it too.
             bool found = false;
-            for (int m = 0; m < n2; ++m) found = found || same(first[k], second[m]);
+            for (int m = 0; m < n2; ++m)
+                found = found || same(first[k], second[m]);
             EXPECT_TRUE(found) << "triangle pair " << i;
             shared_cuts += found;
         }
@@ -82,7 +87,8 @@ TEST(HomogeneousClip, ResultsLieInsideEveryPlane) {
         clipped += n > 3;
         for (int k = 0; k < n; ++k) {
             const ClipVertex& v = out[k];
-            const double eps = 1e-9 * (std::abs(v.x) + std::abs(v.y) + std::abs(v.z) + std::abs(v.w) + 1);
+            const double eps =
+                1e-9 * (std::abs(v.x) + std::abs(v.y) + std::abs(v.z) + std::abs(v.w) + 1);
             EXPECT_GT(v.w, 0);
             EXPECT_GE(v.z, -eps);
             EXPECT_LE(v.z, v.w + eps);

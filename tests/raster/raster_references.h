@@ -20,12 +20,15 @@ inline std::array<int64_t, 2> snappedScreen(const std::array<double, 4>& clip, u
     return {std::llround(sx * 256.0), std::llround(sy * 256.0)};
 }
 
-inline int sign(int64_t v) { return (v > 0) - (v < 0); }
+inline int sign(int64_t v) {
+    return (v > 0) - (v < 0);
+}
 
 /// Whether the snapped triangle covers the centre of pixel (px, py), by the top-left rule stated
 /// geometrically: a centre on an edge is covered when stepping from it by +x (for a sloped or
 /// vertical edge) or by +y (for a horizontal edge, y down) enters the triangle.
-inline bool referenceCovers(const std::array<std::array<int64_t, 2>, 3>& v, int64_t px, int64_t py) {
+inline bool referenceCovers(const std::array<std::array<int64_t, 2>, 3>& v, int64_t px,
+                            int64_t py) {
     const int64_t cx = px * 256 + 128, cy = py * 256 + 128;
     for (int i = 0; i < 3; ++i) {
         const auto& a = v[i];
@@ -34,13 +37,17 @@ inline bool referenceCovers(const std::array<std::array<int64_t, 2>, 3>& v, int6
         const int64_t dx = b[0] - a[0], dy = b[1] - a[1];
         const auto side = [&](int64_t x, int64_t y) { return dx * (y - a[1]) - dy * (x - a[0]); };
         const int inside_sign = sign(side(c[0], c[1]));
-        if (inside_sign == 0) return false;  // degenerate: no area
+        if (inside_sign == 0)
+            return false; // degenerate: no area
         const int s = sign(side(cx, cy));
-        if (s == inside_sign) continue;
-        if (s != 0) return false;
+        if (s == inside_sign)
+            continue;
+        if (s != 0)
+            return false;
         // On the edge's line: the side a step of +x (or +y if horizontal) leads to.
         const int step_sign = dy != 0 ? sign(-dy) : sign(dx);
-        if (step_sign != inside_sign) return false;
+        if (step_sign != inside_sign)
+            return false;
     }
     return true;
 }
@@ -48,7 +55,9 @@ inline bool referenceCovers(const std::array<std::array<int64_t, 2>, 3>& v, int6
 /// Moller-Trumbore ray/triangle intersection in double: the distance t > 0, if any.
 inline std::optional<double> rayTriangle(const Vec3& origin, const Vec3& dir, const Vec3& p0,
                                          const Vec3& p1, const Vec3& p2) {
-    const auto sub = [](const Vec3& a, const Vec3& b) { return Vec3{a.x - b.x, a.y - b.y, a.z - b.z}; };
+    const auto sub = [](const Vec3& a, const Vec3& b) {
+        return Vec3{a.x - b.x, a.y - b.y, a.z - b.z};
+    };
     const auto cross = [](const Vec3& a, const Vec3& b) {
         return Vec3{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
     };
@@ -56,16 +65,20 @@ inline std::optional<double> rayTriangle(const Vec3& origin, const Vec3& dir, co
     const Vec3 e1 = sub(p1, p0), e2 = sub(p2, p0);
     const Vec3 p = cross(dir, e2);
     const double det = dot(e1, p);
-    if (det == 0) return std::nullopt;
+    if (det == 0)
+        return std::nullopt;
     const double inv = 1.0 / det;
     const Vec3 s = sub(origin, p0);
     const double u = dot(s, p) * inv;
-    if (u < 0 || u > 1) return std::nullopt;
+    if (u < 0 || u > 1)
+        return std::nullopt;
     const Vec3 q = cross(s, e1);
     const double v = dot(dir, q) * inv;
-    if (v < 0 || u + v > 1) return std::nullopt;
+    if (v < 0 || u + v > 1)
+        return std::nullopt;
     const double t = dot(e2, q) * inv;
-    if (!(t > 0)) return std::nullopt;
+    if (!(t > 0))
+        return std::nullopt;
     return t;
 }
 
@@ -76,9 +89,12 @@ inline std::optional<double> castDepth(const ViewProjection& vp, double sx, doub
     Vec3 origin, dir;
     vp.pixelRay(sx, sy, origin, dir);
     const std::optional<double> t = rayTriangle(origin, dir, p0, p1, p2);
-    if (!t) return std::nullopt;
-    const double d = vp.depthOf({origin.x + *t * dir.x, origin.y + *t * dir.y, origin.z + *t * dir.z});
-    if (!(d >= 0 && d <= 1)) return std::nullopt;
+    if (!t)
+        return std::nullopt;
+    const double d =
+        vp.depthOf({origin.x + *t * dir.x, origin.y + *t * dir.y, origin.z + *t * dir.z});
+    if (!(d >= 0 && d <= 1))
+        return std::nullopt;
     return d;
 }
 

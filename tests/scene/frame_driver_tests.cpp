@@ -135,7 +135,7 @@ TEST(FrameDriver, OrbitMovesTheCameraAndReframingFollowsTheBounds) {
     driver.seek(0);
     const CameraSpec camera0 = driver.camera();
     const ViewProjection view0 = driver.view();
-    expectCameraEqual(camera0, base, 0);  // frame 0 of an orbit is the base camera itself
+    expectCameraEqual(camera0, base, 0); // frame 0 of an orbit is the base camera itself
     driver.seek(5);
     EXPECT_FALSE(driver.camera().eye == camera0.eye);
     EXPECT_NE(driver.view().view, view0.view);
@@ -183,10 +183,10 @@ TEST(FrameDriver, OrthographicBaseCameraOnAnOrbit) {
         const CameraSpec expected_camera =
             cameraOnPath(base, CameraPath::orbit, frame, first_bounds);
         expectCameraEqual(driver.camera(), expected_camera, frame);
-        expectViewEqual(driver.view(),
-                        frameCamera(expected_camera, scene.frame(frame * kFrameInterval).bounds(),
-                                    40, 30),
-                        frame);
+        expectViewEqual(
+            driver.view(),
+            frameCamera(expected_camera, scene.frame(frame * kFrameInterval).bounds(), 40, 30),
+            frame);
         EXPECT_EQ(driver.view().projection, Projection::orthographic);
     }
 }

@@ -6,11 +6,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <numbers>
 #include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <optional>
 #include <set>
 #include <string>
@@ -31,7 +31,8 @@ class TempDir {
 public:
     TempDir() {
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        path_ = fs::temp_directory_path() / ("vissort_json_" + std::to_string(::getpid()) + "_" + info->name());
+        path_ = fs::temp_directory_path() /
+                ("vissort_json_" + std::to_string(::getpid()) + "_" + info->name());
         fs::remove_all(path_);
         fs::create_directories(path_);
     }
@@ -53,35 +54,42 @@ private:
 std::optional<double> hitTriangle(Vec3 origin, Vec3 direction, Vec3 a, Vec3 b, Vec3 c) {
     const Vec3 e1 = b - a, e2 = c - a, p = cross(direction, e2);
     const double det = dot(e1, p);
-    if (std::abs(det) < 1e-14) return std::nullopt;
+    if (std::abs(det) < 1e-14)
+        return std::nullopt;
     const Vec3 s = origin - a;
     const double u = dot(s, p) / det;
-    if (u < 0 || u > 1) return std::nullopt;
+    if (u < 0 || u > 1)
+        return std::nullopt;
     const Vec3 q = cross(s, e1);
     const double v = dot(direction, q) / det;
-    if (v < 0 || u + v > 1) return std::nullopt;
+    if (v < 0 || u + v > 1)
+        return std::nullopt;
     const double t = dot(e2, q) / det;
     return t > 0 ? std::optional<double>(t) : std::nullopt;
 }
 
 Bounds objectBounds(const Scene& scene, const SceneObject& object) {
     Bounds bounds;
-    for (std::size_t c = object.first_triangle * 3u; c < (object.first_triangle + object.triangle_count) * 3u; ++c)
+    for (std::size_t c = object.first_triangle * 3u;
+         c < (object.first_triangle + object.triangle_count) * 3u; ++c)
         bounds.add(scene.positions.corner(c));
     return bounds;
 }
 
 bool rayMissesBox(Vec3 origin, Vec3 direction, const Bounds& box) {
     double near = 0, far = 1e300;
-    const double o[] = {origin.x, origin.y, origin.z}, d[] = {direction.x, direction.y, direction.z};
+    const double o[] = {origin.x, origin.y, origin.z},
+                 d[] = {direction.x, direction.y, direction.z};
     const double lo[] = {box.min.x, box.min.y, box.min.z}, hi[] = {box.max.x, box.max.y, box.max.z};
     for (int axis = 0; axis < 3; ++axis) {
         if (std::abs(d[axis]) < 1e-300) {
-            if (o[axis] < lo[axis] || o[axis] > hi[axis]) return true;
+            if (o[axis] < lo[axis] || o[axis] > hi[axis])
+                return true;
             continue;
         }
         double t0 = (lo[axis] - o[axis]) / d[axis], t1 = (hi[axis] - o[axis]) / d[axis];
-        if (t0 > t1) std::swap(t0, t1);
+        if (t0 > t1)
+            std::swap(t0, t1);
         near = std::max(near, t0 - 1e-9);
         far = std::min(far, t1 + 1e-9);
     }
@@ -94,14 +102,18 @@ struct Interval {
     bool hit() const { return near <= far; }
 };
 
-std::vector<Interval> castRay(const Scene& scene, const std::vector<Bounds>& bounds, Vec3 origin, Vec3 direction) {
+std::vector<Interval> castRay(const Scene& scene, const std::vector<Bounds>& bounds, Vec3 origin,
+                              Vec3 direction) {
     std::vector<Interval> intervals(scene.objects.size());
     for (std::size_t o = 0; o < scene.objects.size(); ++o) {
-        if (rayMissesBox(origin, direction, bounds[o])) continue;
+        if (rayMissesBox(origin, direction, bounds[o]))
+            continue;
         const SceneObject& object = scene.objects[o];
-        for (uint32_t t = object.first_triangle; t < object.first_triangle + object.triangle_count; ++t) {
+        for (uint32_t t = object.first_triangle; t < object.first_triangle + object.triangle_count;
+             ++t) {
             const auto& p = scene.positions;
-            if (auto d = hitTriangle(origin, direction, p.corner(3 * t), p.corner(3 * t + 1), p.corner(3 * t + 2))) {
+            if (auto d = hitTriangle(origin, direction, p.corner(3 * t), p.corner(3 * t + 1),
+                                     p.corner(3 * t + 2))) {
                 intervals[o].near = std::min(intervals[o].near, *d);
                 intervals[o].far = std::max(intervals[o].far, *d);
             }
@@ -112,13 +124,13 @@ std::vector<Interval> castRay(const Scene& scene, const std::vector<Bounds>& bou
 
 std::vector<Bounds> allBounds(const Scene& scene) {
     std::vector<Bounds> bounds;
-    for (const SceneObject& object : scene.objects) bounds.push_back(objectBounds(scene, object));
+    for (const SceneObject& object : scene.objects)
+        bounds.push_back(objectBounds(scene, object));
     return bounds;
 }
 
 /// Rays from the camera's eye through an n x n grid covering its field of view.
-template <class Visit>
-void castCameraGrid(const Scene& scene, int n, Visit visit) {
+template <class Visit> void castCameraGrid(const Scene& scene, int n, Visit visit) {
     ASSERT_TRUE(scene.camera.has_value());
     const CameraSpec& camera = *scene.camera;
     const Vec3 forward = normalized(camera.target - camera.eye);
@@ -141,7 +153,8 @@ bool boundsOverlap(const Bounds& a, const Bounds& b) {
 
 int objectIndex(const Scene& scene, const std::string& name) {
     for (std::size_t i = 0; i < scene.objects.size(); ++i)
-        if (scene.objects[i].name == name) return static_cast<int>(i);
+        if (scene.objects[i].name == name)
+            return static_cast<int>(i);
     ADD_FAILURE() << "no object named " << name;
     return 0;
 }
@@ -149,7 +162,8 @@ int objectIndex(const Scene& scene, const std::string& name) {
 /// Signed volume by the divergence theorem: positive for closed, outward-wound surfaces.
 double signedVolume(const Scene& scene, const SceneObject& object) {
     double volume = 0;
-    for (uint32_t t = object.first_triangle; t < object.first_triangle + object.triangle_count; ++t) {
+    for (uint32_t t = object.first_triangle; t < object.first_triangle + object.triangle_count;
+         ++t) {
         const auto& p = scene.positions;
         volume += dot(p.corner(3 * t), cross(p.corner(3 * t + 1), p.corner(3 * t + 2))) / 6;
     }
@@ -162,7 +176,8 @@ Scene loadOrFail(const std::string& path) {
     return loaded ? std::move(*loaded.value) : Scene{};
 }
 
-void expectError(const Result<Scene>& loaded, const std::string& path, const std::string& contains) {
+void expectError(const Result<Scene>& loaded, const std::string& path,
+                 const std::string& contains) {
     ASSERT_FALSE(loaded) << "expected an error containing '" << contains << "'";
     EXPECT_EQ(loaded.error.rfind(path, 0), 0u) << "must name the JSON file first: " << loaded.error;
     EXPECT_EQ(loaded.error.find('\n'), std::string::npos) << "must be one line: " << loaded.error;
@@ -243,7 +258,8 @@ TEST(JsonScene, MeshPathsAreRelativeToTheJsonFileAndMultiMeshFilesGiveSeveralObj
     EXPECT_EQ(scene.objects[3].name, "glass/blue");
     EXPECT_EQ(scene.objects[4].name, "tri");
     const uint32_t firsts[] = {0, 1, 2, 3, 5};
-    for (int i = 0; i < 5; ++i) EXPECT_EQ(scene.objects[i].first_triangle, firsts[i]);
+    for (int i = 0; i < 5; ++i)
+        EXPECT_EQ(scene.objects[i].first_triangle, firsts[i]);
     EXPECT_EQ(scene.triangleCount(), 6u);
     EXPECT_EQ(scene.positions.corner(0).z, 1.0);
     // The file's materials stay unless overridden: red_glass has d 0.5.
@@ -270,15 +286,17 @@ TEST(JsonScene, ColourAlphaBelowOneMeansTransparent) {
 
 TEST(JsonScene, CamerasAreStored) {
     TempDir dir;
-    const Scene perspective = loadOrFail(dir.write("p.json", R"({"camera": {"eye": [1, 2, 3], "target": [0, 0, -1], "fov": 30},
+    const Scene perspective = loadOrFail(
+        dir.write("p.json", R"({"camera": {"eye": [1, 2, 3], "target": [0, 0, -1], "fov": 30},
         "objects": [{"shape": "box"}]})"));
     ASSERT_TRUE(perspective.camera.has_value());
     EXPECT_EQ(perspective.camera->projection, Projection::perspective);
     EXPECT_EQ(perspective.camera->eye.y, 2.0);
     EXPECT_EQ(perspective.camera->target.z, -1.0);
-    EXPECT_EQ(perspective.camera->up.y, 1.0);  // default
+    EXPECT_EQ(perspective.camera->up.y, 1.0); // default
     EXPECT_EQ(perspective.camera->fov_degrees, 30.0);
-    const Scene ortho = loadOrFail(dir.write("o.json", R"({"camera": {"ortho_dir": [0, 0, -2]}, "objects": [{"shape": "box"}]})"));
+    const Scene ortho = loadOrFail(dir.write(
+        "o.json", R"({"camera": {"ortho_dir": [0, 0, -2]}, "objects": [{"shape": "box"}]})"));
     ASSERT_TRUE(ortho.camera.has_value());
     EXPECT_EQ(ortho.camera->projection, Projection::orthographic);
     EXPECT_NEAR(ortho.camera->ortho_direction.z, -1.0, 1e-12);
@@ -294,17 +312,20 @@ TEST(JsonScene, AnimationMovesAndSpinsObjectsRigidly) {
 
     const TrianglePositions at0 = scene.frame(0.0);
     ASSERT_EQ(at0.x.size(), scene.positions.x.size());
-    for (std::size_t c = 0; c < at0.x.size(); ++c) EXPECT_NEAR(at0.x[c], scene.positions.x[c], 1e-6);
+    for (std::size_t c = 0; c < at0.x.size(); ++c)
+        EXPECT_NEAR(at0.x[c], scene.positions.x[c], 1e-6);
 
     // Slider: velocity (1, 0, 0). Spinner: 90 degrees/s about +y through its box centre, so at
     // t = 1 an offset (dx, dy, dz) becomes (dz, dy, -dx), at t = 2 it becomes (-dx, dy, -dz).
     const TrianglePositions at1 = scene.frame(1.0), at2 = scene.frame(2.0);
-    for (std::size_t c = slider.first_triangle * 3u; c < (slider.first_triangle + slider.triangle_count) * 3u; ++c) {
+    for (std::size_t c = slider.first_triangle * 3u;
+         c < (slider.first_triangle + slider.triangle_count) * 3u; ++c) {
         EXPECT_NEAR(at2.x[c], scene.positions.x[c] + 2.0, 1e-5);
         EXPECT_NEAR(at2.y[c], scene.positions.y[c], 1e-6);
         EXPECT_NEAR(at2.z[c], scene.positions.z[c], 1e-6);
     }
-    for (std::size_t c = spinner.first_triangle * 3u; c < (spinner.first_triangle + spinner.triangle_count) * 3u; ++c) {
+    for (std::size_t c = spinner.first_triangle * 3u;
+         c < (spinner.first_triangle + spinner.triangle_count) * 3u; ++c) {
         const Vec3 d = scene.positions.corner(c) - centre;
         EXPECT_NEAR(at1.x[c], centre.x + d.z, 1e-5);
         EXPECT_NEAR(at1.y[c], centre.y + d.y, 1e-5);
@@ -328,10 +349,14 @@ TEST(JsonScene, TheDocumentedExampleLoads) {
     std::string line, example;
     bool in_example = false, in_block = false;
     while (std::getline(doc, line)) {
-        if (line == "### Example") in_example = true;
-        else if (in_example && line == "```json") in_block = true;
-        else if (in_block && line == "```") break;
-        else if (in_block) example += line + "\n";
+        if (line == "### Example")
+            in_example = true;
+        else if (in_example && line == "```json")
+            in_block = true;
+        else if (in_block && line == "```")
+            break;
+        else if (in_block)
+            example += line + "\n";
     }
     ASSERT_FALSE(example.empty());
     // The example sits in docs/; its mesh paths are relative to that folder.
@@ -352,13 +377,15 @@ TEST(JsonScene, RejectsMissingAndMalformedFiles) {
     TempDir dir;
     const std::string missing = (fs::temp_directory_path() / "vissort_no_such_scene.json").string();
     expectError(loadJsonScene(missing), missing, "not found");
-    const std::string syntax = dir.write("syntax.json", "{\n  \"objects\": [\n    {\"shape\": \"box\"},\n  ]\n}\n");
+    const std::string syntax =
+        dir.write("syntax.json", "{\n  \"objects\": [\n    {\"shape\": \"box\"},\n  ]\n}\n");
     expectError(loadJsonScene(syntax), syntax, "line 4");
     const std::string empty = dir.write("empty.json", "");
     expectError(loadJsonScene(empty), empty, "invalid JSON");
     const std::string garbage = dir.write("garbage.json", std::string("\x01\xff\xfe{{", 5));
     expectError(loadJsonScene(garbage), garbage, "invalid JSON");
-    const std::string overflow = dir.write("overflow.json", R"({"objects": [{"shape": "box", "translate": [1e400, 0, 0]}]})");
+    const std::string overflow = dir.write(
+        "overflow.json", R"({"objects": [{"shape": "box", "translate": [1e400, 0, 0]}]})");
     expectError(loadJsonScene(overflow), overflow, "1e400");
 }
 
@@ -372,7 +399,8 @@ TEST(JsonScene, RejectsStructuralMistakes) {
         {R"({"objets": []})", "unknown key 'objets'"},
         {R"({"objects": [{"shape": "box", "translte": [1, 2, 3]}]})", "unknown key 'translte'"},
         {R"({"objects": [{"shape": "box", "scale": 2, "scale": 3}]})", "duplicate key 'scale'"},
-        {R"({"objects": [{"shape": "box", "rotate": {"axis": [0, 0, 1], "degree": 3}}]})", "unknown key 'degree'"},
+        {R"({"objects": [{"shape": "box", "rotate": {"axis": [0, 0, 1], "degree": 3}}]})",
+         "unknown key 'degree'"},
         {R"({"objects": [{"translate": [1, 2, 3]}]})", "exactly one of 'mesh' or 'shape'"},
         {R"({"objects": [{"shape": "box", "mesh": "a.obj"}]})", "exactly one of 'mesh' or 'shape'"},
         {R"({"objects": [{"shape": "sphere"}]})", "unknown shape 'sphere'"},
@@ -381,21 +409,28 @@ TEST(JsonScene, RejectsStructuralMistakes) {
         {R"({"objects": [{"shape": "box", "scale": 0}]})", "zero"},
         {R"({"objects": [{"shape": "box", "scale": [1, 0, 1]}]})", "zero"},
         {R"({"objects": [{"shape": "box", "translate": [1, 2]}]})", "array of 3 numbers"},
-        {R"({"objects": [{"shape": "box", "translate": [1, "2", 3]}]})", "objects[0].translate[1]: expected a number"},
+        {R"({"objects": [{"shape": "box", "translate": [1, "2", 3]}]})",
+         "objects[0].translate[1]: expected a number"},
         {R"({"objects": [{"shape": "box", "transparent": 1}]})", "true or false"},
         {R"({"objects": [{"shape": "box", "colour": [1, 0]}]})", "[r, g, b]"},
         {R"({"objects": [{"shape": "box", "colour": [1, 0, 2]}]})", "[0, 1]"},
         {R"({"objects": [{"shape": "box", "rotate": {"axis": [0, 0, 0], "degrees": 3}}]})", "zero"},
         {R"({"objects": [{"shape": "box", "rotate": {"axis": [0, 0, 1]}}]})", "axis and degrees"},
-        {R"({"objects": [{"shape": "box", "animation": {"velocity": [1, 0]}}]})", "animation.velocity"},
-        {R"({"objects": [{"shape": "box", "animation": {"spin": {"axis": [0, 1, 0]}}}]})", "degrees_per_second"},
+        {R"({"objects": [{"shape": "box", "animation": {"velocity": [1, 0]}}]})",
+         "animation.velocity"},
+        {R"({"objects": [{"shape": "box", "animation": {"spin": {"axis": [0, 1, 0]}}}]})",
+         "degrees_per_second"},
         {R"({"objects": [{"shape": "box", "animation": {"speed": 1}}]})", "unknown key 'speed'"},
         {R"({"camera": {"eye": [0, 0, 5]}, "objects": [{"shape": "box"}]})", "eye and target"},
-        {R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 5]}, "objects": [{"shape": "box"}]})", "camera"},
-        {R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "fov": 180}, "objects": [{"shape": "box"}]})", "camera"},
-        {R"({"camera": {"ortho_dir": [0, 0, -1], "fov": 40}, "objects": [{"shape": "box"}]})", "ortho_dir cannot be combined"},
+        {R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 5]}, "objects": [{"shape": "box"}]})",
+         "camera"},
+        {R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "fov": 180}, "objects": [{"shape": "box"}]})",
+         "camera"},
+        {R"({"camera": {"ortho_dir": [0, 0, -1], "fov": 40}, "objects": [{"shape": "box"}]})",
+         "ortho_dir cannot be combined"},
         {R"({"camera": {"ortho_dir": [0, 0, 0]}, "objects": [{"shape": "box"}]})", "zero"},
-        {R"({"objects": [{"shape": "box", "scale": 1e38, "translate": [3e38, 0, 0]}]})", "overflow"},
+        {R"({"objects": [{"shape": "box", "scale": 1e38, "translate": [3e38, 0, 0]}]})",
+         "overflow"},
     };
     int index = 0;
     for (const auto& [text, contains] : cases) {
@@ -407,7 +442,8 @@ TEST(JsonScene, RejectsStructuralMistakes) {
 
 TEST(JsonScene, RejectsMissingAndBrokenMeshFilesNamingThem) {
     TempDir dir;
-    const std::string path = dir.write("m.json", R"({"objects": [{"shape": "box"}, {"mesh": "models/absent.obj"}]})");
+    const std::string path =
+        dir.write("m.json", R"({"objects": [{"shape": "box"}, {"mesh": "models/absent.obj"}]})");
     expectError(loadJsonScene(path), path, "absent.obj");
     expectError(loadJsonScene(path), path, "objects[1].mesh");
     dir.write("nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n");
@@ -418,8 +454,11 @@ TEST(JsonScene, RejectsMissingAndBrokenMeshFilesNamingThem) {
 // --- the fixture scenes used by the ordering tests ---
 
 TEST(JsonSceneFixtures, LoadWithTheExpectedObjectCounts) {
-    const std::pair<const char*, std::size_t> fixtures[] = {
-        {"disjoint.json", 6}, {"stack.json", 36}, {"interpenetrating.json", 6}, {"three_sticks.json", 3}, {"animated.json", 2}};
+    const std::pair<const char*, std::size_t> fixtures[] = {{"disjoint.json", 6},
+                                                            {"stack.json", 36},
+                                                            {"interpenetrating.json", 6},
+                                                            {"three_sticks.json", 3},
+                                                            {"animated.json", 2}};
     for (const auto& [file, objects] : fixtures) {
         SCOPED_TRACE(file);
         const Scene scene = loadOrFail(kScenes + file);
@@ -435,18 +474,22 @@ TEST(JsonSceneFixtures, DisjointObjectsOverlapOnScreen) {
     ASSERT_EQ(scene.objects.size(), 6u);
     const std::vector<Bounds> bounds = allBounds(scene);
     for (std::size_t a = 0; a < bounds.size(); ++a)
-        for (std::size_t b = a + 1; b < bounds.size(); ++b) EXPECT_FALSE(boundsOverlap(bounds[a], bounds[b])) << a << " " << b;
+        for (std::size_t b = a + 1; b < bounds.size(); ++b)
+            EXPECT_FALSE(boundsOverlap(bounds[a], bounds[b])) << a << " " << b;
     // Every object is in front of or behind another along some ray from the default camera.
     std::vector<bool> overlapped(scene.objects.size(), false);
     std::size_t deepest = 0;
     castCameraGrid(scene, 48, [&](const std::vector<Interval>& hits) {
         std::size_t count = 0;
-        for (const Interval& hit : hits) count += hit.hit();
+        for (const Interval& hit : hits)
+            count += hit.hit();
         deepest = std::max(deepest, count);
         if (count >= 2)
-            for (std::size_t o = 0; o < hits.size(); ++o) overlapped[o] = overlapped[o] || hits[o].hit();
+            for (std::size_t o = 0; o < hits.size(); ++o)
+                overlapped[o] = overlapped[o] || hits[o].hit();
     });
-    for (std::size_t o = 0; o < overlapped.size(); ++o) EXPECT_TRUE(overlapped[o]) << scene.objects[o].name;
+    for (std::size_t o = 0; o < overlapped.size(); ++o)
+        EXPECT_TRUE(overlapped[o]) << scene.objects[o].name;
     EXPECT_GE(deepest, 3u);
 }
 
@@ -456,7 +499,8 @@ TEST(JsonSceneFixtures, StackIsThirtySixDisjointSlightlyTiltedSlabs) {
     const std::vector<Bounds> bounds = allBounds(scene);
     // Disjoint boxes cannot intersect.
     for (std::size_t a = 0; a < bounds.size(); ++a)
-        for (std::size_t b = a + 1; b < bounds.size(); ++b) EXPECT_FALSE(boundsOverlap(bounds[a], bounds[b])) << a << " " << b;
+        for (std::size_t b = a + 1; b < bounds.size(); ++b)
+            EXPECT_FALSE(boundsOverlap(bounds[a], bounds[b])) << a << " " << b;
     // The big faces are tilted less than 4 degrees from the z axis.
     for (uint32_t t = 0; t < scene.triangleCount(); ++t) {
         const auto& p = scene.positions;
@@ -464,7 +508,8 @@ TEST(JsonSceneFixtures, StackIsThirtySixDisjointSlightlyTiltedSlabs) {
             cross(p.corner(3 * t + 1) - p.corner(3 * t), p.corner(3 * t + 2) - p.corner(3 * t));
         const double area = std::sqrt(dot(n, n)) / 2;
         if (area > 1) {
-            EXPECT_GT(std::abs(n.z) / (2 * area), std::cos(4 * std::numbers::pi / 180)) << "triangle " << t;
+            EXPECT_GT(std::abs(n.z) / (2 * area), std::cos(4 * std::numbers::pi / 180))
+                << "triangle " << t;
         }
     }
     // Looking down the stack from the default camera, the centre ray crosses every slab.
@@ -472,7 +517,8 @@ TEST(JsonSceneFixtures, StackIsThirtySixDisjointSlightlyTiltedSlabs) {
     const std::vector<Interval> hits =
         castRay(scene, bounds, camera.eye, normalized(camera.target - camera.eye));
     std::size_t crossed = 0;
-    for (const Interval& hit : hits) crossed += hit.hit() && hit.far > hit.near;
+    for (const Interval& hit : hits)
+        crossed += hit.hit() && hit.far > hit.near;
     EXPECT_EQ(crossed, 36u);
 }
 
@@ -486,9 +532,12 @@ TEST(JsonSceneFixtures, ThreeSticksOverlapCyclicallyWithoutIntersecting) {
     castCameraGrid(scene, 160, [&](const std::vector<Interval>& hits) {
         for (int a = 0; a < 3; ++a)
             for (int b = 0; b < 3; ++b) {
-                if (a == b || !hits[a].hit() || !hits[b].hit()) continue;
-                if (hits[a].far < hits[b].near) in_front[a][b] = true;
-                else if (a < b && hits[b].far >= hits[a].near) ++interval_overlaps;
+                if (a == b || !hits[a].hit() || !hits[b].hit())
+                    continue;
+                if (hits[a].far < hits[b].near)
+                    in_front[a][b] = true;
+                else if (a < b && hits[b].far >= hits[a].near)
+                    ++interval_overlaps;
             }
     });
     EXPECT_EQ(interval_overlaps, 0u);
@@ -501,13 +550,15 @@ TEST(JsonSceneFixtures, InterpenetratingObjectsOccludeEachOther) {
     ASSERT_EQ(scene.objects.size(), 6u);
     // For each intersecting pair, rays from the camera where each one's nearest hit is in front
     // of the other's: a two-object occlusion cycle that disjoint convex objects cannot form.
-    const std::pair<const char*, const char*> pairs[] = {{"spot", "bunny"}, {"box", "suzanne"}, {"bar_x", "bar_y"}};
+    const std::pair<const char*, const char*> pairs[] = {
+        {"spot", "bunny"}, {"box", "suzanne"}, {"bar_x", "bar_y"}};
     std::vector<std::array<bool, 2>> seen(3, {false, false});
     castCameraGrid(scene, 120, [&](const std::vector<Interval>& hits) {
         for (std::size_t k = 0; k < 3; ++k) {
             const Interval& a = hits[objectIndex(scene, pairs[k].first)];
             const Interval& b = hits[objectIndex(scene, pairs[k].second)];
-            if (!a.hit() || !b.hit()) continue;
+            if (!a.hit() || !b.hit())
+                continue;
             seen[k][a.near < b.near ? 0 : 1] = true;
         }
     });

@@ -28,7 +28,8 @@ Scene handMadeScene() {
         scene.positions.y[c] = static_cast<float>(c % 3 == 1);
         scene.positions.z[c] = static_cast<float>(c % 3 == 2);
     }
-    scene.objects = {{"a", Rgba{}, false, 0, 2}, {"b", Rgba{}, false, 2, 1}, {"c", Rgba{}, true, 3, 3}};
+    scene.objects = {
+        {"a", Rgba{}, false, 0, 2}, {"b", Rgba{}, false, 2, 1}, {"c", Rgba{}, true, 3, 3}};
     return scene;
 }
 
@@ -72,7 +73,7 @@ TEST(Scene, StaticFramesAreThePositions) {
     const Scene scene = handMadeScene();
     EXPECT_FALSE(scene.isDynamic());
     TrianglePositions out;
-    out.resize(1);  // stale content must be replaced, not kept
+    out.resize(1); // stale content must be replaced, not kept
     scene.frame(12.0, out);
     EXPECT_EQ(out.x, scene.positions.x);
     EXPECT_EQ(out.y, scene.positions.y);
@@ -107,19 +108,39 @@ TEST(ValidateScene, RejectsBrokenInvariants) {
         change(scene);
         return validateScene(scene).error;
     };
-    EXPECT_NE(broken([](Scene& s) { s.positions = {}; s.objects.clear(); }), "");
+    EXPECT_NE(broken([](Scene& s) {
+                  s.positions = {};
+                  s.objects.clear();
+              }),
+              "");
     EXPECT_NE(broken([](Scene& s) { s.objects.clear(); }), "");
     EXPECT_NE(broken([](Scene& s) { s.positions.y.pop_back(); }), "");
-    EXPECT_NE(broken([](Scene& s) { s.positions.x.pop_back(); s.positions.y.pop_back(); s.positions.z.pop_back(); }), "");
-    EXPECT_NE(broken([](Scene& s) { s.positions.z[7] = std::numeric_limits<float>::quiet_NaN(); }).find("triangle 2"),
+    EXPECT_NE(broken([](Scene& s) {
+                  s.positions.x.pop_back();
+                  s.positions.y.pop_back();
+                  s.positions.z.pop_back();
+              }),
+              "");
+    EXPECT_NE(broken([](Scene& s) {
+                  s.positions.z[7] = std::numeric_limits<float>::quiet_NaN();
+              }).find("triangle 2"),
               std::string::npos);
-    EXPECT_NE(broken([](Scene& s) { s.positions.x[0] = std::numeric_limits<float>::infinity(); }), "");
-    EXPECT_NE(broken([](Scene& s) { s.objects[1].first_triangle = 3; }), "");                 // gap
-    EXPECT_NE(broken([](Scene& s) { s.objects[1].triangle_count = 2; }), "");                 // overlap
-    EXPECT_NE(broken([](Scene& s) { s.objects[2].triangle_count = 2; }), "");                 // short
-    EXPECT_NE(broken([](Scene& s) { s.objects.push_back({"d", Rgba{}, false, 6, 0}); }), "");  // empty object
-    EXPECT_NE(broken([](Scene& s) { s.objects[0].colour.g = std::numeric_limits<float>::quiet_NaN(); }), "");
-    EXPECT_NE(broken([](Scene& s) { s.camera = CameraSpec{}; s.camera->target = s.camera->eye; }).find("camera"),
+    EXPECT_NE(broken([](Scene& s) { s.positions.x[0] = std::numeric_limits<float>::infinity(); }),
+              "");
+    EXPECT_NE(broken([](Scene& s) { s.objects[1].first_triangle = 3; }), ""); // gap
+    EXPECT_NE(broken([](Scene& s) { s.objects[1].triangle_count = 2; }), ""); // overlap
+    EXPECT_NE(broken([](Scene& s) { s.objects[2].triangle_count = 2; }), ""); // short
+    EXPECT_NE(broken([](Scene& s) {
+                  s.objects.push_back({"d", Rgba{}, false, 6, 0});
+              }),
+              ""); // empty object
+    EXPECT_NE(
+        broken([](Scene& s) { s.objects[0].colour.g = std::numeric_limits<float>::quiet_NaN(); }),
+        "");
+    EXPECT_NE(broken([](Scene& s) {
+                  s.camera = CameraSpec{};
+                  s.camera->target = s.camera->eye;
+              }).find("camera"),
               std::string::npos);
     EXPECT_EQ(broken([](Scene& s) { s.camera = CameraSpec{}; }), "");
 }
@@ -137,8 +158,10 @@ TEST(LoadScene, MeshFilesAndJsonScenesByPath) {
 }
 
 TEST(LoadScene, JsonExtensionIsCaseInsensitive) {
-    const fs::path file = fs::temp_directory_path() / ("vissort_load_" + std::to_string(::getpid()) + ".JSON");
-    std::ofstream(file) << R"({"objects": [{"shape": "box"}, {"shape": "box", "translate": [2, 0, 0]}]})";
+    const fs::path file =
+        fs::temp_directory_path() / ("vissort_load_" + std::to_string(::getpid()) + ".JSON");
+    std::ofstream(file)
+        << R"({"objects": [{"shape": "box"}, {"shape": "box", "translate": [2, 0, 0]}]})";
     const Result<Scene> loaded = loadScene(file.string());
     fs::remove(file);
     ASSERT_TRUE(loaded) << loaded.error;
@@ -176,7 +199,7 @@ TEST(LoadScene, BuiltinScenesGetTheirParameters) {
     EXPECT_LT(three.value->triangleCount(), five.value->triangleCount());
     const Result<Scene> again = loadScene("builtin:slabs?seed=2&layers=3");
     ASSERT_TRUE(again) << again.error;
-    EXPECT_EQ(again.value->positions.x, three.value->positions.x);  // key order does not matter
+    EXPECT_EQ(again.value->positions.x, three.value->positions.x); // key order does not matter
 }
 
 TEST(LoadScene, BuiltinErrorsNameTheSpecification) {

@@ -74,7 +74,8 @@ std::vector<Vec3> referenceObjTriangles(const std::string& path) {
                 face.push_back(index > 0 ? std::size_t(index - 1) : vertices.size() + index);
             }
             for (std::size_t i = 1; i + 1 < face.size(); ++i)
-                for (std::size_t k : {face[0], face[i], face[i + 1]}) corners.push_back(vertices.at(k));
+                for (std::size_t k : {face[0], face[i], face[i + 1]})
+                    corners.push_back(vertices.at(k));
         }
     }
     return corners;
@@ -87,10 +88,13 @@ void expectCorner(const Scene& scene, std::size_t corner, Vec3 expected) {
     EXPECT_NEAR(got.z, expected.z, 1e-5) << "corner " << corner;
 }
 
-void expectRejected(const Result<Scene>& loaded, const std::string& label, const std::string& contains = "") {
+void expectRejected(const Result<Scene>& loaded, const std::string& label,
+                    const std::string& contains = "") {
     ASSERT_FALSE(loaded) << label;
-    EXPECT_EQ(loaded.error.rfind(label, 0), 0u) << "message must start with the source: " << loaded.error;
-    EXPECT_EQ(loaded.error.find('\n'), std::string::npos) << "message must be one line: " << loaded.error;
+    EXPECT_EQ(loaded.error.rfind(label, 0), 0u)
+        << "message must start with the source: " << loaded.error;
+    EXPECT_EQ(loaded.error.find('\n'), std::string::npos)
+        << "message must be one line: " << loaded.error;
     if (!contains.empty()) {
         EXPECT_NE(loaded.error.find(contains), std::string::npos) << loaded.error;
     }
@@ -99,7 +103,7 @@ void expectRejected(const Result<Scene>& loaded, const std::string& label, const
 TEST(MeshLoader, BundledModelsMatchTheirDocumentedCountsAndAReferenceReader) {
     // suzanne.obj has 500 faces (468 quads, 32 triangles): 968 triangles once fanned.
     const std::pair<const char*, std::size_t> models[] = {
-        {"bunny-lowres.obj", 3674}, {"spot.obj", 5856}, {"suzanne.obj", 968},
+        {"bunny-lowres.obj", 3674}, {"spot.obj", 5856},  {"suzanne.obj", 968},
         {"beetle.obj", 2053},       {"woody.obj", 1267}, {"teapot.obj", 6320}};
     for (const auto& [file, triangles] : models) {
         SCOPED_TRACE(file);
@@ -115,8 +119,10 @@ TEST(MeshLoader, BundledModelsMatchTheirDocumentedCountsAndAReferenceReader) {
         std::size_t mismatches = 0;
         for (std::size_t c = 0; c < reference.size(); ++c) {
             const Vec3 got = scene.positions.corner(c);
-            const double tolerance = 1e-5 * (1 + std::abs(reference[c].x) + std::abs(reference[c].y) + std::abs(reference[c].z));
-            if (std::abs(got.x - reference[c].x) > tolerance || std::abs(got.y - reference[c].y) > tolerance ||
+            const double tolerance = 1e-5 * (1 + std::abs(reference[c].x) +
+                                             std::abs(reference[c].y) + std::abs(reference[c].z));
+            if (std::abs(got.x - reference[c].x) > tolerance ||
+                std::abs(got.y - reference[c].y) > tolerance ||
                 std::abs(got.z - reference[c].z) > tolerance)
                 ++mismatches;
         }
@@ -131,9 +137,10 @@ TEST(MeshLoader, PolygonsAreFannedInFaceOrder) {
     ASSERT_EQ(scene.triangleCount(), 5u);
     const Vec3 q[] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
     const Vec3 p[] = {{10, 0, 1}, {11, 0, 1}, {12, 1, 1}, {11, 2, 1}, {10, 1, 1}};
-    const Vec3 expected[] = {q[0], q[1], q[2], q[0], q[2], q[3],                     // quad
-                             p[0], p[1], p[2], p[0], p[2], p[3], p[0], p[3], p[4]};  // pentagon
-    for (std::size_t c = 0; c < 15; ++c) expectCorner(scene, c, expected[c]);
+    const Vec3 expected[] = {q[0], q[1], q[2], q[0], q[2], q[3],                    // quad
+                             p[0], p[1], p[2], p[0], p[2], p[3], p[0], p[3], p[4]}; // pentagon
+    for (std::size_t c = 0; c < 15; ++c)
+        expectCorner(scene, c, expected[c]);
     // No `o`/`g` line and no material: the fallback name and the default grey, opaque.
     ASSERT_EQ(scene.objects.size(), 1u);
     EXPECT_EQ(scene.objects[0].name, "object_0");
@@ -188,19 +195,20 @@ TEST(MeshLoader, ObjGGroupsAreObjectsInFileOrder) {
     EXPECT_EQ(scene.objects[2].name, "third");
     EXPECT_EQ(scene.objects[1].triangle_count, 2u);
     EXPECT_EQ(scene.objects[2].first_triangle, 3u);
-    expectCorner(scene, 3, {0, 0, 0});  // "f 1 3 2"
+    expectCorner(scene, 3, {0, 0, 0}); // "f 1 3 2"
     expectCorner(scene, 4, {0, 1, 0});
-    expectCorner(scene, 9, {0, 1, 0});  // "f 3 1 2"
+    expectCorner(scene, 9, {0, 1, 0}); // "f 3 1 2"
 }
 
 TEST(MeshLoader, AsciiPlyKeepsFaceOrder) {
     TempDir dir;
-    const std::string path = dir.write("mesh.ply", "ply\nformat ascii 1.0\nelement vertex 5\n"
-                                                   "property float x\nproperty float y\nproperty float z\n"
-                                                   "element face 2\nproperty list uchar int vertex_indices\n"
-                                                   "end_header\n"
-                                                   "0 0 0\n1 0 0\n1 1 0\n0 1 0\n5 5 5\n"
-                                                   "3 4 0 1\n4 0 1 2 3\n");
+    const std::string path =
+        dir.write("mesh.ply", "ply\nformat ascii 1.0\nelement vertex 5\n"
+                              "property float x\nproperty float y\nproperty float z\n"
+                              "element face 2\nproperty list uchar int vertex_indices\n"
+                              "end_header\n"
+                              "0 0 0\n1 0 0\n1 1 0\n0 1 0\n5 5 5\n"
+                              "3 4 0 1\n4 0 1 2 3\n");
     const Result<Scene> loaded = loadMeshFile(path);
     ASSERT_TRUE(loaded) << loaded.error;
     const Scene& scene = *loaded.value;
@@ -208,15 +216,19 @@ TEST(MeshLoader, AsciiPlyKeepsFaceOrder) {
     EXPECT_EQ(scene.name, "mesh");
     const Vec3 expected[] = {{5, 5, 5}, {0, 0, 0}, {1, 0, 0}, {0, 0, 0}, {1, 0, 0},
                              {1, 1, 0}, {0, 0, 0}, {1, 1, 0}, {0, 1, 0}};
-    for (std::size_t c = 0; c < 9; ++c) expectCorner(scene, c, expected[c]);
+    for (std::size_t c = 0; c < 9; ++c)
+        expectCorner(scene, c, expected[c]);
 }
 
 TEST(MeshLoader, AsciiStlKeepsFacetOrder) {
     TempDir dir;
-    const std::string path = dir.write("mesh.stl", "solid two\n"
-                                                   "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n"
-                                                   "facet normal 0 0 1\nouter loop\nvertex 2 0 3\nvertex 3 0 3\nvertex 2 1 3\nendloop\nendfacet\n"
-                                                   "endsolid two\n");
+    const std::string path =
+        dir.write("mesh.stl", "solid two\n"
+                              "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex "
+                              "0 1 0\nendloop\nendfacet\n"
+                              "facet normal 0 0 1\nouter loop\nvertex 2 0 3\nvertex 3 0 3\nvertex "
+                              "2 1 3\nendloop\nendfacet\n"
+                              "endsolid two\n");
     const Result<Scene> loaded = loadMeshFile(path);
     ASSERT_TRUE(loaded) << loaded.error;
     const Scene& scene = *loaded.value;
@@ -260,7 +272,8 @@ TEST(MeshLoader, MemoryInputGoesThroughTheSameReader) {
 
     expectRejected(loadMeshMemory(bytes.data(), 0, "obj", "empty-input"), "empty-input");
     const std::string garbage = "\x01\x02garbage\xff\xfe";
-    expectRejected(loadMeshMemory(garbage.data(), garbage.size(), "ply", "garbage-input"), "garbage-input");
+    expectRejected(loadMeshMemory(garbage.data(), garbage.size(), "ply", "garbage-input"),
+                   "garbage-input");
 }
 
 TEST(MeshLoader, RejectsMissingFilesAndFolders) {
@@ -273,12 +286,13 @@ TEST(MeshLoader, RejectsMissingFilesAndFolders) {
 TEST(MeshLoader, RejectsGarbageAndEmptyFiles) {
     TempDir dir;
     std::string garbage;
-    uint32_t state = 12345;  // fixed LCG: the same bytes every run
+    uint32_t state = 12345; // fixed LCG: the same bytes every run
     for (int i = 0; i < 4096; ++i) {
         state = state * 1664525u + 1013904223u;
         garbage.push_back(static_cast<char>(state >> 24));
     }
-    for (const char* name : {"garbage.obj", "garbage.ply", "garbage.stl", "garbage.gltf", "garbage.glb", "garbage.xyz"}) {
+    for (const char* name : {"garbage.obj", "garbage.ply", "garbage.stl", "garbage.gltf",
+                             "garbage.glb", "garbage.xyz"}) {
         const std::string path = dir.write(name, garbage);
         expectRejected(loadMeshFile(path), path);
     }
@@ -290,7 +304,8 @@ TEST(MeshLoader, RejectsGarbageAndEmptyFiles) {
 
 TEST(MeshLoader, RejectsFilesWithoutTriangles) {
     TempDir dir;
-    const std::string lines = dir.write("lines.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\np 1\n");
+    const std::string lines =
+        dir.write("lines.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\np 1\n");
     expectRejected(loadMeshFile(lines), lines, "no triangles");
     const std::string vertices = dir.write("vertices.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
     expectRejected(loadMeshFile(vertices), vertices);
@@ -303,16 +318,18 @@ TEST(MeshLoader, RejectsNonFiniteCoordinates) {
         {"inf.obj", "v 0 0 0\nv 1 0 0\nv 0 inf 0\nf 1 2 3\n"},
         {"minus_inf.obj", "v 0 0 0\nv 1 0 0\nv 0 0 -inf\nf 1 2 3\n"},
         {"float_overflow.obj", "v 0 0 0\nv 1 0 0\nv 0 1e39 0\nf 1 2 3\n"},
-        {"nan.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                    "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
-                    "0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n"},
+        {"nan.ply",
+         "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+         "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+         "0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n"},
     };
     for (const auto& [name, text] : cases) {
         const std::string path = dir.write(name, text);
         expectRejected(loadMeshFile(path), path);
     }
     // A non-finite vertex that no face uses is harmless and must not reject the file.
-    const std::string unused = dir.write("unused_nan.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv nan 0 0\nf 1 2 3\n");
+    const std::string unused =
+        dir.write("unused_nan.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv nan 0 0\nf 1 2 3\n");
     EXPECT_TRUE(loadMeshFile(unused));
 }
 

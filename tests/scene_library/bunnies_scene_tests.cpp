@@ -42,7 +42,7 @@ std::vector<Vec3> referenceBunnyCorners() {
         }
     }
     Vec3 low{1e30, 1e30, 1e30}, high{-1e30, -1e30, -1e30};
-    for (const Vec3 &v : vertices) {
+    for (const Vec3& v : vertices) {
         low = {std::min(low.x, v.x), std::min(low.y, v.y), std::min(low.z, v.z)};
         high = {std::max(high.x, v.x), std::max(high.y, v.y), std::max(high.z, v.z)};
     }
@@ -56,19 +56,19 @@ std::vector<Vec3> referenceBunnyCorners() {
     return corners;
 }
 
-Scene makeBunnies(const std::string &n, const std::string &seed = "1") {
+Scene makeBunnies(const std::string& n, const std::string& seed = "1") {
     Result<Scene> scene = makeBuiltinScene("bunnies", {{"n", n}, {"seed", seed}});
     EXPECT_TRUE(scene) << scene.error;
     return scene ? std::move(*scene.value) : Scene{};
 }
 
-TrianglePositions frameAt(const Scene &scene, double t) {
+TrianglePositions frameAt(const Scene& scene, double t) {
     TrianglePositions positions;
     scene.animation->positionsAt(t, positions);
     return positions;
 }
 
-Vec3 centreOf(const Scene &scene, std::size_t bunny, double t) {
+Vec3 centreOf(const Scene& scene, std::size_t bunny, double t) {
     Vec3 centre;
     EXPECT_TRUE(detail::bunnyCentreAt(*scene.animation, bunny, t, centre));
     return centre;
@@ -133,7 +133,7 @@ TEST(BunniesScene, EachBunnyIsTheUnitScaledMeshRigidlyMovedAndSlightlyDeformed) 
     const std::vector<Vec3> reference = referenceBunnyCorners();
     ASSERT_EQ(reference.size(), 3 * kTrianglesPerBunny);
     double reference_reach = 0;
-    for (const Vec3 &v : reference)
+    for (const Vec3& v : reference)
         reference_reach = std::max(reference_reach, length(v));
     EXPECT_LE(reference_reach, 1.0);
 
@@ -258,7 +258,7 @@ TEST(BunniesScene, DefaultCameraSeesTheWholeCube) {
     const std::size_t n = 18;
     const Scene scene = makeBunnies(std::to_string(n));
     ASSERT_TRUE(scene.camera.has_value());
-    const CameraSpec &camera = *scene.camera;
+    const CameraSpec& camera = *scene.camera;
     const Vec3 forward = camera.target - camera.eye;
     const double half = cubeSide(n) / 2 + kWobble;
     for (const double x : {-half, half})

@@ -7,7 +7,7 @@
 namespace vissort {
 namespace {
 
-::testing::AssertionResult contains(const std::string &text, const std::string &part) {
+::testing::AssertionResult contains(const std::string& text, const std::string& part) {
     if (text.find(part) != std::string::npos)
         return ::testing::AssertionSuccess();
     return ::testing::AssertionFailure() << "'" << text << "' does not contain '" << part << "'";
@@ -16,17 +16,17 @@ namespace {
 TEST(SceneLibrary, ListsTheFourScenesWithTheirParameters) {
     const std::vector<BuiltinSceneInfo> scenes = builtinScenes();
     std::set<std::string> names;
-    for (const BuiltinSceneInfo &info : scenes)
+    for (const BuiltinSceneInfo& info : scenes)
         names.insert(info.name);
     EXPECT_EQ(names, (std::set<std::string>{"bunnies", "plant", "slabs", "soup"}));
-    for (const BuiltinSceneInfo &info : scenes) {
+    for (const BuiltinSceneInfo& info : scenes) {
         EXPECT_TRUE(contains(info.summary, "seed (1)"));
         EXPECT_EQ(info.summary.find('\n'), std::string::npos);
     }
 }
 
 TEST(SceneLibrary, EveryListedSceneBuildsWithDefaultsAndIsValid) {
-    for (const BuiltinSceneInfo &info : builtinScenes()) {
+    for (const BuiltinSceneInfo& info : builtinScenes()) {
         const Result<Scene> scene = makeBuiltinScene(info.name, {});
         ASSERT_TRUE(scene) << info.name << ": " << scene.error;
         EXPECT_EQ(scene.value->name, "builtin:" + info.name);
@@ -35,7 +35,7 @@ TEST(SceneLibrary, EveryListedSceneBuildsWithDefaultsAndIsValid) {
         EXPECT_EQ(validateCamera(*scene.value->camera).error, "") << info.name;
         // Transparent objects blend (alpha < 1); opaque ones (the plant's steel) do not.
         bool any_transparent = false;
-        for (const SceneObject &object : scene.value->objects) {
+        for (const SceneObject& object : scene.value->objects) {
             EXPECT_EQ(object.transparent, object.colour.a < 1.0f)
                 << info.name << " " << object.name;
             any_transparent |= object.transparent;
@@ -53,9 +53,9 @@ TEST(SceneLibrary, UnknownNamesAreErrorsListingTheKnownOnes) {
 
 TEST(SceneLibrary, ParameterErrorsNameTheSceneAndTheKey) {
     const struct {
-        const char *scene;
+        const char* scene;
         SceneParameters parameters;
-        const char *expected;
+        const char* expected;
     } cases[] = {
         {"bunnies", {{"n", "0"}}, "builtin:bunnies: parameter n=0 is out of range"},
         {"bunnies", {{"n", "10001"}}, "parameter n=10001 is out of range"},
@@ -69,7 +69,7 @@ TEST(SceneLibrary, ParameterErrorsNameTheSceneAndTheKey) {
         {"soup", {{"n", "10000001"}}, "parameter n=10000001 is out of range"},
         {"soup", {{"n", "1e6"}}, "parameter n='1e6' is not an integer"},
     };
-    for (const auto &c : cases) {
+    for (const auto& c : cases) {
         const Result<Scene> scene = makeBuiltinScene(c.scene, c.parameters);
         EXPECT_FALSE(scene) << c.expected;
         EXPECT_TRUE(contains(scene.error, c.expected));

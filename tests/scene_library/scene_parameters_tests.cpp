@@ -6,7 +6,7 @@ namespace vissort::detail {
 namespace {
 
 // Whether text contains part; the message is printed on failure.
-::testing::AssertionResult contains(const std::string &text, const std::string &part) {
+::testing::AssertionResult contains(const std::string& text, const std::string& part) {
     if (text.find(part) != std::string::npos)
         return ::testing::AssertionSuccess();
     return ::testing::AssertionFailure() << "'" << text << "' does not contain '" << part << "'";
@@ -30,7 +30,7 @@ TEST(SceneParameters, ReadsValuesAtTheEndsOfTheRange) {
 }
 
 TEST(SceneParameters, RejectsWhatIsNotAnInteger) {
-    for (const char *text : {"", "abc", "1.5", "12x", " 3", "3 ", "+3", "0x10", "1e3"}) {
+    for (const char* text : {"", "abc", "1.5", "12x", " 3", "3 ", "+3", "0x10", "1e3"}) {
         const SceneParameters parameters = {{"n", text}};
         ParameterReader reader("builtin:test", parameters);
         EXPECT_EQ(reader.integer("n", 18, 1, 100000), 18) << text;
@@ -43,7 +43,7 @@ TEST(SceneParameters, RejectsWhatIsNotAnInteger) {
 }
 
 TEST(SceneParameters, RejectsOutOfRangeValues) {
-    for (const char *text : {"0", "-3", "101", "99999999999999999999", "-99999999999999999999"}) {
+    for (const char* text : {"0", "-3", "101", "99999999999999999999", "-99999999999999999999"}) {
         const SceneParameters parameters = {{"layers", text}};
         ParameterReader reader("builtin:test", parameters);
         reader.integer("layers", 8, 1, 100);
@@ -53,7 +53,7 @@ TEST(SceneParameters, RejectsOutOfRangeValues) {
 }
 
 TEST(SceneParameters, SeedsMustBeUnsigned64BitIntegers) {
-    for (const char *text : {"-1", "seven", "1.0"}) {
+    for (const char* text : {"-1", "seven", "1.0"}) {
         const SceneParameters parameters = {{"seed", text}};
         ParameterReader reader("builtin:test", parameters);
         reader.seed("seed", 1);

@@ -8,7 +8,7 @@
 
 namespace vissort_test {
 using Triangle = std::array<vissort::Vec3, 3>;
-bool trianglesIntersect(const Triangle &a, const Triangle &b); // triangle_intersection_tests.cpp
+bool trianglesIntersect(const Triangle& a, const Triangle& b); // triangle_intersection_tests.cpp
 } // namespace vissort_test
 
 namespace vissort {
@@ -16,19 +16,19 @@ namespace {
 
 using vissort_test::Triangle;
 
-Scene makeSlabs(const std::string &layers, const std::string &seed = "1") {
+Scene makeSlabs(const std::string& layers, const std::string& seed = "1") {
     Result<Scene> scene = makeBuiltinScene("slabs", {{"layers", layers}, {"seed", seed}});
     EXPECT_TRUE(scene) << scene.error;
     return scene ? std::move(*scene.value) : Scene{};
 }
 
-Triangle triangleOf(const Scene &scene, std::size_t t) {
+Triangle triangleOf(const Scene& scene, std::size_t t) {
     return {scene.positions.corner(3 * t), scene.positions.corner(3 * t + 1),
             scene.positions.corner(3 * t + 2)};
 }
 
 // Moeller-Trumbore, both sides, hits at distance > 0.
-bool rayHits(const Vec3 &o, const Vec3 &d, const Triangle &t) {
+bool rayHits(const Vec3& o, const Vec3& d, const Triangle& t) {
     const Vec3 e1 = t[1] - t[0], e2 = t[2] - t[0];
     const Vec3 p = cross(d, e2);
     const double det = dot(e1, p);
@@ -77,7 +77,7 @@ TEST(SlabsScene, QuadsAreFlatSquaresTiltedLessThanFourDegrees) {
         const Vec3 normal = cross(t0[1] - t0[0], t0[2] - t0[0]);
         EXPECT_NEAR(length(normal), 16.0, 1e-3); // twice the area of half a 4 x 4 quad
         const Vec3 n = normalized(normal);
-        for (const Vec3 &p : t1)
+        for (const Vec3& p : t1)
             EXPECT_NEAR(dot(n, p - t0[0]), 0.0, 1e-3);
         const double tilt_degrees =
             std::acos(std::min(1.0, std::abs(n.z))) * 180 / std::numbers::pi;
@@ -99,7 +99,7 @@ TEST(SlabsScene, QuadsNeverIntersectAndPlanesSeparateTheLayers) {
     }
     // A horizontal plane between consecutive layers: every layer is strictly below the next,
     // so the stack's order is the same (acyclic) from every viewpoint.
-    const TrianglePositions &p = scene.positions;
+    const TrianglePositions& p = scene.positions;
     for (std::size_t layer = 0; layer + 1 < 40; ++layer) {
         float top = -1e30f, next_bottom = 1e30f;
         for (std::size_t i = 0; i < 6; ++i) {
@@ -114,7 +114,7 @@ TEST(SlabsScene, CameraLooksDownTheStackAndMiddleRaysCrossEveryLayer) {
     const std::size_t layers = 30;
     const Scene scene = makeSlabs(std::to_string(layers));
     ASSERT_TRUE(scene.camera.has_value());
-    const CameraSpec &camera = *scene.camera;
+    const CameraSpec& camera = *scene.camera;
     EXPECT_EQ(camera.projection, Projection::perspective);
     EXPECT_DOUBLE_EQ(camera.eye.x, camera.target.x);
     EXPECT_DOUBLE_EQ(camera.eye.y, camera.target.y);
@@ -130,7 +130,7 @@ TEST(SlabsScene, CameraLooksDownTheStackAndMiddleRaysCrossEveryLayer) {
         EXPECT_LT(std::abs(c.y - camera.eye.y), depth * half_fov);
     }
     // Rays near the centre of the image hit every quad: depth complexity = layers.
-    for (const auto &[dx, dy] : {std::pair{0.01, 0.02}, {0.05, -0.03}, {-0.04, 0.0}}) {
+    for (const auto& [dx, dy] : {std::pair{0.01, 0.02}, {0.05, -0.03}, {-0.04, 0.0}}) {
         const Vec3 direction{dx, dy, -1};
         for (std::size_t layer = 0; layer < layers; ++layer) {
             const bool hit = rayHits(camera.eye, direction, triangleOf(scene, 2 * layer)) ||

@@ -8,7 +8,7 @@
 
 namespace vissort_test {
 using Triangle = std::array<vissort::Vec3, 3>;
-bool trianglesIntersect(const Triangle &a, const Triangle &b); // triangle_intersection_tests.cpp
+bool trianglesIntersect(const Triangle& a, const Triangle& b); // triangle_intersection_tests.cpp
 } // namespace vissort_test
 
 namespace vissort {
@@ -16,18 +16,18 @@ namespace {
 
 using vissort_test::Triangle;
 
-Scene makeSoup(const std::string &n, const std::string &seed = "1") {
+Scene makeSoup(const std::string& n, const std::string& seed = "1") {
     Result<Scene> scene = makeBuiltinScene("soup", {{"n", n}, {"seed", seed}});
     EXPECT_TRUE(scene) << scene.error;
     return scene ? std::move(*scene.value) : Scene{};
 }
 
-Triangle triangleOf(const Scene &scene, std::size_t t) {
+Triangle triangleOf(const Scene& scene, std::size_t t) {
     return {scene.positions.corner(3 * t), scene.positions.corner(3 * t + 1),
             scene.positions.corner(3 * t + 2)};
 }
 
-double area(const Triangle &t) {
+double area(const Triangle& t) {
     return length(cross(t[1] - t[0], t[2] - t[0])) / 2;
 }
 
@@ -103,7 +103,7 @@ TEST(SoupScene, TriangleIdsAreNotInGridOrder) {
 TEST(SoupScene, DefaultCameraSeesEveryCorner) {
     const Scene scene = makeSoup("500");
     ASSERT_TRUE(scene.camera.has_value());
-    const CameraSpec &camera = *scene.camera;
+    const CameraSpec& camera = *scene.camera;
     const Vec3 f = camera.target - camera.eye;
     const double half_fov = camera.fov_degrees / 2 * std::numbers::pi / 180;
     for (std::size_t i = 0; i < scene.positions.x.size(); ++i) {

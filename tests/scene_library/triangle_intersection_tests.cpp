@@ -16,12 +16,12 @@ namespace {
 using vissort::Vec3;
 
 // Six times the signed volume of the tetrahedron (a, b, c, d).
-double orient(const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &d) {
+double orient(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
     return dot(cross(b - a, c - a), d - a);
 }
 
 // Conservative: touching and coplanar cases count as crossing, so "no pair crosses" is strict.
-bool segmentCrossesTriangle(const Vec3 &p, const Vec3 &q, const Triangle &t) {
+bool segmentCrossesTriangle(const Vec3& p, const Vec3& q, const Triangle& t) {
     const double sp = orient(t[0], t[1], t[2], p), sq = orient(t[0], t[1], t[2], q);
     if ((sp > 0 && sq > 0) || (sp < 0 && sq < 0))
         return false;
@@ -34,7 +34,7 @@ bool segmentCrossesTriangle(const Vec3 &p, const Vec3 &q, const Triangle &t) {
 
 /// True when the closed triangles a and b share a point. Two non-coplanar triangles meet along a
 /// segment whose ends lie on edges of a or of b, so testing the six edges suffices.
-bool trianglesIntersect(const Triangle &a, const Triangle &b) {
+bool trianglesIntersect(const Triangle& a, const Triangle& b) {
     for (int i = 0; i < 3; ++i) {
         if (segmentCrossesTriangle(a[i], a[(i + 1) % 3], b))
             return true;
