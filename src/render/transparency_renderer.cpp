@@ -79,6 +79,8 @@ struct TransparencyRenderer::Impl {
     std::unique_ptr<GeometryOracle> oracle;
     std::unique_ptr<SceneOrderer> orderer;
     TrianglePositions part_positions; // this frame's, unless the part is the whole scene
+    FrameOrder frame_order;           // this frame's order, its buffers reused from frame to frame
+    std::vector<uint32_t> group_of;   // per primitive: its per-pixel group, or kNoGroup
     detail::DrawSequence sequence;    // transparent triangles back to front, scene ids
     bool triangles_uploaded = false;
 
@@ -106,15 +108,15 @@ struct TransparencyRenderer::Impl {
             std::reverse(order.begin(), order.end());
             detail::sequenceFromOrder(order, primitives, {}, sequence);
         } else {
-            const FrameOrder frame = orderer->orderFrame(ordered, view);
-            stats.order = frame.stats;
-            std::vector<uint32_t> group_of(primitives.size(), detail::kNoGroup);
-            for (uint32_t g = 0; g < frame.cycles.size(); ++g)
-                for (uint32_t p : frame.cycles[g])
+            orderer->orderFrame(ordered, view, frame_order);
+            stats.order = frame_order.stats;
+            group_of.assign(primitives.size(), detail::kNoGroup);
+            for (uint32_t g = 0; g < frame_order.cycles.size(); ++g)
+                for (uint32_t p : frame_order.cycles[g])
                     group_of[p] = g;
             if (settings.level == OrderLevel::object)
                 markSelfOverlapping(ordered, view, group_of);
-            detail::sequenceFromOrder(frame.order, primitives, group_of, sequence);
+            detail::sequenceFromOrder(frame_order.order, primitives, group_of, sequence);
         }
         for (uint32_t& t : sequence.triangles)
             t = part.scene_triangle[t];
