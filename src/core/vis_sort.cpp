@@ -18,10 +18,11 @@ namespace {
 // iteration and the iteration that follows it, each a pass over everything still unsorted.
 constexpr uint32_t kWalksPerStuckIteration = 8;
 
-bool isPermutation(std::span<const uint32_t> ids, uint32_t n) {
+// seen: scratch, so that the check (assertions on) allocates nothing once it has grown.
+bool isPermutation(std::span<const uint32_t> ids, uint32_t n, std::vector<uint8_t>& seen) {
     if (ids.size() != n)
         return false;
-    std::vector<uint8_t> seen(n, 0);
+    seen.assign(n, 0);
     for (uint32_t id : ids) {
         if (id >= n || seen[id])
             return false;
@@ -180,7 +181,7 @@ private:
 
 void visSort(OcclusionOracle& oracle, std::span<const uint32_t> initial_order,
              VisibilityOrder& result, VisSortWorkspace& workspace) {
-    assert(isPermutation(initial_order, oracle.primitiveCount()));
+    assert(isPermutation(initial_order, oracle.primitiveCount(), workspace.seen));
     (void)isPermutation;
     VisSorter(oracle, initial_order, result, workspace).run();
 }
