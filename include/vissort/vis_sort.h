@@ -39,7 +39,7 @@ struct VisSortWorkspace {
     std::vector<uint32_t> unsorted, outside, candidates, position;
     std::vector<uint8_t> in_monotone_run, query, behind, in_cycle, walk_state;
     std::vector<int32_t> path_index;
-    std::vector<uint8_t> seen;  // the precondition check's, in builds with assertions
+    std::vector<uint8_t> seen; // the precondition check's, in builds with assertions
 };
 
 /// Orders the oracle's primitives front to back.
