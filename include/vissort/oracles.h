@@ -55,9 +55,6 @@ struct OracleOptions {
 Result<std::unique_ptr<GeometryOracle>> makeOracle(OracleKind kind,
                                                    const OracleOptions& options = {});
 
-/// True when this build has the gl oracle (VISSORT_WITH_GL).
-bool hasGlOracle();
-
 /// The rasterizing oracles that `vissort bench oracle` compares (the exact oracle ray-casts every
 /// pixel when bound, so it is a reference, not a contender).
 std::vector<OracleKind> benchmarkedOracles();

@@ -46,14 +46,6 @@ Result<std::unique_ptr<GeometryOracle>> makeOracle(OracleKind kind, const Oracle
     throw std::invalid_argument("unknown oracle kind");
 }
 
-bool hasGlOracle() {
-#if VISSORT_WITH_GL
-    return true;
-#else
-    return false;
-#endif
-}
-
 std::vector<OracleKind> benchmarkedOracles() {
     return {OracleKind::cpu_reference, OracleKind::cpu};
 }
