@@ -16,7 +16,7 @@
 namespace vissort::detail {
 
 /// How many bytes of a file's start `declaredSizeProblem` looks at: enough for any header it
-/// reads (a PLY header longer than this is not checked and goes to assimp as it is).
+/// reads (a PLY header without end_header in this many bytes is refused).
 inline constexpr std::size_t kDeclaredSizeHeadBytes = 64 * 1024;
 
 /// Empty when the counts declared by the header of `head` (the first bytes of a file of
