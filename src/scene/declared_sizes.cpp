@@ -131,8 +131,9 @@ std::string offProblem(std::string_view head, uint64_t file_size, bool off_exten
     if (needed <= body)
         return {};
     return "the OFF header declares " + std::to_string(*vertices) + " vertices and " +
-           std::to_string(*faces) + " faces, at least " + std::to_string(needed) +
-           " bytes, but the file has " + std::to_string(file_size) + " bytes";
+           std::to_string(*faces) + " faces, at least " +
+           std::to_string(saturatingAdd(needed, first_element)) + " bytes with the header, but " +
+           "the file has " + std::to_string(file_size) + " bytes";
 }
 
 /// Bytes of one value of a PLY scalar type, 0 when the name is not one.
@@ -272,8 +273,9 @@ std::string plyProblem(std::string_view head, uint64_t file_size) {
         declared += (declared.empty() ? "" : ", ") + std::to_string(element.count) + " '" +
                     element.name + "'";
     return "the " + std::string(binary ? "binary" : "ASCII") + " PLY header declares " + declared +
-           " elements, at least " + std::to_string(needed) +
-           " bytes after the header, but the file has " + std::to_string(file_size) + " bytes";
+           " elements, at least " + std::to_string(saturatingAdd(needed, header_end)) +
+           " bytes with the " + std::to_string(header_end) + "-byte header, but the file has " +
+           std::to_string(file_size) + " bytes";
 }
 
 std::string binaryStlProblem(std::string_view head, uint64_t file_size) {

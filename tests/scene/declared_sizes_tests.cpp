@@ -179,7 +179,13 @@ TEST(DeclaredSizes, TruncatedFilesAreRefused) {
     // A binary PLY cut in its last vertex: the header promises more than is there.
     const std::string ply = binaryPlyHeader(3, 1) + floats({0, 0, 0, 1, 0, 0, 0, 1});
     const std::string ply_path = dir.write("cut.ply", ply);
-    expectRefused(loadMeshFile(ply_path), ply_path, {"binary PLY", "bytes"});
+    // At least 3 vertices of 12 bytes and a face of 1 byte (its list's count: a list can be
+    // empty) after the header.
+    const std::size_t header = binaryPlyHeader(3, 1).size();
+    expectRefused(loadMeshFile(ply_path), ply_path,
+                  {"binary PLY header declares 3 'vertex', 1 'face' elements, at least " +
+                   std::to_string(header + 37) + " bytes with the " + std::to_string(header) +
+                   "-byte header, but the file has " + std::to_string(ply.size()) + " bytes"});
     // A binary STL cut in its second facet.
     const std::string stl = binaryStl(2, stlFacet(0, 0, 0) + stlFacet(1, 1, 1).substr(0, 20));
     const std::string stl_path = dir.write("cut.stl", stl);
