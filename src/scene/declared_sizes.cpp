@@ -297,6 +297,71 @@ std::string binaryStlProblem(std::string_view head, uint64_t file_size) {
            " bytes";
 }
 
+/// The digits at the start of `text` as a saturating count (0 without digits), like assimp's
+/// strtoul10 but without its 32-bit wrap.
+uint64_t leadingCount(std::string_view text) {
+    uint64_t value = 0;
+    for (std::size_t i = 0; i < text.size() && text[i] >= '0' && text[i] <= '9'; ++i)
+        value = saturatingAdd(saturatingMultiply(value, 10), static_cast<uint64_t>(text[i] - '0'));
+    return value;
+}
+
+std::string_view skipSpaces(std::string_view text) {
+    std::size_t at = 0;
+    while (at < text.size() && (text[at] == ' ' || text[at] == '\t'))
+        ++at;
+    return text.substr(at);
+}
+
+/// Classic NFF (not NFF2, whose first line is "nff"): the whole file, since its counts can be
+/// anywhere. A polygon line "p N" ("pp N", "tpp N") is followed by N vertex lines; assimp
+/// resizes its arrays to N first, and crashed (segmentation fault) on "p 300000000" in a
+/// 70-byte file. "tess T" makes every later sphere "s" one of 20 x 4^T triangles and every cone
+/// "c" about 4 T: generated, not read, so they get a budget rather than a proportion.
+std::string nffProblem(std::string_view text, uint64_t file_size) {
+    constexpr uint64_t kMaxGeneratedTriangles = 5'000'000;
+    if (lowercase(skipSpaces(text.substr(0, 4))).starts_with("nff"))
+        return {};
+    uint64_t polygon_vertices = 0, generated = 0, tess = 4; // assimp's default level
+    std::size_t at = 0;
+    while (at < text.size()) {
+        std::size_t end = at;
+        while (end < text.size() && text[end] != '\n' && text[end] != '\r')
+            ++end;
+        const std::string_view line = skipSpaces(text.substr(at, end - at));
+        at = end + 1;
+        const std::vector<std::string_view> tokens = words(line);
+        if (tokens.empty())
+            continue;
+        if (line.starts_with("tpp") || line.starts_with("pp") || line.starts_with("p")) {
+            const std::size_t keyword = line.starts_with("tpp")  ? 3
+                                        : line.starts_with("pp") ? 2
+                                                                 : 1;
+            polygon_vertices =
+                saturatingAdd(polygon_vertices, leadingCount(skipSpaces(line.substr(keyword))));
+        } else if (tokens[0] == "tess" && tokens.size() >= 2) {
+            tess = leadingCount(tokens[1]);
+        } else if (tokens[0] == "s") {
+            uint64_t sphere = 20;
+            for (uint64_t level = 0; level < tess && sphere < kSaturated / 4; ++level)
+                sphere *= 4;
+            generated = saturatingAdd(generated, sphere);
+        } else if (tokens[0] == "c") {
+            generated = saturatingAdd(generated, saturatingMultiply(tess, 4));
+        }
+    }
+    // A vertex line takes at least one character and a line end.
+    if (saturatingMultiply(polygon_vertices, 2) > file_size)
+        return "the NFF file declares " + std::to_string(polygon_vertices) +
+               " polygon vertices, at least " +
+               std::to_string(saturatingMultiply(polygon_vertices, 2)) +
+               " bytes, but the file has " + std::to_string(file_size) + " bytes";
+    if (generated > kMaxGeneratedTriangles)
+        return "the NFF file's spheres and cones (tess " + std::to_string(tess) +
+               ") would make more than " + std::to_string(kMaxGeneratedTriangles) + " triangles";
+    return {};
+}
+
 } // namespace
 
 std::string declaredSizeProblem(std::string_view head, uint64_t file_size,
@@ -307,7 +372,13 @@ std::string declaredSizeProblem(std::string_view head, uint64_t file_size,
         return plyProblem(head, file_size);
     if (ext == "stl")
         return binaryStlProblem(head, file_size);
+    if (ext == "nff")
+        return nffProblem(head, file_size);
     return offProblem(head, file_size, ext == "off");
+}
+
+bool declaredSizesNeedWholeFile(std::string_view extension) {
+    return lowercase(extension) == "nff";
 }
 
 } // namespace vissort::detail

@@ -19,13 +19,21 @@ namespace vissort::detail {
 /// reads (a PLY header without end_header in this many bytes is refused).
 inline constexpr std::size_t kDeclaredSizeHeadBytes = 64 * 1024;
 
-/// Empty when the counts declared by the header of `head` (the first bytes of a file of
-/// `file_size` bytes, at most kDeclaredSizeHeadBytes needed) fit in the file, else a one-line
+/// Empty when the counts declared by the header of `head` (the first kDeclaredSizeHeadBytes of a
+/// file of `file_size` bytes, or all of it where declaredSizesNeedWholeFile) fit in the file, else
+/// a one-line
 /// problem without the file's name. `extension` is the file's, lowercase or not, without the dot.
 /// Checked: PLY (ASCII and binary, by its "ply" signature), OFF and its variants (COFF, NOFF,
-/// STOFF, 4OFF, nOFF; by extension or keyword) and binary STL (by extension). Anything else, and
-/// any header this does not understand, gives an empty answer: assimp then decides.
+/// STOFF, 4OFF, nOFF; by extension or keyword), binary STL and classic NFF (by extension). Anything
+/// else, and any header this does not understand, gives an empty answer: assimp then decides.
 std::string declaredSizeProblem(std::string_view head, uint64_t file_size,
                                 std::string_view extension);
+
+/// Whether declaredSizeProblem needs the whole file rather than its first bytes: formats whose
+/// counts can be anywhere (NFF, by extension). Checked in full up to kDeclaredSizeWholeFileBytes.
+bool declaredSizesNeedWholeFile(std::string_view extension);
+
+/// The largest file read whole for declaredSizeProblem; a larger one is checked on its start.
+inline constexpr uint64_t kDeclaredSizeWholeFileBytes = 64ull * 1024 * 1024;
 
 } // namespace vissort::detail

@@ -226,12 +226,16 @@ Result<Scene> loadMeshFile(const std::string& path) {
         return Result<Scene>::failure(path + ": empty file");
     try {
         // Only the header is read here; assimp reads the file itself.
-        std::string head(
-            static_cast<std::size_t>(std::min<uintmax_t>(file_size, kDeclaredSizeHeadBytes)), '\0');
+        const std::string extension = extensionOf(path);
+        const uintmax_t checked_bytes =
+            declaredSizesNeedWholeFile(extension) && file_size <= kDeclaredSizeWholeFileBytes
+                ? file_size
+                : std::min<uintmax_t>(file_size, kDeclaredSizeHeadBytes);
+        std::string head(static_cast<std::size_t>(checked_bytes), '\0');
         std::ifstream stream(file, std::ios::binary);
         stream.read(head.data(), static_cast<std::streamsize>(head.size()));
         head.resize(static_cast<std::size_t>(stream.gcount()));
-        if (const std::string problem = declaredSizeProblem(head, file_size, extensionOf(path));
+        if (const std::string problem = declaredSizeProblem(head, file_size, extension);
             !problem.empty())
             return Result<Scene>::failure(path + ": " + problem);
         Assimp::Importer importer;
@@ -251,8 +255,10 @@ Result<Scene> loadMeshMemory(const void* data, std::size_t size, const std::stri
         return Result<Scene>::failure(label + ": empty input");
     try {
         const std::string_view bytes(static_cast<const char*>(data), size);
-        if (const std::string problem =
-                declaredSizeProblem(bytes.substr(0, kDeclaredSizeHeadBytes), size, format_hint);
+        if (const std::string problem = declaredSizeProblem(
+                declaredSizesNeedWholeFile(format_hint) ? bytes
+                                                        : bytes.substr(0, kDeclaredSizeHeadBytes),
+                size, format_hint);
             !problem.empty())
             return Result<Scene>::failure(label + ": " + problem);
         Assimp::Importer importer;

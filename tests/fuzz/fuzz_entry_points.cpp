@@ -99,7 +99,7 @@ void sceneParameters(const uint8_t* data, std::size_t size) {
 }
 
 void meshFile(const uint8_t* data, std::size_t size) {
-    static constexpr const char* kExtensions[] = {"obj", "ply", "stl", "off", "gltf", "glb"};
+    static constexpr const char* kExtensions[] = {"obj", "ply", "stl", "off", "gltf", "glb", "nff"};
     if (size == 0)
         return;
     const std::string_view text(reinterpret_cast<const char*>(data + 1), size - 1);

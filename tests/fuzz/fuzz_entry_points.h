@@ -21,7 +21,7 @@ void jsonScene(const uint8_t* data, std::size_t size);
 void sceneParameters(const uint8_t* data, std::size_t size);
 
 /// The bytes after the first as a mesh file through loadScene; the first byte picks the
-/// extension (obj, ply, stl, off, gltf, glb), that is which of assimp's readers gets it.
+/// extension (obj, ply, stl, off, gltf, glb, nff), that is which of assimp's readers gets it.
 void meshFile(const uint8_t* data, std::size_t size);
 
 struct Target {

@@ -257,6 +257,32 @@ TEST(DeclaredSizes, PlyWithoutEndHeaderIsRefused) {
               std::string::npos);
 }
 
+TEST(DeclaredSizes, NffPolygonCountsAndGeneratedShapesAreBounded) {
+    TempDir dir;
+    // "p 300000000" in 70 bytes: assimp resized its arrays for the count and then crashed.
+    const std::string view = "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\n";
+    const std::string huge = dir.write("huge.nff", view + "p 300000000\n0 0 0\n1 0 0\n0 1 0\n");
+    expectRefused(loadMeshFile(huge), huge, {"NFF file declares 300000000 polygon vertices"});
+    // Counts anywhere in the file, past the first 64 KiB too.
+    const std::string late = dir.write(
+        "late.nff", view + std::string(detail::kDeclaredSizeHeadBytes, '\n') + "pp 99999999\n");
+    expectRefused(loadMeshFile(late), late, {"99999999 polygon vertices"});
+    const std::string honest = dir.write("honest.nff", view + "p 3\n0 0 0\n1 0 0\n0 1 0\n");
+    const Result<Scene> loaded = loadMeshFile(honest);
+    ASSERT_TRUE(loaded) << loaded.error;
+    EXPECT_EQ(loaded.value->triangleCount(), 1u);
+    // A sphere of tess 9 is 20 x 4^9 = 5.2 million triangles (assimp: 4 s, 860 MB); tess 8 is
+    // 1.3 million. A cone with an absurd tess is refused too.
+    const std::string tess9 = dir.write("tess9.nff", "tess 9\ns 0 0 0 1\n");
+    expectRefused(loadMeshFile(tess9), tess9, {"spheres and cones (tess 9)", "5000000"});
+    EXPECT_EQ(declaredSizeProblem("tess 8\ns 0 0 0 1\n", 18, "nff"), "");
+    EXPECT_NE(
+        declaredSizeProblem("tess 8\ns 0 0 0 1\ns 1 0 0 1\ns 2 0 0 1\ns 3 0 0 1\n", 50, "NFF"), "");
+    EXPECT_NE(declaredSizeProblem("tess 4000000000\nc\n0 0 0 1\n0 0 1 1\n", 35, "nff"), "");
+    // NFF2 (first line "nff") is another grammar, left to assimp.
+    EXPECT_EQ(declaredSizeProblem("nff\nversion 2.0\n", 16, "nff"), "");
+}
+
 TEST(DeclaredSizes, HeadersItDoesNotUnderstandAreLeftToAssimp) {
     // Unknown PLY keywords or types, a header longer than what was read, other formats.
     EXPECT_EQ(declaredSizeProblem("ply\nformat ascii 1.0\nelement vertex 9999999\nproperty "
