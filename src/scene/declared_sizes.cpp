@@ -8,7 +8,8 @@
 //  - binary PLY: the sum of its scalar properties' sizes and its lists' count sizes (a list can
 //    be empty); an element without properties counts as 1 byte, since assimp still makes one
 //    record for each;
-//  - binary STL: exactly 84 + 50 n bytes (header, count, n facets of 50 bytes).
+//  - binary STL: exactly 84 + 50 n bytes (header, count, n facets of 50 bytes);
+//  - classic NFF: a polygon's vertex is a line; generated spheres and cones get a budget.
 // Counts are read as 64-bit, saturating: a count assimp would wrap to 32 bits is refused too.
 
 #include "scene/declared_sizes.h"
@@ -173,7 +174,7 @@ struct PlyElement {
     uint64_t properties = 0;
 };
 
-/// Whether a line of `head` starts with end_header.
+/// Whether a line of `head` starts with end_header, in lowercase as assimp matches it.
 bool hasEndHeader(std::string_view head) {
     std::size_t at = 0;
     while (at < head.size()) {
@@ -181,7 +182,7 @@ bool hasEndHeader(std::string_view head) {
         while (end < head.size() && head[end] != '\n' && head[end] != '\r')
             ++end;
         const std::vector<std::string_view> line = words(head.substr(at, end - at));
-        if (!line.empty() && lowercase(line[0]) == "end_header")
+        if (!line.empty() && line[0] == "end_header")
             return true;
         at = end + 1;
     }
@@ -190,7 +191,8 @@ bool hasEndHeader(std::string_view head) {
 
 std::string plyProblem(std::string_view head, uint64_t file_size) {
     // assimp 5.2.5 reads past its buffer (a segmentation fault) on a binary PLY header without
-    // end_header (found by the mesh_file fuzzer). No valid header is 64 KiB long.
+    // end_header, and loops forever on an ASCII one with "eNd_header" (both found by the
+    // mesh_file fuzzer). No valid header is 64 KiB long.
     if (!hasEndHeader(head))
         return "the PLY header has no end_header line" +
                std::string(file_size > head.size() ? " in its first 64 KiB" : "");
@@ -247,7 +249,7 @@ std::string plyProblem(std::string_view head, uint64_t file_size) {
                 return {};
             }
             ++element.properties;
-        } else if (keyword == "end_header") {
+        } else if (line[0] == "end_header") {
             header_end = at;
         } else {
             return {}; // a header this does not understand: assimp decides

@@ -248,6 +248,12 @@ TEST(DeclaredSizes, PlyWithoutEndHeaderIsRefused) {
                                     std::string(12, '\0') + floats({1, 0, 0}));
     expectRefused(loadMeshFile(path), path, {"PLY header has no end_header line"});
     EXPECT_NE(declaredSizeProblem("ply\nformat ascii 1.0\nelement vertex 9\n", 37, "ply"), "");
+    // assimp matches end_header in lowercase only, and looped forever on this ASCII header
+    // (found by the mesh_file fuzzer).
+    const std::string mixed_case =
+        dir.write("mixed_case.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                                    "eNd_header\n0\n1\n2\n");
+    expectRefused(loadMeshFile(mixed_case), mixed_case, {"PLY header has no end_header line"});
     // A header that goes on past the first 64 KiB.
     const std::string long_header =
         "ply\nformat ascii 1.0\n" + std::string(detail::kDeclaredSizeHeadBytes, '#') + "\n";
