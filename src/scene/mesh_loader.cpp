@@ -205,6 +205,8 @@ Result<Scene> finishImport(Assimp::Importer& importer, const aiScene* ai_scene,
         std::string reason = oneLine(importer.GetErrorString());
         if (reason.empty())
             reason = "unreadable or unsupported file";
+        else if (reason == "std::bad_alloc") // assimp catches it and keeps its what()
+            reason = kOutOfMemory;
         return Result<Scene>::failure(label + ": " + reason);
     }
     return convertScene(*ai_scene, label, scene_name);
