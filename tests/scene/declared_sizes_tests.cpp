@@ -263,6 +263,26 @@ TEST(DeclaredSizes, PlyWithoutEndHeaderIsRefused) {
               std::string::npos);
 }
 
+TEST(DeclaredSizes, PlyElementsDeclaredTwiceAreRefused) {
+    // Found by the mesh_file fuzzer (seen under valgrind): with two 'vertex' elements assimp
+    // 5.2.5 writes the second one's vertices past the end of the first one's array.
+    TempDir dir;
+    const std::string header = "ply\nformat binary_little_endian 1.0\nelement vertex 2\n" +
+                               kPlyVertexProperties + "element vertex 3\n" + kPlyVertexProperties +
+                               "element face 1\nproperty list uchar int vertex_indices\n"
+                               "end_header\n";
+    const std::string path =
+        dir.write("twice.ply", header + floats({0, 0, 0, 1, 0, 0}) +
+                                   floats({0, 0, 0, 1, 0, 0, 0, 1, 0}) + binaryPlyFace(0, 1, 2));
+    expectRefused(loadMeshFile(path), path, {"declares the element 'vertex' twice"});
+    // Also when other lines of the header are not understood.
+    EXPECT_NE(declaredSizeProblem("ply\nformat binary_little_endian 1.0\nelement face 1\n"
+                                  "propertyvertex_indices\nelement face 1\nend_header\n",
+                                  200, "ply")
+                  .find("'face' twice"),
+              std::string::npos);
+}
+
 TEST(DeclaredSizes, NffPolygonCountsAndGeneratedShapesAreBounded) {
     TempDir dir;
     // "p 300000000" in 70 bytes: assimp resized its arrays for the count and then crashed.
