@@ -19,9 +19,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// One private folder per process, for the input files (removed at exit).
+/// One private folder per process, for the input files (removed at exit). The path is never
+/// destroyed: the exit handler that removes the folder runs after static destructors would
+/// have (valgrind found the handler reading a destroyed path).
 const fs::path& scratchFolder() {
-    static const fs::path folder = [] {
+    static const fs::path& folder = *new fs::path([] {
         std::string pattern = (fs::temp_directory_path() / "vissort_fuzz_XXXXXX").string();
         if (!mkdtemp(pattern.data()))
             std::abort();
@@ -32,7 +34,7 @@ const fs::path& scratchFolder() {
         // A small mesh for JSON scenes to refer to ("mesh": "tri.obj").
         std::ofstream(fs::path(pattern) / "tri.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
         return fs::path(pattern);
-    }();
+    }());
     return folder;
 }
 
