@@ -54,6 +54,26 @@ Result<SceneParameters> parseQuery(const std::string& query, const std::string& 
     return {std::move(parameters), {}};
 }
 
+/// Messages quote the specification and parts of the input as they are (a file name, a key, a
+/// value); control characters in them are written as \xNN, so that every error stays one line.
+/// (The scene_parameters fuzzer found "builtin:x?&" followed by line ends.)
+std::string oneLine(const std::string& message) {
+    static constexpr char kHex[] = "0123456789abcdef";
+    std::string line;
+    line.reserve(message.size());
+    for (const char c : message) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte < 0x20 || byte == 0x7f) {
+            line += "\\x";
+            line += kHex[byte >> 4];
+            line += kHex[byte & 15];
+        } else {
+            line += c;
+        }
+    }
+    return line;
+}
+
 Result<Scene> loadBuiltin(const std::string& specification) {
     const std::string rest = specification.substr(kBuiltinPrefix.size());
     const std::size_t question = rest.find('?');
@@ -70,9 +90,7 @@ Result<Scene> loadBuiltin(const std::string& specification) {
     return scene;
 }
 
-} // namespace
-
-Result<Scene> loadScene(const std::string& specification) {
+Result<Scene> loadSpecification(const std::string& specification) {
     if (specification.empty())
         return Result<Scene>::failure("empty scene specification");
     try {
@@ -88,6 +106,15 @@ Result<Scene> loadScene(const std::string& specification) {
         // The loaders return errors as values; this only catches what they cannot (out of memory).
         return Result<Scene>::failure(specification + ": " + e.what());
     }
+}
+
+} // namespace
+
+Result<Scene> loadScene(const std::string& specification) {
+    Result<Scene> scene = loadSpecification(specification);
+    if (!scene)
+        scene.error = oneLine(scene.error);
+    return scene;
 }
 
 } // namespace vissort

@@ -5,6 +5,8 @@
 
 #include "scene/mesh_loader.h"
 
+#include "scene/declared_sizes.h"
+
 #include <assimp/Importer.hpp>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
@@ -14,6 +16,8 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
+#include <new>
 #include <system_error>
 #include <vector>
 
@@ -27,6 +31,17 @@ struct MeshInstance {
     aiMatrix4x4 world; // node-to-world transform of the node that references the mesh
     std::string node_name;
 };
+
+// What std::bad_alloc says ("std::bad_alloc") names no problem. Some of assimp's readers
+// allocate for counts their file declares, and declaredSizeProblem checks only some formats.
+constexpr const char* kOutOfMemory =
+    "not enough memory to read the file (a declared size out of proportion to the file?)";
+
+/// The file's extension without the dot ("" when it has none).
+std::string extensionOf(const std::string& path) {
+    const std::string extension = std::filesystem::path(path).extension().string();
+    return extension.empty() ? extension : extension.substr(1);
+}
 
 std::string oneLine(std::string text) {
     std::replace_if(
@@ -190,6 +205,8 @@ Result<Scene> finishImport(Assimp::Importer& importer, const aiScene* ai_scene,
         std::string reason = oneLine(importer.GetErrorString());
         if (reason.empty())
             reason = "unreadable or unsupported file";
+        else if (reason == "std::bad_alloc") // assimp catches it and keeps its what()
+            reason = kOutOfMemory;
         return Result<Scene>::failure(label + ": " + reason);
     }
     return convertScene(*ai_scene, label, scene_name);
@@ -204,10 +221,30 @@ Result<Scene> loadMeshFile(const std::string& path) {
         return Result<Scene>::failure(path + ": file not found");
     if (!std::filesystem::is_regular_file(file, ec))
         return Result<Scene>::failure(path + ": not a regular file");
+    const uintmax_t file_size = std::filesystem::file_size(file, ec);
+    if (ec)
+        return Result<Scene>::failure(path + ": cannot read the file's size");
+    if (file_size == 0)
+        return Result<Scene>::failure(path + ": empty file");
     try {
+        // Only the header is read here; assimp reads the file itself.
+        const std::string extension = extensionOf(path);
+        const uintmax_t checked_bytes =
+            declaredSizesNeedWholeFile(extension) && file_size <= kDeclaredSizeWholeFileBytes
+                ? file_size
+                : std::min<uintmax_t>(file_size, kDeclaredSizeHeadBytes);
+        std::string head(static_cast<std::size_t>(checked_bytes), '\0');
+        std::ifstream stream(file, std::ios::binary);
+        stream.read(head.data(), static_cast<std::streamsize>(head.size()));
+        head.resize(static_cast<std::size_t>(stream.gcount()));
+        if (const std::string problem = declaredSizeProblem(head, file_size, extension);
+            !problem.empty())
+            return Result<Scene>::failure(path + ": " + problem);
         Assimp::Importer importer;
         const aiScene* ai_scene = importer.ReadFile(path, kImportFlags);
         return finishImport(importer, ai_scene, path, file.stem().string());
+    } catch (const std::bad_alloc&) {
+        return Result<Scene>::failure(path + ": " + kOutOfMemory);
     } catch (const std::exception& e) {
         // assimp reports most failures through GetErrorString, but some readers throw.
         return Result<Scene>::failure(path + ": " + oneLine(e.what()));
@@ -219,11 +256,20 @@ Result<Scene> loadMeshMemory(const void* data, std::size_t size, const std::stri
     if (!data || size == 0)
         return Result<Scene>::failure(label + ": empty input");
     try {
+        const std::string_view bytes(static_cast<const char*>(data), size);
+        if (const std::string problem = declaredSizeProblem(
+                declaredSizesNeedWholeFile(format_hint) ? bytes
+                                                        : bytes.substr(0, kDeclaredSizeHeadBytes),
+                size, format_hint);
+            !problem.empty())
+            return Result<Scene>::failure(label + ": " + problem);
         Assimp::Importer importer;
         const aiScene* ai_scene =
             importer.ReadFileFromMemory(data, size, kImportFlags, format_hint.c_str());
         return finishImport(importer, ai_scene, label,
                             std::filesystem::path(label).stem().string());
+    } catch (const std::bad_alloc&) {
+        return Result<Scene>::failure(label + ": " + kOutOfMemory);
     } catch (const std::exception& e) {
         return Result<Scene>::failure(label + ": " + oneLine(e.what()));
     }

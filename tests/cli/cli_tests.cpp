@@ -457,6 +457,19 @@ TEST_F(Cli, ErrorEmptyObj) {
     expectError({"order", path("empty.obj")}, kInput, {path("empty.obj")});
 }
 
+TEST_F(Cli, ErrorDeclaredSizesOutOfProportionToTheFile) {
+    // Headers declaring billions of elements in a few hundred bytes: refused from the header
+    // (assimp would first allocate for the count: 15.8 GB and 89 s for the OFF file).
+    std::ofstream(path("huge.off"), std::ios::binary) << "OFF\n3535352353 6 0\n0 0 0\n";
+    expectError({"order", path("huge.off"), "--size", "128x128"}, kInput,
+                {path("huge.off"), "declares 3535352353 vertices"});
+    std::ofstream(path("huge.ply"), std::ios::binary)
+        << "ply\nformat ascii 1.0\nelement vertex 2000000000\nproperty float x\n"
+           "property float y\nproperty float z\nend_header\n0 0 0\n";
+    expectError({"order", path("huge.ply"), "--size", "128x128"}, kInput,
+                {path("huge.ply"), "declares 2000000000 'vertex'"});
+}
+
 TEST_F(Cli, ErrorNonFiniteCoordinates) {
     expectError({"order", dataPath("cli/nan_coordinate.obj")}, kInput,
                 {dataPath("cli/nan_coordinate.obj")});

@@ -184,6 +184,14 @@ TEST(LoadScene, MalformedSpecifications) {
     expectFailure(loadScene("builtin:slabs?layers=3&&seed=1"), "empty parameter");
 }
 
+TEST(LoadScene, ControlCharactersInMessagesAreEscapedToKeepOneLine) {
+    // Found by the scene_parameters fuzzer: the specification is quoted in the message as is.
+    expectFailure(loadScene("builtin:soup?&\n\n"), "builtin:soup?&\\x0a\\x0a: empty parameter");
+    expectFailure(loadScene("builtin:soup?n\r=1"), "unknown parameter 'n\\x0d'");
+    expectFailure(loadScene("builtin:soup?n=1\t"), "'1\\x09' is not an integer");
+    expectFailure(loadScene("/nonexistent/a\nb.obj"), "/nonexistent/a\\x0ab.obj: file not found");
+}
+
 TEST(LoadScene, BuiltinScenesGetTheirParameters) {
     const Result<Scene> plain = loadScene("builtin:slabs");
     ASSERT_TRUE(plain) << plain.error;

@@ -1,0 +1,9 @@
+// libFuzzer target: mesh files through assimp (the first byte picks the format). Built with
+// VISSORT_FUZZ=ON; run by scripts/fuzz.sh.
+
+#include "fuzz_entry_points.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    vissort::fuzz::meshFile(data, size);
+    return 0;
+}
