@@ -20,14 +20,25 @@
 //     interior to its right). Y points down. A mesh tiling a region covers each centre once.
 //  6. Depth: the plane through the fan triangle's unsnapped (sx, sy, d), vertices in the order of
 //     rule 5: e1 = v1 - v0, e2 = v2 - v0, det = e1x e2y - e2x e1y, ddx = (e1d e2y - e2d e1y) / det,
-//     ddy = (e2d e1x - e1d e2x) / det (both 0 when det == 0), and at the centre (cx, cy) =
-//     (px + 0.5, py + 0.5): float(d0 + ddx (cx - x0) + ddy (cy - y0)), all in double. No clamping.
-//  7. Depth buffer: one float per pixel, row-major from the top row, cleared to +infinity.
-//     draw writes a fragment when frag < stored. anyBehind is true when some fragment has
-//     frag > stored + tolerance (float sum; the oracle's depthTolerance(), kDepthTolerance unless
-//     set), so +infinity pixels never count.
+//     ddy = (e2d e1x - e1d e2x) / det, and its snap slack s = (|ddx| + |ddy|) 2^-9: snapping
+//     moves a vertex by at most 2^-9 pixels per axis, so a covered centre lies that close to the
+//     unsnapped triangle and the plane's value there is within s of the triangle's depth. Where
+//     det == 0 (snapping gave an edge-on triangle area) or s is not finite: ddx = ddy = 0, d0 the
+//     middle of the vertex depths and s half their range. The value at the centre (cx, cy) =
+//     (px + 0.5, py + 0.5): c = d0 + ddx (cx - x0) + ddy (cy - y0), all in double. No clamping.
+//  7. Fragments and the depth buffer: one float per pixel, row-major from the top row, cleared to
+//     +infinity. A draw's fragment is float(c + o) and a query's float(c - o), with o = s when
+//     the tolerance is >= 0 and o = -s when it is negative (exactFragmentOffset): touching and
+//     coplanar faces, whose planes meet only where one of them is extrapolated by snapping,
+//     never count as behind each other, while near ties still count both ways under a negative
+//     tolerance. draw writes a fragment when frag < stored. anyBehind is true when some fragment
+//     has frag > stored + tolerance (float sum; the oracle's depthTolerance(), kDepthTolerance
+//     unless set), so +infinity pixels never count. The bound: with a tolerance t >= 0, a
+//     surface whose depth exceeds the drawn one's by more than t + s(query) + s(drawn) (plus
+//     float rounding, a few 2^-24) at a covered centre is always behind; one within t of it
+//     never is. docs/robustness.md, "Depth precision".
 //
-// Conservative mode (RasterMode::conservative) changes rules 5 and 6 only, so that every pixel
+// Conservative mode (RasterMode::conservative) changes rules 5, 6 and 7 only, so that every pixel
 // square the unsnapped triangle touches is visited with a depth range holding the triangle's
 // depths there (collision culling must never miss a contact; docs/collision.md):
 //  - squares grow by m = 1 sub-pixel unit on every side (snapping moves a vertex by at most half

@@ -4,7 +4,9 @@
 
 #include "vissort/gl_oracle.h"
 
+#include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -58,6 +60,10 @@ struct GlOracle::Impl {
     std::vector<GLsizei> corner_counts;
     enum class Mode { unset, draw, query } mode = Mode::unset;
     float tolerance = kDepthTolerance; // the oracle's, taken at every call
+    // glPolygonOffset's factor for the snap slack: the driver moves a fragment by factor times
+    // max(|dz/dx|, |dz/dy|), and the slack is (|dz/dx| + |dz/dy|) / 2^(subpixel bits + 1) at
+    // most that with factor 2^-(subpixel bits). Set at the first call (the context is current).
+    float slope_factor = -1;
     GlOracleStats stats;
 
     void setMode(Mode wanted) {
@@ -68,6 +74,9 @@ struct GlOracle::Impl {
         glDepthFunc(query ? GL_GREATER : GL_LESS);
         glDepthMask(query ? GL_FALSE : GL_TRUE);
         glProgramUniform1f(program.get(), offset_location, query ? -tolerance : 0.0f);
+        // The snap slack (cpu_oracle.h, rule 7) as a slope-scaled polygon offset: towards "not
+        // behind" for a tolerance >= 0 (draws farther, queries nearer), else the other way.
+        glPolygonOffset(query == (tolerance >= 0) ? -slope_factor : slope_factor, 0.0f);
     }
 
     // Queues primitive p's draw (LESS, writes on).
@@ -126,7 +135,16 @@ struct GlOracle::Impl {
         glGenQueries(GLsizei(count - old), queries.data() + old);
     }
 
-    void begin(float depth_tolerance) {
+    // Ends a public call: the polygon offset is this oracle's alone, not the shared context's
+    // other users' (the renderer draws without one).
+    struct [[nodiscard]] Scope {
+        Scope() = default;
+        Scope(const Scope&) = delete;
+        Scope& operator=(const Scope&) = delete;
+        ~Scope() { glDisable(GL_POLYGON_OFFSET_FILL); }
+    };
+
+    Scope begin(float depth_tolerance) {
         tolerance = depth_tolerance;
         context->makeCurrent();
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.get());
@@ -142,7 +160,14 @@ struct GlOracle::Impl {
         glDisable(GL_STENCIL_TEST);
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         glClearDepth(1.0);
+        if (slope_factor < 0) {
+            GLint bits = 8;
+            glGetIntegerv(GL_SUBPIXEL_BITS, &bits);
+            slope_factor = std::ldexp(1.0f, -std::clamp(bits, 4, 12));
+        }
+        glEnable(GL_POLYGON_OFFSET_FILL);
         mode = Mode::unset;
+        return {};
     }
 
     void clearDepth() {
@@ -152,9 +177,9 @@ struct GlOracle::Impl {
         glClear(GL_DEPTH_BUFFER_BIT);
     }
 
-    // A pass or a group query: an empty depth buffer and query objects for `count` answers.
-    void beginPass(std::size_t count, float depth_tolerance) {
-        begin(depth_tolerance);
+    // A pass or a group query, after begin: an empty depth buffer and query objects for `count`
+    // answers.
+    void beginPass(std::size_t count) {
         clearDepth();
         ensureQueries(count);
     }
@@ -248,7 +273,7 @@ void GlOracle::bind(PositionsView positions, const ViewProjection& view,
     d.primitives.assign(primitives.begin(), primitives.end());
     for ([[maybe_unused]] const PrimitiveRange& range : d.primitives)
         assert(uint64_t(range.first_triangle) + range.triangle_count <= positions.triangleCount());
-    d.begin(depth_tolerance_);
+    const Impl::Scope scope = d.begin(depth_tolerance_);
     d.clearDepth();
 }
 
@@ -257,20 +282,20 @@ uint32_t GlOracle::primitiveCount() const {
 }
 
 void GlOracle::clear() {
-    impl_->begin(depth_tolerance_);
+    const Impl::Scope scope = impl_->begin(depth_tolerance_);
     impl_->clearDepth();
 }
 
 void GlOracle::draw(uint32_t primitive) {
     Impl& d = *impl_;
-    d.begin(depth_tolerance_);
+    const Impl::Scope scope = d.begin(depth_tolerance_);
     d.queueDraw(primitive);
     d.flushDraws();
 }
 
 bool GlOracle::anyBehind(uint32_t primitive) {
     Impl& d = *impl_;
-    d.begin(depth_tolerance_);
+    const Impl::Scope scope = d.begin(depth_tolerance_);
     d.ensureQueries(1);
     d.issueQuery(primitive, d.queries[0]);
     return d.answer(d.queries[0]);
@@ -280,7 +305,8 @@ void GlOracle::backToFrontPass(std::span<const uint32_t> sequence, std::span<con
                                std::span<uint8_t> behind) {
     assert(query.size() == sequence.size() && behind.size() == sequence.size());
     Impl& d = *impl_;
-    d.beginPass(sequence.size(), depth_tolerance_);
+    const Impl::Scope scope = d.begin(depth_tolerance_);
+    d.beginPass(sequence.size());
     for (std::size_t i = sequence.size(); i-- > 0;) {
         if (query[i])
             d.issueQuery(sequence[i], d.queries[i]);
@@ -294,7 +320,8 @@ void GlOracle::frontToBackPass(std::span<const uint32_t> sequence, std::span<con
                                std::span<uint8_t> behind) {
     assert(query.size() == sequence.size() && behind.size() == sequence.size());
     Impl& d = *impl_;
-    d.beginPass(sequence.size(), depth_tolerance_);
+    const Impl::Scope scope = d.begin(depth_tolerance_);
+    d.beginPass(sequence.size());
     for (std::size_t i = 0; i < sequence.size(); ++i) {
         if (!query[i]) {
             d.queueDraw(sequence[i]);
@@ -316,7 +343,8 @@ void GlOracle::queryAgainst(std::span<const uint32_t> occluders, std::span<const
                             std::span<uint8_t> behind) {
     assert(behind.size() == targets.size());
     Impl& d = *impl_;
-    d.beginPass(targets.size(), depth_tolerance_);
+    const Impl::Scope scope = d.begin(depth_tolerance_);
+    d.beginPass(targets.size());
     for (uint32_t p : occluders)
         d.queueDraw(p);
     for (std::size_t i = 0; i < targets.size(); ++i)

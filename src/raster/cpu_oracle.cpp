@@ -62,7 +62,7 @@ void CpuOracle::draw(uint32_t primitive) {
         const auto a = toClipVertex(corners_[c]), b = toClipVertex(corners_[c + 1]),
                    d = toClipVertex(corners_[c + 2]);
         if (mode_ == RasterMode::exact) {
-            detail::rasterizeTriangle(a, b, d, width_, height_, write);
+            detail::rasterizeTriangleFor(true, depth_tolerance_, a, b, d, width_, height_, write);
         } else {
             detail::rasterizeTriangleConservative(a, b, d, width_, height_,
                                                   [&](uint32_t px, uint32_t py, float nearest,
@@ -88,7 +88,8 @@ bool CpuOracle::anyBehind(uint32_t primitive) {
         const auto a = toClipVertex(corners_[c]), b = toClipVertex(corners_[c + 1]),
                    d = toClipVertex(corners_[c + 2]);
         if (mode_ == RasterMode::exact) {
-            behind = detail::rasterizeTriangle(a, b, d, width_, height_, test);
+            behind = detail::rasterizeTriangleFor(false, depth_tolerance_, a, b, d, width_, height_,
+                                                  test);
         } else {
             behind = detail::rasterizeTriangleConservative(
                 a, b, d, width_, height_, [&](uint32_t px, uint32_t py, float, float farthest) {

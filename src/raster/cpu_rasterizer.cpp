@@ -3,6 +3,7 @@
 
 #include "raster/cpu_rasterizer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -89,12 +90,25 @@ bool setupImpl(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex&
     const double e1x = v[1].x - v[0].x, e1y = v[1].y - v[0].y, e1d = v[1].d - v[0].d;
     const double e2x = v[2].x - v[0].x, e2y = v[2].y - v[0].y, e2d = v[2].d - v[0].d;
     const double det = e1x * e2y - e2x * e1y;
+    const double ddx = det != 0 ? (e1d * e2y - e2d * e1y) / det : 0.0;
+    const double ddy = det != 0 ? (e2d * e1x - e1d * e2x) / det : 0.0;
+    const double slack = snapSlack(ddx, ddy);
     s.x0 = v[0].x;
     s.y0 = v[0].y;
+    if (det == 0 || !std::isfinite(slack)) {
+        // Snapping gave area to a triangle that had none (edge-on), or the plane is too steep
+        // to evaluate: the middle of the vertex depths everywhere, slack half their range.
+        const double d_min = std::min({v[0].d, v[1].d, v[2].d});
+        const double d_max = std::max({v[0].d, v[1].d, v[2].d});
+        s.d0 = 0.5 * d_min + 0.5 * d_max;
+        s.ddx = s.ddy = 0;
+        s.spread = 0.5 * d_max - 0.5 * d_min;
+        return true;
+    }
     s.d0 = v[0].d;
-    // Snapping can give area to a triangle that had none: it then gets v0's depth everywhere.
-    s.ddx = det != 0 ? (e1d * e2y - e2d * e1y) / det : 0.0;
-    s.ddy = det != 0 ? (e2d * e1x - e1d * e2x) / det : 0.0;
+    s.ddx = ddx;
+    s.ddy = ddy;
+    s.spread = slack;
     return true;
 }
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 
 #include "raster/homogeneous_clip.h"
@@ -78,9 +79,27 @@ struct TriangleSetup {
     // be touched), clamped to the viewport.
     int64_t px_min = 0, px_max = -1, py_min = 0, py_max = -1;
     // Conservative mode: half the range of depths over a pixel square about the plane's value at
-    // its centre (0 in exact mode).
+    // its centre. Exact mode: the snap slack (snapSlack), how far the plane's value at a covered
+    // centre may be from the depth of the nearest point of the unsnapped triangle.
     double spread = 0;
 };
+
+/// Exact mode's snap slack of a depth plane with slopes ddx and ddy (rule 6, cpu_oracle.h).
+/// Snapping moves each vertex by at most half a sub-pixel unit per axis, so the snapped triangle
+/// lies within the unsnapped one grown by that square: a covered centre is at most 2^-9 pixels
+/// per axis from a point of the unsnapped triangle, where the plane's value differs by at most
+/// (|ddx| + |ddy|) 2^-9. Touching faces meet only where one of them is extrapolated like that.
+inline double snapSlack(double ddx, double ddy) {
+    return (std::abs(ddx) + std::abs(ddy)) * (0.5 / double(kSubpixelScale));
+}
+
+/// Exact mode: what a draw or a query adds to a fragment's double depth before rounding (rule
+/// 7): the slack towards "not behind" when the tolerance is >= 0 (draws farther, queries
+/// nearer: touching faces never count as behind each other), towards "behind" when it is
+/// negative (near ties count both ways, as a negative tolerance asks).
+inline double exactFragmentOffset(double slack, bool draw, float tolerance) {
+    return draw == (tolerance >= 0) ? slack : -slack;
+}
 
 /// Screen mapping of a clip-space point: sx = (x / w + 1) * 0.5 * width,
 /// sy = (1 - y / w) * 0.5 * height, d = z / w.
@@ -109,15 +128,18 @@ inline int64_t edgeFunction(const TriangleSetup& s, int i, int64_t px, int64_t p
     return (s.x[j] - s.x[i]) * (py - s.y[i]) - (s.y[j] - s.y[i]) * (px - s.x[i]);
 }
 
-/// Depth of the plane at the centre of pixel (px, py), evaluated in double, rounded to float.
-inline float depthAt(const TriangleSetup& s, int64_t px, int64_t py) {
+/// Depth of the plane at the centre of pixel (px, py), evaluated in double, offset added (-0.0
+/// changes nothing), rounded to float.
+inline float depthAt(const TriangleSetup& s, int64_t px, int64_t py, double offset = -0.0) {
     const double cx = double(px) + 0.5, cy = double(py) + 0.5;
-    return float(s.d0 + s.ddx * (cx - s.x0) + s.ddy * (cy - s.y0));
+    return float((s.d0 + s.ddx * (cx - s.x0) + s.ddy * (cy - s.y0)) + offset);
 }
 
 /// Calls visit(px, py, depth) for every pixel whose centre the set-up triangle covers, rows top
-/// to bottom, left to right. Stops, returning true, as soon as visit returns true.
-template <class Visit> bool walkTriangle(const TriangleSetup& s, Visit&& visit) {
+/// to bottom, left to right, depth being depthAt(s, px, py, offset). Stops, returning true, as
+/// soon as visit returns true.
+template <class Visit>
+bool walkTriangle(const TriangleSetup& s, Visit&& visit, double offset = -0.0) {
     for (int64_t py = s.py_min; py <= s.py_max; ++py) {
         const int64_t cy = py * kSubpixelScale + kSubpixelScale / 2;
         for (int64_t px = s.px_min; px <= s.px_max; ++px) {
@@ -128,7 +150,7 @@ template <class Visit> bool walkTriangle(const TriangleSetup& s, Visit&& visit) 
                 continue;
             if (edgeFunction(s, 2, cx, cy) + s.bias[2] <= 0)
                 continue;
-            if (visit(uint32_t(px), uint32_t(py), depthAt(s, px, py)))
+            if (visit(uint32_t(px), uint32_t(py), depthAt(s, px, py, offset)))
                 return true;
         }
     }
@@ -192,12 +214,23 @@ bool forEachFanTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVert
 }
 
 /// Rasterizes one clip-space triangle into a width x height viewport, visit(px, py, depth) per
-/// covered pixel centre (see walkTriangle). Returns true when visit stopped the walk.
+/// covered pixel centre (see walkTriangle), the plane's own depths. Returns true when visit
+/// stopped the walk.
 template <class Visit>
 bool rasterizeTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
                        uint32_t width, uint32_t height, Visit&& visit) {
     return forEachFanTriangle(a, b, c, width, height, false,
                               [&](const TriangleSetup& s) { return walkTriangle(s, visit); });
+}
+
+/// rasterizeTriangle for an oracle's draw or query: each fan triangle's depths moved by
+/// exactFragmentOffset of its snap slack.
+template <class Visit>
+bool rasterizeTriangleFor(bool draw, float tolerance, const ClipVertex& a, const ClipVertex& b,
+                          const ClipVertex& c, uint32_t width, uint32_t height, Visit&& visit) {
+    return forEachFanTriangle(a, b, c, width, height, false, [&](const TriangleSetup& s) {
+        return walkTriangle(s, visit, exactFragmentOffset(s.spread, draw, tolerance));
+    });
 }
 
 /// rasterizeTriangle in conservative mode: visit(px, py, nearest, farthest).

@@ -46,16 +46,18 @@ constexpr std::size_t kTilePixels = std::size_t(detail::kTileRowFloats) * detail
 // with a wide safety factor on the 4 roundings it takes).
 constexpr double kDepthMargin = 0x1p-48;
 
-// Conservative mode: how far depths move from the plane's value at a pixel centre over its
-// square, as the reference's set-up computed it. Exact mode: 0.
-double spreadOf(const detail::FastSetup& s, bool conservative) {
-    return conservative ? s.spread : 0.0;
+// How far a fragment's depth moves from the plane's value at its pixel centre, as the reference's
+// set-up computed it: conservative mode, over the pixel's square; exact mode, the snap slack.
+double spreadOf(const detail::FastSetup& s) {
+    return s.spread;
 }
 
-// What a draw (nearest depth over the pixel) or a query (farthest) adds to each fragment's double
-// value before rounding; -0.0 in exact mode, which changes no value (fast_rows.h).
-template <bool kDraw> double fragmentOffset(double spread, bool conservative) {
-    return conservative ? (kDraw ? -spread : spread) : -0.0;
+// What a draw or a query adds to each fragment's double value before rounding (fast_rows.h):
+// conservative mode, the nearest depth over the pixel for a draw and the farthest for a query;
+// exact mode, the slack as the reference moves it (detail::exactFragmentOffset).
+template <bool kDraw> double fragmentOffset(double spread, bool conservative, float tolerance) {
+    return conservative ? (kDraw ? -spread : spread)
+                        : detail::exactFragmentOffset(spread, kDraw, tolerance);
 }
 
 // What every walk of s shares (fast_rows.h), for a draw or a query.
@@ -74,7 +76,7 @@ detail::TriangleWalk triangleWalk(const detail::FastSetup& s, double spread, boo
     walk.ddy = s.ddy;
     walk.x0 = s.x0;
     walk.y0_plane = s.y0;
-    walk.offset = fragmentOffset<kDraw>(spread, conservative);
+    walk.offset = fragmentOffset<kDraw>(spread, conservative, tolerance);
     return walk;
 }
 
@@ -309,7 +311,7 @@ bool FastCpuOracle::Impl::rasterize(const detail::FastSetup& s, int32_t ty_begin
         return rasterizeSmall<kDraw>(s, ty_first, ty_last, stats);
     const int32_t last_x = int32_t(width_) - 1, last_y = int32_t(height_) - 1;
     detail::TileWalk walk;
-    const double spread = spreadOf(s, conservative_);
+    const double spread = spreadOf(s);
     static_cast<detail::TriangleWalk&>(walk) =
         triangleWalk<kDraw>(s, spread, conservative_, depth_tolerance_);
     for (int32_t ty = ty_first; ty <= ty_last; ++ty) {
@@ -440,7 +442,7 @@ bool FastCpuOracle::Impl::rasterizeSmall(const detail::FastSetup& s, int32_t ty_
         walk.edge[e] = s.edge_at_origin[e] + int64_t(walk.px_min) * s.edge_step_x[e] +
                        int64_t(walk.py_min) * s.edge_step_y[e];
     // narrow holds over the whole bounds, so over the band's rows too.
-    const double spread = spreadOf(s, conservative_);
+    const double spread = spreadOf(s);
     static_cast<detail::TriangleWalk&>(walk) =
         triangleWalk<kDraw>(s, spread, conservative_, depth_tolerance_);
     double lowest, highest;

@@ -26,9 +26,9 @@ struct TriangleWalk {
     int64_t step_x[3]; // change of E_e from column px to px + 1
     int64_t step_y[3]; // change of E_e from row py to py + 1
     double d0, ddx, ddy, x0, y0_plane; // the depth plane (TriangleSetup's d0, ddx, ddy, x0, y0)
-    // Added to each fragment's double value before rounding: -0.0 in exact mode (adding it
-    // changes no value, not even a zero's sign); in conservative mode -spread for draws and
-    // +spread for queries (cpu_oracle.h).
+    // Added to each fragment's double value before rounding: in conservative mode -spread for
+    // draws and +spread for queries; in exact mode the snap slack, moved as
+    // exactFragmentOffset says (cpu_rasterizer.h, cpu_oracle.h rule 7).
     double offset;
     float tolerance; // the oracle's depth tolerance: behind iff frag > stored + tolerance
 };

@@ -25,7 +25,7 @@ struct FastSetup {
     int64_t edge_step_x[3];      // change of E_i from pixel px to px + 1
     int64_t edge_step_y[3];      // change of E_i from row py to py + 1
     double x0, y0, d0, ddx, ddy; // depth plane, as in TriangleSetup
-    double spread;               // conservative mode: TriangleSetup::spread (unset in exact mode)
+    double spread;               // TriangleSetup::spread: conservative spread or exact snap slack
     int32_t px_min, px_max, py_min, py_max; // inclusive, clamped to the viewport
     // Every edge function fits in int32_t over the pixel bounds (edgesFitInt32), so the AVX2
     // walks may test edges on 32-bit lanes. Decided once per bind, not per draw or query.

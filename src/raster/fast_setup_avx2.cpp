@@ -20,6 +20,7 @@
 
 #include <immintrin.h>
 
+#include <cmath>
 #include <cstdint>
 
 #define VISSORT_AVX2 __attribute__((target("avx2")))
@@ -190,6 +191,8 @@ VISSORT_AVX2 void setupQuadAvx2(const Matrix4& m, const float* x, const float* y
     alignas(32) int64_t edge_out[3][4], step_x_out[3][4], step_y_out[3][4];
     alignas(32) double plane[5][4];
     alignas(16) int32_t bounds[4][4], empty[4], okay[4];
+    alignas(32) int64_t planar[4];
+    _mm256_store_si256(reinterpret_cast<__m256i*>(planar), _mm256_castpd_si256(has_det));
     for (int e = 0; e < 3; ++e) {
         _mm256_store_si256(reinterpret_cast<__m256i*>(edge_out[e]), edge[e]);
         _mm256_store_si256(reinterpret_cast<__m256i*>(step_x_out[e]), step_x[e]);
@@ -216,8 +219,17 @@ VISSORT_AVX2 void setupQuadAvx2(const Matrix4& m, const float* x, const float* y
             lanes[l] = LaneSetup::empty;
             continue;
         }
+        // snapSlack, written out (nothing outside this file is called), and the scalar
+        // set-up's flat case: no plane, or a plane too steep for its slack.
+        const double slack =
+            (std::abs(plane[3][l]) + std::abs(plane[4][l])) * (0.5 / double(kSubpixelScale));
+        if (planar[l] == 0 || !std::isfinite(slack)) {
+            lanes[l] = LaneSetup::scalar;
+            continue;
+        }
         lanes[l] = LaneSetup::ready;
         FastSetup& s = out[l];
+        s.spread = slack;
         for (int e = 0; e < 3; ++e) {
             s.edge_at_origin[e] = edge_out[e][l];
             s.edge_step_x[e] = step_x_out[e][l];

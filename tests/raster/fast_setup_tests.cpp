@@ -70,9 +70,9 @@ bool sameBits(const FastSetup& a, const FastSetup& b) {
     };
     return same(a.edge_at_origin, b.edge_at_origin) && same(a.edge_step_x, b.edge_step_x) &&
            same(a.edge_step_y, b.edge_step_y) && same(a.x0, b.x0) && same(a.y0, b.y0) &&
-           same(a.d0, b.d0) && same(a.ddx, b.ddx) && same(a.ddy, b.ddy) && a.px_min == b.px_min &&
-           a.px_max == b.px_max && a.py_min == b.py_min && a.py_max == b.py_max &&
-           a.narrow == b.narrow;
+           same(a.d0, b.d0) && same(a.ddx, b.ddx) && same(a.ddy, b.ddy) &&
+           same(a.spread, b.spread) && a.px_min == b.px_min && a.px_max == b.px_max &&
+           a.py_min == b.py_min && a.py_max == b.py_max && a.narrow == b.narrow;
 }
 
 TEST(FastSetup, Avx2QuadsMatchTheScalarSetup) {
@@ -137,7 +137,9 @@ TEST(FastSetup, Avx2QuadsMatchTheScalarSetup) {
     EXPECT_GT(empty, 20000u);
     EXPECT_EQ(scalar_by_kind[int(Kind::inside)], 0u);
     EXPECT_EQ(scalar_by_kind[int(Kind::tiny)], 0u);
-    EXPECT_EQ(scalar_by_kind[int(Kind::degenerate)], 0u);
+    // A degenerate triangle that snapping gives area (no plane: the flat case) goes back to
+    // the scalar set-up; the rest of them are empty.
+    EXPECT_LT(scalar_by_kind[int(Kind::degenerate)], 100u);
     EXPECT_GT(scalar_by_kind[int(Kind::crossing)], 10000u);
     EXPECT_GT(scalar_by_kind[int(Kind::non_finite)], 10000u);
 }
