@@ -92,7 +92,7 @@ std::vector<CorpusView> corpusViews() {
     std::vector<CorpusView> views = {
         {"ortho(-0.3,-0.5,-1)", orthographic({-0.3, -0.5, -1})},
         {"ortho(0.9,-0.12,-0.4)", orthographic({0.9, -0.12, -0.4})},
-        {"perspective", {}}, // the file's default camera (defaultCamera), set per scene
+        {"perspective", {}}, // the default view of each file's bounds (defaultCamera)
     };
     return views;
 }
@@ -109,15 +109,14 @@ std::string refusalProblem(const std::string& path, const std::string& error) {
 
 namespace {
 
-CorpusReport runChecks(const std::string& path, const CorpusSettings& settings) {
-    CorpusReport report;
-    report.path = path;
+// Fills report; what it found stays there if a later step throws.
+void runChecks(const std::string& path, const CorpusSettings& settings, CorpusReport& report) {
     Result<Scene> loaded = loadScene(path);
     if (!loaded) {
         report.load_error = loaded.error;
         if (const std::string problem = refusalProblem(path, loaded.error); !problem.empty())
             report.failures.push_back("refusal: " + problem);
-        return report;
+        return;
     }
     const Scene& scene = *loaded.value;
     report.loaded = true;
@@ -198,20 +197,19 @@ CorpusReport runChecks(const std::string& path, const CorpusSettings& settings) 
         }
 #endif
     }
-    return report;
 }
 
 } // namespace
 
 CorpusReport checkCorpusFile(const std::string& path, const CorpusSettings& settings) {
+    CorpusReport report;
+    report.path = path;
     try {
-        return runChecks(path, settings);
+        runChecks(path, settings, report);
     } catch (const std::exception& e) {
-        CorpusReport report;
-        report.path = path;
         report.failures.push_back(std::string("exception: ") + e.what());
-        return report;
     }
+    return report;
 }
 
 std::string describe(const CorpusReport& report) {
