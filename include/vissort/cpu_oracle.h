@@ -20,9 +20,10 @@
 //     interior to its right). Y points down. A mesh tiling a region covers each centre once.
 //  6. Depth: the plane through the fan triangle's unsnapped (sx, sy, d), vertices in the order of
 //     rule 5: e1 = v1 - v0, e2 = v2 - v0, det = e1x e2y - e2x e1y, ddx = (e1d e2y - e2d e1y) / det,
-//     ddy = (e2d e1x - e1d e2x) / det, and its snap slack s = (|ddx| + |ddy|) 2^-9: snapping
+//     ddy = (e2d e1x - e1d e2x) / det, and its snap slack s = max(|ddx|, |ddy|) 2^-8: snapping
 //     moves a vertex by at most 2^-9 pixels per axis, so a covered centre lies that close to the
-//     unsnapped triangle and the plane's value there is within s of the triangle's depth. Where
+//     unsnapped triangle and the plane's value there is within (|ddx| + |ddy|) 2^-9 <= s of the
+//     triangle's depth (s is what OpenGL's polygon offset applies: gl_oracle.h). Where
 //     det == 0 (snapping gave an edge-on triangle area) or s is not finite: ddx = ddy = 0, d0 the
 //     middle of the vertex depths and s half their range. The value at the centre (cx, cy) =
 //     (px + 0.5, py + 0.5): c = d0 + ddx (cx - x0) + ddy (cy - y0), all in double. No clamping.

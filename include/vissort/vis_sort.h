@@ -39,6 +39,9 @@ struct VisSortWorkspace {
     std::vector<uint32_t> unsorted, outside, candidates, position;
     std::vector<uint8_t> in_monotone_run, query, behind, in_cycle, walk_state;
     std::vector<int32_t> path_index;
+    // The cycle search's path below the last source it found, resumed at the next stuck
+    // iteration of the same visSort call (src/core/source_cycle.h).
+    std::vector<std::vector<uint32_t>> pending_path;
     std::vector<uint8_t> seen; // the precondition check's, in builds with assertions
 };
 

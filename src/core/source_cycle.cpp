@@ -42,6 +42,34 @@ public:
         return candidates.front();
     }
 
+    /// An occluder of target among the usable primitives of `side`, a part of the list next
+    /// to target (before it when backwards: then searched from its end), found by galloping:
+    /// windows of 1, 2, 4, ... of the nearest untested ones until one occludes target, then
+    /// halving within it. Lists are nearly sorted, so occluders lie near: the draws are about 4
+    /// times the distance to the nearest occluder, not the side's length. False when none does.
+    template <class Usable>
+    bool findNearOccluder(std::span<const uint32_t> side, bool backwards, Usable&& usable,
+                          uint32_t target, std::vector<uint32_t>& window, uint32_t& occluder) {
+        uint8_t behind = 0;
+        std::size_t next = 0;
+        for (std::size_t width = 1; next < side.size(); width *= 2) {
+            window.clear();
+            for (; next < side.size() && window.size() < width; ++next) {
+                const uint32_t p = backwards ? side[side.size() - 1 - next] : side[next];
+                if (usable(p))
+                    window.push_back(p);
+            }
+            if (window.empty())
+                continue;
+            test(window, std::span(&target, 1), std::span(&behind, 1));
+            if (behind) {
+                occluder = findOccluder(window, target);
+                return true;
+            }
+        }
+        return false;
+    }
+
 private:
     OcclusionOracle& oracle_;
     VisSortStats& stats_;
@@ -91,19 +119,40 @@ std::vector<std::vector<uint32_t>> findSourceCycles(OcclusionOracle& oracle,
     position.resize(oracle.primitiveCount());
     for (std::size_t i = 0; i < stuck.size(); ++i)
         position[stuck[i]] = uint32_t(i);
+    const auto is_stuck = [&](uint32_t p) {
+        return p < position.size() && position[p] < stuck.size() && stuck[position[p]] == p;
+    };
+    // What a search may pick: stuck, and not in a source found by this call (it leaves).
+    const auto usable = [&](uint32_t p) { return walk_state[p] != kInSource; };
     std::vector<uint32_t>& outside = scratch.outside;
     std::vector<uint8_t>& behind = scratch.behind;
+
+    // The path the last call left (see the header), up to its first component with a member
+    // that is no longer stuck: Vis-sort outputs a component once the source above it has left.
+    std::vector<std::vector<uint32_t>> path = std::move(scratch.pending_path);
+    scratch.pending_path.clear();
+    for (std::size_t k = 0; k < path.size(); ++k)
+        if (!std::all_of(path[k].begin(), path[k].end(), is_stuck)) {
+            path.resize(k);
+            break;
+        }
+    for (std::size_t k = 0; k < path.size(); ++k)
+        for (uint32_t p : path[k])
+            path_index[p] = int32_t(k);
 
     std::vector<std::vector<uint32_t>> sources;
     std::size_t next_start = 0;
     for (uint32_t walk = 0; walk < max_walks; ++walk) {
-        while (next_start < stuck.size() && walk_state[stuck[next_start]] != kUnknown)
-            ++next_start;
-        if (next_start == stuck.size())
-            break;
-        // path[k + 1] holds an occluder of a member of path[k]; each entry is strongly connected.
-        std::vector<std::vector<uint32_t>> path{{stuck[next_start]}};
-        path_index[stuck[next_start]] = 0;
+        if (path.empty()) {
+            while (next_start < stuck.size() && walk_state[stuck[next_start]] != kUnknown)
+                ++next_start;
+            if (next_start == stuck.size())
+                break;
+            // path[k + 1] holds an occluder of a member of path[k]; each entry is strongly
+            // connected.
+            path.push_back({stuck[next_start]});
+            path_index[stuck[next_start]] = 0;
+        }
         bool found_source = false;
         for (;;) {
             const auto top = static_cast<int32_t>(path.size() - 1);
@@ -111,29 +160,50 @@ std::vector<std::vector<uint32_t>> findSourceCycles(OcclusionOracle& oracle,
             uint32_t occluder = 0;
             bool have_occluder = false;
             if (component.size() == 1) {
-                // A lone primitive is occluded by another stuck one, on the side of the list the
-                // passes found it behind: search that side only, with no test of the whole rest.
+                // A lone primitive: search its sides nearest first. A member of M has every
+                // occluder before it (pass 1 found nothing after it in front of it); any other
+                // one was found behind something after it, so that side goes first.
                 const uint32_t target = component.front();
                 const uint32_t at = position[target];
-                if (in_monotone_run[at])
-                    scratch.candidates.assign(stuck.begin(), stuck.begin() + at);
-                else
-                    scratch.candidates.assign(stuck.begin() + at + 1, stuck.end());
-                if (!scratch.candidates.empty()) {
-                    occluder = tester.findOccluder(scratch.candidates, target);
-                    have_occluder = true;
+                const std::span<const uint32_t> before = std::span(stuck).first(at),
+                                                after = std::span(stuck).subspan(at + 1);
+                if (!in_monotone_run[at])
+                    have_occluder = tester.findNearOccluder(after, false, usable, target,
+                                                            scratch.candidates, occluder);
+                if (!have_occluder)
+                    have_occluder = tester.findNearOccluder(before, true, usable, target,
+                                                            scratch.candidates, occluder);
+                if (!have_occluder) {
+                    // Nothing stuck and usable occludes it (the source that did has left): a
+                    // source of one, output as an ordinary primitive.
+                    sources.push_back({target});
+                    found_source = true;
+                    break;
                 }
-                // An empty side means the oracle contradicted itself: fall back to the full test.
             }
             if (!have_occluder) {
-                outside.clear();
-                for (uint32_t p : stuck)
-                    if (path_index[p] != top)
-                        outside.push_back(p);
-                behind.assign(component.size(), 0);
-                if (!outside.empty())
-                    tester.test(outside, component, behind);
-                const auto occluded = std::find(behind.begin(), behind.end(), 1);
+                // Galloping again, over windows of the list around the component's span: an
+                // occluder usually lies near, and only a source needs the test against all.
+                uint32_t lo = uint32_t(stuck.size()), hi = 0;
+                for (uint32_t p : component) {
+                    lo = std::min(lo, position[p]);
+                    hi = std::max(hi, position[p]);
+                }
+                auto occluded = behind.end();
+                for (std::size_t reach = 1;; reach *= 2) {
+                    const std::size_t first = lo > reach ? lo - reach : 0;
+                    const std::size_t last = std::min(stuck.size() - 1, hi + reach);
+                    outside.clear();
+                    for (std::size_t i = first; i <= last; ++i)
+                        if (path_index[stuck[i]] != top && usable(stuck[i]))
+                            outside.push_back(stuck[i]);
+                    behind.assign(component.size(), 0);
+                    if (!outside.empty())
+                        tester.test(outside, component, behind);
+                    occluded = std::find(behind.begin(), behind.end(), 1);
+                    if (occluded != behind.end() || (first == 0 && last == stuck.size() - 1))
+                        break;
+                }
                 if (occluded == behind.end()) {
                     // Nothing else that is stuck occludes the component: a source. Stuck order.
                     std::vector<uint32_t> members;
@@ -148,18 +218,33 @@ std::vector<std::vector<uint32_t>> findSourceCycles(OcclusionOracle& oracle,
                 occluder =
                     tester.findOccluder(scratch.candidates, component[occluded - behind.begin()]);
             }
-            // Reaching a found source, or what lies behind one, puts the whole path behind it.
+            // Reaching what lies behind an earlier walk's path puts this one behind it too.
             if (walk_state[occluder] != kUnknown)
                 break;
             extendPath(path, path_index, occluder);
         }
-        const uint8_t state = found_source ? kInSource : kDownstream;
-        for (const auto& component : path)
-            for (uint32_t p : component) {
-                walk_state[p] = state;
+        if (found_source) {
+            // The source leaves; the rest of the path stays valid (each component strongly
+            // connected, occluded by the next one's members), and the next walk goes on from
+            // its top, which lost its occluder: no path is ever walked twice.
+            for (uint32_t p : path.back()) {
+                walk_state[p] = kInSource;
                 path_index[p] = kNotOnPath;
             }
+            path.pop_back();
+        } else {
+            for (const auto& component : path)
+                for (uint32_t p : component) {
+                    walk_state[p] = kDownstream;
+                    path_index[p] = kNotOnPath;
+                }
+            path.clear();
+        }
     }
+    for (const auto& component : path)
+        for (uint32_t p : component)
+            path_index[p] = kNotOnPath;
+    scratch.pending_path = std::move(path);
     for (uint32_t p : stuck)
         walk_state[p] = kUnknown;
     return sources;

@@ -43,6 +43,7 @@ public:
         in_monotone_run_.assign(unsorted_.size(), 0);
         in_cycle_.assign(oracle.primitiveCount(), 0);
         workspace.path_index.assign(oracle.primitiveCount(), -1);
+        workspace.pending_path.clear(); // a path of another call means nothing here
         result_.order.clear();
         result_.order.reserve(unsorted_.size());
         result_.cycles.clear();

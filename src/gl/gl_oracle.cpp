@@ -61,8 +61,8 @@ struct GlOracle::Impl {
     enum class Mode { unset, draw, query } mode = Mode::unset;
     float tolerance = kDepthTolerance; // the oracle's, taken at every call
     // glPolygonOffset's factor for the snap slack: the driver moves a fragment by factor times
-    // max(|dz/dx|, |dz/dy|), and the slack is (|dz/dx| + |dz/dy|) / 2^(subpixel bits + 1) at
-    // most that with factor 2^-(subpixel bits). Set at the first call (the context is current).
+    // max(|dz/dx|, |dz/dy|), the CPU's slack with factor 2^-(subpixel bits) (cpu_rasterizer.h).
+    // Set at the first call (the context is current then).
     float slope_factor = -1;
     GlOracleStats stats;
 

@@ -88,9 +88,11 @@ struct TriangleSetup {
 /// Snapping moves each vertex by at most half a sub-pixel unit per axis, so the snapped triangle
 /// lies within the unsnapped one grown by that square: a covered centre is at most 2^-9 pixels
 /// per axis from a point of the unsnapped triangle, where the plane's value differs by at most
-/// (|ddx| + |ddy|) 2^-9. Touching faces meet only where one of them is extrapolated like that.
+/// (|ddx| + |ddy|) 2^-9 <= max(|ddx|, |ddy|) 2^-8. The latter is what OpenGL's polygon offset
+/// applies with factor 2^-8 (gl_oracle.h), so that both oracles move depths alike. Touching
+/// faces meet only where one of them is extrapolated like that.
 inline double snapSlack(double ddx, double ddy) {
-    return (std::abs(ddx) + std::abs(ddy)) * (0.5 / double(kSubpixelScale));
+    return std::max(std::abs(ddx), std::abs(ddy)) * (1.0 / double(kSubpixelScale));
 }
 
 /// Exact mode: what a draw or a query adds to a fragment's double depth before rounding (rule

@@ -20,6 +20,7 @@
 
 #include <immintrin.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -222,7 +223,7 @@ VISSORT_AVX2 void setupQuadAvx2(const Matrix4& m, const float* x, const float* y
         // snapSlack, written out (nothing outside this file is called), and the scalar
         // set-up's flat case: no plane, or a plane too steep for its slack.
         const double slack =
-            (std::abs(plane[3][l]) + std::abs(plane[4][l])) * (0.5 / double(kSubpixelScale));
+            std::max(std::abs(plane[3][l]), std::abs(plane[4][l])) * (1.0 / double(kSubpixelScale));
         if (planar[l] == 0 || !std::isfinite(slack)) {
             lanes[l] = LaneSetup::scalar;
             continue;

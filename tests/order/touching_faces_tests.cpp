@@ -95,7 +95,7 @@ TEST(TouchingFaces, ParallelFacesApartByMoreThanTheBoundAreBehind) {
         // The slopes of the planes (equal for both quads), from the depths of corners.
         const double per_pixel = std::abs(view.depthOf({0, 0, -1}) - view.depthOf({0, 0, 1})) /
                                  150.0 * 4; // a generous over-estimate of |ddx| + |ddy|
-        const double bound = kDepthTolerance + 2 * per_pixel / 512 + 1e-6;
+        const double bound = kDepthTolerance + 2 * per_pixel / 256 + 1e-6;
         for (const double gap_in_depth : {0.0, 0.4 * double(kDepthTolerance), 3 * bound}) {
             // The gap in world units that gives this gap in depth at the centre.
             const double dd = view.depthOf({0, -0.01, 0}) - view.depthOf({0, 0, 0});

@@ -286,9 +286,9 @@ TEST(CpuOracle, SpotDepthBufferMatchesRayCast) {
         const double e2x = s[2][0] - s[0][0], e2y = s[2][1] - s[0][1], e2d = d[2] - d[0];
         const double det = e1x * e2y - e2x * e1y;
         if (det != 0)
-            slack[t] = (std::abs((e1d * e2y - e2d * e1y) / det) +
-                        std::abs((e2d * e1x - e1d * e2x) / det)) /
-                       512;
+            slack[t] = std::max(std::abs((e1d * e2y - e2d * e1y) / det),
+                                std::abs((e2d * e1x - e1d * e2x) / det)) /
+                       256;
         const auto [min_x, max_x] = std::minmax({s[0][0], s[1][0], s[2][0]});
         const auto [min_y, max_y] = std::minmax({s[0][1], s[1][1], s[2][1]});
         const int x0 = std::max(0, int(std::floor(min_x - 1))),

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <limits>
 #include <unordered_set>
 
@@ -14,11 +15,45 @@ namespace {
 
 constexpr uint32_t kNoPrimitive = std::numeric_limits<uint32_t>::max();
 
-// One primitive's robust hits at one pixel.
+// One primitive's robust hits at one pixel, and the snap slack of the triangles hit nearest and
+// farthest.
 struct PixelSpan {
     uint32_t primitive;
     double nearest, farthest;
+    double nearest_slack, farthest_slack;
 };
+
+// The snap slack of cpu_oracle.h's rule 6 for triangle t seen through view: max(|dd/dx|,
+// |dd/dy|) / 256, from the slopes of the triangle's plane in depth per pixel, here measured
+// where the rays through three screen points meet that plane (d is affine in screen space for
+// both projections: camera.h). Independent of the oracles' set-up code. Infinite for a plane
+// seen edge-on.
+double snapSlackOf(const TrianglePositions& positions, const ViewProjection& view, std::size_t t) {
+    const Vec3 a = positions.corner(3 * t), b = positions.corner(3 * t + 1),
+               c = positions.corner(3 * t + 2);
+    const Vec3 normal = cross(b - a, c - a);
+    const auto depthAt = [&](double sx, double sy, double& depth) {
+        Vec3 origin, direction;
+        view.pixelRay(sx, sy, origin, direction);
+        const double along = dot(normal, direction);
+        if (along == 0)
+            return false;
+        depth = view.depthOf(origin + direction * (dot(normal, a - origin) / along));
+        return std::isfinite(depth);
+    };
+    const double cx = 0.5 * view.width, cy = 0.5 * view.height;
+    double d0 = 0, dx = 0, dy = 0;
+    if (!depthAt(cx, cy, d0) || !depthAt(cx + 1, cy, dx) || !depthAt(cx, cy + 1, dy))
+        return std::numeric_limits<double>::infinity();
+    return std::max(std::abs(dx - d0), std::abs(dy - d0)) / 256;
+}
+
+// Whether front lies in front of behind at a pixel by more than the margin the oracles promise
+// to see (cpu_oracle.h, rule 7): kFrontMargin plus the two triangles' snap slack.
+bool inFront(const PixelSpan& front, const PixelSpan& behind) {
+    return front.nearest + kFrontMargin + front.nearest_slack + behind.farthest_slack <
+           behind.farthest;
+}
 
 std::vector<uint32_t> primitiveOfTriangles(std::size_t triangle_count,
                                            std::span<const PrimitiveRange> primitives) {
@@ -39,6 +74,9 @@ void forEachPixel(const TrianglePositions& positions, const ViewProjection& view
     const std::vector<uint32_t> primitive_of =
         primitiveOfTriangles(positions.triangleCount(), primitives);
     const detail::AllHits hits = detail::castAllHits(positions, view);
+    std::vector<double> slack(positions.triangleCount());
+    for (std::size_t t = 0; t < slack.size(); ++t)
+        slack[t] = snapSlackOf(positions, view, t);
     std::vector<PixelSpan> spans;
     for (std::size_t pixel = 0; pixel < hits.pixelCount(); ++pixel) {
         spans.clear();
@@ -46,14 +84,20 @@ void forEachPixel(const TrianglePositions& positions, const ViewProjection& view
             const uint32_t p = primitive_of[hits.triangles[h]];
             if (p == kNoPrimitive || !hits.robust[h])
                 continue;
-            const double d = hits.depths[h];
+            const double d = hits.depths[h], e = slack[hits.triangles[h]];
             auto it = std::find_if(spans.begin(), spans.end(),
                                    [p](const PixelSpan& s) { return s.primitive == p; });
             if (it == spans.end()) {
-                spans.push_back({p, d, d});
+                spans.push_back({p, d, d, e, e});
             } else {
-                it->nearest = std::min(it->nearest, d);
-                it->farthest = std::max(it->farthest, d);
+                if (d < it->nearest) {
+                    it->nearest = d;
+                    it->nearest_slack = e;
+                }
+                if (d > it->farthest) {
+                    it->farthest = d;
+                    it->farthest_slack = e;
+                }
             }
         }
         visit(uint32_t(pixel % hits.width), uint32_t(pixel / hits.width),
@@ -111,8 +155,7 @@ OrderCheck checkVisibilityOrder(const TrianglePositions& positions, const ViewPr
                          std::max(check.max_depth_complexity, uint32_t(spans.size()));
                      for (const PixelSpan& front : spans) {
                          for (const PixelSpan& behind : spans) {
-                             if (front.primitive == behind.primitive ||
-                                 !(front.nearest + kFrontMargin < behind.farthest))
+                             if (front.primitive == behind.primitive || !inFront(front, behind))
                                  continue;
                              ++check.pairs_checked;
                              if (position[behind.primitive] > position[front.primitive] ||
@@ -138,8 +181,7 @@ std::vector<std::vector<uint32_t>> occlusionGraph(const TrianglePositions& posit
                  [&](uint32_t, uint32_t, std::span<const PixelSpan> spans) {
                      for (const PixelSpan& front : spans) {
                          for (const PixelSpan& behind : spans) {
-                             if (front.primitive != behind.primitive &&
-                                 front.nearest + kFrontMargin < behind.farthest)
+                             if (front.primitive != behind.primitive && inFront(front, behind))
                                  edges.insert(uint64_t(front.primitive) << 32 | behind.primitive);
                          }
                      }

@@ -2,8 +2,11 @@
 // Ground truth for visibility-ordering tests, from all-hits ray casting through pixel centres
 // (independent of every oracle's depth buffer). Only robust hits count (barycentric coordinates
 // all > 1e-6): a primitive a is in front of b at a pixel when the nearest robust hit of a is
-// nearer than some robust hit of b by more than kFrontMargin. The margin (4 tolerances) leaves
-// room for the oracles' own tolerance, so coplanar and touching surfaces never count.
+// nearer than some robust hit of b by more than kFrontMargin plus the snap slack of the two
+// triangles hit (cpu_oracle.h, rules 6 and 7: the bound within which the rasterizing oracles
+// may not see an occlusion), measured here from the triangles' planes. The margin (4
+// tolerances) leaves room for the oracles' own tolerance, so coplanar and touching surfaces
+// never count.
 
 #include <cstdint>
 #include <span>
