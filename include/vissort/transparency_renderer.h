@@ -77,7 +77,7 @@ struct RenderSettings {
     /// vertex, as in the paper). Flat: each object's colour and alpha, unlit, so that a ray-cast
     /// reference can reproduce every pixel.
     bool flat_shading = false;
-    /// Memory for fragment lists (linked-list, vissort's per-pixel groups), in bytes, 24 per
+    /// Memory for fragment lists (linked-list, vissort's per-pixel groups), in bytes, 28 per
     /// fragment; 0: 3 GiB. Never exceeded: more fragments are drawn in bands of rows, one band
     /// at a time (each band draws the geometry again).
     uint64_t list_bytes = 0;

@@ -221,7 +221,7 @@ int runRender(const RenderOptions& options) {
     if (!check)
         return fail(kExitUsage, "--check: " + check.error);
     settings.check = *check.value;
-    // At least one fragment (24 bytes); at most a petabyte, far beyond any driver.
+    // At least one fragment (28 bytes); at most a petabyte, far beyond any driver.
     if (!(options.list_memory_mib >= 1.0 / 1024 && options.list_memory_mib <= 1e9))
         return fail(kExitUsage, "--list-memory must be between 0.001 and 1e9 MiB, got " +
                                     std::to_string(options.list_memory_mib));

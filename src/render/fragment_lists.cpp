@@ -11,9 +11,10 @@
 namespace vissort::detail {
 namespace {
 
-// Node i: its colour in one buffer (vec4), its depth and link in another (uvec2).
-constexpr uint64_t kColourBytes = 16, kLinkBytes = 8;
-static_assert(kColourBytes + kLinkBytes == FragmentLists::kBytesPerFragment);
+// Node i: its colour in one buffer (vec4), its depth and link in another (uvec2), its triangle
+// id in a third (uint).
+constexpr uint64_t kColourBytes = 16, kLinkBytes = 8, kIdBytes = 4;
+static_assert(kColourBytes + kLinkBytes + kIdBytes == FragmentLists::kBytesPerFragment);
 constexpr uint64_t kInitialNodesPerPixel = 4;
 constexpr uint64_t kHuge = uint64_t(1) << 32;
 constexpr GLuint kEnd = 0xFFFFFFFFu;
@@ -25,10 +26,12 @@ constexpr GLuint kEnd = 0xFFFFFFFFu;
 constexpr const char* kBuildFragmentShader = R"(#version 450 core
 layout(early_fragment_tests) in;
 in vec4 shaded;
+flat in uint triangle;
 layout(binding = 0, r32ui) uniform coherent uimage2D heads;
 layout(std430, binding = 1) buffer Counter { uint fragment_count; uint huge; };
 layout(std430, binding = 2) writeonly buffer NodeColours { vec4 node_colours[]; };
 layout(std430, binding = 3) writeonly buffer NodeLinks { uvec2 node_links[]; };  // depth, next
+layout(std430, binding = 6) writeonly buffer NodeTriangles { uint node_triangles[]; };
 layout(binding = 1) uniform sampler2D opaque_depth;
 uniform bool test_opaque;  // the framebuffer's depth is not the opaque one: test here
 uniform uint capacity;
@@ -39,6 +42,7 @@ void main() {
     if (node >= 0x80000000u) huge = 1u;
     if (node >= capacity) return;
     node_colours[node] = shaded;
+    node_triangles[node] = triangle;
     uint next = imageAtomicExchange(heads, ivec2(gl_FragCoord.xy), node);
     node_links[node] = uvec2(floatBitsToUint(gl_FragCoord.z), next);
 }
@@ -48,18 +52,22 @@ void main() {
 // blending in the draw would (colour = alpha * source + (1 - alpha) * colour, the pixel's alpha
 // kept). Lists of up to kLocal fragments are sorted in registers by insertion; longer ones are
 // walked by repeated selection of the farthest remaining fragment: slower, never dropping one.
-// Equal depths: the later stored (the higher node) is in front.
+// Equal depths: the lower triangle id in front (the tie rule of every exact method:
+// docs/robustness.md), whatever order the fragments were drawn or stored in.
 constexpr const char* kResolveBody = R"(
 layout(binding = 0, r32ui) uniform readonly uimage2D heads;
 layout(binding = 1, rgba32f) uniform image2D target;
 layout(std430, binding = 2) readonly buffer NodeColours { vec4 node_colours[]; };
 layout(std430, binding = 3) readonly buffer NodeLinks { uvec2 node_links[]; };
+layout(std430, binding = 6) readonly buffer NodeTriangles { uint node_triangles[]; };
 const uint kEnd = 0xFFFFFFFFu;
 const int kLocal = 128;
 uint sorted_node[kLocal];
 float sorted_depth[kLocal];
 // Is (d, n) nearer than (e, m)?
-bool nearer(float d, uint n, float e, uint m) { return d < e || (d == e && n > m); }
+bool nearer(float d, uint n, float e, uint m) {
+    return d < e || (d == e && node_triangles[n] < node_triangles[m]);
+}
 vec3 over(vec3 c, vec4 fragment) { return fragment.a * fragment.rgb + (1.0 - fragment.a) * c; }
 void main() {
     ivec2 pixel;
@@ -142,6 +150,9 @@ void FragmentLists::allocate(uint64_t nodes) {
     glCreateBuffers(1, &name);
     links_ = GlBuffer(name);
     glNamedBufferStorage(links_.get(), GLsizeiptr(nodes * kLinkBytes), nullptr, 0);
+    glCreateBuffers(1, &name);
+    triangles_ = GlBuffer(name);
+    glNamedBufferStorage(triangles_.get(), GLsizeiptr(nodes * kIdBytes), nullptr, 0);
     if (glGetError() == GL_OUT_OF_MEMORY)
         throw std::runtime_error("the OpenGL driver cannot hold " + std::to_string(nodes) +
                                  " fragments (" + std::to_string(nodes * kBytesPerFragment >> 20) +
@@ -160,6 +171,7 @@ uint64_t FragmentLists::build(PixelRect rect, GLuint opaque_depth,
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, counter_.get());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, colours_.get());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, links_.get());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, triangles_.get());
     glProgramUniform1ui(build_program_.get(),
                         glGetUniformLocation(build_program_.get(), "capacity"), GLuint(capacity_));
     glProgramUniform1i(build_program_.get(),
@@ -208,6 +220,7 @@ FragmentLists::Result FragmentLists::composite(const RenderTarget& target, Pixel
                                GL_RGBA32F);
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, colours_.get());
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, links_.get());
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, triangles_.get());
             runPixelProgram(resolve_program_.get(), r);
             result.fragments += stored;
             continue;

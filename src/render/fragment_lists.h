@@ -28,7 +28,7 @@ public:
     };
 
     /// Blends every fragment that `draw` produces inside rect onto the target's colour, each
-    /// pixel's fragments back to front by depth (ties: the later stored in front), over what
+    /// pixel's fragments back to front by depth (ties: the lower triangle id in front), over what
     /// the pixel holds. `draw` issues the draws with buildProgram() bound (its view uniforms set
     /// by the caller); it runs with the caller's framebuffer (of the target's size), depth and
     /// stencil tests (evaluated before a fragment is stored), no depth or colour writes, and may
@@ -41,7 +41,7 @@ public:
     /// The program `draw` binds: the shading vertex shader, fragments into the lists.
     GLuint buildProgram() const { return build_program_.get(); }
 
-    static constexpr uint64_t kBytesPerFragment = 24; // colour vec4, depth and link
+    static constexpr uint64_t kBytesPerFragment = 28; // colour vec4, depth, link, triangle id
     static constexpr uint64_t kDefaultMaxBytes = uint64_t(3) << 30;
 
 private:
@@ -52,7 +52,7 @@ private:
 
     GlProgram build_program_, resolve_program_;
     GlTexture heads_;
-    GlBuffer counter_, colours_, links_;
+    GlBuffer counter_, colours_, links_, triangles_;
     uint32_t width_ = 0, height_ = 0;
     uint64_t capacity_ = 0;  // nodes the buffers hold
     uint64_t max_nodes_ = 0; // the most nodes the buffers may hold

@@ -27,9 +27,11 @@ uniform bool orthographic;
 uniform bool unlit;
 uniform bool highlighting;
 out vec4 shaded;
+flat out uint triangle;  // the scene's triangle id: the tie rule of the fragment lists
 invariant gl_Position;  // the same depths in every program: vissort's repair tests equality
 void main() {
     gl_Position = view_projection * vec4(position, 1.0);
+    triangle = uint(gl_VertexID) / 3u;  // elements are 3 t + k (SceneGeometry)
     vec4 base = colours[object];
     if (highlighting && highlighted[gl_VertexID / 3] != 0u)
         base = vec4(1.0, 0.1, 0.55, max(base.a, 0.85));  // a strong magenta, nearly opaque

@@ -17,6 +17,7 @@ ABuffer rayCastComposite(const TrianglePositions& positions, const ViewProjectio
     out.height = hits.height;
     out.rgb.resize(hits.pixelCount() * 3);
     out.decided.resize(hits.pixelCount());
+    std::vector<uint32_t> order; // a pixel's transparent hits, nearest first, ties by id
     for (std::size_t pixel = 0; pixel < hits.pixelCount(); ++pixel) {
         // Hits come sorted by depth: those that show end at the first opaque one.
         const uint64_t first = hits.firstHit(pixel);
@@ -25,17 +26,44 @@ ABuffer rayCastComposite(const TrianglePositions& positions, const ViewProjectio
             ++end;
         const bool opaque_hit = end < hits.endHit(pixel);
         const uint64_t last = opaque_hit ? end + 1 : end; // shown hits: [first, last)
+        // The tie rule (docs/robustness.md): hits at exactly the same depth (the same face in
+        // two objects) show the lower triangle id in front.
+        order.assign(hits.triangles.begin() + first, hits.triangles.begin() + end);
+        for (std::size_t i = 1; i < order.size(); ++i)
+            for (std::size_t j = i; j > 0 && hits.depths[first + j] == hits.depths[first + j - 1] &&
+                                    order[j] < order[j - 1];
+                 --j)
+                std::swap(order[j], order[j - 1]);
         // An edge that passes within the margin of the centre, of a triangle the ray misses, may
-        // cover the pixel in a rasterizer.
+        // cover the pixel in a rasterizer. Near ties that are not exact are left undecided.
+        // Only copies of one triangle (the same corners in the same order) rasterize to the same
+        // depths bit for bit; other hits at one depth here may differ in the renderer's floats.
+        const auto same_corners = [&](uint32_t a, uint32_t b) {
+            for (int k = 0; k < 3; ++k) {
+                const std::size_t i = std::size_t(a) * 3 + k, j = std::size_t(b) * 3 + k;
+                if (positions.x[i] != positions.x[j] || positions.y[i] != positions.y[j] ||
+                    positions.z[i] != positions.z[j])
+                    return false;
+            }
+            return true;
+        };
+        const auto near_tie = [&](uint64_t a, uint64_t b) {
+            const double gap = hits.depths[b] - hits.depths[a];
+            return gap <= kTieDepth &&
+                   !(gap == 0 && same_corners(hits.triangles[a], hits.triangles[b]));
+        };
         bool decided = !hits.near_edge[pixel];
         for (uint64_t h = first; h < last; ++h) {
             decided = decided && hits.robust[h];
             if (h + 1 < last)
-                decided = decided && hits.depths[h + 1] - hits.depths[h] > kTieDepth;
+                decided = decided && !near_tie(h, h + 1);
         }
-        // A hit just behind the last shown one may be a tie with it too.
+        // A hit just behind the last shown one may be a tie with it too (an exact one with the
+        // opaque hit is not decided either: which one shows is the driver's).
         if (last < hits.endHit(pixel) && last > first)
             decided = decided && hits.depths[last] - hits.depths[last - 1] > kTieDepth;
+        if (opaque_hit && end > first)
+            decided = decided && hits.depths[end] != hits.depths[end - 1];
         out.decided[pixel] = decided;
         out.max_layers = std::max(out.max_layers, uint32_t(end - first));
 
@@ -46,8 +74,8 @@ ABuffer rayCastComposite(const TrianglePositions& positions, const ViewProjectio
             c[1] = o.g;
             c[2] = o.b;
         }
-        for (uint64_t h = end; h-- > first;) { // back to front
-            const Rgba& t = triangle_colours[hits.triangles[h]];
+        for (std::size_t i = order.size(); i-- > 0;) { // back to front
+            const Rgba& t = triangle_colours[order[i]];
             const double a = t.a;
             c[0] = a * t.r + (1 - a) * c[0];
             c[1] = a * t.g + (1 - a) * c[1];

@@ -2,7 +2,9 @@
 // The transparency ground truth: a per-pixel A-buffer by ray casting (castAllHits through every
 // pixel centre), independent of every rasterizer, oracle and of the renderer. Each pixel's hits
 // nearer than its nearest opaque hit are composited back to front in double precision with
-// their triangle's flat colour, over that opaque colour or the background.
+// their triangle's flat colour, over that opaque colour or the background. Hits on copies of one
+// triangle (at exactly the same depth) follow the tie rule of every exact method: the lower
+// triangle id in front.
 
 #include <cstdint>
 #include <span>
@@ -13,8 +15,8 @@
 
 namespace vissort::test {
 
-/// Hits closer than this in depth d are a near tie: their order at the pixel is not decided by
-/// the ray cast, so the pixel is left out of comparisons.
+/// Hits closer than this in depth d, but not on copies of one triangle, are a near tie: their
+/// order at the pixel is not decided by the ray cast, so the pixel is left out of comparisons.
 inline constexpr double kTieDepth = 1e-6;
 
 struct ABuffer {
@@ -22,7 +24,8 @@ struct ABuffer {
     std::vector<double> rgb;      // 3 per pixel, row 0 at the top, unclamped
     std::vector<uint8_t> decided; // 1 when every hit that shows is robust (not on an edge),
                                   // no other triangle's edge passes within the robust margin
-                                  // and no two hits that show are a near tie
+                                  // and no two hits that show are a near tie (exact ties
+                                  // are decided by the tie rule)
     uint32_t max_layers = 0;      // the most transparent hits in front of the opaque, a pixel
 };
 
