@@ -7,9 +7,15 @@
 // primitive as fragments (pixel, nearest depth, farthest depth) over the primitive's triangles
 // hit at that pixel. Hits on triangle edges count, so shared edges never leave holes.
 // The depth buffer holds doubles, cleared to +infinity:
-//   draw(p):      buffer[pixel] = min(buffer[pixel], nearest)      for each fragment of p;
-//   anyBehind(p): some fragment of p has farthest > buffer[pixel] + kDepthTolerance.
-// Answers are exact to double precision at pixel centres and independent of any rasterizer.
+//   draw(p):      buffer[pixel] = min(buffer[pixel], nearest + o_n)    for each fragment of p;
+//   anyBehind(p): some fragment of p has farthest - o_f > buffer[pixel] + t,
+// t the depth tolerance (kDepthTolerance unless set) and o = s when t >= 0, -s when negative,
+// s the snap slack of the triangle hit (nearest or farthest): max(|dd/dx|, |dd/dy|) / 256, its
+// plane's depth slopes per pixel. The rasterizing oracles move depths by that much where
+// snapping may extrapolate a plane (cpu_oracle.h, rules 6 and 7); the same bound here makes the
+// answers agree: touching and coplanar faces are never behind each other, surfaces apart by more
+// than t + s + s always are. Answers are exact to double precision at pixel centres up to that
+// bound and independent of any rasterizer.
 // After bind(), draw, anyBehind and clear allocate nothing.
 
 #include <cstdint>
@@ -39,10 +45,12 @@ public:
     /// primitive must be below primitiveCount().
     bool anyBehind(uint32_t primitive) override;
 
-    /// One primitive's coverage of one pixel: the nearest and farthest of its hits there.
+    /// One primitive's coverage of one pixel: the nearest and farthest of its hits there, and
+    /// the snap slack of the triangles hit there.
     struct Fragment {
         uint32_t pixel; // py * width + px
         double nearest, farthest;
+        double nearest_slack, farthest_slack;
     };
     /// The fragments of a primitive, in ascending pixel order. primitive < primitiveCount().
     std::span<const Fragment> fragments(uint32_t primitive) const;

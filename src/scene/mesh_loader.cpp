@@ -6,6 +6,7 @@
 #include "scene/mesh_loader.h"
 
 #include "scene/declared_sizes.h"
+#include "scene/off_faces.h"
 
 #include <assimp/Importer.hpp>
 #include <assimp/material.h>
@@ -18,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <new>
+#include <sstream>
 #include <system_error>
 #include <vector>
 
@@ -212,6 +214,33 @@ Result<Scene> finishImport(Assimp::Importer& importer, const aiScene* ai_scene,
     return convertScene(*ai_scene, label, scene_name);
 }
 
+// An OFF file's scene, checked against its own face list (off_faces.h): assimp's reader drops
+// large polygons and clamps bad indices without a word.
+Result<Scene> checkedOff(Result<Scene> scene, std::istream& in, const std::string& label) {
+    if (!scene)
+        return scene;
+    const Result<OffFaces> faces = readOffFaces(in);
+    if (!faces)
+        return Result<Scene>::failure(label + ": " + faces.error);
+    const uint64_t loaded = scene.value->triangleCount(), expected = faces.value->fan_triangles;
+    if (loaded == expected)
+        return scene;
+    return Result<Scene>::failure(
+        label + ": assimp's OFF reader made " + std::to_string(loaded) + " of the " +
+        std::to_string(expected) + " triangles the faces describe" +
+        (faces.value->most_corners >= 10
+             ? " (it drops polygons of 10 or more corners; this file has one of " +
+                   std::to_string(faces.value->most_corners) + "): convert it to OBJ or PLY"
+             : ""));
+}
+
+bool isOff(const std::string& extension) {
+    std::string lower = extension;
+    std::transform(lower.begin(), lower.end(), lower.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    return lower == "off";
+}
+
 } // namespace
 
 Result<Scene> loadMeshFile(const std::string& path) {
@@ -242,7 +271,11 @@ Result<Scene> loadMeshFile(const std::string& path) {
             return Result<Scene>::failure(path + ": " + problem);
         Assimp::Importer importer;
         const aiScene* ai_scene = importer.ReadFile(path, kImportFlags);
-        return finishImport(importer, ai_scene, path, file.stem().string());
+        Result<Scene> scene = finishImport(importer, ai_scene, path, file.stem().string());
+        if (!isOff(extension))
+            return scene;
+        std::ifstream again(file, std::ios::binary);
+        return checkedOff(std::move(scene), again, path);
     } catch (const std::bad_alloc&) {
         return Result<Scene>::failure(path + ": " + kOutOfMemory);
     } catch (const std::exception& e) {
@@ -266,8 +299,12 @@ Result<Scene> loadMeshMemory(const void* data, std::size_t size, const std::stri
         Assimp::Importer importer;
         const aiScene* ai_scene =
             importer.ReadFileFromMemory(data, size, kImportFlags, format_hint.c_str());
-        return finishImport(importer, ai_scene, label,
-                            std::filesystem::path(label).stem().string());
+        Result<Scene> scene =
+            finishImport(importer, ai_scene, label, std::filesystem::path(label).stem().string());
+        if (!isOff(format_hint))
+            return scene;
+        std::istringstream again{std::string(bytes)};
+        return checkedOff(std::move(scene), again, label);
     } catch (const std::bad_alloc&) {
         return Result<Scene>::failure(label + ": " + kOutOfMemory);
     } catch (const std::exception& e) {

@@ -130,7 +130,12 @@ std::vector<CorpusFile> makeCorpus() {
         exported(pipes, "gltf2", "gltf", true),
         exported(pipes, "stl", "stl", true),
         handWritten(pipes, "obj_mtl", "obj", writeObjWithMaterials),
-        handWritten(pipes, "off", "off", writeOff),
+        // The pipe run's 12-sided caps: assimp's OFF reader drops polygons of 10 or more
+        // corners, so the loader refuses the file (src/scene/off_faces.h) rather than lose them.
+        broken("pipes_off", "pipes_off.off", "off (hand-written), with 12-sided polygons",
+               [pipes](const fs::path& folder) {
+                   return writeOff(pipes.model(), folder / "pipes_off.off");
+               }),
         // A node hierarchy placing two meshes 18 times.
         exported(shelf, "collada", "dae", false),
         exported(shelf, "glb2", "glb", true),

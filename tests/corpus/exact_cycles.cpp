@@ -30,7 +30,10 @@ std::vector<std::vector<uint32_t>> exactOcclusionGraph(PositionsView positions,
     std::vector<uint64_t> next(start.begin(), start.end() - 1);
     for (uint32_t p = 0; p < oracle.primitiveCount(); ++p)
         for (const ExactOracle::Fragment& f : oracle.fragments(p))
-            by_pixel[next[f.pixel]++] = {p, f.nearest, f.farthest};
+            // The oracle's own values for a tolerance >= 0: drawn farther and queried nearer by
+            // the triangles' snap slack (exact_oracle.h).
+            by_pixel[next[f.pixel]++] = {p, f.nearest + f.nearest_slack,
+                                         f.farthest - f.farthest_slack};
 
     // a -> b when b.farthest > a.nearest + tolerance at one pixel: sorted by nearest, the a of a
     // given b are a prefix. The same sum as the oracle's (a double plus the float tolerance).
