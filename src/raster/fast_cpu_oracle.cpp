@@ -24,6 +24,7 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <thread>
 #include <type_traits>
 #include <vector>
@@ -99,6 +100,64 @@ double rowTerm(const detail::FastSetup& s, int32_t y) {
     highest = s.d0 + std::max(ax0, ax1) + std::max(by0, by1) + offset + margin;
 }
 
+// A set-up as the oracle keeps it from bind to bind: FastSetup's values in 96 bytes instead of
+// 144, since a large input keeps one per triangle. Edge steps are snapped edge vectors times
+// kSubpixelScale, and snapped coordinates are at most kMaxSnapped = 2^29 in magnitude, so their
+// quotients fit in int32_t; pixel bounds lie in a viewport of at most 2^16 pixels a side. The
+// narrow flag (a byte, not 8 of padding) and the conservative spread (in conservative mode only)
+// are kept beside them.
+struct StoredSetup {
+    int64_t edge_at_origin[3];
+    double x0, y0, d0, ddx, ddy;
+    int32_t step_x[3], step_y[3]; // edge_step_x and edge_step_y over kSubpixelScale
+    uint16_t px_min, px_max, py_min, py_max;
+};
+static_assert(sizeof(StoredSetup) == 96);
+static_assert(2 * detail::kMaxSnapped <= INT32_MAX && detail::kMaxViewportSize <= 65536);
+
+StoredSetup storedSetup(const detail::FastSetup& s) {
+    StoredSetup c;
+    for (int e = 0; e < 3; ++e) {
+        assert(s.edge_step_x[e] % detail::kSubpixelScale == 0 &&
+               s.edge_step_y[e] % detail::kSubpixelScale == 0);
+        c.edge_at_origin[e] = s.edge_at_origin[e];
+        c.step_x[e] = int32_t(s.edge_step_x[e] / detail::kSubpixelScale);
+        c.step_y[e] = int32_t(s.edge_step_y[e] / detail::kSubpixelScale);
+    }
+    c.x0 = s.x0;
+    c.y0 = s.y0;
+    c.d0 = s.d0;
+    c.ddx = s.ddx;
+    c.ddy = s.ddy;
+    c.px_min = uint16_t(s.px_min);
+    c.px_max = uint16_t(s.px_max);
+    c.py_min = uint16_t(s.py_min);
+    c.py_max = uint16_t(s.py_max);
+    return c;
+}
+
+[[gnu::always_inline]] inline detail::FastSetup fastSetup(const StoredSetup& c, bool narrow,
+                                                          double spread) {
+    detail::FastSetup s;
+    for (int e = 0; e < 3; ++e) {
+        s.edge_at_origin[e] = c.edge_at_origin[e];
+        s.edge_step_x[e] = int64_t(c.step_x[e]) * detail::kSubpixelScale;
+        s.edge_step_y[e] = int64_t(c.step_y[e]) * detail::kSubpixelScale;
+    }
+    s.x0 = c.x0;
+    s.y0 = c.y0;
+    s.d0 = c.d0;
+    s.ddx = c.ddx;
+    s.ddy = c.ddy;
+    s.spread = spread;
+    s.px_min = c.px_min;
+    s.px_max = c.px_max;
+    s.py_min = c.py_min;
+    s.py_max = c.py_max;
+    s.narrow = narrow;
+    return s;
+}
+
 } // namespace
 
 // Everything behind FastCpuOracle's interface. Its methods are the oracle's: each public method
@@ -148,14 +207,22 @@ struct FastCpuOracle::Impl {
     }
     /// Writes out the pending clear of one tile: its pixels +infinity, bounds +infinity.
     void clearTile(std::size_t tile) const;
+    /// Set-up k of setups_, as the walks take it.
+    detail::FastSetup setup(uint32_t k) const {
+        return fastSetup(setups_[k], narrow_[k] != 0, conservative_ ? spreads_[k] : 0.0);
+    }
+    /// Appends the set-ups of fan triangles to setups_ (and narrow_, spreads_).
+    void store(std::span<const detail::FastSetup> fan);
 
     uint32_t width_ = 0, height_ = 0;
     uint32_t tiles_x_ = 0, tiles_y_ = 0;
-    std::vector<PrimitiveRange> primitives_;
+    uint32_t primitive_count_ = 0;
     // Primitive p's fan triangles are setups_[primitive_setups_[p], primitive_setups_[p + 1]).
     std::vector<uint32_t> primitive_setups_;
-    std::vector<detail::FastSetup> setups_;
-    std::vector<uint32_t> bind_triangles_; // the triangles of every primitive, in bind order
+    std::vector<StoredSetup> setups_;
+    std::vector<uint8_t> narrow_;        // FastSetup::narrow, beside setups_
+    std::vector<double> spreads_;        // conservative mode: FastSetup::spread, beside setups_
+    std::vector<detail::FastSetup> fan_; // bind's scratch: one triangle's fan set-ups
     // Per tile, in one struct so that a tile's bounds and epoch share a cache line (the tiles a
     // pass touches are scattered over a buffer larger than the caches: one miss, not three).
     // Clearing is lazy: clear() starts a new epoch, and a tile whose epoch is older holds only
@@ -225,60 +292,81 @@ void FastCpuOracle::Impl::bind(PositionsView positions, const ViewProjection& vi
     height_ = view.height;
     tiles_x_ = (width_ + kTileSize - 1) / kTileSize;
     tiles_y_ = (height_ + kTileSize - 1) / kTileSize;
-    primitives_.assign(primitives.begin(), primitives.end());
-    for ([[maybe_unused]] const PrimitiveRange& range : primitives_)
+    primitive_count_ = uint32_t(primitives.size());
+    for ([[maybe_unused]] const PrimitiveRange& range : primitives)
         assert(uint64_t(range.first_triangle) + range.triangle_count <= positions.triangleCount());
 
     // Set-ups are laid out in primitive order (a primitive's fan triangles are contiguous), so a
     // walk over primitives in id order reads memory forward; triangles of no primitive are never
-    // set up, those of several are set up once each.
+    // set up, those of several are set up once each. Triangles are taken four at a time in that
+    // order (bind order), for the batch set-up.
     const detail::Matrix4 m = detail::multiply(view.projection_matrix, view.view);
-    bind_triangles_.clear();
-    for (const PrimitiveRange& range : primitives_)
-        for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count;
-             ++t)
-            bind_triangles_.push_back(t);
-    const std::size_t n = bind_triangles_.size();
-    primitive_setups_.resize(primitives_.size() + 1);
+    std::size_t n = 0;
+    for (const PrimitiveRange& range : primitives)
+        n += range.triangle_count;
+    primitive_setups_.resize(primitives.size() + 1);
     setups_.clear();
     setups_.reserve(n);
-    // Before the set-ups of bind_triangles_[i]: primitives starting there start here.
+    narrow_.clear();
+    narrow_.reserve(n);
+    spreads_.clear();
+    // Before the set-ups of the triangle at bind position i: primitives starting there start here.
     std::size_t next_primitive = 0, next_start = 0;
     const auto reach = [&](std::size_t i) {
-        while (next_primitive < primitives_.size() && next_start == i) {
+        while (next_primitive < primitives.size() && next_start == i) {
             primitive_setups_[next_primitive] = uint32_t(setups_.size());
-            next_start += primitives_[next_primitive++].triangle_count;
+            next_start += primitives[next_primitive++].triangle_count;
         }
     };
-    std::size_t i = 0;
-    if (setup_quad_ != nullptr && !conservative_) {
+    const bool batch = setup_quad_ != nullptr && !conservative_;
+    uint32_t quad_triangles[4];
+    std::size_t quad_size = 0, quad_first = 0; // quad_triangles[0] is at bind position quad_first
+    const auto setUpQuad = [&] {
         detail::FastSetup quad[4];
         detail::LaneSetup lanes[4];
-        for (; i + 4 <= n; i += 4) {
+        if (batch && quad_size == 4)
             setup_quad_(m, positions.x.data(), positions.y.data(), positions.z.data(),
-                        &bind_triangles_[i], width_, height_, quad, lanes);
-            for (std::size_t l = 0; l < 4; ++l) {
-                reach(i + l);
-                if (lanes[l] == detail::LaneSetup::ready) {
-                    quad[l].narrow = detail::edgesFitInt32(quad[l]);
-                    setups_.push_back(quad[l]);
-                } else if (lanes[l] == detail::LaneSetup::scalar)
-                    detail::appendFastSetups(m, positions, bind_triangles_[i + l], width_, height_,
-                                             conservative_, setups_);
+                        quad_triangles, width_, height_, quad, lanes);
+        else
+            std::fill_n(lanes, 4, detail::LaneSetup::scalar);
+        for (std::size_t l = 0; l < quad_size; ++l) {
+            reach(quad_first + l);
+            if (lanes[l] == detail::LaneSetup::ready) {
+                quad[l].narrow = detail::edgesFitInt32(quad[l]);
+                store({&quad[l], 1});
+            } else if (lanes[l] == detail::LaneSetup::scalar) {
+                fan_.clear();
+                detail::appendFastSetups(m, positions, quad_triangles[l], width_, height_,
+                                         conservative_, fan_);
+                store(fan_);
             }
         }
-    }
-    for (; i < n; ++i) {
-        reach(i);
-        detail::appendFastSetups(m, positions, bind_triangles_[i], width_, height_, conservative_,
-                                 setups_);
-    }
+        quad_first += quad_size;
+        quad_size = 0;
+    };
+    for (const PrimitiveRange& range : primitives)
+        for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count;
+             ++t) {
+            quad_triangles[quad_size++] = t;
+            if (quad_size == 4)
+                setUpQuad();
+        }
+    setUpQuad();
     reach(n);
-    primitive_setups_[primitives_.size()] = uint32_t(setups_.size());
+    primitive_setups_[primitives.size()] = uint32_t(setups_.size());
 
     depth_.resize(std::size_t(tiles_x_) * tiles_y_ * kTilePixels);
     tiles_.assign(std::size_t(tiles_x_) * tiles_y_, TileState{kInfinity, kInfinity, 0});
     epoch_ = 1; // every tile pending a clear
+}
+
+void FastCpuOracle::Impl::store(std::span<const detail::FastSetup> fan) {
+    for (const detail::FastSetup& s : fan) {
+        setups_.push_back(storedSetup(s));
+        narrow_.push_back(s.narrow ? 1 : 0);
+        if (conservative_)
+            spreads_.push_back(s.spread);
+    }
 }
 
 void FastCpuOracle::Impl::clearTile(std::size_t tile) const {
@@ -489,19 +577,19 @@ bool FastCpuOracle::Impl::rasterizeSmall(const detail::FastSetup& s, int32_t ty_
 }
 
 void FastCpuOracle::Impl::draw(uint32_t primitive) {
-    assert(primitive < primitives_.size());
+    assert(primitive < primitive_count_);
     ++stats_.draws;
     const uint32_t first = primitive_setups_[primitive], last = primitive_setups_[primitive + 1];
     for (uint32_t i = first; i < last; ++i)
-        rasterize<true>(setups_[i], 0, int32_t(tiles_y_), stats_);
+        rasterize<true>(setup(i), 0, int32_t(tiles_y_), stats_);
 }
 
 bool FastCpuOracle::Impl::anyBehind(uint32_t primitive) {
-    assert(primitive < primitives_.size());
+    assert(primitive < primitive_count_);
     ++stats_.queries;
     const uint32_t first = primitive_setups_[primitive], last = primitive_setups_[primitive + 1];
     for (uint32_t i = first; i < last; ++i)
-        if (rasterize<false>(setups_[i], 0, int32_t(tiles_y_), stats_))
+        if (rasterize<false>(setup(i), 0, int32_t(tiles_y_), stats_))
             return true;
     return false;
 }
@@ -570,7 +658,7 @@ void FastCpuOracle::Impl::backToFrontPass(uint32_t bands, std::span<const uint32
                                           std::span<uint8_t> behind) {
     ++epoch_; // clear()
     for (std::size_t i = 0; i < sequence.size(); ++i) {
-        assert(sequence[i] < primitives_.size());
+        assert(sequence[i] < primitive_count_);
         if (query[i]) {
             behind[i] = 0;
             ++stats_.queries;
@@ -587,13 +675,13 @@ void FastCpuOracle::Impl::backToFrontPass(uint32_t bands, std::span<const uint32
                 std::atomic_ref<uint8_t> answer(behind[i]);
                 if (answer.load(std::memory_order_relaxed) == 0)
                     for (uint32_t k = first; k < last; ++k)
-                        if (rasterize<false>(setups_[k], first_row, last_row, stats)) {
+                        if (rasterize<false>(setup(k), first_row, last_row, stats)) {
                             answer.store(1, std::memory_order_relaxed);
                             break;
                         }
             }
             for (uint32_t k = first; k < last; ++k)
-                rasterize<true>(setups_[k], first_row, last_row, stats);
+                rasterize<true>(setup(k), first_row, last_row, stats);
         }
     });
 }
@@ -611,19 +699,19 @@ void FastCpuOracle::Impl::queryAgainst(uint32_t bands, std::span<const uint32_t>
         int32_t first_row, last_row;
         bandRows(b, bands, first_row, last_row);
         for (uint32_t p : occluders) {
-            assert(p < primitives_.size());
+            assert(p < primitive_count_);
             const uint32_t last = primitive_setups_[p + 1];
             for (uint32_t k = primitive_setups_[p]; k < last; ++k)
-                rasterize<true>(setups_[k], first_row, last_row, stats);
+                rasterize<true>(setup(k), first_row, last_row, stats);
         }
         for (std::size_t i = 0; i < targets.size(); ++i) {
-            assert(targets[i] < primitives_.size());
+            assert(targets[i] < primitive_count_);
             std::atomic_ref<uint8_t> answer(behind[i]);
             if (answer.load(std::memory_order_relaxed) != 0)
                 continue;
             const uint32_t last = primitive_setups_[targets[i] + 1];
             for (uint32_t k = primitive_setups_[targets[i]]; k < last; ++k)
-                if (rasterize<false>(setups_[k], first_row, last_row, stats)) {
+                if (rasterize<false>(setup(k), first_row, last_row, stats)) {
                     answer.store(1, std::memory_order_relaxed);
                     break;
                 }
@@ -645,7 +733,7 @@ void FastCpuOracle::bind(PositionsView positions, const ViewProjection& view,
 }
 
 uint32_t FastCpuOracle::primitiveCount() const {
-    return uint32_t(impl_->primitives_.size());
+    return impl_->primitive_count_;
 }
 void FastCpuOracle::clear() {
     ++impl_->epoch_;
