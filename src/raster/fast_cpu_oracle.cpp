@@ -47,70 +47,20 @@ constexpr std::size_t kTilePixels = std::size_t(detail::kTileRowFloats) * detail
 // with a wide safety factor on the 4 roundings it takes).
 constexpr double kDepthMargin = 0x1p-48;
 
-// Conservative mode: how far depths move from the plane's value at a pixel centre over its
-// square, as the reference's set-up computed it. Exact mode: 0.
-double spreadOf(const detail::FastSetup& s, bool conservative) {
-    return conservative ? s.spread : 0.0;
-}
-
-// What a draw (nearest depth over the pixel) or a query (farthest) adds to each fragment's double
-// value before rounding; -0.0 in exact mode, which changes no value (fast_rows.h).
-template <bool kDraw> double fragmentOffset(double spread, bool conservative) {
-    return conservative ? (kDraw ? -spread : spread) : -0.0;
-}
-
-// What every walk of s shares (fast_rows.h), for a draw or a query.
-template <bool kDraw>
-detail::TriangleWalk triangleWalk(const detail::FastSetup& s, double spread, bool conservative,
-                                  float tolerance) {
-    detail::TriangleWalk walk;
-    walk.tolerance = tolerance;
-    walk.narrow = s.narrow;
-    for (int e = 0; e < 3; ++e) {
-        walk.step_x[e] = s.edge_step_x[e];
-        walk.step_y[e] = s.edge_step_y[e];
-    }
-    walk.d0 = s.d0;
-    walk.ddx = s.ddx;
-    walk.ddy = s.ddy;
-    walk.x0 = s.x0;
-    walk.y0_plane = s.y0;
-    walk.offset = fragmentOffset<kDraw>(spread, conservative);
-    return walk;
-}
-
-// The plane's column and row terms of rule 6: ddx ((x + 0.5) - x0) and ddy ((y + 0.5) - y0).
-double columnTerm(const detail::FastSetup& s, int32_t x) {
-    return s.ddx * ((double(x) + 0.5) - s.x0);
-}
-double rowTerm(const detail::FastSetup& s, int32_t y) {
-    return s.ddy * ((double(y) + 0.5) - s.y0);
-}
-
-// Bounds on the double depth value v of every fragment over a rectangle whose corner columns have
-// terms ax0, ax1 and corner rows by0, by1 (see the file comment), offset included (its rounding
-// is within the margin, spread its size). Inlined: it runs once per tile a triangle visits, and a
-// call with results through memory cost 7% of tile-culled queries.
-[[gnu::always_inline]] inline void depthBounds(const detail::FastSetup& s, double ax0, double ax1,
-                                               double by0, double by1, double offset, double spread,
-                                               double& lowest, double& highest) {
-    const double margin = kDepthMargin * (std::abs(s.d0) + std::max(std::abs(ax0), std::abs(ax1)) +
-                                          std::max(std::abs(by0), std::abs(by1)) + spread);
-    lowest = s.d0 + std::min(ax0, ax1) + std::min(by0, by1) + offset - margin;
-    highest = s.d0 + std::max(ax0, ax1) + std::max(by0, by1) + offset + margin;
-}
-
-// A set-up as the oracle keeps it from bind to bind: FastSetup's values in 96 bytes instead of
-// 144, since a large input keeps one per triangle. Edge steps are snapped edge vectors times
-// kSubpixelScale, and snapped coordinates are at most kMaxSnapped = 2^29 in magnitude, so their
-// quotients fit in int32_t; pixel bounds lie in a viewport of at most 2^16 pixels a side. The
-// narrow flag (a byte, not 8 of padding) and the conservative spread (in conservative mode only)
-// are kept beside them.
+// A set-up as the oracle keeps it from bind to bind and the walks read it: FastSetup's values in
+// 96 bytes instead of 144, since a large input keeps one per triangle. Edge steps are snapped edge
+// vectors times kSubpixelScale, and snapped coordinates are at most kMaxSnapped = 2^29 in
+// magnitude, so their quotients fit in int32_t; pixel bounds lie in a viewport of at most 2^16
+// pixels a side. The narrow flag (a byte, not 8 of padding) and the conservative spread (in
+// conservative mode only) are kept beside them.
 struct StoredSetup {
     int64_t edge_at_origin[3];
     double x0, y0, d0, ddx, ddy;
     int32_t step_x[3], step_y[3]; // edge_step_x and edge_step_y over kSubpixelScale
     uint16_t px_min, px_max, py_min, py_max;
+
+    int64_t edgeStepX(int e) const { return int64_t(step_x[e]) * detail::kSubpixelScale; }
+    int64_t edgeStepY(int e) const { return int64_t(step_y[e]) * detail::kSubpixelScale; }
 };
 static_assert(sizeof(StoredSetup) == 96);
 static_assert(2 * detail::kMaxSnapped <= INT32_MAX && detail::kMaxViewportSize <= 65536);
@@ -136,26 +86,51 @@ StoredSetup storedSetup(const detail::FastSetup& s) {
     return c;
 }
 
-[[gnu::always_inline]] inline detail::FastSetup fastSetup(const StoredSetup& c, bool narrow,
-                                                          double spread) {
-    detail::FastSetup s;
+// What a draw (nearest depth over the pixel) or a query (farthest) adds to each fragment's double
+// value before rounding; -0.0 in exact mode, which changes no value (fast_rows.h).
+template <bool kDraw> double fragmentOffset(double spread, bool conservative) {
+    return conservative ? (kDraw ? -spread : spread) : -0.0;
+}
+
+// What every walk of s shares (fast_rows.h), for a draw or a query.
+template <bool kDraw>
+detail::TriangleWalk triangleWalk(const StoredSetup& s, bool narrow, double spread,
+                                  bool conservative, float tolerance) {
+    detail::TriangleWalk walk;
+    walk.tolerance = tolerance;
+    walk.narrow = narrow;
     for (int e = 0; e < 3; ++e) {
-        s.edge_at_origin[e] = c.edge_at_origin[e];
-        s.edge_step_x[e] = int64_t(c.step_x[e]) * detail::kSubpixelScale;
-        s.edge_step_y[e] = int64_t(c.step_y[e]) * detail::kSubpixelScale;
+        walk.step_x[e] = s.edgeStepX(e);
+        walk.step_y[e] = s.edgeStepY(e);
     }
-    s.x0 = c.x0;
-    s.y0 = c.y0;
-    s.d0 = c.d0;
-    s.ddx = c.ddx;
-    s.ddy = c.ddy;
-    s.spread = spread;
-    s.px_min = c.px_min;
-    s.px_max = c.px_max;
-    s.py_min = c.py_min;
-    s.py_max = c.py_max;
-    s.narrow = narrow;
-    return s;
+    walk.d0 = s.d0;
+    walk.ddx = s.ddx;
+    walk.ddy = s.ddy;
+    walk.x0 = s.x0;
+    walk.y0_plane = s.y0;
+    walk.offset = fragmentOffset<kDraw>(spread, conservative);
+    return walk;
+}
+
+// The plane's column and row terms of rule 6: ddx ((x + 0.5) - x0) and ddy ((y + 0.5) - y0).
+double columnTerm(const StoredSetup& s, int32_t x) {
+    return s.ddx * ((double(x) + 0.5) - s.x0);
+}
+double rowTerm(const StoredSetup& s, int32_t y) {
+    return s.ddy * ((double(y) + 0.5) - s.y0);
+}
+
+// Bounds on the double depth value v of every fragment over a rectangle whose corner columns have
+// terms ax0, ax1 and corner rows by0, by1 (see the file comment), offset included (its rounding
+// is within the margin, spread its size). Inlined: it runs once per tile a triangle visits, and a
+// call with results through memory cost 7% of tile-culled queries.
+[[gnu::always_inline]] inline void depthBounds(const StoredSetup& s, double ax0, double ax1,
+                                               double by0, double by1, double offset, double spread,
+                                               double& lowest, double& highest) {
+    const double margin = kDepthMargin * (std::abs(s.d0) + std::max(std::abs(ax0), std::abs(ax1)) +
+                                          std::max(std::abs(by0), std::abs(by1)) + spread);
+    lowest = s.d0 + std::min(ax0, ax1) + std::min(by0, by1) + offset - margin;
+    highest = s.d0 + std::max(ax0, ax1) + std::max(by0, by1) + offset + margin;
 }
 
 } // namespace
@@ -176,18 +151,16 @@ struct FastCpuOracle::Impl {
                       std::span<const uint32_t> targets, std::span<uint8_t> behind);
     std::span<const float> depthBuffer() const;
 
-    /// Walks the tiles of s in tile rows [ty_begin, ty_end); counts into stats.
+    /// Walks the tiles of set-up k in tile rows [ty_begin, ty_end); counts into stats.
     template <bool kDraw>
-    bool rasterize(const detail::FastSetup& s, int32_t ty_begin, int32_t ty_end,
-                   FastCpuOracleStats& stats);
+    bool rasterize(uint32_t k, int32_t ty_begin, int32_t ty_end, FastCpuOracleStats& stats);
     /// rasterize for a triangle whose pixel bounds span at most detail::kSmallTiles tiles each
     /// way (most triangles of a detailed mesh): one walk over its bounds (fast_rows.h), the tiles
     /// cleared and culled beforehand, their bounds updated after, none of the per-tile set-up that
     /// costs more than the few pixels a small triangle has in each tile. Rows of tile rows
     /// [ty_first, ty_last] only.
     template <bool kDraw>
-    bool rasterizeSmall(const detail::FastSetup& s, int32_t ty_first, int32_t ty_last,
-                        FastCpuOracleStats& stats);
+    bool rasterizeSmall(uint32_t k, int32_t ty_first, int32_t ty_last, FastCpuOracleStats& stats);
     /// Runs band(b, stats of b) for b = 0..bands-1 on the calling thread and the pool's workers
     /// (each claims the next band when done); then adds the bands' tile counts to stats_.
     template <class Band> void runBands(uint32_t bands, Band&& band);
@@ -207,10 +180,8 @@ struct FastCpuOracle::Impl {
     }
     /// Writes out the pending clear of one tile: its pixels +infinity, bounds +infinity.
     void clearTile(std::size_t tile) const;
-    /// Set-up k of setups_, as the walks take it.
-    detail::FastSetup setup(uint32_t k) const {
-        return fastSetup(setups_[k], narrow_[k] != 0, conservative_ ? spreads_[k] : 0.0);
-    }
+    /// Conservative mode: set-up k's spread (FastSetup::spread); exact mode: 0.
+    double spreadOf(uint32_t k) const { return conservative_ ? spreads_[k] : 0.0; }
     /// Appends the set-ups of fan triangles to setups_ (and narrow_, spreads_).
     void store(std::span<const detail::FastSetup> fan);
 
@@ -386,32 +357,34 @@ std::span<const float> FastCpuOracle::Impl::depthBuffer() const {
 }
 
 template <bool kDraw>
-bool FastCpuOracle::Impl::rasterize(const detail::FastSetup& s, int32_t ty_begin, int32_t ty_end,
+bool FastCpuOracle::Impl::rasterize(uint32_t k, int32_t ty_begin, int32_t ty_end,
                                     FastCpuOracleStats& stats) {
-    const int32_t tx_first = s.px_min >> kTileShift, tx_last = s.px_max >> kTileShift;
-    const int32_t ty_first = std::max(s.py_min >> kTileShift, ty_begin);
-    const int32_t ty_last = std::min(s.py_max >> kTileShift, ty_end - 1);
+    const StoredSetup& s = setups_[k];
+    const int32_t px_min = s.px_min, px_max = s.px_max, py_min = s.py_min, py_max = s.py_max;
+    const int32_t tx_first = px_min >> kTileShift, tx_last = px_max >> kTileShift;
+    const int32_t ty_first = std::max(py_min >> kTileShift, ty_begin);
+    const int32_t ty_last = std::min(py_max >> kTileShift, ty_end - 1);
     if (ty_first > ty_last)
         return false; // outside the band
     if (tx_last - tx_first < detail::kSmallTiles && ty_last - ty_first < detail::kSmallTiles)
-        return rasterizeSmall<kDraw>(s, ty_first, ty_last, stats);
+        return rasterizeSmall<kDraw>(k, ty_first, ty_last, stats);
     const int32_t last_x = int32_t(width_) - 1, last_y = int32_t(height_) - 1;
     detail::TileWalk walk;
-    const double spread = spreadOf(s, conservative_);
+    const double spread = spreadOf(k);
     static_cast<detail::TriangleWalk&>(walk) =
-        triangleWalk<kDraw>(s, spread, conservative_, depth_tolerance_);
+        triangleWalk<kDraw>(s, narrow_[k] != 0, spread, conservative_, depth_tolerance_);
     for (int32_t ty = ty_first; ty <= ty_last; ++ty) {
         // Rows of the tile within the viewport, then within the triangle's bounding box.
         const int32_t vy0 = ty << kTileShift, vy1 = std::min(vy0 + int32_t(kTileSize) - 1, last_y);
-        const int32_t y0 = std::max(vy0, s.py_min), y1 = std::min(vy1, s.py_max);
+        const int32_t y0 = std::max(vy0, py_min), y1 = std::min(vy1, py_max);
         const bool whole_rows = y0 == vy0 && y1 == vy1;
         // What the tiles of this row share: each edge at (px_min, y0) and its least and greatest
         // change over the rows, and the depth plane's row terms.
         int64_t edge_at_row[3], rise_low[3], rise_high[3];
         for (int e = 0; e < 3; ++e) {
-            edge_at_row[e] = s.edge_at_origin[e] + int64_t(s.px_min) * s.edge_step_x[e] +
-                             int64_t(y0) * s.edge_step_y[e];
-            const int64_t span_y = int64_t(y1 - y0) * s.edge_step_y[e];
+            edge_at_row[e] = s.edge_at_origin[e] + int64_t(px_min) * s.edgeStepX(e) +
+                             int64_t(y0) * s.edgeStepY(e);
+            const int64_t span_y = int64_t(y1 - y0) * s.edgeStepY(e);
             rise_low[e] = std::min<int64_t>(span_y, 0);
             rise_high[e] = std::max<int64_t>(span_y, 0);
         }
@@ -420,14 +393,14 @@ bool FastCpuOracle::Impl::rasterize(const detail::FastSetup& s, int32_t ty_begin
             ++stats.tiles_visited;
             const int32_t vx0 = tx << kTileShift;
             const int32_t vx1 = std::min(vx0 + int32_t(kTileSize) - 1, last_x);
-            const int32_t x0 = std::max(vx0, s.px_min), x1 = std::min(vx1, s.px_max);
+            const int32_t x0 = std::max(vx0, px_min), x1 = std::min(vx1, px_max);
 
             // Coverage from the edge functions at the corners of the pixel rectangle.
             int64_t edge_row[3];
             bool inside_all = true, outside_one = false;
             for (int e = 0; e < 3; ++e) {
-                edge_row[e] = edge_at_row[e] + int64_t(x0 - s.px_min) * s.edge_step_x[e];
-                const int64_t span_x = int64_t(x1 - x0) * s.edge_step_x[e];
+                edge_row[e] = edge_at_row[e] + int64_t(x0 - px_min) * s.edgeStepX(e);
+                const int64_t span_x = int64_t(x1 - x0) * s.edgeStepX(e);
                 const int64_t lowest = edge_row[e] + std::min<int64_t>(span_x, 0) + rise_low[e];
                 const int64_t highest = edge_row[e] + std::max<int64_t>(span_x, 0) + rise_high[e];
                 outside_one |= highest <= 0;
@@ -514,23 +487,24 @@ bool FastCpuOracle::Impl::rasterize(const detail::FastSetup& s, int32_t ty_begin
 }
 
 template <bool kDraw>
-bool FastCpuOracle::Impl::rasterizeSmall(const detail::FastSetup& s, int32_t ty_first,
-                                         int32_t ty_last, FastCpuOracleStats& stats) {
+bool FastCpuOracle::Impl::rasterizeSmall(uint32_t k, int32_t ty_first, int32_t ty_last,
+                                         FastCpuOracleStats& stats) {
+    const StoredSetup& s = setups_[k];
     detail::SmallWalk walk;
     walk.depth = depth_.data();
     walk.tiles_x = tiles_x_;
     walk.px_min = s.px_min;
     walk.px_max = s.px_max;
     // The rows of the band.
-    walk.py_min = std::max(s.py_min, ty_first << kTileShift);
-    walk.py_max = std::min(s.py_max, (ty_last << kTileShift) + int32_t(kTileSize) - 1);
+    walk.py_min = std::max(int32_t(s.py_min), ty_first << kTileShift);
+    walk.py_max = std::min(int32_t(s.py_max), (ty_last << kTileShift) + int32_t(kTileSize) - 1);
     for (int e = 0; e < 3; ++e)
-        walk.edge[e] = s.edge_at_origin[e] + int64_t(walk.px_min) * s.edge_step_x[e] +
-                       int64_t(walk.py_min) * s.edge_step_y[e];
+        walk.edge[e] = s.edge_at_origin[e] + int64_t(walk.px_min) * s.edgeStepX(e) +
+                       int64_t(walk.py_min) * s.edgeStepY(e);
     // narrow holds over the whole bounds, so over the band's rows too.
-    const double spread = spreadOf(s, conservative_);
+    const double spread = spreadOf(k);
     static_cast<detail::TriangleWalk&>(walk) =
-        triangleWalk<kDraw>(s, spread, conservative_, depth_tolerance_);
+        triangleWalk<kDraw>(s, narrow_[k] != 0, spread, conservative_, depth_tolerance_);
     double lowest, highest;
     depthBounds(s, columnTerm(s, walk.px_min), columnTerm(s, walk.px_max), rowTerm(s, walk.py_min),
                 rowTerm(s, walk.py_max), walk.offset, spread, lowest, highest);
@@ -581,7 +555,7 @@ void FastCpuOracle::Impl::draw(uint32_t primitive) {
     ++stats_.draws;
     const uint32_t first = primitive_setups_[primitive], last = primitive_setups_[primitive + 1];
     for (uint32_t i = first; i < last; ++i)
-        rasterize<true>(setup(i), 0, int32_t(tiles_y_), stats_);
+        rasterize<true>(i, 0, int32_t(tiles_y_), stats_);
 }
 
 bool FastCpuOracle::Impl::anyBehind(uint32_t primitive) {
@@ -589,7 +563,7 @@ bool FastCpuOracle::Impl::anyBehind(uint32_t primitive) {
     ++stats_.queries;
     const uint32_t first = primitive_setups_[primitive], last = primitive_setups_[primitive + 1];
     for (uint32_t i = first; i < last; ++i)
-        if (rasterize<false>(setup(i), 0, int32_t(tiles_y_), stats_))
+        if (rasterize<false>(i, 0, int32_t(tiles_y_), stats_))
             return true;
     return false;
 }
@@ -675,13 +649,13 @@ void FastCpuOracle::Impl::backToFrontPass(uint32_t bands, std::span<const uint32
                 std::atomic_ref<uint8_t> answer(behind[i]);
                 if (answer.load(std::memory_order_relaxed) == 0)
                     for (uint32_t k = first; k < last; ++k)
-                        if (rasterize<false>(setup(k), first_row, last_row, stats)) {
+                        if (rasterize<false>(k, first_row, last_row, stats)) {
                             answer.store(1, std::memory_order_relaxed);
                             break;
                         }
             }
             for (uint32_t k = first; k < last; ++k)
-                rasterize<true>(setup(k), first_row, last_row, stats);
+                rasterize<true>(k, first_row, last_row, stats);
         }
     });
 }
@@ -702,7 +676,7 @@ void FastCpuOracle::Impl::queryAgainst(uint32_t bands, std::span<const uint32_t>
             assert(p < primitive_count_);
             const uint32_t last = primitive_setups_[p + 1];
             for (uint32_t k = primitive_setups_[p]; k < last; ++k)
-                rasterize<true>(setup(k), first_row, last_row, stats);
+                rasterize<true>(k, first_row, last_row, stats);
         }
         for (std::size_t i = 0; i < targets.size(); ++i) {
             assert(targets[i] < primitive_count_);
@@ -711,7 +685,7 @@ void FastCpuOracle::Impl::queryAgainst(uint32_t bands, std::span<const uint32_t>
                 continue;
             const uint32_t last = primitive_setups_[targets[i] + 1];
             for (uint32_t k = primitive_setups_[targets[i]]; k < last; ++k)
-                if (rasterize<false>(setup(k), first_row, last_row, stats)) {
+                if (rasterize<false>(k, first_row, last_row, stats)) {
                     answer.store(1, std::memory_order_relaxed);
                     break;
                 }
