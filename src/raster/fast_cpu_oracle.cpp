@@ -48,31 +48,30 @@ constexpr std::size_t kTilePixels = std::size_t(detail::kTileRowFloats) * detail
 constexpr double kDepthMargin = 0x1p-48;
 
 // A set-up as the oracle keeps it from bind to bind and the walks read it: FastSetup's values in
-// 96 bytes instead of 144, since a large input keeps one per triangle. Edge steps are snapped edge
-// vectors times kSubpixelScale, and snapped coordinates are at most kMaxSnapped = 2^29 in
-// magnitude, so their quotients fit in int32_t; pixel bounds lie in a viewport of at most 2^16
-// pixels a side. The narrow flag (a byte, not 8 of padding) and the conservative spread (in
-// conservative mode only) are kept beside them.
+// 120 bytes instead of 144, since a large input keeps one per triangle. Pixel bounds lie in a
+// viewport of at most 2^16 pixels a side; the narrow flag (a byte, not 8 of padding) and the
+// conservative spread (in conservative mode only) are kept beside them. The edge steps stay
+// int64_t: as int32_t quotients by kSubpixelScale (snapped coordinates are at most 2^29) the
+// set-up would take 96 bytes, but widening them back in every draw and query cost 6% more
+// instructions on builtin:bunnies at object level.
 struct StoredSetup {
     int64_t edge_at_origin[3];
+    int64_t edge_step_x[3], edge_step_y[3];
     double x0, y0, d0, ddx, ddy;
-    int32_t step_x[3], step_y[3]; // edge_step_x and edge_step_y over kSubpixelScale
     uint16_t px_min, px_max, py_min, py_max;
 
-    int64_t edgeStepX(int e) const { return int64_t(step_x[e]) * detail::kSubpixelScale; }
-    int64_t edgeStepY(int e) const { return int64_t(step_y[e]) * detail::kSubpixelScale; }
+    int64_t edgeStepX(int e) const { return edge_step_x[e]; }
+    int64_t edgeStepY(int e) const { return edge_step_y[e]; }
 };
-static_assert(sizeof(StoredSetup) == 96);
-static_assert(2 * detail::kMaxSnapped <= INT32_MAX && detail::kMaxViewportSize <= 65536);
+static_assert(sizeof(StoredSetup) == 120);
+static_assert(detail::kMaxViewportSize <= 65536);
 
 StoredSetup storedSetup(const detail::FastSetup& s) {
     StoredSetup c;
     for (int e = 0; e < 3; ++e) {
-        assert(s.edge_step_x[e] % detail::kSubpixelScale == 0 &&
-               s.edge_step_y[e] % detail::kSubpixelScale == 0);
         c.edge_at_origin[e] = s.edge_at_origin[e];
-        c.step_x[e] = int32_t(s.edge_step_x[e] / detail::kSubpixelScale);
-        c.step_y[e] = int32_t(s.edge_step_y[e] / detail::kSubpixelScale);
+        c.edge_step_x[e] = s.edge_step_x[e];
+        c.edge_step_y[e] = s.edge_step_y[e];
     }
     c.x0 = s.x0;
     c.y0 = s.y0;
@@ -153,14 +152,21 @@ struct FastCpuOracle::Impl {
 
     /// Walks the tiles of set-up k in tile rows [ty_begin, ty_end); counts into stats.
     template <bool kDraw>
-    bool rasterize(uint32_t k, int32_t ty_begin, int32_t ty_end, FastCpuOracleStats& stats);
+    bool rasterize(const StoredSetup& s, bool narrow, double spread, int32_t ty_begin,
+                   int32_t ty_end, FastCpuOracleStats& stats);
+    /// rasterize of set-up k.
+    template <bool kDraw>
+    bool rasterize(uint32_t k, int32_t ty_begin, int32_t ty_end, FastCpuOracleStats& stats) {
+        return rasterize<kDraw>(setups_[k], narrow_[k] != 0, spreadOf(k), ty_begin, ty_end, stats);
+    }
     /// rasterize for a triangle whose pixel bounds span at most detail::kSmallTiles tiles each
     /// way (most triangles of a detailed mesh): one walk over its bounds (fast_rows.h), the tiles
     /// cleared and culled beforehand, their bounds updated after, none of the per-tile set-up that
     /// costs more than the few pixels a small triangle has in each tile. Rows of tile rows
     /// [ty_first, ty_last] only.
     template <bool kDraw>
-    bool rasterizeSmall(uint32_t k, int32_t ty_first, int32_t ty_last, FastCpuOracleStats& stats);
+    bool rasterizeSmall(const StoredSetup& s, bool narrow, double spread, int32_t ty_first,
+                        int32_t ty_last, FastCpuOracleStats& stats);
     /// Runs band(b, stats of b) for b = 0..bands-1 on the calling thread and the pool's workers
     /// (each claims the next band when done); then adds the bands' tile counts to stats_.
     template <class Band> void runBands(uint32_t bands, Band&& band);
@@ -357,9 +363,8 @@ std::span<const float> FastCpuOracle::Impl::depthBuffer() const {
 }
 
 template <bool kDraw>
-bool FastCpuOracle::Impl::rasterize(uint32_t k, int32_t ty_begin, int32_t ty_end,
-                                    FastCpuOracleStats& stats) {
-    const StoredSetup& s = setups_[k];
+bool FastCpuOracle::Impl::rasterize(const StoredSetup& s, bool narrow, double spread,
+                                    int32_t ty_begin, int32_t ty_end, FastCpuOracleStats& stats) {
     const int32_t px_min = s.px_min, px_max = s.px_max, py_min = s.py_min, py_max = s.py_max;
     const int32_t tx_first = px_min >> kTileShift, tx_last = px_max >> kTileShift;
     const int32_t ty_first = std::max(py_min >> kTileShift, ty_begin);
@@ -367,12 +372,11 @@ bool FastCpuOracle::Impl::rasterize(uint32_t k, int32_t ty_begin, int32_t ty_end
     if (ty_first > ty_last)
         return false; // outside the band
     if (tx_last - tx_first < detail::kSmallTiles && ty_last - ty_first < detail::kSmallTiles)
-        return rasterizeSmall<kDraw>(k, ty_first, ty_last, stats);
+        return rasterizeSmall<kDraw>(s, narrow, spread, ty_first, ty_last, stats);
     const int32_t last_x = int32_t(width_) - 1, last_y = int32_t(height_) - 1;
     detail::TileWalk walk;
-    const double spread = spreadOf(k);
     static_cast<detail::TriangleWalk&>(walk) =
-        triangleWalk<kDraw>(s, narrow_[k] != 0, spread, conservative_, depth_tolerance_);
+        triangleWalk<kDraw>(s, narrow, spread, conservative_, depth_tolerance_);
     for (int32_t ty = ty_first; ty <= ty_last; ++ty) {
         // Rows of the tile within the viewport, then within the triangle's bounding box.
         const int32_t vy0 = ty << kTileShift, vy1 = std::min(vy0 + int32_t(kTileSize) - 1, last_y);
@@ -487,9 +491,9 @@ bool FastCpuOracle::Impl::rasterize(uint32_t k, int32_t ty_begin, int32_t ty_end
 }
 
 template <bool kDraw>
-bool FastCpuOracle::Impl::rasterizeSmall(uint32_t k, int32_t ty_first, int32_t ty_last,
+bool FastCpuOracle::Impl::rasterizeSmall(const StoredSetup& s, bool narrow, double spread,
+                                         int32_t ty_first, int32_t ty_last,
                                          FastCpuOracleStats& stats) {
-    const StoredSetup& s = setups_[k];
     detail::SmallWalk walk;
     walk.depth = depth_.data();
     walk.tiles_x = tiles_x_;
@@ -502,9 +506,8 @@ bool FastCpuOracle::Impl::rasterizeSmall(uint32_t k, int32_t ty_first, int32_t t
         walk.edge[e] = s.edge_at_origin[e] + int64_t(walk.px_min) * s.edgeStepX(e) +
                        int64_t(walk.py_min) * s.edgeStepY(e);
     // narrow holds over the whole bounds, so over the band's rows too.
-    const double spread = spreadOf(k);
     static_cast<detail::TriangleWalk&>(walk) =
-        triangleWalk<kDraw>(s, narrow_[k] != 0, spread, conservative_, depth_tolerance_);
+        triangleWalk<kDraw>(s, narrow, spread, conservative_, depth_tolerance_);
     double lowest, highest;
     depthBounds(s, columnTerm(s, walk.px_min), columnTerm(s, walk.px_max), rowTerm(s, walk.py_min),
                 rowTerm(s, walk.py_max), walk.offset, spread, lowest, highest);

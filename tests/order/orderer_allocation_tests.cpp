@@ -169,7 +169,7 @@ INSTANTIATE_TEST_SUITE_P(Levels, OrdererAllocations,
 // Peak bytes held by an oracle and an orderer over it, from the oracle's creation to the end of
 // the second frame (the first coherent one), per primitive, for builtin:soup (one object a
 // triangle, so every level has n primitives). They hold per-primitive arrays: the oracle's
-// triangle set-ups (97 bytes, reserved for every triangle) and their starts, the orderer's copy
+// triangle set-ups (121 bytes, reserved for every triangle) and their starts, the orderer's copy
 // of the object ranges, the ranges as bound, the start, previous and output orders, Vis-sort's
 // list and flags. Before the large-input work (issue 14) this was about 215 bytes at object level.
 class OrdererMemory : public testing::TestWithParam<OrderLevel> {};
@@ -195,8 +195,8 @@ TEST_P(OrdererMemory, PeakBytesPerPrimitiveAreBounded) {
     const double per_primitive = double(g_peak_live_bytes - before) / kTriangles;
     std::cout << orderLevelName(GetParam()) << ": " << per_primitive
               << " bytes per primitive at the peak\n";
-    // About 140 (multistage: 12 more, two ranks and a cycle index a triangle).
-    EXPECT_LE(per_primitive, GetParam() == OrderLevel::multistage ? 165.0 : 150.0);
+    // About 164 (multistage: 12 more, two ranks and a cycle index a triangle).
+    EXPECT_LE(per_primitive, GetParam() == OrderLevel::multistage ? 190.0 : 175.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Levels, OrdererMemory,
