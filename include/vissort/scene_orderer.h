@@ -84,23 +84,23 @@ public:
 
 private:
     void orderMultistage(PositionsView positions, const ViewProjection& view, FrameOrder& frame);
-    /// Binds the oracle to primitives and sorts them into `into`, starting from previous_order
-    /// when it has the right size, else from the depth-key order.
-    void sortPrimitives(PositionsView positions, const ViewProjection& view,
-                        std::span<const PrimitiveRange> primitives,
-                        std::span<const uint32_t> previous_order, VisibilityOrder& into);
-    /// Vis-sort of primitives from the list `start` (a permutation of their indices), with the
-    /// oracle bound to them in that order and the answer mapped back to indices of primitives.
-    void sortFrom(PositionsView positions, const ViewProjection& view,
-                  std::span<const PrimitiveRange> primitives, std::span<const uint32_t> start,
+    /// Sorts stage 1's primitives (triangles at triangle level, else objects) into sorted_,
+    /// starting from previous_order_ when it has the right size, else from the depth-key order;
+    /// then swaps the order into previous_order_.
+    void sortStage1(PositionsView positions, const ViewProjection& view);
+    /// Vis-sort of n primitives (primitive(i) is the range of primitive i) from the list `start`
+    /// (a permutation of 0..n-1), with the oracle bound to them in that order and the answer
+    /// mapped back to primitive indices.
+    template <class PrimitiveAt>
+    void sortFrom(PositionsView positions, const ViewProjection& view, std::size_t n,
+                  const PrimitiveAt& primitive, std::span<const uint32_t> start,
                   VisibilityOrder& into);
 
     std::vector<PrimitiveRange> objects_;
     uint32_t triangle_count_;
     OrderLevel level_;
     GeometryOracle& oracle_;
-    std::vector<PrimitiveRange> primitives_; // stage 1's: triangles at triangle level, else objects
-    std::vector<uint32_t> previous_order_;   // last frame, at level_ (objects for multistage)
+    std::vector<uint32_t> previous_order_;         // last frame, at level_ (objects for multistage)
     std::vector<uint32_t> previous_triangle_rank_; // multistage: last frame's triangle positions
     // Reused every frame, so that a steady-state frame without cycles allocates nothing
     // (tests/order/orderer_allocation_tests.cpp).

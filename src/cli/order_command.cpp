@@ -15,11 +15,9 @@
 namespace vissort::cli {
 namespace {
 
-nlohmann::json frameRecord(const FrameOrder& frame, bool back_to_front) {
-    std::vector<uint32_t> order = frame.order;
-    if (back_to_front)
-        std::reverse(order.begin(), order.end());
-    return {{"order", order},
+// A frame's JSON record; its order is lists' placeholder `order_list` (writeJsonFile).
+nlohmann::json frameRecord(const FrameOrder& frame, std::size_t order_list) {
+    return {{"order", jsonIdListPlaceholder(order_list)},
             {"level", orderLevelName(frame.level)},
             {"cycles", frame.cycles},
             {"stats",
@@ -86,34 +84,41 @@ int runOrder(const OrderOptions& options) {
     std::unique_ptr<GeometryOracle> oracle = std::move(*made.value);
     SceneOrderer orderer(scene->objectPrimitives(), uint32_t(scene->triangleCount()), level,
                          *oracle);
+    const std::size_t object_count = scene->objects.size();
+    // The orderer keeps the objects' triangle ranges, and only --dump-primitives reads the
+    // objects again: a scene of many small objects (builtin:soup, one a triangle) holds far more
+    // in them (names, materials) than the ranges.
+    if (options.dump_path.empty())
+        std::vector<SceneObject>().swap(scene->objects);
     FrameDriver driver(*scene, view.camera, view.path, view.width, view.height);
     nlohmann::json frames = nlohmann::json::array();
+    std::vector<std::vector<uint32_t>> frame_orders; // for --json, when there are several frames
     FrameOrder last;
     double total_ms = 0;
     for (int f = 0; f < view.frames; ++f) {
         driver.seek(f);
-        last = orderer.orderFrame(driver.positions(), driver.view());
+        orderer.orderFrame(driver.positions(), driver.view(), last);
         total_ms += last.milliseconds;
         if (view.frames > 1) {
             printFrame(f, last);
-            if (!options.json_path.empty())
-                frames.push_back(frameRecord(last, options.back_to_front));
+            if (!options.json_path.empty()) {
+                frames.push_back(frameRecord(last, frame_orders.size()));
+                frame_orders.push_back(last.order);
+            }
         }
     }
 
     const char* unit = level == OrderLevel::object ? "objects" : "triangles";
-    std::cout << options.scene << ": " << scene->objects.size() << " objects, "
-              << scene->triangleCount() << " triangles; " << orderLevelName(level) << " level, "
-              << oracleName(oracle_kind) << " oracle, " << view.width << 'x' << view.height << ", "
-              << view.frames << (view.frames == 1 ? " frame\n" : " frames\n");
+    std::cout << options.scene << ": " << object_count << " objects, " << scene->triangleCount()
+              << " triangles; " << orderLevelName(level) << " level, " << oracleName(oracle_kind)
+              << " oracle, " << view.width << 'x' << view.height << ", " << view.frames
+              << (view.frames == 1 ? " frame\n" : " frames\n");
     std::cout << "order (" << (options.back_to_front ? "back to front" : "front to back") << ") of "
               << last.order.size() << ' ' << unit << ':';
-    std::vector<uint32_t> shown = last.order;
-    if (options.back_to_front)
-        std::reverse(shown.begin(), shown.end());
-    for (std::size_t i = 0; i < std::min<std::size_t>(shown.size(), 20); ++i)
-        std::cout << ' ' << shown[i];
-    std::cout << (shown.size() > 20 ? " ...\n" : "\n");
+    const std::size_t n = last.order.size();
+    for (std::size_t i = 0; i < std::min<std::size_t>(n, 20); ++i)
+        std::cout << ' ' << last.order[options.back_to_front ? n - 1 - i : i];
+    std::cout << (n > 20 ? " ...\n" : "\n");
     std::cout << "cycles: " << last.cycles.size();
     for (std::size_t c = 0; c < std::min<std::size_t>(last.cycles.size(), 5); ++c) {
         std::cout << (c ? "; " : " (") << last.cycles[c].size() << " primitives";
@@ -127,14 +132,18 @@ int runOrder(const OrderOptions& options) {
     std::cout << '\n';
 
     if (!options.json_path.empty()) {
-        nlohmann::json document = frameRecord(last, options.back_to_front);
+        std::vector<JsonIdList> lists;
+        for (const std::vector<uint32_t>& order : frame_orders)
+            lists.push_back({order, options.back_to_front});
+        nlohmann::json document = frameRecord(last, lists.size());
+        lists.push_back({last.order, options.back_to_front});
         document["scene"] = options.scene;
         document["oracle"] = oracleName(oracle_kind);
         document["back_to_front"] = options.back_to_front;
         document["size"] = {view.width, view.height};
         if (view.frames > 1)
             document["frames"] = std::move(frames);
-        if (const int code = writeJsonFile(options.json_path, document); code != kExitOk)
+        if (const int code = writeJsonFile(options.json_path, document, lists); code != kExitOk)
             return code;
     }
     if (!options.dump_path.empty()) {

@@ -41,8 +41,12 @@ public:
           result_(result) {
         unsorted_.assign(initial_order.begin(), initial_order.end());
         in_monotone_run_.assign(unsorted_.size(), 0);
-        in_cycle_.assign(oracle.primitiveCount(), 0);
-        workspace.path_index.assign(oracle.primitiveCount(), -1);
+        // The cycle search's per-primitive arrays are filled when a cycle is first met (a large
+        // input without cycles then never holds them): emptied here, so that they are filled
+        // whatever the caller left in the workspace.
+        in_cycle_.clear();
+        workspace.path_index.clear();
+        workspace.walk_state.clear();
         workspace.pending_path.clear(); // a path of another call means nothing here
         result_.order.clear();
         result_.order.reserve(unsorted_.size());
@@ -135,6 +139,7 @@ private:
     // cycle-breaking rule), several per stuck iteration when the walks find them, and go on; M
     // stays valid because primitives are only removed.
     void outputSourceCycles() {
+        in_cycle_.resize(oracle_.primitiveCount(), 0);
         std::vector<std::vector<uint32_t>> sources =
             detail::findSourceCycles(oracle_, unsorted_, in_monotone_run_, kWalksPerStuckIteration,
                                      result_.stats, workspace_);

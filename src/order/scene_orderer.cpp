@@ -36,33 +36,44 @@ std::vector<PrimitiveRange> levelPrimitives(std::span<const PrimitiveRange> obje
 SceneOrderer::SceneOrderer(std::span<const PrimitiveRange> objects, uint32_t triangle_count,
                            OrderLevel level, GeometryOracle& oracle)
     : objects_(objects.begin(), objects.end()), triangle_count_(triangle_count), level_(level),
-      oracle_(oracle),
-      primitives_(levelPrimitives(objects, triangle_count,
-                                  level == OrderLevel::triangle ? OrderLevel::triangle
-                                                                : OrderLevel::object)) {}
+      oracle_(oracle) {}
 
-void SceneOrderer::sortPrimitives(PositionsView positions, const ViewProjection& view,
-                                  std::span<const PrimitiveRange> primitives,
-                                  std::span<const uint32_t> previous_order, VisibilityOrder& into) {
-    if (previous_order.size() == primitives.size()) {
-        sortFrom(positions, view, primitives, previous_order, into);
-        return;
+void SceneOrderer::sortStage1(PositionsView positions, const ViewProjection& view) {
+    // Stage 1's primitives: every triangle at triangle level (made as needed: a list of them
+    // would cost 8 bytes a triangle), else the objects.
+    const bool triangles = level_ == OrderLevel::triangle;
+    const std::size_t n = triangles ? triangle_count_ : objects_.size();
+    const auto primitive = [&](uint32_t i) {
+        return triangles ? PrimitiveRange{i, 1} : objects_[i];
+    };
+    if (previous_order_.size() == n) {
+        sortFrom(positions, view, n, primitive, previous_order_, sorted_);
+    } else {
+        std::span<const PrimitiveRange> primitives = objects_;
+        if (triangles) { // bound_ as scratch: sortFrom overwrites it
+            bound_.resize(n);
+            for (uint32_t t = 0; t < n; ++t)
+                bound_[t] = {t, 1};
+            primitives = bound_;
+        }
+        const std::vector<uint32_t> start = depthKeyOrder(positions, view, primitives);
+        sortFrom(positions, view, n, primitive, start, sorted_);
     }
-    const std::vector<uint32_t> start = depthKeyOrder(positions, view, primitives);
-    sortFrom(positions, view, primitives, start, into);
+    // The order becomes the previous one; sorted_ keeps the old buffer for the next frame.
+    std::swap(previous_order_, sorted_.order);
 }
 
 // Why bind in start order: Vis-sort visits primitives in list order, the list stays close to the
 // start (coherence), and a fast oracle lays out each primitive's set-up in bind order, so the
 // visits read memory forward instead of jumping across megabytes of set-ups. The relabelling
 // changes nothing else: Vis-sort depends on list positions and answers, never on id values.
-void SceneOrderer::sortFrom(PositionsView positions, const ViewProjection& view,
-                            std::span<const PrimitiveRange> primitives,
-                            std::span<const uint32_t> start, VisibilityOrder& into) {
-    const std::size_t n = primitives.size();
+template <class PrimitiveAt>
+void SceneOrderer::sortFrom(PositionsView positions, const ViewProjection& view, std::size_t n,
+                            const PrimitiveAt& primitive, std::span<const uint32_t> start,
+                            VisibilityOrder& into) {
     bound_.resize(n);
     for (std::size_t i = 0; i < n; ++i)
-        bound_[i] = primitives[start[i]];
+        bound_[i] = primitive(start[i]);
     if (identity_.size() != n) {
         identity_.resize(n);
         std::iota(identity_.begin(), identity_.end(), 0u);
@@ -87,9 +98,8 @@ void SceneOrderer::orderFrame(PositionsView positions, const ViewProjection& vie
     if (level_ == OrderLevel::multistage) {
         orderMultistage(positions, view, out);
     } else {
-        sortPrimitives(positions, view, primitives_, previous_order_, sorted_);
-        previous_order_ = sorted_.order; // copy-assignments: the vectors keep their capacity
-        out.order = sorted_.order;
+        sortStage1(positions, view);
+        out.order = previous_order_; // copy-assignments: the vectors keep their capacity
         out.cycles = sorted_.cycles;
         out.stats = sorted_.stats;
     }
@@ -108,9 +118,9 @@ void SceneOrderer::orderMultistage(PositionsView positions, const ViewProjection
     frame.order.clear();
     frame.cycles.clear();
     // Stage 1: objects.
-    sortPrimitives(positions, view, primitives_, previous_order_, sorted_);
-    const VisibilityOrder& objects = sorted_;
-    previous_order_ = objects.order;
+    sortStage1(positions, view);
+    const VisibilityOrder& objects = sorted_; // its order is in previous_order_
+    const std::vector<uint32_t>& object_order = previous_order_;
     addStats(frame.stats, objects.stats);
 
     // Stage 2: a group is one object, or all objects of one cycle; groups come out whole and in
@@ -129,15 +139,15 @@ void SceneOrderer::orderMultistage(PositionsView positions, const ViewProjection
     std::vector<PrimitiveRange>& group = group_;
     std::vector<uint32_t>& group_start = group_start_;
     frame.order.reserve(triangle_count);
-    for (std::size_t i = 0; i < objects.order.size();) {
+    for (std::size_t i = 0; i < object_order.size();) {
         std::size_t end = i + 1;
-        if (cycle_of[objects.order[i]] >= 0)
-            while (end < objects.order.size() &&
-                   cycle_of[objects.order[end]] == cycle_of[objects.order[i]])
+        if (cycle_of[object_order[i]] >= 0)
+            while (end < object_order.size() &&
+                   cycle_of[object_order[end]] == cycle_of[object_order[i]])
                 ++end;
         group.clear();
         for (std::size_t k = i; k < end; ++k) {
-            const PrimitiveRange& object = objects_[objects.order[k]];
+            const PrimitiveRange& object = objects_[object_order[k]];
             for (uint32_t t = 0; t < object.triangle_count; ++t)
                 group.push_back({object.first_triangle + t, 1});
         }
@@ -153,7 +163,9 @@ void SceneOrderer::orderMultistage(PositionsView positions, const ViewProjection
             group_start = depthKeyOrder(positions, view, group);
         }
         VisibilityOrder& triangles = group_sorted_;
-        sortFrom(positions, view, group, group_start, triangles);
+        sortFrom(
+            positions, view, group.size(), [&](uint32_t i) { return group[i]; }, group_start,
+            triangles);
         addStats(frame.stats, triangles.stats);
         for (uint32_t local : triangles.order) {
             rank[group[local].first_triangle] = uint32_t(frame.order.size());

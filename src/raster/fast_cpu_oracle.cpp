@@ -24,6 +24,7 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <thread>
 #include <type_traits>
 #include <vector>
@@ -46,10 +47,42 @@ constexpr std::size_t kTilePixels = std::size_t(detail::kTileRowFloats) * detail
 // with a wide safety factor on the 4 roundings it takes).
 constexpr double kDepthMargin = 0x1p-48;
 
-// How far a fragment's depth moves from the plane's value at its pixel centre, as the reference's
-// set-up computed it: conservative mode, over the pixel's square; exact mode, the snap slack.
-double spreadOf(const detail::FastSetup& s) {
-    return s.spread;
+// A set-up as the oracle keeps it from bind to bind and the walks read it: FastSetup's values in
+// 120 bytes instead of 144, since a large input keeps one per triangle. Pixel bounds lie in a
+// viewport of at most 2^16 pixels a side; the narrow flag (a byte, not 8 of padding) and the
+// spread (the snap slack in exact mode) are kept beside them. The edge steps stay
+// int64_t: as int32_t quotients by kSubpixelScale (snapped coordinates are at most 2^29) the
+// set-up would take 96 bytes, but widening them back in every draw and query cost 6% more
+// instructions on builtin:bunnies at object level.
+struct StoredSetup {
+    int64_t edge_at_origin[3];
+    int64_t edge_step_x[3], edge_step_y[3];
+    double x0, y0, d0, ddx, ddy;
+    uint16_t px_min, px_max, py_min, py_max;
+
+    int64_t edgeStepX(int e) const { return edge_step_x[e]; }
+    int64_t edgeStepY(int e) const { return edge_step_y[e]; }
+};
+static_assert(sizeof(StoredSetup) == 120);
+static_assert(detail::kMaxViewportSize <= 65536);
+
+StoredSetup storedSetup(const detail::FastSetup& s) {
+    StoredSetup c;
+    for (int e = 0; e < 3; ++e) {
+        c.edge_at_origin[e] = s.edge_at_origin[e];
+        c.edge_step_x[e] = s.edge_step_x[e];
+        c.edge_step_y[e] = s.edge_step_y[e];
+    }
+    c.x0 = s.x0;
+    c.y0 = s.y0;
+    c.d0 = s.d0;
+    c.ddx = s.ddx;
+    c.ddy = s.ddy;
+    c.px_min = uint16_t(s.px_min);
+    c.px_max = uint16_t(s.px_max);
+    c.py_min = uint16_t(s.py_min);
+    c.py_max = uint16_t(s.py_max);
+    return c;
 }
 
 // What a draw or a query adds to each fragment's double value before rounding (fast_rows.h):
@@ -62,14 +95,14 @@ template <bool kDraw> double fragmentOffset(double spread, bool conservative, fl
 
 // What every walk of s shares (fast_rows.h), for a draw or a query.
 template <bool kDraw>
-detail::TriangleWalk triangleWalk(const detail::FastSetup& s, double spread, bool conservative,
-                                  float tolerance) {
+detail::TriangleWalk triangleWalk(const StoredSetup& s, bool narrow, double spread,
+                                  bool conservative, float tolerance) {
     detail::TriangleWalk walk;
     walk.tolerance = tolerance;
-    walk.narrow = s.narrow;
+    walk.narrow = narrow;
     for (int e = 0; e < 3; ++e) {
-        walk.step_x[e] = s.edge_step_x[e];
-        walk.step_y[e] = s.edge_step_y[e];
+        walk.step_x[e] = s.edgeStepX(e);
+        walk.step_y[e] = s.edgeStepY(e);
     }
     walk.d0 = s.d0;
     walk.ddx = s.ddx;
@@ -81,10 +114,10 @@ detail::TriangleWalk triangleWalk(const detail::FastSetup& s, double spread, boo
 }
 
 // The plane's column and row terms of rule 6: ddx ((x + 0.5) - x0) and ddy ((y + 0.5) - y0).
-double columnTerm(const detail::FastSetup& s, int32_t x) {
+double columnTerm(const StoredSetup& s, int32_t x) {
     return s.ddx * ((double(x) + 0.5) - s.x0);
 }
-double rowTerm(const detail::FastSetup& s, int32_t y) {
+double rowTerm(const StoredSetup& s, int32_t y) {
     return s.ddy * ((double(y) + 0.5) - s.y0);
 }
 
@@ -92,7 +125,7 @@ double rowTerm(const detail::FastSetup& s, int32_t y) {
 // terms ax0, ax1 and corner rows by0, by1 (see the file comment), offset included (its rounding
 // is within the margin, spread its size). Inlined: it runs once per tile a triangle visits, and a
 // call with results through memory cost 7% of tile-culled queries.
-[[gnu::always_inline]] inline void depthBounds(const detail::FastSetup& s, double ax0, double ax1,
+[[gnu::always_inline]] inline void depthBounds(const StoredSetup& s, double ax0, double ax1,
                                                double by0, double by1, double offset, double spread,
                                                double& lowest, double& highest) {
     const double margin = kDepthMargin * (std::abs(s.d0) + std::max(std::abs(ax0), std::abs(ax1)) +
@@ -119,18 +152,23 @@ struct FastCpuOracle::Impl {
                       std::span<const uint32_t> targets, std::span<uint8_t> behind);
     std::span<const float> depthBuffer() const;
 
-    /// Walks the tiles of s in tile rows [ty_begin, ty_end); counts into stats.
+    /// Walks the tiles of set-up k in tile rows [ty_begin, ty_end); counts into stats.
     template <bool kDraw>
-    bool rasterize(const detail::FastSetup& s, int32_t ty_begin, int32_t ty_end,
-                   FastCpuOracleStats& stats);
+    bool rasterize(const StoredSetup& s, bool narrow, double spread, int32_t ty_begin,
+                   int32_t ty_end, FastCpuOracleStats& stats);
+    /// rasterize of set-up k.
+    template <bool kDraw>
+    bool rasterize(uint32_t k, int32_t ty_begin, int32_t ty_end, FastCpuOracleStats& stats) {
+        return rasterize<kDraw>(setups_[k], narrow_[k] != 0, spreadOf(k), ty_begin, ty_end, stats);
+    }
     /// rasterize for a triangle whose pixel bounds span at most detail::kSmallTiles tiles each
     /// way (most triangles of a detailed mesh): one walk over its bounds (fast_rows.h), the tiles
     /// cleared and culled beforehand, their bounds updated after, none of the per-tile set-up that
     /// costs more than the few pixels a small triangle has in each tile. Rows of tile rows
     /// [ty_first, ty_last] only.
     template <bool kDraw>
-    bool rasterizeSmall(const detail::FastSetup& s, int32_t ty_first, int32_t ty_last,
-                        FastCpuOracleStats& stats);
+    bool rasterizeSmall(const StoredSetup& s, bool narrow, double spread, int32_t ty_first,
+                        int32_t ty_last, FastCpuOracleStats& stats);
     /// Runs band(b, stats of b) for b = 0..bands-1 on the calling thread and the pool's workers
     /// (each claims the next band when done); then adds the bands' tile counts to stats_.
     template <class Band> void runBands(uint32_t bands, Band&& band);
@@ -150,14 +188,21 @@ struct FastCpuOracle::Impl {
     }
     /// Writes out the pending clear of one tile: its pixels +infinity, bounds +infinity.
     void clearTile(std::size_t tile) const;
+    /// Set-up k's FastSetup::spread: conservative mode, the spread over a pixel; exact mode,
+    /// the snap slack (cpu_rasterizer.h).
+    double spreadOf(uint32_t k) const { return spreads_[k]; }
+    /// Appends the set-ups of fan triangles to setups_ (and narrow_, spreads_).
+    void store(std::span<const detail::FastSetup> fan);
 
     uint32_t width_ = 0, height_ = 0;
     uint32_t tiles_x_ = 0, tiles_y_ = 0;
-    std::vector<PrimitiveRange> primitives_;
+    uint32_t primitive_count_ = 0;
     // Primitive p's fan triangles are setups_[primitive_setups_[p], primitive_setups_[p + 1]).
     std::vector<uint32_t> primitive_setups_;
-    std::vector<detail::FastSetup> setups_;
-    std::vector<uint32_t> bind_triangles_; // the triangles of every primitive, in bind order
+    std::vector<StoredSetup> setups_;
+    std::vector<uint8_t> narrow_;        // FastSetup::narrow, beside setups_
+    std::vector<double> spreads_;        // FastSetup::spread, beside setups_
+    std::vector<detail::FastSetup> fan_; // bind's scratch: one triangle's fan set-ups
     // Per tile, in one struct so that a tile's bounds and epoch share a cache line (the tiles a
     // pass touches are scattered over a buffer larger than the caches: one miss, not three).
     // Clearing is lazy: clear() starts a new epoch, and a tile whose epoch is older holds only
@@ -227,60 +272,81 @@ void FastCpuOracle::Impl::bind(PositionsView positions, const ViewProjection& vi
     height_ = view.height;
     tiles_x_ = (width_ + kTileSize - 1) / kTileSize;
     tiles_y_ = (height_ + kTileSize - 1) / kTileSize;
-    primitives_.assign(primitives.begin(), primitives.end());
-    for ([[maybe_unused]] const PrimitiveRange& range : primitives_)
+    primitive_count_ = uint32_t(primitives.size());
+    for ([[maybe_unused]] const PrimitiveRange& range : primitives)
         assert(uint64_t(range.first_triangle) + range.triangle_count <= positions.triangleCount());
 
     // Set-ups are laid out in primitive order (a primitive's fan triangles are contiguous), so a
     // walk over primitives in id order reads memory forward; triangles of no primitive are never
-    // set up, those of several are set up once each.
+    // set up, those of several are set up once each. Triangles are taken four at a time in that
+    // order (bind order), for the batch set-up.
     const detail::Matrix4 m = detail::multiply(view.projection_matrix, view.view);
-    bind_triangles_.clear();
-    for (const PrimitiveRange& range : primitives_)
-        for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count;
-             ++t)
-            bind_triangles_.push_back(t);
-    const std::size_t n = bind_triangles_.size();
-    primitive_setups_.resize(primitives_.size() + 1);
+    std::size_t n = 0;
+    for (const PrimitiveRange& range : primitives)
+        n += range.triangle_count;
+    primitive_setups_.resize(primitives.size() + 1);
     setups_.clear();
     setups_.reserve(n);
-    // Before the set-ups of bind_triangles_[i]: primitives starting there start here.
+    narrow_.clear();
+    narrow_.reserve(n);
+    spreads_.clear();
+    spreads_.reserve(n);
+    // Before the set-ups of the triangle at bind position i: primitives starting there start here.
     std::size_t next_primitive = 0, next_start = 0;
     const auto reach = [&](std::size_t i) {
-        while (next_primitive < primitives_.size() && next_start == i) {
+        while (next_primitive < primitives.size() && next_start == i) {
             primitive_setups_[next_primitive] = uint32_t(setups_.size());
-            next_start += primitives_[next_primitive++].triangle_count;
+            next_start += primitives[next_primitive++].triangle_count;
         }
     };
-    std::size_t i = 0;
-    if (setup_quad_ != nullptr && !conservative_) {
+    const bool batch = setup_quad_ != nullptr && !conservative_;
+    uint32_t quad_triangles[4];
+    std::size_t quad_size = 0, quad_first = 0; // quad_triangles[0] is at bind position quad_first
+    const auto setUpQuad = [&] {
         detail::FastSetup quad[4];
         detail::LaneSetup lanes[4];
-        for (; i + 4 <= n; i += 4) {
+        if (batch && quad_size == 4)
             setup_quad_(m, positions.x.data(), positions.y.data(), positions.z.data(),
-                        &bind_triangles_[i], width_, height_, quad, lanes);
-            for (std::size_t l = 0; l < 4; ++l) {
-                reach(i + l);
-                if (lanes[l] == detail::LaneSetup::ready) {
-                    quad[l].narrow = detail::edgesFitInt32(quad[l]);
-                    setups_.push_back(quad[l]);
-                } else if (lanes[l] == detail::LaneSetup::scalar)
-                    detail::appendFastSetups(m, positions, bind_triangles_[i + l], width_, height_,
-                                             conservative_, setups_);
+                        quad_triangles, width_, height_, quad, lanes);
+        else
+            std::fill_n(lanes, 4, detail::LaneSetup::scalar);
+        for (std::size_t l = 0; l < quad_size; ++l) {
+            reach(quad_first + l);
+            if (lanes[l] == detail::LaneSetup::ready) {
+                quad[l].narrow = detail::edgesFitInt32(quad[l]);
+                store({&quad[l], 1});
+            } else if (lanes[l] == detail::LaneSetup::scalar) {
+                fan_.clear();
+                detail::appendFastSetups(m, positions, quad_triangles[l], width_, height_,
+                                         conservative_, fan_);
+                store(fan_);
             }
         }
-    }
-    for (; i < n; ++i) {
-        reach(i);
-        detail::appendFastSetups(m, positions, bind_triangles_[i], width_, height_, conservative_,
-                                 setups_);
-    }
+        quad_first += quad_size;
+        quad_size = 0;
+    };
+    for (const PrimitiveRange& range : primitives)
+        for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count;
+             ++t) {
+            quad_triangles[quad_size++] = t;
+            if (quad_size == 4)
+                setUpQuad();
+        }
+    setUpQuad();
     reach(n);
-    primitive_setups_[primitives_.size()] = uint32_t(setups_.size());
+    primitive_setups_[primitives.size()] = uint32_t(setups_.size());
 
     depth_.resize(std::size_t(tiles_x_) * tiles_y_ * kTilePixels);
     tiles_.assign(std::size_t(tiles_x_) * tiles_y_, TileState{kInfinity, kInfinity, 0});
     epoch_ = 1; // every tile pending a clear
+}
+
+void FastCpuOracle::Impl::store(std::span<const detail::FastSetup> fan) {
+    for (const detail::FastSetup& s : fan) {
+        setups_.push_back(storedSetup(s));
+        narrow_.push_back(s.narrow ? 1 : 0);
+        spreads_.push_back(s.spread);
+    }
 }
 
 void FastCpuOracle::Impl::clearTile(std::size_t tile) const {
@@ -300,32 +366,32 @@ std::span<const float> FastCpuOracle::Impl::depthBuffer() const {
 }
 
 template <bool kDraw>
-bool FastCpuOracle::Impl::rasterize(const detail::FastSetup& s, int32_t ty_begin, int32_t ty_end,
-                                    FastCpuOracleStats& stats) {
-    const int32_t tx_first = s.px_min >> kTileShift, tx_last = s.px_max >> kTileShift;
-    const int32_t ty_first = std::max(s.py_min >> kTileShift, ty_begin);
-    const int32_t ty_last = std::min(s.py_max >> kTileShift, ty_end - 1);
+bool FastCpuOracle::Impl::rasterize(const StoredSetup& s, bool narrow, double spread,
+                                    int32_t ty_begin, int32_t ty_end, FastCpuOracleStats& stats) {
+    const int32_t px_min = s.px_min, px_max = s.px_max, py_min = s.py_min, py_max = s.py_max;
+    const int32_t tx_first = px_min >> kTileShift, tx_last = px_max >> kTileShift;
+    const int32_t ty_first = std::max(py_min >> kTileShift, ty_begin);
+    const int32_t ty_last = std::min(py_max >> kTileShift, ty_end - 1);
     if (ty_first > ty_last)
         return false; // outside the band
     if (tx_last - tx_first < detail::kSmallTiles && ty_last - ty_first < detail::kSmallTiles)
-        return rasterizeSmall<kDraw>(s, ty_first, ty_last, stats);
+        return rasterizeSmall<kDraw>(s, narrow, spread, ty_first, ty_last, stats);
     const int32_t last_x = int32_t(width_) - 1, last_y = int32_t(height_) - 1;
     detail::TileWalk walk;
-    const double spread = spreadOf(s);
     static_cast<detail::TriangleWalk&>(walk) =
-        triangleWalk<kDraw>(s, spread, conservative_, depth_tolerance_);
+        triangleWalk<kDraw>(s, narrow, spread, conservative_, depth_tolerance_);
     for (int32_t ty = ty_first; ty <= ty_last; ++ty) {
         // Rows of the tile within the viewport, then within the triangle's bounding box.
         const int32_t vy0 = ty << kTileShift, vy1 = std::min(vy0 + int32_t(kTileSize) - 1, last_y);
-        const int32_t y0 = std::max(vy0, s.py_min), y1 = std::min(vy1, s.py_max);
+        const int32_t y0 = std::max(vy0, py_min), y1 = std::min(vy1, py_max);
         const bool whole_rows = y0 == vy0 && y1 == vy1;
         // What the tiles of this row share: each edge at (px_min, y0) and its least and greatest
         // change over the rows, and the depth plane's row terms.
         int64_t edge_at_row[3], rise_low[3], rise_high[3];
         for (int e = 0; e < 3; ++e) {
-            edge_at_row[e] = s.edge_at_origin[e] + int64_t(s.px_min) * s.edge_step_x[e] +
-                             int64_t(y0) * s.edge_step_y[e];
-            const int64_t span_y = int64_t(y1 - y0) * s.edge_step_y[e];
+            edge_at_row[e] = s.edge_at_origin[e] + int64_t(px_min) * s.edgeStepX(e) +
+                             int64_t(y0) * s.edgeStepY(e);
+            const int64_t span_y = int64_t(y1 - y0) * s.edgeStepY(e);
             rise_low[e] = std::min<int64_t>(span_y, 0);
             rise_high[e] = std::max<int64_t>(span_y, 0);
         }
@@ -334,14 +400,14 @@ bool FastCpuOracle::Impl::rasterize(const detail::FastSetup& s, int32_t ty_begin
             ++stats.tiles_visited;
             const int32_t vx0 = tx << kTileShift;
             const int32_t vx1 = std::min(vx0 + int32_t(kTileSize) - 1, last_x);
-            const int32_t x0 = std::max(vx0, s.px_min), x1 = std::min(vx1, s.px_max);
+            const int32_t x0 = std::max(vx0, px_min), x1 = std::min(vx1, px_max);
 
             // Coverage from the edge functions at the corners of the pixel rectangle.
             int64_t edge_row[3];
             bool inside_all = true, outside_one = false;
             for (int e = 0; e < 3; ++e) {
-                edge_row[e] = edge_at_row[e] + int64_t(x0 - s.px_min) * s.edge_step_x[e];
-                const int64_t span_x = int64_t(x1 - x0) * s.edge_step_x[e];
+                edge_row[e] = edge_at_row[e] + int64_t(x0 - px_min) * s.edgeStepX(e);
+                const int64_t span_x = int64_t(x1 - x0) * s.edgeStepX(e);
                 const int64_t lowest = edge_row[e] + std::min<int64_t>(span_x, 0) + rise_low[e];
                 const int64_t highest = edge_row[e] + std::max<int64_t>(span_x, 0) + rise_high[e];
                 outside_one |= highest <= 0;
@@ -428,23 +494,23 @@ bool FastCpuOracle::Impl::rasterize(const detail::FastSetup& s, int32_t ty_begin
 }
 
 template <bool kDraw>
-bool FastCpuOracle::Impl::rasterizeSmall(const detail::FastSetup& s, int32_t ty_first,
-                                         int32_t ty_last, FastCpuOracleStats& stats) {
+bool FastCpuOracle::Impl::rasterizeSmall(const StoredSetup& s, bool narrow, double spread,
+                                         int32_t ty_first, int32_t ty_last,
+                                         FastCpuOracleStats& stats) {
     detail::SmallWalk walk;
     walk.depth = depth_.data();
     walk.tiles_x = tiles_x_;
     walk.px_min = s.px_min;
     walk.px_max = s.px_max;
     // The rows of the band.
-    walk.py_min = std::max(s.py_min, ty_first << kTileShift);
-    walk.py_max = std::min(s.py_max, (ty_last << kTileShift) + int32_t(kTileSize) - 1);
+    walk.py_min = std::max(int32_t(s.py_min), ty_first << kTileShift);
+    walk.py_max = std::min(int32_t(s.py_max), (ty_last << kTileShift) + int32_t(kTileSize) - 1);
     for (int e = 0; e < 3; ++e)
-        walk.edge[e] = s.edge_at_origin[e] + int64_t(walk.px_min) * s.edge_step_x[e] +
-                       int64_t(walk.py_min) * s.edge_step_y[e];
+        walk.edge[e] = s.edge_at_origin[e] + int64_t(walk.px_min) * s.edgeStepX(e) +
+                       int64_t(walk.py_min) * s.edgeStepY(e);
     // narrow holds over the whole bounds, so over the band's rows too.
-    const double spread = spreadOf(s);
     static_cast<detail::TriangleWalk&>(walk) =
-        triangleWalk<kDraw>(s, spread, conservative_, depth_tolerance_);
+        triangleWalk<kDraw>(s, narrow, spread, conservative_, depth_tolerance_);
     double lowest, highest;
     depthBounds(s, columnTerm(s, walk.px_min), columnTerm(s, walk.px_max), rowTerm(s, walk.py_min),
                 rowTerm(s, walk.py_max), walk.offset, spread, lowest, highest);
@@ -491,19 +557,19 @@ bool FastCpuOracle::Impl::rasterizeSmall(const detail::FastSetup& s, int32_t ty_
 }
 
 void FastCpuOracle::Impl::draw(uint32_t primitive) {
-    assert(primitive < primitives_.size());
+    assert(primitive < primitive_count_);
     ++stats_.draws;
     const uint32_t first = primitive_setups_[primitive], last = primitive_setups_[primitive + 1];
     for (uint32_t i = first; i < last; ++i)
-        rasterize<true>(setups_[i], 0, int32_t(tiles_y_), stats_);
+        rasterize<true>(i, 0, int32_t(tiles_y_), stats_);
 }
 
 bool FastCpuOracle::Impl::anyBehind(uint32_t primitive) {
-    assert(primitive < primitives_.size());
+    assert(primitive < primitive_count_);
     ++stats_.queries;
     const uint32_t first = primitive_setups_[primitive], last = primitive_setups_[primitive + 1];
     for (uint32_t i = first; i < last; ++i)
-        if (rasterize<false>(setups_[i], 0, int32_t(tiles_y_), stats_))
+        if (rasterize<false>(i, 0, int32_t(tiles_y_), stats_))
             return true;
     return false;
 }
@@ -572,7 +638,7 @@ void FastCpuOracle::Impl::backToFrontPass(uint32_t bands, std::span<const uint32
                                           std::span<uint8_t> behind) {
     ++epoch_; // clear()
     for (std::size_t i = 0; i < sequence.size(); ++i) {
-        assert(sequence[i] < primitives_.size());
+        assert(sequence[i] < primitive_count_);
         if (query[i]) {
             behind[i] = 0;
             ++stats_.queries;
@@ -589,13 +655,13 @@ void FastCpuOracle::Impl::backToFrontPass(uint32_t bands, std::span<const uint32
                 std::atomic_ref<uint8_t> answer(behind[i]);
                 if (answer.load(std::memory_order_relaxed) == 0)
                     for (uint32_t k = first; k < last; ++k)
-                        if (rasterize<false>(setups_[k], first_row, last_row, stats)) {
+                        if (rasterize<false>(k, first_row, last_row, stats)) {
                             answer.store(1, std::memory_order_relaxed);
                             break;
                         }
             }
             for (uint32_t k = first; k < last; ++k)
-                rasterize<true>(setups_[k], first_row, last_row, stats);
+                rasterize<true>(k, first_row, last_row, stats);
         }
     });
 }
@@ -613,19 +679,19 @@ void FastCpuOracle::Impl::queryAgainst(uint32_t bands, std::span<const uint32_t>
         int32_t first_row, last_row;
         bandRows(b, bands, first_row, last_row);
         for (uint32_t p : occluders) {
-            assert(p < primitives_.size());
+            assert(p < primitive_count_);
             const uint32_t last = primitive_setups_[p + 1];
             for (uint32_t k = primitive_setups_[p]; k < last; ++k)
-                rasterize<true>(setups_[k], first_row, last_row, stats);
+                rasterize<true>(k, first_row, last_row, stats);
         }
         for (std::size_t i = 0; i < targets.size(); ++i) {
-            assert(targets[i] < primitives_.size());
+            assert(targets[i] < primitive_count_);
             std::atomic_ref<uint8_t> answer(behind[i]);
             if (answer.load(std::memory_order_relaxed) != 0)
                 continue;
             const uint32_t last = primitive_setups_[targets[i] + 1];
             for (uint32_t k = primitive_setups_[targets[i]]; k < last; ++k)
-                if (rasterize<false>(setups_[k], first_row, last_row, stats)) {
+                if (rasterize<false>(k, first_row, last_row, stats)) {
                     answer.store(1, std::memory_order_relaxed);
                     break;
                 }
@@ -647,7 +713,7 @@ void FastCpuOracle::bind(PositionsView positions, const ViewProjection& view,
 }
 
 uint32_t FastCpuOracle::primitiveCount() const {
-    return uint32_t(impl_->primitives_.size());
+    return impl_->primitive_count_;
 }
 void FastCpuOracle::clear() {
     ++impl_->epoch_;

@@ -72,16 +72,19 @@ std::string sceneProblem(const Scene& scene) {
     uint64_t next = 0;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
-        const std::string label = "object " + std::to_string(i) + " ('" + object.name + "')";
+        // Built only for a message: a scene of millions of objects checks in a blink.
+        const auto label = [&] {
+            return "object " + std::to_string(i) + " ('" + object.name + "')";
+        };
         if (object.first_triangle != next)
-            return label + " starts at triangle " + std::to_string(object.first_triangle) +
+            return label() + " starts at triangle " + std::to_string(object.first_triangle) +
                    ", expected " + std::to_string(next);
         if (object.triangle_count == 0)
-            return label + " has no triangles";
+            return label() + " has no triangles";
         const Rgba& c = object.colour;
         if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b) ||
             !std::isfinite(c.a))
-            return label + " has a non-finite colour";
+            return label() + " has a non-finite colour";
         next += object.triangle_count;
     }
     if (next != p.triangleCount())

@@ -1,7 +1,8 @@
 // SceneOrderer::orderFrame(positions, view, out) allocates nothing in steady state: after the
 // first frames have grown the orderer's, Vis-sort's, the oracle's and out's buffers, a coherent
-// frame reuses them. Its own executable, because it replaces the global operator new and delete
-// with counting versions.
+// frame reuses them. And the memory an orderer and its oracle hold is bounded per primitive
+// (large inputs: millions of triangles). Its own executable, because it replaces the global
+// operator new and delete with counting versions.
 //
 // The scene and camera are chosen so that no frame has a cycle, at either stage: Vis-sort's cycle
 // search (src/core/source_cycle.cpp: its walk's path and the sources it returns are vectors of
@@ -9,6 +10,9 @@
 // allocations a frame with builtin:bunnies?n=4 (one object cycle every frame) at 64x64. Three
 // bunnies with seed 2 have none, so the test asserts that no frame it counts has one at object
 // level, where a cycle would show (multistage's stage-1 cycles are not in its output).
+#include <malloc.h>
+
+#include <algorithm>
 #include <atomic>
 #include <cstdlib>
 #include <iostream>
@@ -24,6 +28,10 @@ namespace {
 
 std::atomic<bool> g_counting{false};
 std::atomic<uint64_t> g_allocations{0};
+// Bytes allocated and not yet freed (as malloc_usable_size counts them), and their most since
+// the last reset.
+std::atomic<int64_t> g_live_bytes{0};
+std::atomic<int64_t> g_peak_live_bytes{0};
 
 void* allocate(std::size_t size, std::size_t alignment) {
     if (g_counting.load(std::memory_order_relaxed))
@@ -33,7 +41,20 @@ void* allocate(std::size_t size, std::size_t alignment) {
     void* p = alignment <= alignof(std::max_align_t)
                   ? std::malloc(size)
                   : std::aligned_alloc(alignment, (size + alignment - 1) / alignment * alignment);
+    if (p != nullptr) {
+        const int64_t live =
+            g_live_bytes.fetch_add(int64_t(malloc_usable_size(p))) + int64_t(malloc_usable_size(p));
+        int64_t peak = g_peak_live_bytes.load();
+        while (live > peak && !g_peak_live_bytes.compare_exchange_weak(peak, live)) {
+        }
+    }
     return p;
+}
+
+void release(void* p) {
+    if (p != nullptr)
+        g_live_bytes.fetch_sub(int64_t(malloc_usable_size(p)));
+    std::free(p);
 }
 
 } // namespace
@@ -67,40 +88,40 @@ void* operator new[](std::size_t size, std::align_val_t alignment, const std::no
     return allocate(size, std::size_t(alignment));
 }
 void operator delete(void* p) noexcept {
-    std::free(p);
+    release(p);
 }
 void operator delete[](void* p) noexcept {
-    std::free(p);
+    release(p);
 }
 void operator delete(void* p, std::size_t) noexcept {
-    std::free(p);
+    release(p);
 }
 void operator delete[](void* p, std::size_t) noexcept {
-    std::free(p);
+    release(p);
 }
 void operator delete(void* p, std::align_val_t) noexcept {
-    std::free(p);
+    release(p);
 }
 void operator delete[](void* p, std::align_val_t) noexcept {
-    std::free(p);
+    release(p);
 }
 void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
-    std::free(p);
+    release(p);
 }
 void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
-    std::free(p);
+    release(p);
 }
 void operator delete(void* p, const std::nothrow_t&) noexcept {
-    std::free(p);
+    release(p);
 }
 void operator delete[](void* p, const std::nothrow_t&) noexcept {
-    std::free(p);
+    release(p);
 }
 void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept {
-    std::free(p);
+    release(p);
 }
 void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept {
-    std::free(p);
+    release(p);
 }
 
 namespace vissort {
@@ -141,6 +162,46 @@ TEST_P(OrdererAllocations, SteadyStateFramesAllocateNothing) {
 
 INSTANTIATE_TEST_SUITE_P(Levels, OrdererAllocations,
                          testing::Values(OrderLevel::object, OrderLevel::multistage),
+                         [](const testing::TestParamInfo<OrderLevel>& info) {
+                             return std::string(orderLevelName(info.param));
+                         });
+
+// Peak bytes held by an oracle and an orderer over it, from the oracle's creation to the end of
+// the second frame (the first coherent one), per primitive, for builtin:soup (one object a
+// triangle, so every level has n primitives). They hold per-primitive arrays: the oracle's
+// triangle set-ups (121 bytes, reserved for every triangle) and their starts, the orderer's copy
+// of the object ranges, the ranges as bound, the start, previous and output orders, Vis-sort's
+// list and flags. Before the large-input work (issue 14) this was about 215 bytes at object level.
+class OrdererMemory : public testing::TestWithParam<OrderLevel> {};
+
+TEST_P(OrdererMemory, PeakBytesPerPrimitiveAreBounded) {
+    constexpr uint32_t kTriangles = 50000;
+    const Scene scene = test::loadTestScene("builtin:soup?n=" + std::to_string(kTriangles));
+    const std::vector<PrimitiveRange> objects = scene.objectPrimitives();
+    const CameraSpec camera = scene.camera.value_or(defaultCamera(scene.positions.bounds()));
+    const ViewProjection view = frameCamera(camera, scene.positions.bounds(), 64, 64);
+    FrameOrder frame;
+    const int64_t before = g_live_bytes;
+    g_peak_live_bytes = before;
+    {
+        Result<std::unique_ptr<GeometryOracle>> oracle =
+            makeOracle(OracleKind::cpu, {.threads = 1});
+        ASSERT_TRUE(oracle) << oracle.error;
+        SceneOrderer orderer(objects, kTriangles, GetParam(), **oracle.value);
+        for (int f = 0; f < 2; ++f)
+            orderer.orderFrame(scene.positions, view, frame);
+    }
+    ASSERT_EQ(frame.order.size(), kTriangles);
+    const double per_primitive = double(g_peak_live_bytes - before) / kTriangles;
+    std::cout << orderLevelName(GetParam()) << ": " << per_primitive
+              << " bytes per primitive at the peak\n";
+    // About 164 (multistage: 12 more, two ranks and a cycle index a triangle).
+    EXPECT_LE(per_primitive, GetParam() == OrderLevel::multistage ? 190.0 : 175.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Levels, OrdererMemory,
+                         testing::Values(OrderLevel::object, OrderLevel::triangle,
+                                         OrderLevel::multistage),
                          [](const testing::TestParamInfo<OrderLevel>& info) {
                              return std::string(orderLevelName(info.param));
                          });
