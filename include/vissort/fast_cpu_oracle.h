@@ -103,7 +103,9 @@ public:
     void backToFrontPass(std::span<const uint32_t> sequence, std::span<const uint8_t> query,
                          std::span<uint8_t> behind) override;
     /// The group test (occlusion_oracle.h), split into screen bands over the threads; the same
-    /// answers and depth buffer as the sequential definition.
+    /// answers as the sequential definition. Occluders' triangles whose pixel bounds miss every
+    /// target's are not drawn (a cycle search tests a few targets against much of the list), so
+    /// the depth buffer equals the definition's only inside the targets' pixel bounds.
     void queryAgainst(std::span<const uint32_t> occluders, std::span<const uint32_t> targets,
                       std::span<uint8_t> behind) override;
 
@@ -113,7 +115,8 @@ public:
     uint32_t threadCount() const;
 
     /// The depth buffer: width() * height() floats, row-major from the top row; equal bit for bit
-    /// to CpuOracle's after the same clears and draws. (Clears are lazy, per tile: this writes
+    /// to CpuOracle's after the same clears, draws and passes (after queryAgainst: within the
+    /// targets' pixel bounds). (Clears are lazy, per tile: this writes
     /// out the tiles still waiting for one.)
     std::span<const float> depthBuffer() const;
     uint32_t width() const;

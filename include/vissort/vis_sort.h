@@ -36,7 +36,7 @@ struct VisibilityOrder {
 /// VisibilityOrder::cycles allocate a few small vectors per cycle). Contents between calls are
 /// unspecified.
 struct VisSortWorkspace {
-    std::vector<uint32_t> unsorted, outside, candidates, position;
+    std::vector<uint32_t> unsorted, outside, candidates, targets, position;
     std::vector<uint8_t> in_monotone_run, query, behind, in_cycle, walk_state;
     std::vector<int32_t> path_index;
     // The cycle search's path below the last source it found, resumed at the next stuck

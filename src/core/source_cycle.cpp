@@ -154,6 +154,8 @@ std::vector<std::vector<uint32_t>> findSourceCycles(OcclusionOracle& oracle,
             path_index[stuck[next_start]] = 0;
         }
         bool found_source = false;
+        constexpr uint32_t kNoPosition = ~uint32_t(0);
+        uint32_t merged_at = kNoPosition;
         for (;;) {
             const auto top = static_cast<int32_t>(path.size() - 1);
             const std::vector<uint32_t>& component = path.back();
@@ -182,29 +184,70 @@ std::vector<std::vector<uint32_t>> findSourceCycles(OcclusionOracle& oracle,
                 }
             }
             if (!have_occluder) {
-                // Galloping again, over windows of the list around the component's span: an
-                // occluder usually lies near, and only a source needs the test against all.
+                // Galloping again, over rings of the list around where the component last
+                // grew (the occluder that closed its cycle; else its span): windows of 1, 2,
+                // 4, ... each side, each ring tested once (behind a union is behind one of its
+                // members, so a ring that occludes nothing need not be drawn again), against
+                // the members inside the window: the list is nearly sorted, so occluders lie
+                // near a member in it. Only a source needs the test of all its members against
+                // everything else, made once the window holds the whole list.
                 uint32_t lo = uint32_t(stuck.size()), hi = 0;
-                for (uint32_t p : component) {
-                    lo = std::min(lo, position[p]);
-                    hi = std::max(hi, position[p]);
+                if (merged_at != kNoPosition) {
+                    lo = hi = merged_at;
+                } else {
+                    for (uint32_t p : component) {
+                        lo = std::min(lo, position[p]);
+                        hi = std::max(hi, position[p]);
+                    }
                 }
-                auto occluded = behind.end();
-                for (std::size_t reach = 1;; reach *= 2) {
-                    const std::size_t first = lo > reach ? lo - reach : 0;
-                    const std::size_t last = std::min(stuck.size() - 1, hi + reach);
-                    outside.clear();
-                    for (std::size_t i = first; i <= last; ++i)
+                std::vector<uint32_t>& targets = scratch.targets;
+                std::size_t first = lo, last = hi; // the window: rings tested so far
+                const auto add = [&](std::size_t begin, std::size_t end) {
+                    for (std::size_t i = begin; i < end; ++i)
                         if (path_index[stuck[i]] != top && usable(stuck[i]))
                             outside.push_back(stuck[i]);
-                    behind.assign(component.size(), 0);
-                    if (!outside.empty())
-                        tester.test(outside, component, behind);
-                    occluded = std::find(behind.begin(), behind.end(), 1);
-                    if (occluded != behind.end() || (first == 0 && last == stuck.size() - 1))
-                        break;
+                };
+                // Whether every member has been a target of every ring tested.
+                bool all_tested = true;
+                uint32_t occluded_member = 0;
+                const auto test = [&]() -> bool {
+                    targets.clear();
+                    for (uint32_t p : component)
+                        if (position[p] >= first && position[p] <= last)
+                            targets.push_back(p);
+                    if (outside.empty())
+                        return false;
+                    all_tested = all_tested && targets.size() == component.size();
+                    if (targets.empty())
+                        return false;
+                    behind.assign(targets.size(), 0);
+                    tester.test(outside, targets, behind);
+                    const auto hit = std::find(behind.begin(), behind.end(), 1);
+                    if (hit == behind.end())
+                        return false;
+                    occluded_member = targets[hit - behind.begin()];
+                    return true;
+                };
+                outside.clear();
+                add(lo, hi + 1);
+                bool found = test();
+                for (std::size_t reach = 1; !found && (first > 0 || last + 1 < stuck.size());
+                     reach *= 2) {
+                    const std::size_t new_first = first > reach ? first - reach : 0;
+                    const std::size_t new_last = std::min(stuck.size() - 1, last + reach);
+                    outside.clear();
+                    add(new_first, first);
+                    add(last + 1, new_last + 1);
+                    first = new_first;
+                    last = new_last;
+                    found = test();
                 }
-                if (occluded == behind.end()) {
+                if (!found && !all_tested) {
+                    outside.clear();
+                    add(0, stuck.size());
+                    found = test();
+                }
+                if (!found) {
                     // Nothing else that is stuck occludes the component: a source. Stuck order.
                     std::vector<uint32_t> members;
                     for (uint32_t p : stuck)
@@ -215,13 +258,12 @@ std::vector<std::vector<uint32_t>> findSourceCycles(OcclusionOracle& oracle,
                     break;
                 }
                 scratch.candidates.assign(outside.begin(), outside.end());
-                occluder =
-                    tester.findOccluder(scratch.candidates, component[occluded - behind.begin()]);
+                occluder = tester.findOccluder(scratch.candidates, occluded_member);
             }
             // Reaching what lies behind an earlier walk's path puts this one behind it too.
             if (walk_state[occluder] != kUnknown)
                 break;
-            extendPath(path, path_index, occluder);
+            merged_at = extendPath(path, path_index, occluder) ? kNoPosition : position[occluder];
         }
         if (found_source) {
             // The source leaves; the rest of the path stays valid (each component strongly

@@ -146,6 +146,7 @@ struct FastCpuOracle::Impl {
     void draw(uint32_t primitive);
     bool anyBehind(uint32_t primitive);
     // The banded passes; bands >= 2 (bandsFor), else the oracle runs the sequential definition.
+    // queryAgainst takes any band count (1: on the calling thread).
     void backToFrontPass(uint32_t bands, std::span<const uint32_t> sequence,
                          std::span<const uint8_t> query, std::span<uint8_t> behind);
     void queryAgainst(uint32_t bands, std::span<const uint32_t> occluders,
@@ -675,17 +676,36 @@ void FastCpuOracle::Impl::queryAgainst(uint32_t bands, std::span<const uint32_t>
     std::fill(behind.begin(), behind.end(), uint8_t(0));
     stats_.draws += occluders.size();
     stats_.queries += targets.size();
-    runBands(bands, [&](uint32_t b, FastCpuOracleStats& stats) {
+    // Only the pixels of the targets decide the answers, so an occluder's set-up whose bounds miss
+    // the targets' bounds is not drawn: the depths there are the same, the answers too. A cycle
+    // search tests a few targets against much of the list (source_cycle.cpp), most of it
+    // elsewhere on the screen.
+    int32_t x_min = int32_t(width_), x_max = -1, y_min = int32_t(height_), y_max = -1;
+    for (uint32_t p : targets) {
+        assert(p < primitive_count_);
+        for (uint32_t k = primitive_setups_[p]; k < primitive_setups_[p + 1]; ++k) {
+            x_min = std::min<int32_t>(x_min, setups_[k].px_min);
+            x_max = std::max<int32_t>(x_max, setups_[k].px_max);
+            y_min = std::min<int32_t>(y_min, setups_[k].py_min);
+            y_max = std::max<int32_t>(y_max, setups_[k].py_max);
+        }
+    }
+    if (x_min > x_max || y_min > y_max)
+        return; // no target has a fragment
+    const auto band = [&](uint32_t b, FastCpuOracleStats& stats) {
         int32_t first_row, last_row;
         bandRows(b, bands, first_row, last_row);
         for (uint32_t p : occluders) {
             assert(p < primitive_count_);
             const uint32_t last = primitive_setups_[p + 1];
-            for (uint32_t k = primitive_setups_[p]; k < last; ++k)
-                rasterize<true>(k, first_row, last_row, stats);
+            for (uint32_t k = primitive_setups_[p]; k < last; ++k) {
+                const StoredSetup& s = setups_[k];
+                if (s.px_min <= x_max && s.px_max >= x_min && s.py_min <= y_max &&
+                    s.py_max >= y_min)
+                    rasterize<true>(k, first_row, last_row, stats);
+            }
         }
         for (std::size_t i = 0; i < targets.size(); ++i) {
-            assert(targets[i] < primitive_count_);
             std::atomic_ref<uint8_t> answer(behind[i]);
             if (answer.load(std::memory_order_relaxed) != 0)
                 continue;
@@ -696,7 +716,11 @@ void FastCpuOracle::Impl::queryAgainst(uint32_t bands, std::span<const uint32_t>
                     break;
                 }
         }
-    });
+    };
+    if (bands <= 1)
+        band(0, stats_);
+    else
+        runBands(bands, band);
 }
 
 // The interface: one call into Impl each.
@@ -765,13 +789,9 @@ void FastCpuOracle::backToFrontPass(std::span<const uint32_t> sequence,
 void FastCpuOracle::queryAgainst(std::span<const uint32_t> occluders,
                                  std::span<const uint32_t> targets, std::span<uint8_t> behind) {
     assert(behind.size() == targets.size());
-    const uint32_t bands = impl_->bandsFor(occluders.size() + targets.size());
-    if (bands <= 1) {
-        OcclusionOracle::queryAgainst(occluders, targets, behind);
-        return;
-    }
     impl_->depth_tolerance_ = depth_tolerance_;
-    impl_->queryAgainst(bands, occluders, targets, behind);
+    impl_->queryAgainst(impl_->bandsFor(occluders.size() + targets.size()), occluders, targets,
+                        behind);
 }
 
 } // namespace vissort

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <random>
 #include <string>
@@ -143,6 +144,33 @@ std::size_t compareInterleaving(const TrianglePositions& p, const ViewProjection
     return behind;
 }
 
+// The pixels where any of targets has a fragment: where a group test's depth buffer is defined
+// (occlusion_oracle.h).
+std::vector<uint8_t> pixelsOf(const TrianglePositions& p, const ViewProjection& view,
+                              std::span<const PrimitiveRange> primitives, RasterMode mode,
+                              std::span<const uint32_t> targets) {
+    CpuOracle oracle(mode);
+    oracle.bind(p, view, primitives);
+    oracle.clear();
+    for (uint32_t t : targets)
+        oracle.draw(t);
+    std::vector<uint8_t> covered;
+    for (float d : oracle.depthBuffer())
+        covered.push_back(std::isfinite(d) ? 1 : 0);
+    return covered;
+}
+
+// Equal bit for bit where mask is set.
+bool sameBitsWhere(std::span<const float> a, std::span<const float> b,
+                   std::span<const uint8_t> mask) {
+    if (a.size() != b.size() || a.size() != mask.size())
+        return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (mask[i] && std::memcmp(&a[i], &b[i], sizeof(float)) != 0)
+            return false;
+    return true;
+}
+
 // The pass-level batches against the default sequential ones over CpuOracle, with random
 // sequences and query flags: every answer, and the depth buffer after each pass, bit for bit.
 // behind is filled with a marker first, so an entry a pass must not touch is checked too.
@@ -183,6 +211,13 @@ void comparePasses(const TrianglePositions& p, const ViewProjection& view,
                 got.resize(targets.size());
                 reference.queryAgainst(occluders, targets, expected);
                 fast.queryAgainst(occluders, targets, got);
+                ASSERT_EQ(got, expected) << "group test, round " << round;
+                // The buffer is defined where the targets have fragments; elsewhere the fast
+                // oracle leaves out occluders that cannot change an answer.
+                ASSERT_TRUE(sameBitsWhere(fast.depthBuffer(), reference.depthBuffer(),
+                                          pixelsOf(p, view, primitives, options.mode, targets)))
+                    << "group test, round " << round;
+                continue;
             }
             ASSERT_EQ(got, expected) << "pass kind " << kind << ", round " << round;
             ASSERT_TRUE(sameBits(fast.depthBuffer(), reference.depthBuffer()))
@@ -527,10 +562,10 @@ TEST(FastCpuOracle, VisSortOrderMatchesReferenceOnBunnies) {
             CpuOracle reference(mode);
             reference.bind(scene.positions, view, primitives);
             const VisibilityOrder expected = visSort(reference, start);
-            const std::vector<float> expected_depths(reference.depthBuffer().begin(),
-                                                     reference.depthBuffer().end());
-            // Determinism: the same order, cycles, counts and final buffer for every row walk
-            // and thread count.
+            // Determinism: the same order, cycles and counts for every row walk and thread count.
+            // (Not the final buffer: a call that ends in the cycle search ends with a group
+            // test, whose buffer is defined only where its targets are; comparePasses checks
+            // the buffers.)
             for (const FastCpuOracleOptions& options : rowWalksAndThreads()) {
                 if (options.mode != mode)
                     continue;
@@ -544,7 +579,6 @@ TEST(FastCpuOracle, VisSortOrderMatchesReferenceOnBunnies) {
                 EXPECT_EQ(got.stats.iterations, expected.stats.iterations);
                 EXPECT_EQ(fast.stats().queries, reference.stats().queries);
                 EXPECT_EQ(fast.stats().draws, reference.stats().draws);
-                EXPECT_TRUE(sameBits(fast.depthBuffer(), expected_depths));
             }
         }
     }
