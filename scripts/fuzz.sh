@@ -4,6 +4,9 @@
 #   bash scripts/fuzz.sh                 every target, 60 s each
 #   bash scripts/fuzz.sh 300             every target, 300 s each
 #   bash scripts/fuzz.sh 60 mesh_file    one target (json_scene, scene_parameters, mesh_file)
+#   bash scripts/fuzz.sh --runs 5000 mesh_file
+#                                        a fixed number of inputs: with VISSORT_FUZZ_SEED set,
+#                                        the same inputs on every machine (what CI runs)
 # Seeds: tests/fuzz/corpus/TARGET/ (read only). What a run finds interesting goes to
 # build-fuzz/corpus/TARGET/; a crash, hang or leak is written to tests/fuzz/crashes/TARGET/ and
 # the script fails at the end. Keep the reproducer there once fixed: the normal build's
@@ -11,11 +14,23 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-seconds=${1:-60}
-case "$seconds" in '' | *[!0-9]*)
-  echo "fuzz.sh: the time must be whole seconds, not '$seconds'" >&2; exit 2 ;;
-esac
-shift || true
+if [ "${1:-}" = --runs ]; then
+  runs=${2:-}
+  case "$runs" in '' | *[!0-9]*)
+    echo "fuzz.sh: --runs needs a whole number of inputs, not '$runs'" >&2; exit 2 ;;
+  esac
+  budget=(-runs="$runs")
+  budget_text="$runs inputs"
+  shift 2
+else
+  seconds=${1:-60}
+  case "$seconds" in '' | *[!0-9]*)
+    echo "fuzz.sh: the time must be whole seconds, not '$seconds'" >&2; exit 2 ;;
+  esac
+  budget=(-max_total_time="$seconds")
+  budget_text="$seconds s"
+  shift || true
+fi
 all_targets=(json_scene scene_parameters mesh_file)
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=("${all_targets[@]}")
@@ -53,16 +68,17 @@ export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 # Leaks inside assimp itself are not ours to fix (the file says which); ours are still found.
 export LSAN_OPTIONS=suppressions=$PWD/tests/fuzz/lsan.supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-# VISSORT_FUZZ_SEED fixes libFuzzer's seed (CI does: a new finding then shows up in a change that
-# can cause it, not at random in a later run); unset, each run explores anew.
+# VISSORT_FUZZ_SEED fixes libFuzzer's seed; with --runs the inputs tried are then the same on
+# every machine, fast or slow (CI does: a new finding then shows up in a change that can cause
+# it, not at random in a later run); unset, each run explores anew.
 seed=()
 [ -z "${VISSORT_FUZZ_SEED:-}" ] || seed=(-seed="$VISSORT_FUZZ_SEED")
 failed=()
 for t in "${targets[@]}"; do
   mkdir -p "build-fuzz/corpus/$t" "tests/fuzz/crashes/$t"
-  echo "== fuzzing $t for $seconds s"
+  echo "== fuzzing $t for $budget_text"
   # -timeout: one input taking 10 s is a hang; -rss_limit_mb: memory out of proportion.
-  if ! "build-fuzz/${t}_fuzzer" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+  if ! "build-fuzz/${t}_fuzzer" "${budget[@]}" -timeout=10 -rss_limit_mb=2048 \
       -max_len=4096 -print_final_stats=1 "${seed[@]}" -artifact_prefix="tests/fuzz/crashes/$t/" \
       "build-fuzz/corpus/$t" "tests/fuzz/corpus/$t" "tests/fuzz/crashes/$t"; then
     failed+=("$t")
@@ -72,4 +88,4 @@ if [ ${#failed[@]} -gt 0 ]; then
   echo "fuzz.sh: ${failed[*]} found a crash, hang or leak: see tests/fuzz/crashes/" >&2
   exit 1
 fi
-echo "fuzz.sh: no crash, hang or leak in ${targets[*]} ($seconds s each)"
+echo "fuzz.sh: no crash, hang or leak in ${targets[*]} ($budget_text each)"

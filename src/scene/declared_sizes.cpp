@@ -174,32 +174,80 @@ struct PlyElement {
     uint64_t properties = 0;
 };
 
+/// Whether a header line is end_header: the lowercase word alone, spaces and tabs around it
+/// (assimp matches it in lowercase only, and looped forever on "eNd_header").
+bool isPlyEndHeader(std::string_view line) {
+    constexpr std::string_view kToken = "end_header";
+    std::size_t at = 0;
+    while (at < line.size() && (line[at] == ' ' || line[at] == '\t'))
+        ++at;
+    if (line.substr(at, kToken.size()) != kToken)
+        return false;
+    for (at += kToken.size(); at < line.size(); ++at)
+        if (line[at] != ' ' && line[at] != '\t')
+            return false;
+    return true;
+}
+
+std::string byteName(char c) {
+    static constexpr char kHex[] = "0123456789abcdef";
+    const auto byte = static_cast<unsigned char>(c);
+    return std::string("0x") + kHex[byte >> 4] + kHex[byte & 15];
+}
+
+std::string_view lineEndName(std::string_view end) {
+    return end == "\n" ? "\\n" : end == "\r" ? "\\r" : "\\r\\n";
+}
+
 /// Problems of a PLY header that make assimp 5.2.5 fail badly whatever the counts, found by the
-/// mesh_file fuzzer: no end_header line (a read past its buffer, a segmentation fault, or with
-/// "eNd_header" an endless loop; assimp matches it in lowercase only), and an element declared
-/// twice (two "vertex" elements: it writes the second one's vertices into the first one's
-/// array, past its end). Looks at every line, whether this file understands it or not.
+/// mesh_file fuzzer and by trying every line end around its lines:
+///  - no end_header line: a read past its buffer (a segmentation fault) or an endless loop;
+///  - an element declared twice (two "vertex" elements: it writes the second one's vertices
+///    into the first one's array, past its end);
+///  - a control character other than a tab before end_header (a vertical tab or form feed
+///    next to end_header: an endless loop);
+///  - line ends other than one kind throughout ("\n", "\r\n" or "\r"), or a blank line where
+///    they are not "\n": assimp's line reader then loops forever ("\r\r", "\n\r" before
+///    end_header) or silently drops a line ("\r\n\r\n" after an element: its properties go
+///    to the element before).
+/// Looks at every line, whether this file understands it or not.
 std::string plyStructureProblem(std::string_view head, uint64_t file_size) {
     std::vector<std::string_view> elements;
+    std::string_view line_end; // the header's kind, from its first line
     std::size_t at = 0;
     while (at < head.size()) {
         std::size_t end = at;
         while (end < head.size() && head[end] != '\n' && head[end] != '\r')
             ++end;
-        const std::vector<std::string_view> line = words(head.substr(at, end - at));
-        at = end + 1;
-        if (line.empty())
-            continue;
-        if (line[0] == "end_header")
+        const std::string_view text = head.substr(at, end - at);
+        if (isPlyEndHeader(text))
             return {};
-        if (line[0] == "element" && line.size() >= 2) {
+        for (std::size_t i = 0; i < text.size(); ++i)
+            if (static_cast<unsigned char>(text[i]) < 0x20 && text[i] != '\t')
+                return "the PLY header has the control character " + byteName(text[i]) +
+                       " at byte " + std::to_string(at + i);
+        const std::string_view this_end =
+            head.substr(end, head.substr(end, 2) == "\r\n" ? 2 : 1);
+        if (line_end.empty())
+            line_end = this_end;
+        else if (!this_end.empty() && this_end != line_end)
+            return "the PLY header mixes line ends (" + std::string(lineEndName(line_end)) +
+                   " and " + std::string(lineEndName(this_end)) + " at byte " +
+                   std::to_string(end) + "), which assimp misreads: save it with one kind";
+        if (text.empty() && line_end != "\n")
+            return "the PLY header has a blank line at byte " + std::to_string(at) + " with " +
+                   std::string(lineEndName(line_end)) +
+                   " line ends, which assimp misreads: remove it";
+        at = end + this_end.size();
+        const std::vector<std::string_view> line = words(text);
+        if (line.size() >= 2 && line[0] == "element") {
             if (std::find(elements.begin(), elements.end(), line[1]) != elements.end())
                 return "the PLY header declares the element '" + std::string(line[1]) + "' twice";
             elements.push_back(line[1]);
         }
     }
     // No valid header is 64 KiB long.
-    return "the PLY header has no end_header line" +
+    return "the PLY header has no end_header line (the word alone on its line)" +
            std::string(file_size > head.size() ? " in its first 64 KiB" : "");
 }
 
@@ -216,7 +264,8 @@ std::string plyProblem(std::string_view head, uint64_t file_size) {
             ++end;
         if (end == head.size())
             return {}; // end_header without a line end: the file has no body
-        const std::vector<std::string_view> line = words(head.substr(at, end - at));
+        const std::string_view text = head.substr(at, end - at);
+        const std::vector<std::string_view> line = words(text);
         at = end + 1;
         if (head[end] == '\r' && at < head.size() && head[at] == '\n')
             ++at;
@@ -259,7 +308,7 @@ std::string plyProblem(std::string_view head, uint64_t file_size) {
                 return {};
             }
             ++element.properties;
-        } else if (line[0] == "end_header") {
+        } else if (isPlyEndHeader(text)) {
             header_end = at;
         } else {
             return {}; // a header this does not understand: assimp decides
@@ -374,6 +423,227 @@ std::string nffProblem(std::string_view text, uint64_t file_size) {
     return {};
 }
 
+/// A count no file of `file_size` bytes can hold: more elements than it has bytes.
+std::string countProblem(std::string_view format, uint64_t count, std::size_t at,
+                         uint64_t file_size) {
+    return "the " + std::string(format) + " declares " + std::to_string(count) +
+           " elements at byte " + std::to_string(at) + ", more than the file's " +
+           std::to_string(file_size) + " bytes can hold";
+}
+
+/// Text DirectX (.x): assimp 5.2.5 resizes its arrays to every count it reads (vertices, faces,
+/// normals, texture coordinates, colours, material indices, weights, keys) before reading the
+/// elements: 300 million vertices in 83 bytes took 23 s and 3.5 GB. A count stands alone
+/// between '{' or ';' and ';', and every element takes at least a byte, so such an unsigned
+/// integer larger than the file is refused. List items follow ',' (DeclData's raw 32-bit words
+/// are such a list, and large). Only a coordinate written as a large integer, without a decimal
+/// point, could be refused wrongly; exporters write "%f". Skips comments, strings and GUIDs.
+std::string directXTextProblem(std::string_view text, uint64_t file_size) {
+    std::size_t at = 16; // past "xof 0302txt 0032"
+    char before = '{';   // the last punctuation or word seen: '{', ';', ',', ... or 'w'
+    while (at < text.size()) {
+        const char c = text[at];
+        if (c == '#' || (c == '/' && at + 1 < text.size() && text[at + 1] == '/')) {
+            while (at < text.size() && text[at] != '\n' && text[at] != '\r')
+                ++at;
+        } else if (c == '"' || c == '<') {
+            const char close = c == '"' ? '"' : '>';
+            for (++at; at < text.size() && text[at] != close; ++at) {
+            }
+            ++at;
+        } else if (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' ||
+                   c == '-' || c == '+') {
+            // A word or a number; only a plain unsigned integer can be a count.
+            const std::size_t begin = at;
+            bool digits_only = true;
+            while (at < text.size() && (std::isalnum(static_cast<unsigned char>(text[at])) ||
+                                        text[at] == '_' || text[at] == '.' || text[at] == '-' ||
+                                        text[at] == '+')) {
+                digits_only = digits_only && text[at] >= '0' && text[at] <= '9';
+                ++at;
+            }
+            std::size_t next = at;
+            while (next < text.size() && isSpace(text[next]))
+                ++next;
+            if (digits_only && (before == '{' || before == ';') && next < text.size() &&
+                text[next] == ';') {
+                const uint64_t count = leadingCount(text.substr(begin, at - begin));
+                if (count > file_size)
+                    return countProblem("DirectX file", count, begin, file_size);
+            }
+            before = 'w';
+        } else {
+            if (!isSpace(c))
+                before = c;
+            ++at;
+        }
+    }
+    return {};
+}
+
+/// Binary DirectX (.x): the same counts as 32-bit integers in integer tokens and lists. Floats
+/// have their own tokens, so every integer is a count or an index below a count, except the raw
+/// vertex words of DeclData and FVFData objects: one larger than the file is refused (a cube's 24
+/// vertices patched to 300 million: 15 s and 3.5 GB). Stops at a token it does not know, where
+/// assimp decides.
+std::string directXBinaryProblem(std::string_view bytes, uint64_t file_size) {
+    const uint64_t float_bytes = bytes.substr(12, 4) == "0064" ? 8 : 4;
+    const auto word = [&](std::size_t at) -> uint64_t {
+        if (at + 4 > bytes.size())
+            return 0;
+        uint64_t value = 0;
+        for (int i = 3; i >= 0; --i)
+            value = value << 8 | static_cast<uint8_t>(bytes[at + std::size_t(i)]);
+        return value;
+    };
+    std::size_t at = 16;
+    std::string_view last_name;
+    bool raw_words = false; // inside a DeclData or FVFData object
+    while (at + 2 <= bytes.size()) {
+        const unsigned token =
+            static_cast<uint8_t>(bytes[at]) | unsigned(static_cast<uint8_t>(bytes[at + 1])) << 8;
+        at += 2;
+        switch (token) {
+        case 1: // name: length, then the characters
+            last_name = bytes.substr(std::min(at + 4, bytes.size()), std::size_t(word(at)));
+            at = std::size_t(saturatingAdd(at + 4, word(at)));
+            break;
+        case 0x0a: // '{': a data object's name comes before it
+            raw_words = last_name == "DeclData" || last_name == "FVFData";
+            break;
+        case 0x0b: // '}'
+            raw_words = false;
+            break;
+        case 2: // string: length, the characters, then a terminating token
+            at = std::size_t(saturatingAdd(at + 6, word(at)));
+            break;
+        case 3: // integer
+            if (word(at) > file_size)
+                return countProblem("binary DirectX file", word(at), at, file_size);
+            at += 4;
+            break;
+        case 5: // GUID
+            at += 16;
+            break;
+        case 6: { // integer list: a count, then the integers
+            const uint64_t count = word(at);
+            if (saturatingMultiply(count, 4) > file_size)
+                return countProblem("binary DirectX file", count, at, file_size);
+            for (uint64_t i = 0; !raw_words && i < count && at + 8 + 4 * i <= bytes.size(); ++i)
+                if (word(at + 4 + 4 * i) > file_size)
+                    return countProblem("binary DirectX file", word(at + 4 + 4 * i),
+                                        at + 4 + 4 * i, file_size);
+            at = std::size_t(saturatingAdd(at + 4, saturatingMultiply(count, 4)));
+            break;
+        }
+        case 7: { // float list: a count, then the floats
+            const uint64_t count = word(at);
+            if (saturatingMultiply(count, float_bytes) > file_size)
+                return countProblem("binary DirectX file", count, at, file_size);
+            at = std::size_t(saturatingAdd(at + 4, saturatingMultiply(count, float_bytes)));
+            break;
+        }
+        default: // punctuation and keywords carry nothing
+            if (token < 0x0a || token > 0x3c)
+                return {};
+        }
+    }
+    return {};
+}
+
+/// ASCII Caligari trueSpace (.cob): "World Vertices N", "Texture Vertices N", "Faces N" and
+/// "Face verts N" are followed by N elements, and assimp resizes its arrays to N first (300
+/// million world vertices in 300 bytes: 22 s and 3.5 GB). Every element takes at least two
+/// bytes.
+std::string cobAsciiProblem(std::string_view text, uint64_t file_size) {
+    uint64_t elements = 0;
+    std::size_t at = 0, first_at = 0;
+    while (at < text.size()) {
+        std::size_t end = at;
+        while (end < text.size() && text[end] != '\n' && text[end] != '\r')
+            ++end;
+        const std::string_view line = skipSpaces(text.substr(at, end - at));
+        for (const std::string_view key :
+             {"World Vertices", "Texture Vertices", "Faces", "Face verts"}) {
+            if (line.starts_with(key)) {
+                if (elements == 0)
+                    first_at = at;
+                elements = saturatingAdd(elements, leadingCount(skipSpaces(line.substr(key.size()))));
+                break;
+            }
+        }
+        at = end + 1;
+    }
+    if (saturatingMultiply(elements, 2) <= file_size)
+        return {};
+    return "the Caligari file declares " + std::to_string(elements) +
+           " vertices, texture vertices and faces (the first count at byte " +
+           std::to_string(first_at) + "), at least " +
+           std::to_string(saturatingMultiply(elements, 2)) + " bytes, but the file has " +
+           std::to_string(file_size) + " bytes";
+}
+
+/// Binary Caligari trueSpace (.cob): chunks of a 20-byte header (type, version, ids, size) and
+/// `size` bytes. assimp 5.2.5 aborted the process (an exception thrown from a destructor) on a
+/// chunk larger than the file, and resizes a polygon mesh's (PolH) vertex and texture vertex
+/// arrays and reserves its faces for their counts before reading them (300 million vertices:
+/// 3.5 GB): each must fit in its chunk. Stops where a chunk is not laid out as expected.
+std::string cobBinaryProblem(std::string_view bytes, uint64_t file_size) {
+    const auto number = [&](uint64_t at, int size) -> std::optional<uint64_t> {
+        if (at + uint64_t(size) > bytes.size())
+            return std::nullopt;
+        uint64_t value = 0;
+        for (int i = size - 1; i >= 0; --i)
+            value = value << 8 | static_cast<uint8_t>(bytes[std::size_t(at) + std::size_t(i)]);
+        return value;
+    };
+    constexpr uint64_t kFileHeader = 32, kChunkHeader = 20, kNodeInfo = 96; // axes, transform
+    uint64_t at = kFileHeader;
+    while (at + kChunkHeader <= bytes.size()) {
+        const std::string type(bytes.substr(std::size_t(at), 4));
+        const uint64_t size = *number(at + 16, 4), body = at + kChunkHeader;
+        if (body + size > file_size)
+            return "the binary Caligari file's chunk '" + type + "' at byte " +
+                   std::to_string(at) + " declares " + std::to_string(size) +
+                   " bytes, but the file has " + std::to_string(file_size - body) +
+                   " bytes after its header";
+        if (type == "END ")
+            return {};
+        if (type == "PolH") {
+            // The name (a 16-bit dupe count, a 16-bit length, the characters), then the node's
+            // axes and transform, then the counts, each followed by its elements.
+            const std::optional<uint64_t> name = number(body + 2, 2);
+            uint64_t item = body + 4 + name.value_or(0) + kNodeInfo;
+            for (const auto& [what, bytes_each] :
+                 {std::pair{"vertices", 12}, std::pair{"texture vertices", 8},
+                  std::pair{"faces", 5}}) {
+                const std::optional<uint64_t> count = number(item, 4);
+                if (!name || !count || item + 4 > body + size)
+                    break;
+                if (saturatingMultiply(*count, uint64_t(bytes_each)) > size)
+                    return "the binary Caligari file's mesh at byte " + std::to_string(at) +
+                           " declares " + std::to_string(*count) + " " + what +
+                           ", more than its " + std::to_string(size) + "-byte chunk can hold";
+                item += 4 + *count * uint64_t(bytes_each);
+            }
+        }
+        at = body + size;
+    }
+    return {};
+}
+
+bool isBinaryCob(std::string_view head) {
+    return head.starts_with("Caligari V") && head.size() >= 16 && head[15] == 'B';
+}
+
+bool isDirectX(std::string_view head, std::string_view kind) {
+    return head.substr(0, 4) == "xof " && head.size() >= 16 && head.substr(8, 4) == kind;
+}
+
+bool isAsciiCob(std::string_view head) {
+    return head.starts_with("Caligari V") && head.size() >= 16 && head[15] == 'A';
+}
+
 } // namespace
 
 std::string declaredSizeProblem(std::string_view head, uint64_t file_size,
@@ -382,6 +652,15 @@ std::string declaredSizeProblem(std::string_view head, uint64_t file_size,
     // By signature first: assimp finds a PLY reader by its "ply" magic whatever the extension.
     if (lowercase(head.substr(0, 3)) == "ply")
         return plyProblem(head, file_size);
+    // assimp finds these by their signatures too.
+    if (isDirectX(head, "txt "))
+        return directXTextProblem(head, file_size);
+    if (isDirectX(head, "bin "))
+        return directXBinaryProblem(head, file_size);
+    if (isAsciiCob(head))
+        return cobAsciiProblem(head, file_size);
+    if (isBinaryCob(head))
+        return cobBinaryProblem(head, file_size);
     if (ext == "stl")
         return binaryStlProblem(head, file_size);
     if (ext == "nff")
@@ -389,8 +668,9 @@ std::string declaredSizeProblem(std::string_view head, uint64_t file_size,
     return offProblem(head, file_size, ext == "off");
 }
 
-bool declaredSizesNeedWholeFile(std::string_view extension) {
-    return lowercase(extension) == "nff";
+bool declaredSizesNeedWholeFile(std::string_view extension, std::string_view head) {
+    return lowercase(extension) == "nff" || isDirectX(head, "txt ") || isDirectX(head, "bin ") ||
+           isAsciiCob(head) || isBinaryCob(head);
 }
 
 } // namespace vissort::detail

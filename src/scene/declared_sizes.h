@@ -24,14 +24,16 @@ inline constexpr std::size_t kDeclaredSizeHeadBytes = 64 * 1024;
 /// a one-line
 /// problem without the file's name. `extension` is the file's, lowercase or not, without the dot.
 /// Checked: PLY (ASCII and binary, by its "ply" signature), OFF and its variants (COFF, NOFF,
-/// STOFF, 4OFF, nOFF; by extension or keyword), binary STL and classic NFF (by extension). Anything
+/// STOFF, 4OFF, nOFF; by extension or keyword), binary STL and classic NFF (by extension), text
+/// and binary DirectX and Caligari trueSpace (by signature). Anything
 /// else, and any header this does not understand, gives an empty answer: assimp then decides.
 std::string declaredSizeProblem(std::string_view head, uint64_t file_size,
                                 std::string_view extension);
 
-/// Whether declaredSizeProblem needs the whole file rather than its first bytes: formats whose
-/// counts can be anywhere (NFF, by extension). Checked in full up to kDeclaredSizeWholeFileBytes.
-bool declaredSizesNeedWholeFile(std::string_view extension);
+/// Whether declaredSizeProblem needs the whole file rather than its first bytes (`head`):
+/// formats whose counts can be anywhere (NFF by extension; text and binary DirectX and
+/// Caligari by signature). Checked in full up to kDeclaredSizeWholeFileBytes.
+bool declaredSizesNeedWholeFile(std::string_view extension, std::string_view head);
 
 /// The largest file read whole for declaredSizeProblem; a larger one is checked on its start.
 inline constexpr uint64_t kDeclaredSizeWholeFileBytes = 64ull * 1024 * 1024;

@@ -256,16 +256,22 @@ Result<Scene> loadMeshFile(const std::string& path) {
     if (file_size == 0)
         return Result<Scene>::failure(path + ": empty file");
     try {
-        // Only the header is read here; assimp reads the file itself.
+        // Only the header is read here (the whole file for formats whose counts can be
+        // anywhere); assimp reads the file itself.
         const std::string extension = extensionOf(path);
-        const uintmax_t checked_bytes =
-            declaredSizesNeedWholeFile(extension) && file_size <= kDeclaredSizeWholeFileBytes
-                ? file_size
-                : std::min<uintmax_t>(file_size, kDeclaredSizeHeadBytes);
-        std::string head(static_cast<std::size_t>(checked_bytes), '\0');
+        std::string head(static_cast<std::size_t>(
+                             std::min<uintmax_t>(file_size, kDeclaredSizeHeadBytes)),
+                         '\0');
         std::ifstream stream(file, std::ios::binary);
         stream.read(head.data(), static_cast<std::streamsize>(head.size()));
         head.resize(static_cast<std::size_t>(stream.gcount()));
+        if (head.size() < file_size && file_size <= kDeclaredSizeWholeFileBytes &&
+            declaredSizesNeedWholeFile(extension, head)) {
+            const std::size_t read = head.size();
+            head.resize(static_cast<std::size_t>(file_size));
+            stream.read(head.data() + read, static_cast<std::streamsize>(head.size() - read));
+            head.resize(read + static_cast<std::size_t>(stream.gcount()));
+        }
         if (const std::string problem = declaredSizeProblem(head, file_size, extension);
             !problem.empty())
             return Result<Scene>::failure(path + ": " + problem);
@@ -291,8 +297,9 @@ Result<Scene> loadMeshMemory(const void* data, std::size_t size, const std::stri
     try {
         const std::string_view bytes(static_cast<const char*>(data), size);
         if (const std::string problem = declaredSizeProblem(
-                declaredSizesNeedWholeFile(format_hint) ? bytes
-                                                        : bytes.substr(0, kDeclaredSizeHeadBytes),
+                declaredSizesNeedWholeFile(format_hint, bytes.substr(0, kDeclaredSizeHeadBytes))
+                    ? bytes
+                    : bytes.substr(0, kDeclaredSizeHeadBytes),
                 size, format_hint);
             !problem.empty())
             return Result<Scene>::failure(label + ": " + problem);

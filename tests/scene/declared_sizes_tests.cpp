@@ -246,7 +246,8 @@ TEST(DeclaredSizes, PlyWithoutEndHeaderIsRefused) {
         dir.write("no_end.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 3\npr [\n "
                                 "{\n \"nodes\": [\n 0,\n 1\n ]\n }\n" +
                                     std::string(12, '\0') + floats({1, 0, 0}));
-    expectRefused(loadMeshFile(path), path, {"PLY header has no end_header line"});
+    // (Its binary zeros, before any end_header, are named first.)
+    expectRefused(loadMeshFile(path), path, {"PLY header has the control character 0x00"});
     EXPECT_NE(declaredSizeProblem("ply\nformat ascii 1.0\nelement vertex 9\n", 37, "ply"), "");
     // assimp matches end_header in lowercase only, and looped forever on this ASCII header
     // (found by the mesh_file fuzzer).
@@ -261,6 +262,55 @@ TEST(DeclaredSizes, PlyWithoutEndHeaderIsRefused) {
                                   long_header.size() + 100, "ply")
                   .find("first 64 KiB"),
               std::string::npos);
+}
+
+/// An ASCII PLY file of one triangle whose header lines end with line_end, with before_end
+/// in place of the line end before end_header and end_line in place of the end_header line.
+std::string asciiPlyTriangle(const std::string& line_end, const std::string& before_end,
+                             const std::string& end_line) {
+    std::string text;
+    for (const char* line : {"ply", "format ascii 1.0", "element vertex 3", "property float x",
+                             "property float y", "property float z", "element face 1"})
+        text += line + line_end;
+    return text + "property list uchar int vertex_indices" + before_end + end_line +
+           "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+}
+
+TEST(DeclaredSizes, PlyHeadersAssimpMisreadsAreRefused) {
+    // Found by the mesh_file fuzzer and by trying every line end around the header's lines:
+    // assimp 5.2.5 looped forever on each of these files or silently dropped a header line.
+    TempDir dir;
+    const struct {
+        std::string text;
+        std::string needle;
+    } refused[] = {
+        {asciiPlyTriangle("\n", "\n", "end_header\v\n"), "control character 0x0b"},
+        {asciiPlyTriangle("\n", "\n", "\vend_header\n"), "control character 0x0b"},
+        {asciiPlyTriangle("\n", "\n", "\fend_header\n"), "control character 0x0c"},
+        {asciiPlyTriangle("\n", "\n", "end_header\v"), "control character 0x0b"},
+        {asciiPlyTriangle("\n", "\n\r", "end_header\n"), "mixes line ends (\\n and \\r"},
+        {asciiPlyTriangle("\n", "\r\n", "end_header\n"), "mixes line ends (\\n and \\r\\n"},
+        {asciiPlyTriangle("\r", "\r\r", "end_header\r"), "blank line"},
+        {asciiPlyTriangle("\r\n", "\r\n\r\n", "end_header\r\n"), "blank line"},
+    };
+    for (const auto& file : refused) {
+        SCOPED_TRACE(::testing::PrintToString(file.text));
+        const std::string path = dir.write("misread.ply", file.text);
+        expectRefused(loadMeshFile(path), path, {file.needle});
+    }
+    // One kind of line end throughout, blank lines with "\n", spaces and tabs around
+    // end_header, and anything after its line (the body) are read.
+    for (const std::string& text :
+         {asciiPlyTriangle("\n", "\n\n", "end_header \n"),
+          asciiPlyTriangle("\n", "\n", " \tend_header\t\r\n"),
+          asciiPlyTriangle("\r", "\r", "end_header\r"),
+          asciiPlyTriangle("\r\n", "\r\n", "end_header\r\n")}) {
+        SCOPED_TRACE(::testing::PrintToString(text));
+        const std::string path = dir.write("read.ply", text);
+        const Result<Scene> loaded = loadMeshFile(path);
+        ASSERT_TRUE(loaded) << loaded.error;
+        EXPECT_EQ(loaded.value->triangleCount(), 1u);
+    }
 }
 
 TEST(DeclaredSizes, PlyElementsDeclaredTwiceAreRefused) {
@@ -307,6 +357,129 @@ TEST(DeclaredSizes, NffPolygonCountsAndGeneratedShapesAreBounded) {
     EXPECT_NE(declaredSizeProblem("tess 4000000000\nc\n0 0 0 1\n0 0 1 1\n", 35, "nff"), "");
     // NFF2 (first line "nff") is another grammar, left to assimp.
     EXPECT_EQ(declaredSizeProblem("nff\nversion 2.0\n", 16, "nff"), "");
+}
+
+/// A text DirectX mesh of one triangle, its counts as given.
+std::string textDirectX(const std::string& vertices, const std::string& faces,
+                        const std::string& extra = "") {
+    return "xof 0303txt 0032\n// made by the test, 2026112400;\nMesh tri {\n " + vertices +
+           ";\n 0.0;0.0;0.0;,\n 1.0;0.0;0.0;,\n 0.0;1.0;0.0;;\n " + faces +
+           ";\n 3;0,1,2;;\n" + extra + "}\n";
+}
+
+std::string littleEndian16(uint16_t value) {
+    return {static_cast<char>(value & 0xff), static_cast<char>(value >> 8)};
+}
+
+/// A binary DirectX mesh of one triangle: a name token, '{', the vertex count as an integer
+/// list, the corners as a float list, the face list, '}'.
+std::string binaryDirectX(uint32_t vertices, const std::string& before_close = "") {
+    const auto name = [](const std::string& text) {
+        return littleEndian16(1) + littleEndian32(uint32_t(text.size())) + text;
+    };
+    const auto integers = [](std::initializer_list<uint32_t> values) {
+        std::string bytes = littleEndian16(6) + littleEndian32(uint32_t(values.size()));
+        for (const uint32_t v : values)
+            bytes += littleEndian32(v);
+        return bytes;
+    };
+    return "xof 0303bin 0032" + name("Mesh") + name("tri") + littleEndian16(0x0a) +
+           integers({vertices}) + littleEndian16(7) + littleEndian32(9) +
+           floats({0, 0, 0, 1, 0, 0, 0, 1, 0}) + integers({1, 3, 0, 1, 2}) + before_close +
+           littleEndian16(0x0b);
+}
+
+TEST(DeclaredSizes, DirectXCountsAreBounded) {
+    // 300 million vertices in a few dozen bytes: assimp 5.2.5 took 23 s and 3.5 GB (text) and
+    // 15 s and 3.5 GB (binary) before its allocation failed.
+    TempDir dir;
+    const std::string text = dir.write("huge.x", textDirectX("300000000", "1"));
+    expectRefused(loadMeshFile(text), text, {"DirectX file declares 300000000 elements"});
+    const std::string faces = dir.write("faces.x", textDirectX("3", "4000000000"));
+    expectRefused(loadMeshFile(faces), faces, {"4000000000 elements"});
+    // By its signature, whatever the name.
+    const std::string named_txt = dir.write("huge.txt", textDirectX("300000000", "1"));
+    expectRefused(loadMeshFile(named_txt), named_txt, {"300000000"});
+    const std::string binary = dir.write("huge_binary.x", binaryDirectX(300'000'000));
+    expectRefused(loadMeshFile(binary), binary, {"binary DirectX file declares 300000000"});
+    // Honest files load; numbers that are not counts (a comment's, DeclData's raw words) are
+    // not taken for counts.
+    for (const std::string& honest :
+         {textDirectX("3", "1"),
+          textDirectX("3", "1",
+                      " DeclData {\n 1;\n 2;0;0;0;;\n 2;\n 3198039908,\n 3202904435;\n }\n"),
+          binaryDirectX(3)}) {
+        SCOPED_TRACE(::testing::PrintToString(honest));
+        const std::string path = dir.write("honest.x", honest);
+        EXPECT_EQ(declaredSizeProblem(honest, honest.size(), "x"), "");
+        const Result<Scene> loaded = loadMeshFile(path);
+        ASSERT_TRUE(loaded) << loaded.error;
+        EXPECT_EQ(loaded.value->triangleCount(), 1u);
+    }
+    const std::string decl_data = "xof 0303bin 0032" + littleEndian16(1) + littleEndian32(8) +
+                                  "DeclData" + littleEndian16(0x0a) + littleEndian16(6) +
+                                  littleEndian32(2) + littleEndian32(3198039908u) +
+                                  littleEndian32(3202904435u) + littleEndian16(0x0b);
+    EXPECT_EQ(declaredSizeProblem(decl_data, decl_data.size(), "x"), "");
+}
+
+/// An ASCII Caligari file of one triangle with `vertices` declared world vertices.
+std::string asciiCob(const std::string& vertices) {
+    return "Caligari V00.01ALH             \n"
+           "PolH V0.08 Id 18846388 Parent 0 Size 00009470\nName Tri\ncenter 0 0 0\n"
+           "x axis 1 0 0\ny axis 0 1 0\nz axis 0 0 1\nTransform\n1 0 0 0\n0 1 0 0\n"
+           "0 0 1 0\n0 0 0 1\nWorld Vertices " +
+           vertices +
+           "\n0 0 0\n1 0 0\n0 1 0\nTexture Vertices 1\n0 0\nFaces 1\n"
+           "Face verts 3 flags 0 mat 0\n<0,0> <1,0> <2,0>\nEND V1.00 Id 0 Parent 0 Size 0\n";
+}
+
+/// A binary Caligari file: its 32-byte header, one PolH chunk of the given body, END.
+std::string binaryCob(const std::string& body, uint32_t declared_size) {
+    const auto chunk = [](const std::string& type, uint32_t size) {
+        return type + littleEndian16(0) + littleEndian16(8) + littleEndian32(7) +
+               littleEndian32(0) + littleEndian32(size);
+    };
+    std::string header = "Caligari V00.01BLH";
+    header.resize(31, ' ');
+    return header + "\n" + chunk("PolH", declared_size) + body + chunk("END ", 0);
+}
+
+/// The body of a binary PolH chunk up to its counts: name, axes and transform, then `counts`.
+std::string polhBody(uint32_t vertices, const std::string& rest) {
+    return littleEndian16(0) + littleEndian16(3) + "Tri" + std::string(96, '\0') +
+           littleEndian32(vertices) + rest;
+}
+
+TEST(DeclaredSizes, CaligariCountsAndChunksAreBounded) {
+    // 300 million world vertices in 300 bytes: 22 s and 3.5 GB in assimp 5.2.5 (ASCII); in a
+    // binary file the same (its vertex count patched), and a chunk larger than the file
+    // aborted the process (assimp threw from a destructor).
+    TempDir dir;
+    const std::string ascii = dir.write("huge.cob", asciiCob("300000000"));
+    expectRefused(loadMeshFile(ascii), ascii, {"Caligari file declares 300000005"});
+    const std::string honest = dir.write("honest.cob", asciiCob("3"));
+    const Result<Scene> loaded = loadMeshFile(honest);
+    ASSERT_TRUE(loaded) << loaded.error;
+    EXPECT_EQ(loaded.value->triangleCount(), 1u);
+
+    const std::string corners = floats({0, 0, 0, 1, 0, 0, 0, 1, 0});
+    const std::string fits = polhBody(3, corners + littleEndian32(0) + littleEndian32(0));
+    const std::string good = binaryCob(fits, uint32_t(fits.size()));
+    EXPECT_EQ(declaredSizeProblem(good, good.size(), "cob"), "");
+    const std::string lying = polhBody(300'000'000, corners + littleEndian32(0));
+    const std::string huge_vertices =
+        dir.write("vertices.cob", binaryCob(lying, uint32_t(lying.size())));
+    expectRefused(loadMeshFile(huge_vertices), huge_vertices,
+                  {"mesh at byte 32 declares 300000000 vertices",
+                   std::to_string(lying.size()) + "-byte chunk"});
+    const std::string huge_chunk = dir.write("chunk.cob", binaryCob(fits, 300'000'000));
+    expectRefused(loadMeshFile(huge_chunk), huge_chunk,
+                  {"chunk 'PolH' at byte 32 declares 300000000 bytes"});
+    const std::string texture = polhBody(3, corners + littleEndian32(100'000'000));
+    EXPECT_NE(declaredSizeProblem(binaryCob(texture, 500), 600, "cob")
+                  .find("100000000 texture vertices"),
+              std::string::npos);
 }
 
 TEST(DeclaredSizes, HeadersItDoesNotUnderstandAreLeftToAssimp) {
