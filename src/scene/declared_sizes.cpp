@@ -226,8 +226,7 @@ std::string plyStructureProblem(std::string_view head, uint64_t file_size) {
             if (static_cast<unsigned char>(text[i]) < 0x20 && text[i] != '\t')
                 return "the PLY header has the control character " + byteName(text[i]) +
                        " at byte " + std::to_string(at + i);
-        const std::string_view this_end =
-            head.substr(end, head.substr(end, 2) == "\r\n" ? 2 : 1);
+        const std::string_view this_end = head.substr(end, head.substr(end, 2) == "\r\n" ? 2 : 1);
         if (line_end.empty())
             line_end = this_end;
         else if (!this_end.empty() && this_end != line_end)
@@ -456,9 +455,9 @@ std::string directXTextProblem(std::string_view text, uint64_t file_size) {
             // A word or a number; only a plain unsigned integer can be a count.
             const std::size_t begin = at;
             bool digits_only = true;
-            while (at < text.size() && (std::isalnum(static_cast<unsigned char>(text[at])) ||
-                                        text[at] == '_' || text[at] == '.' || text[at] == '-' ||
-                                        text[at] == '+')) {
+            while (at < text.size() &&
+                   (std::isalnum(static_cast<unsigned char>(text[at])) || text[at] == '_' ||
+                    text[at] == '.' || text[at] == '-' || text[at] == '+')) {
                 digits_only = digits_only && text[at] >= '0' && text[at] <= '9';
                 ++at;
             }
@@ -531,8 +530,8 @@ std::string directXBinaryProblem(std::string_view bytes, uint64_t file_size) {
                 return countProblem("binary DirectX file", count, at, file_size);
             for (uint64_t i = 0; !raw_words && i < count && at + 8 + 4 * i <= bytes.size(); ++i)
                 if (word(at + 4 + 4 * i) > file_size)
-                    return countProblem("binary DirectX file", word(at + 4 + 4 * i),
-                                        at + 4 + 4 * i, file_size);
+                    return countProblem("binary DirectX file", word(at + 4 + 4 * i), at + 4 + 4 * i,
+                                        file_size);
             at = std::size_t(saturatingAdd(at + 4, saturatingMultiply(count, 4)));
             break;
         }
@@ -568,7 +567,8 @@ std::string cobAsciiProblem(std::string_view text, uint64_t file_size) {
             if (line.starts_with(key)) {
                 if (elements == 0)
                     first_at = at;
-                elements = saturatingAdd(elements, leadingCount(skipSpaces(line.substr(key.size()))));
+                elements =
+                    saturatingAdd(elements, leadingCount(skipSpaces(line.substr(key.size()))));
                 break;
             }
         }
@@ -603,10 +603,9 @@ std::string cobBinaryProblem(std::string_view bytes, uint64_t file_size) {
         const std::string type(bytes.substr(std::size_t(at), 4));
         const uint64_t size = *number(at + 16, 4), body = at + kChunkHeader;
         if (body + size > file_size)
-            return "the binary Caligari file's chunk '" + type + "' at byte " +
-                   std::to_string(at) + " declares " + std::to_string(size) +
-                   " bytes, but the file has " + std::to_string(file_size - body) +
-                   " bytes after its header";
+            return "the binary Caligari file's chunk '" + type + "' at byte " + std::to_string(at) +
+                   " declares " + std::to_string(size) + " bytes, but the file has " +
+                   std::to_string(file_size - body) + " bytes after its header";
         if (type == "END ")
             return {};
         if (type == "PolH") {
@@ -622,8 +621,8 @@ std::string cobBinaryProblem(std::string_view bytes, uint64_t file_size) {
                     break;
                 if (saturatingMultiply(*count, uint64_t(bytes_each)) > size)
                     return "the binary Caligari file's mesh at byte " + std::to_string(at) +
-                           " declares " + std::to_string(*count) + " " + what +
-                           ", more than its " + std::to_string(size) + "-byte chunk can hold";
+                           " declares " + std::to_string(*count) + " " + what + ", more than its " +
+                           std::to_string(size) + "-byte chunk can hold";
                 item += 4 + *count * uint64_t(bytes_each);
             }
         }

@@ -259,9 +259,8 @@ Result<Scene> loadMeshFile(const std::string& path) {
         // Only the header is read here (the whole file for formats whose counts can be
         // anywhere); assimp reads the file itself.
         const std::string extension = extensionOf(path);
-        std::string head(static_cast<std::size_t>(
-                             std::min<uintmax_t>(file_size, kDeclaredSizeHeadBytes)),
-                         '\0');
+        std::string head(
+            static_cast<std::size_t>(std::min<uintmax_t>(file_size, kDeclaredSizeHeadBytes)), '\0');
         std::ifstream stream(file, std::ios::binary);
         stream.read(head.data(), static_cast<std::streamsize>(head.size()));
         head.resize(static_cast<std::size_t>(stream.gcount()));

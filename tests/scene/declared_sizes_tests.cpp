@@ -300,11 +300,10 @@ TEST(DeclaredSizes, PlyHeadersAssimpMisreadsAreRefused) {
     }
     // One kind of line end throughout, blank lines with "\n", spaces and tabs around
     // end_header, and anything after its line (the body) are read.
-    for (const std::string& text :
-         {asciiPlyTriangle("\n", "\n\n", "end_header \n"),
-          asciiPlyTriangle("\n", "\n", " \tend_header\t\r\n"),
-          asciiPlyTriangle("\r", "\r", "end_header\r"),
-          asciiPlyTriangle("\r\n", "\r\n", "end_header\r\n")}) {
+    for (const std::string& text : {asciiPlyTriangle("\n", "\n\n", "end_header \n"),
+                                    asciiPlyTriangle("\n", "\n", " \tend_header\t\r\n"),
+                                    asciiPlyTriangle("\r", "\r", "end_header\r"),
+                                    asciiPlyTriangle("\r\n", "\r\n", "end_header\r\n")}) {
         SCOPED_TRACE(::testing::PrintToString(text));
         const std::string path = dir.write("read.ply", text);
         const Result<Scene> loaded = loadMeshFile(path);
@@ -363,8 +362,8 @@ TEST(DeclaredSizes, NffPolygonCountsAndGeneratedShapesAreBounded) {
 std::string textDirectX(const std::string& vertices, const std::string& faces,
                         const std::string& extra = "") {
     return "xof 0303txt 0032\n// made by the test, 2026112400;\nMesh tri {\n " + vertices +
-           ";\n 0.0;0.0;0.0;,\n 1.0;0.0;0.0;,\n 0.0;1.0;0.0;;\n " + faces +
-           ";\n 3;0,1,2;;\n" + extra + "}\n";
+           ";\n 0.0;0.0;0.0;,\n 1.0;0.0;0.0;,\n 0.0;1.0;0.0;;\n " + faces + ";\n 3;0,1,2;;\n" +
+           extra + "}\n";
 }
 
 std::string littleEndian16(uint16_t value) {
@@ -477,9 +476,9 @@ TEST(DeclaredSizes, CaligariCountsAndChunksAreBounded) {
     expectRefused(loadMeshFile(huge_chunk), huge_chunk,
                   {"chunk 'PolH' at byte 32 declares 300000000 bytes"});
     const std::string texture = polhBody(3, corners + littleEndian32(100'000'000));
-    EXPECT_NE(declaredSizeProblem(binaryCob(texture, 500), 600, "cob")
-                  .find("100000000 texture vertices"),
-              std::string::npos);
+    EXPECT_NE(
+        declaredSizeProblem(binaryCob(texture, 500), 600, "cob").find("100000000 texture vertices"),
+        std::string::npos);
 }
 
 TEST(DeclaredSizes, HeadersItDoesNotUnderstandAreLeftToAssimp) {
