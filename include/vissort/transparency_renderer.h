@@ -58,11 +58,15 @@ inline std::string blendMethodNames() {
     return enumNames<BlendMethod>(kBlendMethodNames);
 }
 
-/// The oracle's depth tolerance for exact blending: negative, so that a fragment counts as behind
-/// unless it is in front by more than 2^-16. Surfaces whose depths come that close anywhere then
-/// occlude each other both ways: a cycle, which the renderer composites per pixel with the GPU's
-/// own depths. The order is thus exact wherever the oracle's depths and the GPU's differ by less
-/// than 2^-16, where near ties of the default tolerance (kDepthTolerance) could swap layers.
+/// The oracle's depth tolerance for exact blending without the check (OrderCheck::off): negative,
+/// so that a fragment counts as behind unless it is in front by more than 2^-16. Surfaces whose
+/// depths come that close anywhere then occlude each other both ways: a cycle, which the renderer
+/// composites per pixel with the GPU's own depths. The order is thus exact wherever the oracle's
+/// depths and the GPU's differ by less than 2^-16, where near ties of the default tolerance
+/// (kDepthTolerance) could swap layers. With the check (the default for vissort) the renderer
+/// orders with kDepthTolerance: the check finds near ties blended in the wrong order, and ties,
+/// and the repair composites their pixels, far cheaper than ordering every touching face as a
+/// cycle.
 inline constexpr float kBlendingDepthTolerance = -1.0f / (1 << 16);
 
 struct RenderSettings {

@@ -150,8 +150,22 @@ struct TransparencyRenderer::Impl {
             if (behind)
                 group_of[p] = uint32_t(primitives.size()) + p; // distinct from every cycle
         }
-        oracle->setDepthTolerance(kBlendingDepthTolerance);
+        oracle->setDepthTolerance(orderTolerance());
     }
+
+    // Whether every pixel of the order's blend is checked and repaired (verified_blending.h).
+    bool checked() const {
+        using Check = RenderSettings::OrderCheck;
+        return settings.check == Check::on ||
+               (settings.check == Check::automatic && settings.method == BlendMethod::vissort);
+    }
+
+    // The oracle's tolerance for vissort's order. Checked, the default one: the check finds
+    // every fragment blended after one in front of it or tied with it, and the repair
+    // composites those pixels from lists, so near ties need no groups (the blending tolerance
+    // makes every touching face a cycle: 0.73 s of ordering where 0.09 s do on the IFC house).
+    // Unchecked, the blending tolerance, so that near ties are groups composited per pixel.
+    float orderTolerance() const { return checked() ? kDepthTolerance : kBlendingDepthTolerance; }
 
     // Draws transparent triangles [first, first + count) with program, its view set.
     void drawTransparent(GLuint program, const ViewProjection& view, std::size_t first,
@@ -214,10 +228,7 @@ struct TransparencyRenderer::Impl {
         case BlendMethod::unsorted:
         case BlendMethod::centroid:
         case BlendMethod::vissort: {
-            using Check = RenderSettings::OrderCheck;
-            const bool check =
-                settings.check == Check::on ||
-                (settings.check == Check::automatic && settings.method == BlendMethod::vissort);
+            const bool check = checked();
             // vissort's groups are composited per pixel even unchecked.
             if (check || settings.method == BlendMethod::vissort)
                 blendVerified(view, check, stats);
@@ -305,7 +316,7 @@ TransparencyRenderer::TransparencyRenderer(std::shared_ptr<GlContext> context, c
         if (!oracle)
             throw std::runtime_error(oracle.error);
         d.oracle = std::move(*oracle.value);
-        d.oracle->setDepthTolerance(kBlendingDepthTolerance);
+        d.oracle->setDepthTolerance(d.orderTolerance());
         d.orderer = std::make_unique<SceneOrderer>(
             d.part.objects, uint32_t(d.part.scene_triangle.size()), settings.level, *d.oracle);
         d.context->makeCurrent(); // a gl oracle made it current too; the same context

@@ -269,6 +269,8 @@ std::string plyProblem(std::string_view head, uint64_t file_size) {
         if (head[end] == '\r' && at < head.size() && head[at] == '\n')
             ++at;
         if (first) {
+            if (line.empty())
+                continue; // line ends before the magic
             first = false;
             if (line.size() != 1 || lowercase(line[0]) != "ply")
                 return {};
@@ -648,8 +650,10 @@ bool isAsciiCob(std::string_view head) {
 std::string declaredSizeProblem(std::string_view head, uint64_t file_size,
                                 std::string_view extension) {
     const std::string ext = lowercase(extension);
-    // By signature first: assimp finds a PLY reader by its "ply" magic whatever the extension.
-    if (lowercase(head.substr(0, 3)) == "ply")
+    // By signature first: assimp finds a PLY reader by its "ply" magic whatever the extension,
+    // and reads the magic after a line end (then hung where end_header was missing).
+    const std::size_t magic = std::min(head.find_first_not_of("\r\n"), head.size());
+    if (lowercase(head.substr(magic, 3)) == "ply")
         return plyProblem(head, file_size);
     // assimp finds these by their signatures too.
     if (isDirectX(head, "txt "))

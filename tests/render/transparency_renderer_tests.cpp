@@ -229,19 +229,29 @@ TEST(TransparencyRenderer, CycleScenesAreCompositedPerPixel) {
 
 // Where two layers' depths nearly tie (a fold of a bunny seen edge-on), the default tolerance
 // leaves their order to chance: at this size, two pixels of the bunnies were 4/255 off at
-// triangle level. The blending tolerance makes such pairs a cycle, composited per pixel.
-TEST(TransparencyRenderer, NearTiesAreCompositedPerPixel) {
+// triangle level, unchecked. Checked (the default), the renderer orders with the default
+// tolerance and the check repairs those pixels; unchecked, the blending tolerance makes such
+// pairs a cycle, composited per pixel. Both exact.
+TEST(TransparencyRenderer, NearTiesAreRepairedOrCompositedPerPixel) {
     const Scene scene = test::loadTestScene("builtin:bunnies");
     const ViewProjection view = frameCamera(*scene.camera, scene.positions.bounds(), 512, 512);
     const RenderCase c{"Bunnies512", "", false, 0.5f, {}, true, 0};
     const std::vector<uint8_t> reference =
         render(scene, settingsOf(c, BlendMethod::linked_list), view);
-    RenderStats stats;
-    const std::vector<uint8_t> image =
-        render(scene, settingsOf(c, BlendMethod::vissort, OrderLevel::triangle), view, &stats);
-    const ImageError error = compareImages(image, reference);
-    EXPECT_LE(error.max_abs, 1) << error.pixels_over_one << " pixels off by more than 1/255";
-    EXPECT_GT(stats.groups, 10u); // the near ties, each composited per pixel
+    RenderSettings settings = settingsOf(c, BlendMethod::vissort, OrderLevel::triangle);
+    RenderStats checked, unchecked;
+    const ImageError checked_error =
+        compareImages(render(scene, settings, view, &checked), reference);
+    EXPECT_LE(checked_error.max_abs, 1)
+        << checked_error.pixels_over_one << " pixels off by more than 1/255";
+    EXPECT_GT(checked.repaired_pixels, 0u); // the near ties the default tolerance left to chance
+    settings.check = RenderSettings::OrderCheck::off;
+    const ImageError unchecked_error =
+        compareImages(render(scene, settings, view, &unchecked), reference);
+    EXPECT_LE(unchecked_error.max_abs, 1)
+        << unchecked_error.pixels_over_one << " pixels off by more than 1/255";
+    EXPECT_EQ(unchecked.repaired_pixels, 0u);
+    EXPECT_GT(unchecked.groups, checked.groups + 10); // the near ties, each composited per pixel
 }
 
 // The check and repair on their own: blending in submission order is wrong on these scenes, and
