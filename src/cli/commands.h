@@ -23,6 +23,7 @@ struct InfoOptions {
     std::string scene;
     ViewOptions view;
     bool gl = false;
+    std::string json_path; // the facts as JSON, besides the printed ones
 };
 CLI::App* addInfoCommand(CLI::App& app, InfoOptions& options);
 int runInfo(const InfoOptions& options);

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "cli/json_output.h"
 #include "vissort/depth_complexity.h"
 #if VISSORT_WITH_GL
 #include "vissort/gl_context.h"
@@ -19,6 +20,9 @@ CLI::App* addInfoCommand(CLI::App& app, InfoOptions& options) {
                       "Print the OpenGL context's EGL platform, vendor, renderer and version "
                       "(VISSORT_GL_PLATFORM=auto|device|surfaceless picks the platform)");
     addViewOptions(*command, options.view);
+    command->add_option("--json", options.json_path,
+                        "Write the facts as JSON: objects, transparent_objects, triangles, "
+                        "transparent_triangles, bounds, depth_complexity (docs/cli.md)");
     return command;
 }
 
@@ -85,7 +89,30 @@ int runInfo(const InfoOptions& options) {
                                                                     : "orthographic")
               << "): max " << depth.max << ", mean " << depth.mean << " over "
               << depth.covered_pixels << " covered pixels\n";
-    return kExitOk;
+    if (options.json_path.empty())
+        return kExitOk;
+    uint64_t transparent_triangles = 0;
+    for (const SceneObject& o : scene->objects)
+        transparent_triangles += o.transparent ? o.triangle_count : 0;
+    const auto point = [](const Vec3& p) { return nlohmann::json::array({p.x, p.y, p.z}); };
+    const nlohmann::json document = {
+        {"scene", scene->name.empty() ? options.scene : scene->name},
+        {"objects", scene->objects.size()},
+        {"transparent_objects", transparent},
+        {"triangles", scene->triangleCount()},
+        {"transparent_triangles", transparent_triangles},
+        {"dynamic", scene->isDynamic()},
+        {"bounds",
+         {{"min", point(bounds.min)}, {"max", point(bounds.max)}, {"radius", bounds.radius()}}},
+        {"depth_complexity",
+         {{"max", depth.max},
+          {"mean", depth.mean},
+          {"covered_pixels", depth.covered_pixels},
+          {"rays", {depth.width, depth.height}},
+          {"projection",
+           view.camera.projection == Projection::perspective ? "perspective" : "orthographic"},
+          {"histogram", depth.histogram}}}};
+    return writeJsonFile(options.json_path, document);
 }
 
 } // namespace vissort::cli

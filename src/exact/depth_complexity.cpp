@@ -1,11 +1,12 @@
-// Depth complexity by ray casting: every hit of each pixel's ray (the Embree caster of the exact
-// oracle), counted per pixel.
+// Depth complexity by ray casting: the hits of each pixel's ray (the Embree caster of the exact
+// oracle), counted per pixel, those at the same depth once.
 
 #include "vissort/depth_complexity.h"
 
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <vector>
 
 #include "exact/ray_caster.h"
 
@@ -17,9 +18,18 @@ DepthComplexity measureDepthComplexity(PositionsView positions, const ViewProjec
     DepthComplexity result;
     result.width = hits.width;
     result.height = hits.height;
-    result.hits = hits.hitCount();
+    std::vector<double> depths;
     for (std::size_t p = 0; p < hits.pixelCount(); ++p) {
-        const uint64_t n = hits.endHit(p) - hits.firstHit(p);
+        // Hits at the same depth are one surface: a ray through an edge or a corner shared by
+        // several triangles hits each of them (a quad's diagonal counted twice), as it does
+        // faces lying on each other.
+        depths.assign(hits.depths.begin() + long(hits.firstHit(p)),
+                      hits.depths.begin() + long(hits.endHit(p)));
+        std::sort(depths.begin(), depths.end());
+        uint64_t n = 0;
+        for (std::size_t i = 0; i < depths.size(); ++i)
+            n += i == 0 || depths[i] - depths[i - 1] > kSameSurfaceDepth ? 1 : 0;
+        result.hits += n;
         result.covered_pixels += n > 0 ? 1 : 0;
         result.max = std::max(result.max, n);
         if (n >= result.histogram.size())

@@ -278,5 +278,32 @@ TEST(DepthComplexity, EstimateCastsAGridWithTheViewsAspectRatio) {
     }
 }
 
+// A ray through the diagonal that a quad's two triangles share hits both at the same point: one
+// surface, not two. Three quads far larger than the view, their diagonals y = x through the
+// centres of the pixels with i + j = 13 (x = -3.75 + 0.5 i, y = 2.75 - 0.5 j): every pixel
+// crosses 3 surfaces ('info builtin:slabs?layers=40' reported 45, the stack's diagonals).
+TEST(DepthComplexity, SharedEdgesCountOnce) {
+    TrianglePositions positions;
+    for (const double z : {-0.5, 0.0, 0.5})
+        addRectangle(positions, -10.0, 10.0, -10.0, 10.0, z);
+    const ViewProjection view = theView();
+    // The premise: the rays on the diagonal hit both triangles of each quad.
+    const auto pixels = test::bruteForceHits(positions, view);
+    std::size_t on_diagonal = 0;
+    for (uint32_t j = 0; j < kHeight; ++j)
+        for (uint32_t i = 0; i < kWidth; ++i)
+            if (i + j == 13) {
+                ++on_diagonal;
+                EXPECT_EQ(pixels[std::size_t(j) * kWidth + i].size(), 6u)
+                    << "pixel " << i << "," << j;
+            }
+    ASSERT_GT(on_diagonal, 0u);
+    const DepthComplexity result = measureDepthComplexity(positions, view, 1);
+    EXPECT_EQ(result.max, 3u);
+    EXPECT_EQ(result.covered_pixels, kPixels);
+    EXPECT_EQ(result.hits, 3 * kPixels);
+    EXPECT_EQ(result.histogram, (std::vector<uint64_t>{0, 0, 0, kPixels}));
+}
+
 } // namespace
 } // namespace vissort
