@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "vissort/camera.h"
+#include "vissort/camera_path.h"
 #include "vissort/geometry.h"
 #include "vissort/result.h"
 
@@ -35,6 +36,9 @@ struct Scene {
     std::vector<SceneObject> objects;
     TrianglePositions positions; // at t = 0
     std::optional<CameraSpec> camera;
+    /// Key frames for `--path scene` (camera_path.h), times increasing; empty when the scene
+    /// has none.
+    std::vector<CameraKey> camera_path;
     std::shared_ptr<const Animation> animation; // null for static scenes
 
     bool isDynamic() const { return animation != nullptr; }

@@ -75,7 +75,10 @@ void addViewOptions(CLI::App& command, ViewOptions& options) {
                        "Orthographic view along X,Y,Z framing the scene's bounding sphere");
     command.add_option("--size", options.size, "Image size WxH")->capture_default_str();
     command.add_option("--frames", options.frames, "Number of frames")->capture_default_str();
-    command.add_option("--path", options.path, "Camera path: static, orbit or flythrough")
+    command
+        .add_option("--path", options.path,
+                    "Camera path: static, orbit, flythrough, or scene (the scene's own key "
+                    "frames: a JSON scene's camera_path)")
         ->capture_default_str();
 }
 
@@ -92,6 +95,25 @@ std::string resolveView(const ViewOptions& options, const Scene& scene, Resolved
 
     const bool perspective_given =
         !options.eye.empty() || !options.target.empty() || !options.up.empty() || options.fov;
+    if (view.path == CameraPath::scene) {
+        if (scene.camera_path.empty())
+            return "--path scene: the scene has no camera path (a JSON scene's \"camera_path\": "
+                   "docs/scene-format.md)";
+        if (perspective_given || !options.ortho_dir.empty())
+            return "--path scene takes every frame's camera from the scene: it cannot be combined "
+                   "with --eye, --target, --up, --fov or --ortho-dir";
+        // Between two valid key frames the mix can still be unusable (eye on target, up along
+        // the view): say which frame.
+        for (int frame = 0; frame < view.frames; ++frame) {
+            const double time = frame * kFrameInterval;
+            if (auto e = validateCamera(cameraAtTime(scene.camera_path, time)).error; !e.empty()) {
+                std::ostringstream seconds;
+                seconds << time;
+                return "--path scene: frame " + std::to_string(frame) + " (" + seconds.str() +
+                       " s into the scene's camera path): " + e;
+            }
+        }
+    }
     if (!options.ortho_dir.empty()) {
         if (perspective_given)
             return "--ortho-dir cannot be combined with --eye, --target, --up or --fov";

@@ -1,5 +1,7 @@
 #include "vissort/camera_path.h"
 
+#include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <numbers>
 
@@ -19,9 +21,36 @@ double degrees(double d) {
 
 } // namespace
 
-CameraSpec cameraOnPath(const CameraSpec& base, CameraPath path, int frame, const Bounds& bounds) {
+CameraSpec cameraAtTime(std::span<const CameraKey> keys, double time) {
+    assert(!keys.empty());
+    if (time <= keys.front().time)
+        return keys.front().camera;
+    if (time >= keys.back().time)
+        return keys.back().camera;
+    // The first key after time; the one before it is at or before time.
+    const auto after =
+        std::upper_bound(keys.begin(), keys.end(), time,
+                         [](double t, const CameraKey& key) { return t < key.time; });
+    const CameraKey& a = *(after - 1);
+    const CameraKey& b = *after;
+    const double s = (time - a.time) / (b.time - a.time);
+    const auto mix = [s](const Vec3& p, const Vec3& q) {
+        return Vec3{p.x + s * (q.x - p.x), p.y + s * (q.y - p.y), p.z + s * (q.z - p.z)};
+    };
+    CameraSpec camera = a.camera;
+    camera.eye = mix(a.camera.eye, b.camera.eye);
+    camera.target = mix(a.camera.target, b.camera.target);
+    camera.up = mix(a.camera.up, b.camera.up);
+    camera.fov_degrees = a.camera.fov_degrees + s * (b.camera.fov_degrees - a.camera.fov_degrees);
+    return camera;
+}
+
+CameraSpec cameraOnPath(const CameraSpec& base, CameraPath path, int frame, const Bounds& bounds,
+                        std::span<const CameraKey> scene_keys) {
     if (path == CameraPath::fixed)
         return base;
+    if (path == CameraPath::scene)
+        return scene_keys.empty() ? base : cameraAtTime(scene_keys, frame * kFrameInterval);
     CameraSpec camera = base;
     const Vec3 centre = bounds.centre();
     if (path == CameraPath::orbit || camera.projection == Projection::orthographic) {

@@ -26,7 +26,7 @@ void FrameDriver::seek(int frame) {
     }
     if (!has_view_)
         return;
-    camera_ = cameraOnPath(base_, path_, frame, first_bounds_);
+    camera_ = cameraOnPath(base_, path_, frame, first_bounds_, scene_->camera_path);
     view_ = frameCamera(camera_, positions_.bounds(), width_, height_);
 }
 

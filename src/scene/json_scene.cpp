@@ -159,6 +159,32 @@ CameraSpec readCamera(const Json& value, const std::string& where) {
     return camera;
 }
 
+/// Key frames: [{"time": seconds, "eye", "target", "up", "fov"}, ...], perspective cameras at
+/// increasing times from 0 on.
+std::vector<CameraKey> readCameraPath(const Json& value, const std::string& where) {
+    if (!value.is_array() || value.empty())
+        fail(where, "expected a non-empty array of key frames");
+    std::vector<CameraKey> keys;
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        const std::string at = where + "[" + std::to_string(i) + "]";
+        const Json& key = value[i];
+        if (!key.is_object())
+            fail(at, "expected an object");
+        expectKeys(key, at, {"time", "eye", "target", "up", "fov"});
+        if (!key.contains("time"))
+            fail(at, "missing 'time' (seconds)");
+        const double time = readNumber(key["time"], at + ".time");
+        if (time < 0)
+            fail(at + ".time", "must not be negative");
+        if (!keys.empty() && time <= keys.back().time)
+            fail(at + ".time", "must be later than the key frame before it");
+        Json camera = key;
+        camera.erase("time");
+        keys.push_back({time, readCamera(camera, at)});
+    }
+    return keys;
+}
+
 /// A unit cube centred at the origin: 12 triangles, counter-clockwise seen from outside.
 Scene makeBox() {
     // Each face: the outward axis, then a corner order that winds counter-clockwise around it.
@@ -246,12 +272,17 @@ public:
     explicit JsonSceneBuilder(std::filesystem::path folder) : folder_(std::move(folder)) {}
 
     Scene build(const Json& root, const std::string& default_name) {
-        expectKeys(root, "top level", {"name", "description", "camera", "objects"});
+        expectKeys(root, "top level", {"name", "description", "camera", "camera_path", "objects"});
         scene_.name = root.contains("name") ? readString(root["name"], "name") : default_name;
         if (root.contains("description"))
             readString(root["description"], "description");
         if (root.contains("camera"))
             scene_.camera = readCamera(root["camera"], "camera");
+        if (root.contains("camera_path")) {
+            scene_.camera_path = readCameraPath(root["camera_path"], "camera_path");
+            if (!scene_.camera)
+                scene_.camera = scene_.camera_path.front().camera;
+        }
         if (!root.contains("objects"))
             fail("top level", "missing 'objects'");
         const Json& objects = root["objects"];

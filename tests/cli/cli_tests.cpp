@@ -172,6 +172,36 @@ TEST_F(Cli, FramesOnAnOrbit) {
     EXPECT_EQ(doc["stats"], last["stats"]);
 }
 
+// --path scene: the cameras of a JSON scene's key frames, frame f at f / 30 s. Two boxes on the
+// z axis; the path goes round them from +z (box 0 in front) to -z (box 1 in front).
+TEST_F(Cli, ScenePathFollowsTheJsonKeyFrames) {
+    const std::string boxes = R"("objects": [{"shape": "box", "translate": [0, 0, 2]},
+                                             {"shape": "box", "translate": [0, 0, -2]}])";
+    std::ofstream(path("path.json")) << R"({"camera_path": [
+        {"time": 0, "eye": [0, 0, 10], "target": [0, 0, 0]},
+        {"time": 0.5, "eye": [10, 0, 0], "target": [0, 0, 0]},
+        {"time": 1, "eye": [0, 0, -10], "target": [0, 0, 0]}], )"
+                                     << boxes << "}";
+    const json doc =
+        orderJson({path("path.json"), "--size", "64x48", "--frames", "31", "--path", "scene"});
+    ASSERT_EQ(doc["frames"].size(), 31u);
+    EXPECT_EQ(orderOf(doc["frames"][0]), (std::vector<uint32_t>{0, 1}));
+    EXPECT_EQ(orderOf(doc["frames"][30]), (std::vector<uint32_t>{1, 0}));
+
+    expectError({"order", path("path.json"), "--path", "scene", "--eye", "1,2,3"}, kUsage,
+                {"--path scene", "--eye"});
+    std::ofstream(path("nopath.json")) << "{" << boxes << "}";
+    expectError({"order", path("nopath.json"), "--path", "scene"}, kUsage,
+                {"no camera path", "camera_path"});
+    // Straight through the target between two valid keys: frame 15 has its eye on it.
+    std::ofstream(path("through.json")) << R"({"camera_path": [
+        {"time": 0, "eye": [0, 0, 10], "target": [0, 0, 0]},
+        {"time": 1, "eye": [0, 0, -10], "target": [0, 0, 0]}], )"
+                                        << boxes << "}";
+    expectError({"order", path("through.json"), "--path", "scene", "--frames", "20"}, kUsage,
+                {"frame 15", "0.5"});
+}
+
 TEST_F(Cli, FramesPrintOneLineEach) {
     const RunResult r =
         run({"order", kBunnies, "--size", "32x24", "--frames", "3", "--path", "flythrough"});

@@ -85,7 +85,8 @@ CameraSpec orthographicBase() {
 const Bounds kBounds = boxBounds({-0.5, -1, 2}, {2.5, 3, 2});
 
 TEST(CameraPathNames, RoundTrip) {
-    for (CameraPath path : {CameraPath::fixed, CameraPath::orbit, CameraPath::flythrough}) {
+    for (CameraPath path :
+         {CameraPath::fixed, CameraPath::orbit, CameraPath::flythrough, CameraPath::scene}) {
         const Result<CameraPath> parsed = parseCameraPath(cameraPathName(path));
         ASSERT_TRUE(parsed) << cameraPathName(path) << ": " << parsed.error;
         EXPECT_EQ(parsed.error, "");
@@ -94,6 +95,7 @@ TEST(CameraPathNames, RoundTrip) {
     EXPECT_STREQ(cameraPathName(CameraPath::fixed), "static");
     EXPECT_STREQ(cameraPathName(CameraPath::orbit), "orbit");
     EXPECT_STREQ(cameraPathName(CameraPath::flythrough), "flythrough");
+    EXPECT_STREQ(cameraPathName(CameraPath::scene), "scene");
     const Result<CameraPath> path = parseCameraPath("static");
     ASSERT_TRUE(path);
     EXPECT_EQ(*path.value, CameraPath::fixed);
@@ -255,6 +257,35 @@ TEST(CameraPathOrbit, TiltedUpStaysValidAllTheWayRound) {
         // up stays perpendicular to the view direction, as in the base camera.
         EXPECT_NEAR(dot(camera.target - camera.eye, camera.up), 0.0, 1e-9);
     }
+}
+
+CameraSpec lookingFrom(const Vec3& eye, const Vec3& target, double fov) {
+    CameraSpec camera;
+    camera.eye = eye;
+    camera.target = target;
+    camera.fov_degrees = fov;
+    return camera;
+}
+
+// Key frames at 0, 1 and 3 s: before the first the first, after the last the last, between two
+// the straight-line mix by time (worked out by hand), at a key the key itself.
+TEST(CameraPathScene, InterpolatesKeyFramesLinearlyByTime) {
+    const std::vector<CameraKey> keys = {
+        {0.0, lookingFrom({0, 1, 10}, {0, 1, 0}, 40)},
+        {1.0, lookingFrom({4, 1, 10}, {0, 1, -4}, 60)},
+        {3.0, lookingFrom({4, 5, 2}, {0, 1, -4}, 60)},
+    };
+    expectSameCamera(cameraAtTime(keys, -1.0), keys[0].camera, 0.0);
+    expectSameCamera(cameraAtTime(keys, 0.0), keys[0].camera, 0.0);
+    expectSameCamera(cameraAtTime(keys, 1.0), keys[1].camera, 0.0);
+    expectSameCamera(cameraAtTime(keys, 9.0), keys[2].camera, 0.0);
+    expectSameCamera(cameraAtTime(keys, 0.25), lookingFrom({1, 1, 10}, {0, 1, -1}, 45), 1e-12);
+    expectSameCamera(cameraAtTime(keys, 2.5), lookingFrom({4, 4, 4}, {0, 1, -4}, 60), 1e-12);
+    // Along a path: frame f at f / 30 s; with no keys the base camera stays.
+    expectSameCamera(cameraOnPath(perspectiveBase(), CameraPath::scene, 15, kBounds, keys),
+                     lookingFrom({2, 1, 10}, {0, 1, -2}, 50), 1e-12);
+    expectSameCamera(cameraOnPath(perspectiveBase(), CameraPath::scene, 15, kBounds),
+                     perspectiveBase(), 0.0);
 }
 
 } // namespace

@@ -125,6 +125,34 @@ TEST(FrameDriver, DynamicSceneCameraAndViewFollowThePathAndTheFrameBounds) {
     }
 }
 
+// --path scene: every frame's camera from the scene's key frames at frame / 30 s, the base
+// camera ignored.
+TEST(FrameDriver, ScenePathFollowsTheKeyFrames) {
+    Scene scene = load("builtin:bunnies?n=3");
+    CameraSpec start, end;
+    start.eye = {0, 1, 12};
+    start.target = {0, 0, 0};
+    end.eye = {6, 2, 6};
+    end.target = {1, 0, 0};
+    end.fov_degrees = 60;
+    scene.camera_path = {{0.0, start}, {0.5, end}};
+    const CameraSpec base = defaultCamera(scene.positions.bounds());
+    FrameDriver driver(scene, base, CameraPath::scene, kWidth, kHeight);
+    for (int frame : {0, 6, 15, 40}) {
+        driver.seek(frame);
+        const CameraSpec expected = cameraAtTime(scene.camera_path, frame * kFrameInterval);
+        expectCameraEqual(driver.camera(), expected, frame);
+        expectViewEqual(driver.view(),
+                        frameCamera(expected, driver.positions().bounds(), kWidth, kHeight), frame);
+    }
+    driver.seek(15); // exactly the last key
+    EXPECT_EQ(driver.camera().fov_degrees, 60.0);
+    EXPECT_EQ(driver.camera().eye.x, 6.0);
+    driver.seek(6); // 0.2 s: 40% of the way
+    EXPECT_NEAR(driver.camera().eye.x, 2.4, 1e-12);
+    EXPECT_NEAR(driver.camera().fov_degrees, 51.0, 1e-12);
+}
+
 TEST(FrameDriver, OrbitMovesTheCameraAndReframingFollowsTheBounds) {
     // Sanity of the ground truth above: on this scene the orbit camera and the framing really
     // change from frame to frame, so matching them is not trivially the base camera.

@@ -302,6 +302,36 @@ TEST(JsonScene, CamerasAreStored) {
     EXPECT_NEAR(ortho.camera->ortho_direction.z, -1.0, 1e-12);
 }
 
+TEST(JsonScene, CameraPathsAreStored) {
+    TempDir dir;
+    const Scene scene = loadOrFail(dir.write("path.json", R"({"camera_path": [
+        {"time": 0, "eye": [0, 1, 8], "target": [0, 1, 0]},
+        {"time": 2.5, "eye": [3, 1, 8], "target": [0, 0, 0], "up": [0, 0, 1], "fov": 60}],
+        "objects": [{"shape": "box"}]})"));
+    ASSERT_EQ(scene.camera_path.size(), 2u);
+    EXPECT_EQ(scene.camera_path[0].time, 0.0);
+    EXPECT_EQ(scene.camera_path[0].camera.eye.z, 8.0);
+    EXPECT_EQ(scene.camera_path[0].camera.fov_degrees, 45.0); // default
+    EXPECT_EQ(scene.camera_path[1].time, 2.5);
+    EXPECT_EQ(scene.camera_path[1].camera.eye.x, 3.0);
+    EXPECT_EQ(scene.camera_path[1].camera.up.z, 1.0);
+    EXPECT_EQ(scene.camera_path[1].camera.fov_degrees, 60.0);
+    // Without a "camera", the first key frame is the scene's camera.
+    ASSERT_TRUE(scene.camera.has_value());
+    EXPECT_EQ(scene.camera->eye.z, 8.0);
+    EXPECT_EQ(scene.camera->target.y, 1.0);
+    // With one, it stays.
+    const Scene both = loadOrFail(dir.write("both.json", R"({"camera": {"ortho_dir": [0, 0, -1]},
+        "camera_path": [{"time": 0, "eye": [0, 1, 8], "target": [0, 1, 0]}],
+        "objects": [{"shape": "box"}]})"));
+    ASSERT_TRUE(both.camera.has_value());
+    EXPECT_EQ(both.camera->projection, Projection::orthographic);
+    EXPECT_EQ(both.camera_path.size(), 1u);
+    // A scene without a path has none.
+    EXPECT_TRUE(loadOrFail(dir.write("none.json", R"({"objects": [{"shape": "box"}]})"))
+                    .camera_path.empty());
+}
+
 TEST(JsonScene, AnimationMovesAndSpinsObjectsRigidly) {
     const Scene scene = loadOrFail(kScenes + "animated.json");
     ASSERT_EQ(scene.objects.size(), 2u);
@@ -431,6 +461,22 @@ TEST(JsonScene, RejectsStructuralMistakes) {
         {R"({"camera": {"ortho_dir": [0, 0, 0]}, "objects": [{"shape": "box"}]})", "zero"},
         {R"({"objects": [{"shape": "box", "scale": 1e38, "translate": [3e38, 0, 0]}]})",
          "overflow"},
+        {R"({"camera_path": [], "objects": [{"shape": "box"}]})", "non-empty array"},
+        {R"({"camera_path": {"time": 0}, "objects": [{"shape": "box"}]})", "non-empty array"},
+        {R"({"camera_path": [3], "objects": [{"shape": "box"}]})",
+         "camera_path[0]: expected an object"},
+        {R"({"camera_path": [{"eye": [0, 0, 5], "target": [0, 0, 0]}], "objects": [{"shape": "box"}]})",
+         "camera_path[0]: missing 'time'"},
+        {R"({"camera_path": [{"time": -1, "eye": [0, 0, 5], "target": [0, 0, 0]}], "objects": [{"shape": "box"}]})",
+         "camera_path[0].time: must not be negative"},
+        {R"({"camera_path": [{"time": 1, "eye": [0, 0, 5], "target": [0, 0, 0]}, {"time": 1, "eye": [0, 0, 4], "target": [0, 0, 0]}], "objects": [{"shape": "box"}]})",
+         "camera_path[1].time: must be later"},
+        {R"({"camera_path": [{"time": 0, "eye": [0, 0, 5], "target": [0, 0, 5]}], "objects": [{"shape": "box"}]})",
+         "camera_path[0]"},
+        {R"({"camera_path": [{"time": 0, "ortho_dir": [0, 0, -1]}], "objects": [{"shape": "box"}]})",
+         "unknown key 'ortho_dir'"},
+        {R"({"camera_path": [{"time": 0, "eye": [0, 0, 5], "target": [0, 0, 0], "speed": 2}], "objects": [{"shape": "box"}]})",
+         "unknown key 'speed'"},
     };
     int index = 0;
     for (const auto& [text, contains] : cases) {
