@@ -69,6 +69,9 @@ private:
 Result<Scene> makeBunniesScene(const SceneParameters& parameters);
 /// layers (8), seed (1): rows of pipe racks, tanks and steel; depth complexity about 2 layers.
 Result<Scene> makePlantScene(const SceneParameters& parameters);
+/// scale (1), seed (1): a multi-storey process plant with the paper's power plant's proportions
+/// (about 730K opaque and 90K transparent triangles at scale 1) and a walkthrough path.
+Result<Scene> makePowerplantScene(const SceneParameters& parameters);
 /// layers (8), seed (1): a stack of tilted, non-intersecting quads along z.
 Result<Scene> makeSlabsScene(const SceneParameters& parameters);
 /// n (1000), seed (1): random triangles, one per cell of a jittered grid, never intersecting.

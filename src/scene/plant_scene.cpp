@@ -27,12 +27,13 @@
 
 #include "scene/builtin_scenes.h"
 #include "scene/scene_parameters.h"
+#include "scene/solid_shapes.h"
 
 namespace vissort::detail {
 namespace {
 
 using glm::dvec3;
-using Triangle = std::array<dvec3, 3>;
+using Triangle = SolidTriangle;
 
 // Units are metres; y is up, the floor's top is y = 0 and rows stack along -z, away from the
 // default camera. Row k is centred on z = ((layers - 1) / 2 - k) * kRowSpacing.
@@ -114,64 +115,8 @@ constexpr Rgba kBeamColour{0.85f, 0.68f, 0.12f, 1.0f};
 constexpr Rgba kPumpColour{0.15f, 0.35f, 0.55f, 1.0f};
 constexpr Rgba kFloorColour{0.48f, 0.48f, 0.46f, 1.0f};
 
-/// A circle of a tube: points centre + radius (cos a normal + sin a binormal), a = 2 pi j / n.
-/// normal x binormal is the direction the tube runs, which makes its triangles face outwards.
-struct Ring {
-    dvec3 centre;
-    dvec3 normal, binormal;
-    double radius;
-};
-
-/// A closed tube through `rings` (at least two), closed at each end by a fan from a tip: the
-/// first or last ring's centre for a flat cap, a point beyond it for a cone or a dome's pole.
-/// Consecutive rings may share a centre (a flange's face) but not both centre and radius.
-void addTube(std::vector<Triangle>& out, std::span<const Ring> rings, int segments,
-             const dvec3& start_tip, const dvec3& end_tip) {
-    assert(rings.size() >= 2);
-    std::vector<dvec3> previous(segments), current(segments);
-    for (std::size_t i = 0; i < rings.size(); ++i) {
-        const Ring& ring = rings[i];
-        for (int j = 0; j < segments; ++j) {
-            const double angle = 2 * std::numbers::pi * j / segments;
-            current[j] = ring.centre + ring.radius * (std::cos(angle) * ring.normal +
-                                                      std::sin(angle) * ring.binormal);
-        }
-        for (int j = 0; j < segments; ++j) {
-            const int next = (j + 1) % segments;
-            if (i == 0)
-                out.push_back({start_tip, current[next], current[j]});
-            else {
-                out.push_back({previous[j], previous[next], current[next]});
-                out.push_back({previous[j], current[next], current[j]});
-            }
-            if (i + 1 == rings.size())
-                out.push_back({end_tip, current[j], current[next]});
-        }
-        std::swap(previous, current);
-    }
-}
-
-/// An axis-aligned box, 12 triangles facing outwards.
-void addBox(std::vector<Triangle>& out, const dvec3& low, const dvec3& high) {
-    dvec3 corner[8];
-    for (int i = 0; i < 8; ++i)
-        corner[i] = {i & 1 ? high.x : low.x, i & 2 ? high.y : low.y, i & 4 ? high.z : low.z};
-    // Each face counter-clockwise seen from outside: -x, +x, -y, +y, -z, +z.
-    constexpr int kFaces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
-                                  {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
-    for (const auto& face : kFaces) {
-        out.push_back({corner[face[0]], corner[face[1]], corner[face[2]]});
-        out.push_back({corner[face[0]], corner[face[2]], corner[face[3]]});
-    }
-}
-
 /// One part of a row, in the row's own frame (row centred on z = 0, before mirroring).
-struct Part {
-    std::string name;
-    Rgba colour;
-    bool transparent = false;
-    std::vector<Triangle> triangles;
-};
+using Part = SolidPart;
 
 /// A horizontal pipe run along x with its flanges, on a T-support near each end.
 struct PipeRun {

@@ -22,6 +22,11 @@ constexpr BuiltinScene kBuiltinScenes[] = {
      "layers (8, 1..1000), seed (1): rows of pipe racks, tanks, pumps and steel on a floor, "
      "transparent pipes and tanks, opaque steel; max depth complexity about 2 layers",
      detail::makePlantScene},
+    {"powerplant",
+     "scale (1, 0.05..10), seed (1): a three-storey process plant after the paper's power "
+     "plant, about 730K opaque and 90K transparent triangles at scale 1, bays and triangles "
+     "growing with scale; its walkthrough along the aisles and up a stair is --path scene",
+     detail::makePowerplantScene},
     {"slabs",
      "layers (8, 1..100000), seed (1): a stack of 4x4 quads along z, slightly tilted, "
      "non-intersecting, acyclic; depth complexity = layers",

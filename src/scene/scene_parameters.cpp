@@ -1,6 +1,7 @@
 #include "scene/scene_parameters.h"
 
 #include <charconv>
+#include <sstream>
 #include <system_error>
 
 namespace vissort::detail {
@@ -51,6 +52,34 @@ int64_t ParameterReader::integer(const std::string& key, int64_t default_value, 
     }
     if (value < min || value > max) {
         fail("parameter " + key + "=" + *text + " is out of range" + range);
+        return default_value;
+    }
+    return value;
+}
+
+double ParameterReader::number(const std::string& key, double default_value, double min,
+                               double max) {
+    const std::string* text = find(key);
+    if (!text)
+        return default_value;
+    // Digits with at most one point: from_chars alone would also take "1e3", "inf" and "nan".
+    std::size_t digits = 0, points = 0;
+    for (const char c : *text) {
+        digits += c >= '0' && c <= '9';
+        points += c == '.';
+    }
+    double value = 0;
+    const char* end = text->data() + text->size();
+    const auto [stop, code] = std::from_chars(text->data(), end, value);
+    if (digits == 0 || points > 1 || digits + points != text->size() || code != std::errc{} ||
+        stop != end) {
+        fail("parameter " + key + "='" + *text + "' is not a decimal number");
+        return default_value;
+    }
+    if (value < min || value > max) {
+        std::ostringstream range;
+        range << " (allowed " << min << " to " << max << ")";
+        fail("parameter " + key + "=" + *text + " is out of range" + range.str());
         return default_value;
     }
     return value;

@@ -1,6 +1,7 @@
 #pragma once
 // Reads the key=value parameters of a built-in scene (`builtin:NAME?key=value&...`): decimal
-// integers with a range, and 64-bit seeds. Errors name the scene, the key and the problem.
+// integers and numbers with a range, and 64-bit seeds. Errors name the scene, the key and the
+// problem.
 
 #include <cstdint>
 #include <set>
@@ -20,6 +21,10 @@ public:
     /// The value of `key` (default_value when absent), a decimal integer in [min, max].
     /// On a problem, records it and returns default_value.
     int64_t integer(const std::string& key, int64_t default_value, int64_t min, int64_t max);
+    /// The value of `key` (default_value when absent), a decimal number in [min, max] written
+    /// with digits and at most one point ("0.25", "3", "2."): no sign, exponent or spaces.
+    /// On a problem, records it and returns default_value.
+    double number(const std::string& key, double default_value, double min, double max);
     /// The value of `key` (default_value when absent), any decimal integer in [0, 2^64).
     uint64_t seed(const std::string& key, uint64_t default_value);
 

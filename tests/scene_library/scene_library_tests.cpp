@@ -18,7 +18,7 @@ TEST(SceneLibrary, ListsTheFourScenesWithTheirParameters) {
     std::set<std::string> names;
     for (const BuiltinSceneInfo& info : scenes)
         names.insert(info.name);
-    EXPECT_EQ(names, (std::set<std::string>{"bunnies", "plant", "slabs", "soup"}));
+    EXPECT_EQ(names, (std::set<std::string>{"bunnies", "plant", "powerplant", "slabs", "soup"}));
     for (const BuiltinSceneInfo& info : scenes) {
         EXPECT_TRUE(contains(info.summary, "seed (1)"));
         EXPECT_EQ(info.summary.find('\n'), std::string::npos);
@@ -48,7 +48,7 @@ TEST(SceneLibrary, UnknownNamesAreErrorsListingTheKnownOnes) {
     const Result<Scene> scene = makeBuiltinScene("teapot", {});
     EXPECT_FALSE(scene);
     EXPECT_TRUE(contains(scene.error, "'builtin:teapot'"));
-    EXPECT_TRUE(contains(scene.error, "bunnies, plant, slabs, soup"));
+    EXPECT_TRUE(contains(scene.error, "bunnies, plant, powerplant, slabs, soup"));
 }
 
 TEST(SceneLibrary, ParameterErrorsNameTheSceneAndTheKey) {

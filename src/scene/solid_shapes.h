@@ -1,0 +1,65 @@
+#pragma once
+// Closed, outward-wound triangle meshes of the shapes the CAD-like built-in scenes are made of
+// (plant, powerplant): tubes through rings (pipes, elbows, flanges, tanks, domes), boxes, slanted
+// prisms and window frames. Every shape is watertight on its own: each edge has two triangles,
+// wound consistently, facing outwards.
+
+#include <array>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "vissort/scene.h"
+
+namespace vissort::detail {
+
+using SolidTriangle = std::array<glm::dvec3, 3>;
+
+/// A circle of a tube: points centre + radius (cos a normal + sin a binormal), a = 2 pi j / n.
+/// normal x binormal is the direction the tube runs, which makes its triangles face outwards.
+struct Ring {
+    glm::dvec3 centre;
+    glm::dvec3 normal, binormal;
+    double radius;
+};
+
+/// A closed tube through `rings` (at least two), closed at each end by a fan from a tip: the
+/// first or last ring's centre for a flat cap, a point beyond it for a cone or a dome's pole.
+/// Consecutive rings may share a centre (a flange's face) but not both centre and radius.
+void addTube(std::vector<SolidTriangle>& out, std::span<const Ring> rings, int segments,
+             const glm::dvec3& start_tip, const glm::dvec3& end_tip);
+
+/// An axis-aligned box, 12 triangles facing outwards. low < high on every axis.
+void addBox(std::vector<SolidTriangle>& out, const glm::dvec3& low, const glm::dvec3& high);
+
+/// A prism: the quadrilateral `outline` (counter-clockwise seen from +`axis`) swept along `axis`
+/// by `length`, 12 triangles facing outwards. A stair's stringer is a parallelogram swept
+/// sideways.
+void addPrism(std::vector<SolidTriangle>& out, const std::array<glm::dvec3, 4>& outline,
+              const glm::dvec3& axis, double length);
+
+/// A rectangular frame around a rectangular hole, as one closed ring-shaped solid (32 triangles):
+/// the outer rectangle origin + [0, a_length] a + [0, b_length] b, the hole [a0, a1] x [b0, b1]
+/// inside it, `thickness` along a x b (centred on the plane). a and b are unit and orthogonal.
+struct FrameShape {
+    glm::dvec3 origin, a, b;
+    double a_length = 0, b_length = 0;
+    double hole_a0 = 0, hole_a1 = 0, hole_b0 = 0, hole_b1 = 0;
+    double thickness = 0;
+};
+void addFrame(std::vector<SolidTriangle>& out, const FrameShape& frame);
+
+/// One object of a generated scene before it is appended: a name, a material and its solids.
+struct SolidPart {
+    std::string name;
+    Rgba colour;
+    bool transparent = false;
+    std::vector<SolidTriangle> triangles;
+};
+
+/// Appends a part to a scene as one object, its corners rounded to float.
+void appendPart(Scene& scene, const SolidPart& part);
+
+} // namespace vissort::detail
