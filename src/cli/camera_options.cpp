@@ -78,7 +78,7 @@ void addViewOptions(CLI::App& command, ViewOptions& options) {
     command
         .add_option("--path", options.path,
                     "Camera path: static, orbit, flythrough, or scene (the scene's own key "
-                    "frames: a JSON scene's camera_path)")
+                    "frames: builtin:powerplant's walkthrough, a JSON scene's camera_path)")
         ->capture_default_str();
 }
 

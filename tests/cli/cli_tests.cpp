@@ -202,6 +202,19 @@ TEST_F(Cli, ScenePathFollowsTheJsonKeyFrames) {
                 {"frame 15", "0.5"});
 }
 
+// --path scene on a built-in scene with its own walkthrough: every frame a complete order, and
+// the order changes as the camera walks.
+TEST_F(Cli, ScenePathFollowsThePowerplantsWalkthrough) {
+    const json doc = orderJson({"builtin:powerplant?scale=0.05", "--size", "48x36", "--frames",
+                                "60", "--path", "scene"});
+    ASSERT_EQ(doc["frames"].size(), 60u);
+    const std::size_t objects = orderOf(doc["frames"][0]).size();
+    EXPECT_GT(objects, 300u);
+    for (const json& frame : doc["frames"])
+        EXPECT_TRUE(isPermutation(orderOf(frame), objects));
+    EXPECT_NE(orderOf(doc["frames"][0]), orderOf(doc["frames"][59]));
+}
+
 TEST_F(Cli, FramesPrintOneLineEach) {
     const RunResult r =
         run({"order", kBunnies, "--size", "32x24", "--frames", "3", "--path", "flythrough"});
