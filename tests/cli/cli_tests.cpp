@@ -205,8 +205,8 @@ TEST_F(Cli, ScenePathFollowsTheJsonKeyFrames) {
 // --path scene on a built-in scene with its own walkthrough: every frame a complete order, and
 // the order changes as the camera walks.
 TEST_F(Cli, ScenePathFollowsThePowerplantsWalkthrough) {
-    const json doc = orderJson({"builtin:powerplant?scale=0.05", "--size", "48x36", "--frames",
-                                "60", "--path", "scene"});
+    const json doc = orderJson(
+        {"builtin:powerplant?scale=0.05", "--size", "48x36", "--frames", "60", "--path", "scene"});
     ASSERT_EQ(doc["frames"].size(), 60u);
     const std::size_t objects = orderOf(doc["frames"][0]).size();
     EXPECT_GT(objects, 300u);
