@@ -97,6 +97,17 @@ void sceneParameters(const uint8_t* data, std::size_t size) {
                 return;
         }
     }
+    // The power plant is 820K triangles at its default scale (seconds under the sanitizers) and
+    // up to 8 million at scale=10: only scales up to 0.1 are built (120K triangles, the least
+    // it has). Larger scales are slow, not wrong, and covered by the scene's tests.
+    if (specification.find("powerplant") != std::string::npos) {
+        const std::size_t at = specification.find("scale=");
+        if (at == std::string::npos)
+            return;
+        const double scale = std::strtod(specification.c_str() + at + 6, nullptr);
+        if (!(scale <= 0.1))
+            return;
+    }
     checkResult(loadScene(specification), "");
 }
 

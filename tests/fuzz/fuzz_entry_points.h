@@ -16,7 +16,8 @@ namespace vissort::fuzz {
 void jsonScene(const uint8_t* data, std::size_t size);
 
 /// "builtin:" + the bytes as a scene specification through loadScene: the query parser and
-/// every scene's parameter reader. Inputs asking for large scenes (n or layers above 64) are
+/// every scene's parameter reader. Inputs asking for large scenes (n or layers above 64, the
+/// power plant without a scale or above scale=0.1) are
 /// skipped: generating them is slow, not wrong, and their ranges have unit tests.
 void sceneParameters(const uint8_t* data, std::size_t size);
 
