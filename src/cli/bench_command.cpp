@@ -8,22 +8,25 @@ namespace vissort::cli {
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options) {
     CLI::App* command = app.add_subcommand(
         "bench",
-        "Measure the oracles, the transparency methods or the collision methods (figures for "
-        "docs/benchmarks.md)");
-    command->add_option("what", options.what, "What to measure: oracle, transparency or collision")
+        "Measure the oracles, the transparency methods, the collision methods or the paper's "
+        "figures (figures for docs/benchmarks.md)");
+    command
+        ->add_option("what", options.what,
+                     "What to measure: oracle, transparency, collision or paper (the paper's "
+                     "figures 5 and 6, files under --out)")
         ->required();
     command->add_option("--repeat", options.repeat, "Runs per synthetic case (best is kept)")
         ->capture_default_str();
     command->add_option("--frames", options.frames,
                         "Frames of the real workloads (oracle: 11), of each method and scene "
-                        "(transparency: 3) or of each bunny count (collision: 30, after one "
-                        "untimed); the first is not timed");
-    command
-        ->add_option("--gl-frames", options.gl_frames,
-                     "Frames of the real workloads through the gl oracle (at most --frames)")
-        ->capture_default_str();
-    command->add_option("--size", options.size, "transparency: image size WxH")
-        ->capture_default_str();
+                        "(transparency: 3), of each bunny count (collision: 30, after one "
+                        "untimed) or of each path (paper: 60, quick 6); the first is not timed");
+    command->add_option("--gl-frames", options.gl_frames,
+                        "Frames through the gl oracle, at most --frames (oracle: 5, paper: 3, "
+                        "quick 2)");
+    command->add_option("--size", options.size,
+                        "Image size WxH (transparency: 1024x1024; paper: 1600x1200, the "
+                        "paper's, quick 320x240)");
     command
         ->add_option("--level", options.level,
                      "transparency: vissort's level, object, triangle or multistage")
@@ -38,6 +41,13 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options) {
         ->capture_default_str();
     command->add_option("--plot", options.plot_path, "collision: write ms against N as a PNG");
     command->add_option("--json", options.json_path, "Write the figures as JSON");
+    command
+        ->add_option("--out", options.out_dir,
+                     "paper: the folder for paper.json, paper.csv, figure6.csv and the plots")
+        ->capture_default_str();
+    command->add_flag("--quick", options.quick,
+                      "paper: a small power plant, 320x240, 6 frames a path, figure 6 at two "
+                      "depths (under two minutes)");
     return command;
 }
 
@@ -53,8 +63,10 @@ int runBench(const BenchOptions& options) {
     }
     if (options.what == "collision")
         return runCollisionBench(options);
+    if (options.what == "paper")
+        return runPaperBench(options);
     return fail(kExitUsage, "bench: unknown benchmark '" + options.what +
-                                "' (try: oracle, transparency, collision)");
+                                "' (try: oracle, transparency, collision, paper)");
 }
 
 } // namespace vissort::cli

@@ -17,7 +17,7 @@ int runOracleBench(const BenchOptions& options) {
     bench::OracleBenchSettings settings;
     settings.frames = options.frames.value_or(11);
     settings.repeat = options.repeat;
-    settings.gl_frames = options.gl_frames;
+    settings.gl_frames = options.gl_frames.value_or(5);
     settings.oracle_options = environmentOracleOptions();
     if (settings.repeat < 1 || settings.repeat > 100)
         return fail(kExitUsage, "--repeat must be 1..100");

@@ -25,7 +25,7 @@ int runTransparencyBench(const BenchOptions& options) {
         return fail(kExitUsage, "--frames must be 2..100");
     settings.frames = frames;
     uint32_t width = 0, height = 0;
-    if (auto error = parseSize(options.size, width, height); !error.empty())
+    if (auto error = parseSize(options.size.value_or("1024x1024"), width, height); !error.empty())
         return fail(kExitUsage, error);
     settings.width = width;
     settings.height = height;

@@ -32,19 +32,22 @@ struct BenchOptions {
     std::string what;
     int repeat = 3;
     std::optional<int> frames; // each benchmark has its own default
-    int gl_frames = 5;
-    std::string size = "1024x1024";
+    std::optional<int> gl_frames;   // each benchmark has its own default
+    std::optional<std::string> size; // each benchmark has its own default
     std::string level = "multistage";
     std::string depths = "2,4,8,16,32,64";
     std::string counts = "18,36,72,144";
     std::string plot_path;
     std::string json_path;
+    std::string out_dir = "paper-bench"; // paper: where its files go
+    bool quick = false;                  // paper: small scenes, few frames
 };
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options);
 int runBench(const BenchOptions& options);
 int runOracleBench(const BenchOptions& options);
 int runTransparencyBench(const BenchOptions& options);
 int runCollisionBench(const BenchOptions& options);
+int runPaperBench(const BenchOptions& options);
 
 struct CollideOptions {
     std::string scene;

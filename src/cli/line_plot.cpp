@@ -11,9 +11,11 @@ constexpr uint8_t kInk[3] = {30, 30, 30};
 constexpr uint8_t kGrid[3] = {200, 200, 200};
 constexpr uint8_t kFaintGrid[3] = {235, 235, 235};
 // Distinct on white, in series order.
-constexpr uint8_t kColours[][3] = {{214, 39, 40},  {31, 119, 180},  {44, 160, 44},
-                                   {255, 127, 14}, {148, 103, 189}, {140, 86, 75}};
-constexpr uint32_t kLeft = 80, kRight = 170, kTop = 60, kBottom = 60;
+constexpr uint8_t kColours[][3] = {
+    {214, 39, 40}, {31, 119, 180},  {44, 160, 44},   {255, 127, 14}, {148, 103, 189},
+    {140, 86, 75}, {227, 119, 194}, {127, 127, 127}, {188, 189, 34}, {23, 190, 207}};
+constexpr uint32_t kLeft = 80, kMinRight = 170, kTop = 60, kBottom = 60;
+constexpr uint32_t kGlyphWidth = 11; // drawText's advance, with room to spare
 
 void setPixel(Strip& s, int x, int y, const uint8_t c[3]) {
     if (x < 0 || y < 0 || x >= int(s.width) || y >= int(s.height))
@@ -59,6 +61,11 @@ std::string number(double v) {
 Strip plotLines(const std::vector<PlotSeries>& series, const std::string& title,
                 const std::string& x_label, const std::string& y_label, uint32_t width,
                 uint32_t height) {
+    std::size_t longest = 0;
+    for (const PlotSeries& line : series)
+        longest = std::max(longest, line.name.size());
+    const uint32_t kRight =
+        std::clamp(uint32_t(60 + kGlyphWidth * longest), kMinRight, std::max(kMinRight, width / 2));
     Strip s;
     s.width = width;
     s.height = height;
@@ -109,15 +116,27 @@ Strip plotLines(const std::vector<PlotSeries>& series, const std::string& title,
     for (std::size_t i = 0; i < series.size(); ++i) {
         const uint8_t* colour = kColours[i % std::size(kColours)];
         const PlotSeries& line = series[i];
-        for (std::size_t k = 0; k + 1 < line.x.size(); ++k)
-            drawLine(s, px(line.x[k]), py(line.y[k]), px(line.x[k + 1]), py(line.y[k + 1]), colour,
-                     3);
-        for (std::size_t k = 0; k < line.x.size(); ++k)
+        for (std::size_t k = 0; k + 1 < line.x.size(); ++k) {
+            const double x0 = px(line.x[k]), y0 = py(line.y[k]);
+            const double x1 = px(line.x[k + 1]), y1 = py(line.y[k + 1]);
+            if (!line.dashed) {
+                drawLine(s, x0, y0, x1, y1, colour, 3);
+                continue;
+            }
+            // Dashes of 10 pixels with gaps of 6.
+            const double length = std::hypot(x1 - x0, y1 - y0);
+            for (double at = 0; at < length; at += 16) {
+                const double a = at / length, b = std::min(at + 10, length) / length;
+                drawLine(s, x0 + (x1 - x0) * a, y0 + (y1 - y0) * a, x0 + (x1 - x0) * b,
+                         y0 + (y1 - y0) * b, colour, 2);
+            }
+        }
+        for (std::size_t k = 0; k < line.x.size() && !line.dashed; ++k)
             drawLine(s, px(line.x[k]) - 3, py(line.y[k]), px(line.x[k]) + 3, py(line.y[k]), colour,
                      7);
         const uint32_t legend_y = kTop + 10 + uint32_t(i) * 24;
         drawLine(s, width - kRight + 15, legend_y + 6, width - kRight + 40, legend_y + 6, colour,
-                 3);
+                 line.dashed ? 2 : 3);
         drawText(s, width - kRight + 48, legend_y, line.name, kInk);
     }
     return s;

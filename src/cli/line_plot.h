@@ -11,11 +11,13 @@ namespace vissort::cli {
 struct PlotSeries {
     std::string name;
     std::vector<double> x, y; // same length; points joined in order
+    bool dashed = false;      // a reference (a value reported elsewhere): dashed, no markers
 };
 
 /// A width x height chart of the series, x linear from 0 to the largest x, y logarithmic over
 /// the powers of ten around the values (which must be positive): peers a thousand times apart
-/// stay readable. With the title on top, axis labels, tick values and a legend.
+/// stay readable. With the title on top, axis labels, tick values and a legend as wide as the
+/// longest name needs (up to half the width).
 Strip plotLines(const std::vector<PlotSeries>& series, const std::string& title,
                 const std::string& x_label, const std::string& y_label, uint32_t width,
                 uint32_t height);

@@ -1,0 +1,195 @@
+// `vissort bench paper`'s measurements (paper_bench.h).
+
+#include "paper_bench.h"
+
+#include <algorithm>
+
+#include "support/measurement.h"
+#include "vissort/collision.h"
+#include "vissort/frame_driver.h"
+#include "vissort/oracles.h"
+#include "vissort/scene.h"
+#if VISSORT_WITH_GL
+#include "vissort/gl_context.h"
+#include "vissort/transparency_renderer.h"
+#endif
+
+namespace vissort::bench {
+namespace {
+
+int framesOf(const PaperBenchSettings& settings) {
+    return settings.frames > 0 ? settings.frames : settings.quick ? 6 : 60;
+}
+
+int glFramesOf(const PaperBenchSettings& settings) {
+    const int gl_frames = settings.gl_frames > 0 ? settings.gl_frames : settings.quick ? 2 : 3;
+    return std::min(gl_frames, framesOf(settings));
+}
+
+#if VISSORT_WITH_GL
+TransparencyBenchSettings figure6Settings(const PaperBenchSettings& settings) {
+    TransparencyBenchSettings figure6;
+    figure6.context = settings.context;
+    if (settings.quick) {
+        figure6.width = figure6.height = 256;
+        figure6.depths = {2, 8};
+        figure6.frames = 2;
+    }
+    return figure6;
+}
+#endif
+
+// Measures one path frame by frame into path.frames.
+Status measurePath(const PaperBenchSettings& settings, PaperPath& path,
+                   const std::function<void(int frame)>& on_frame) {
+    Result<Scene> loaded = loadScene(path.specification);
+    if (!loaded)
+        return Status::failure(loaded.error);
+    const Scene& scene = *loaded.value;
+    const std::vector<PrimitiveRange> objects = scene.objectPrimitives();
+    const auto triangles = static_cast<uint32_t>(scene.triangleCount());
+    path.triangles = triangles;
+    path.primitives = path.level == OrderLevel::object ? objects.size() : triangles;
+    const CameraSpec base = scene.camera.value_or(
+        defaultCamera(scene.positions.bounds(), double(path.width) / path.height));
+    FrameDriver driver(scene, base, path.path, path.width, path.height);
+
+    Result<std::unique_ptr<GeometryOracle>> cpu = makeOracle(OracleKind::cpu);
+    if (!cpu)
+        return Status::failure(cpu.error);
+    SceneOrderer cpu_orderer(objects, triangles, path.level, **cpu.value);
+    std::unique_ptr<GeometryOracle> gl;
+    std::unique_ptr<SceneOrderer> gl_orderer;
+#if VISSORT_WITH_GL
+    std::unique_ptr<TransparencyRenderer> renderer;
+    if (settings.context) {
+        Result<std::unique_ptr<GeometryOracle>> made = makeOracle(OracleKind::gl);
+        if (!made)
+            return Status::failure(made.error);
+        gl = std::move(*made.value);
+        gl_orderer = std::make_unique<SceneOrderer>(objects, triangles, path.level, *gl);
+        RenderSettings render_settings;
+        render_settings.method = BlendMethod::vissort;
+        render_settings.level = path.level;
+        renderer = std::make_unique<TransparencyRenderer>(settings.context, scene, render_settings);
+    }
+#endif
+    std::unique_ptr<CollisionDetector> collider;
+    if (scene.isDynamic())
+        collider = std::make_unique<CollisionDetector>(objects);
+
+    FrameOrder order;
+    CollisionResult collisions;
+    const int frames = framesOf(settings), gl_frames = glFramesOf(settings);
+    for (int f = 0; f < frames; ++f) {
+        driver.seek(f);
+        PaperFrame frame;
+        frame.frame = f;
+        cpu_orderer.orderFrame(driver.positions(), driver.view(), order);
+        frame.cpu_queries = order.stats.queries;
+        frame.cpu_order_ms = order.milliseconds;
+        if (gl_orderer && f < gl_frames) {
+            gl_orderer->orderFrame(driver.positions(), driver.view(), order);
+            frame.gl_queries = order.stats.queries;
+            frame.gl_order_ms = order.milliseconds;
+        }
+#if VISSORT_WITH_GL
+        if (renderer) {
+            RenderStats stats;
+            renderer->render(driver.positions(), driver.view(), stats);
+            frame.render_ms = stats.total_ms;
+        }
+#endif
+        if (collider) {
+            collider->collide(driver.positions(), collisions);
+            frame.collide_ms = collisions.stats.total_ms;
+        }
+        path.frames.push_back(frame);
+        if (on_frame)
+            on_frame(f);
+    }
+    return {};
+}
+
+} // namespace
+
+std::vector<PaperPath> paperPaths(const PaperBenchSettings& settings) {
+    const uint32_t width = settings.width > 0 ? settings.width : settings.quick ? 320 : 1600;
+    const uint32_t height = settings.height > 0 ? settings.height : settings.quick ? 240 : 1200;
+    // Section 5.4: the power plant at 7 to 10 frames per second as the user moves around; the
+    // bunnies at 8 to 10 with transparency, all their collisions in 40 ms.
+    PaperPath plant;
+    plant.name = "plant-walkthrough";
+    plant.figure = "5 left";
+    plant.specification = settings.quick ? "builtin:powerplant?scale=0.05" : "builtin:powerplant";
+    plant.path = CameraPath::scene;
+    plant.level = OrderLevel::object;
+    plant.reported = {{"paper, 7 to 10 fps", 100, 1000.0 / 7}};
+    PaperPath still;
+    still.name = "bunnies-static";
+    still.figure = "5 right";
+    still.specification = "builtin:bunnies";
+    still.path = CameraPath::fixed;
+    still.level = OrderLevel::multistage;
+    still.reported = {{"paper, 8 to 10 fps", 100, 125}, {"paper, collisions", 40, 40}};
+    PaperPath moving = still;
+    moving.name = "bunnies-moving";
+    moving.path = CameraPath::orbit;
+    std::vector<PaperPath> paths = {plant, still, moving};
+    for (PaperPath& path : paths) {
+        path.width = width;
+        path.height = height;
+    }
+    return paths;
+}
+
+Result<PaperBenchResult> runPaperBench(const PaperBenchSettings& settings,
+                                       const PaperProgress& progress) {
+    using Failed = Result<PaperBenchResult>;
+    PaperBenchResult result;
+    result.paths = paperPaths(settings);
+    int total = framesOf(settings) * static_cast<int>(result.paths.size()), done = 0;
+#if VISSORT_WITH_GL
+    result.figure6_settings = figure6Settings(settings);
+    if (settings.context)
+        total +=
+            static_cast<int>(transparencyFamilies().size() * result.figure6_settings.depths.size());
+#endif
+    for (PaperPath& path : result.paths) {
+        const Status measured = measurePath(settings, path, [&](int frame) {
+            if (progress)
+                progress(path.name + ", frame " + std::to_string(frame + 1), ++done, total);
+        });
+        if (!measured)
+            return Failed::failure(measured.error);
+    }
+#if VISSORT_WITH_GL
+    if (settings.context) {
+        Result<std::vector<TransparencyBenchRow>> rows =
+            runTransparencyBench(result.figure6_settings, {}, [&](const TransparencyBenchRow& row) {
+                if (progress)
+                    progress("figure 6, " + row.family + " D=" + std::to_string(row.depth), ++done,
+                             total);
+            });
+        if (!rows)
+            return Failed::failure(rows.error);
+        result.figure6 = std::move(*rows.value);
+    }
+#endif
+    return Result<PaperBenchResult>{std::move(result), {}};
+}
+
+double queriesPerPrimitive(const PaperPath& path, bool gl) {
+    std::vector<double> ratios;
+    for (const PaperFrame& frame : path.frames) {
+        if (frame.frame == 0 || path.primitives == 0)
+            continue;
+        if (!gl)
+            ratios.push_back(double(frame.cpu_queries) / double(path.primitives));
+        else if (frame.gl_queries)
+            ratios.push_back(double(*frame.gl_queries) / double(path.primitives));
+    }
+    return median(ratios);
+}
+
+} // namespace vissort::bench

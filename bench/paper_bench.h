@@ -1,0 +1,95 @@
+#pragma once
+// `vissort bench paper`: the figures of Govindaraju, Henson, Lin and Manocha, "Interactive
+// Visibility Ordering and Transparency Computations among Geometric Primitives in Complex
+// Environments" (I3D 2005), section 5.4, measured on this machine in one run:
+//  - figure 5 (left): the power plant walkthrough (builtin:powerplant, its own camera path),
+//    ordering queries and milliseconds per frame through the cpu and gl oracles, and the frame
+//    time with transparency (vissort's renderer: its ordering and blending);
+//  - figure 5 (right): the deforming bunnies with a stationary and with a moving viewer: the same,
+//    and the collision time per frame (vissort's detector);
+//  - figure 6: frame time against depth complexity, vissort against depth peeling and the other
+//    methods (transparency_bench.h);
+//  - queries per primitive per coherent frame on each path (the paper's "almost linear" claim).
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vissort/camera_path.h"
+#include "vissort/result.h"
+#include "vissort/scene_orderer.h"
+#if VISSORT_WITH_GL
+#include "transparency_bench.h"
+#endif
+
+namespace vissort {
+class GlContext;
+}
+
+namespace vissort::bench {
+
+/// What the paper reports for its paths (GeForce 6800, 1600x1200), drawn on the plots.
+struct PaperReported {
+    const char* what;
+    double low_ms, high_ms; // a range of frame times; equal when one value is reported
+};
+
+/// One frame of one path: its ordering through each oracle, its render, its collisions.
+struct PaperFrame {
+    int frame = 0;
+    uint64_t cpu_queries = 0;
+    double cpu_order_ms = 0;
+    std::optional<uint64_t> gl_queries; // the first gl_frames frames only
+    std::optional<double> gl_order_ms;
+    std::optional<double> render_ms;  // vissort's transparency renderer, whole frame (OpenGL)
+    std::optional<double> collide_ms; // vissort's collision detector (dynamic scenes)
+};
+
+/// A scene walked frame by frame along a camera path.
+struct PaperPath {
+    std::string name;          // "plant-walkthrough", "bunnies-static", "bunnies-moving"
+    std::string figure;        // "5 left", "5 right"
+    std::string specification; // the scene
+    CameraPath path = CameraPath::fixed;
+    OrderLevel level = OrderLevel::object;
+    uint32_t width = 0, height = 0;
+    uint64_t primitives = 0; // of the ordering level (objects, or triangles)
+    uint64_t triangles = 0;
+    std::vector<PaperReported> reported;
+    std::vector<PaperFrame> frames;
+};
+
+struct PaperBenchSettings {
+    std::shared_ptr<GlContext> context; // null: no gl oracle, no rendering, no figure 6
+    bool quick = false;                 // small scenes and images, few frames: under two minutes
+    int frames = 0;                     // per path; 0: 60 (quick: 6)
+    int gl_frames = 0;                  // of those through the gl oracle; 0: 3 (quick: 2)
+    uint32_t width = 0, height = 0;     // 0: 1600x1200, the paper's (quick: 320x240)
+};
+
+struct PaperBenchResult {
+    std::vector<PaperPath> paths;
+#if VISSORT_WITH_GL
+    std::vector<TransparencyBenchRow> figure6;
+    TransparencyBenchSettings figure6_settings;
+#endif
+};
+
+/// Progress: what is being measured, and steps done of the run's total.
+using PaperProgress = std::function<void(const std::string& what, int done, int total)>;
+
+/// The paths measured, before any is run (their frames empty).
+std::vector<PaperPath> paperPaths(const PaperBenchSettings& settings);
+
+/// Measures every path frame by frame (each oracle's orderer starting from its own previous
+/// frame), then figure 6 when there is a context. A one-line message when a scene cannot be made.
+Result<PaperBenchResult> runPaperBench(const PaperBenchSettings& settings,
+                                       const PaperProgress& progress = {});
+
+/// Median over the coherent frames (every frame but the first) of queries / primitives.
+double queriesPerPrimitive(const PaperPath& path, bool gl = false);
+
+} // namespace vissort::bench

@@ -1,0 +1,430 @@
+// `vissort bench paper`: options, progress, then bench/paper_bench.h's figures as tables, and
+// as files under --out: paper.json, paper.csv, figure6.csv and PNG plots with the paper's
+// reported values marked.
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.h"
+#include "cli/json_output.h"
+#include "cli/line_plot.h"
+#include "paper_bench.h"
+#include "support/measurement.h"
+#include "vissort/image.h"
+#if VISSORT_WITH_GL
+#include "vissort/gl_context.h"
+#endif
+
+namespace vissort::cli {
+namespace {
+
+using bench::PaperFrame;
+using bench::PaperPath;
+
+// A bar redrawn in place on a terminal; a plain line a step otherwise (logs, pipes).
+class ProgressBar {
+public:
+    ProgressBar() : terminal_(::isatty(STDERR_FILENO) == 1) {}
+    ~ProgressBar() {
+        if (terminal_ && drawn_)
+            std::cerr << '\n';
+    }
+    void operator()(const std::string& what, int done, int total) {
+        if (!terminal_) {
+            std::cerr << "bench paper: " << done << '/' << total << ' ' << what << std::endl;
+            return;
+        }
+        constexpr int kWidth = 30;
+        const int filled = total > 0 ? done * kWidth / total : kWidth;
+        std::cerr << "\r[" << std::string(std::size_t(filled), '#')
+                  << std::string(std::size_t(kWidth - filled), '.') << "] " << done << '/' << total
+                  << ' ' << std::left << std::setw(40) << what.substr(0, 40) << std::right
+                  << std::flush;
+        drawn_ = true;
+    }
+
+private:
+    bool terminal_;
+    bool drawn_ = false;
+};
+
+// Median over the coherent frames (all but the first) of a per-frame value, when any frame has it.
+template <class Get> std::optional<double> coherentMedian(const PaperPath& path, Get get) {
+    std::vector<double> values;
+    for (const PaperFrame& frame : path.frames)
+        if (frame.frame > 0)
+            if (const std::optional<double> value = get(frame))
+                values.push_back(*value);
+    if (values.empty())
+        return std::nullopt;
+    return bench::median(values);
+}
+
+struct PathSummary {
+    std::optional<double> cpu_ms, gl_ms, render_ms, collide_ms, cpu_queries, gl_queries;
+};
+
+PathSummary summarize(const PaperPath& path) {
+    PathSummary s;
+    s.cpu_ms =
+        coherentMedian(path, [](const PaperFrame& f) { return std::optional(f.cpu_order_ms); });
+    s.gl_ms = coherentMedian(path, [](const PaperFrame& f) { return f.gl_order_ms; });
+    s.render_ms = coherentMedian(path, [](const PaperFrame& f) { return f.render_ms; });
+    s.collide_ms = coherentMedian(path, [](const PaperFrame& f) { return f.collide_ms; });
+    s.cpu_queries = coherentMedian(
+        path, [](const PaperFrame& f) { return std::optional(double(f.cpu_queries)); });
+    s.gl_queries = coherentMedian(path, [](const PaperFrame& f) {
+        return f.gl_queries ? std::optional(double(*f.gl_queries)) : std::nullopt;
+    });
+    return s;
+}
+
+nlohmann::json optionalJson(const std::optional<double>& value) {
+    return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
+}
+
+std::string cell(const std::optional<double>& value) {
+    if (!value)
+        return "";
+    std::ostringstream text;
+    text << *value;
+    return text.str();
+}
+
+std::string shown(const std::optional<double>& value, int precision = 1) {
+    if (!value)
+        return "-";
+    std::ostringstream text;
+    text << std::fixed << std::setprecision(precision) << *value;
+    return text.str();
+}
+
+nlohmann::json pathJson(const PaperPath& path) {
+    const PathSummary s = summarize(path);
+    nlohmann::json frames = nlohmann::json::array();
+    for (const PaperFrame& f : path.frames)
+        frames.push_back({{"frame", f.frame},
+                          {"cpu_queries", f.cpu_queries},
+                          {"cpu_order_ms", f.cpu_order_ms},
+                          {"gl_queries", f.gl_queries ? nlohmann::json(*f.gl_queries) : nullptr},
+                          {"gl_order_ms", optionalJson(f.gl_order_ms)},
+                          {"render_ms", optionalJson(f.render_ms)},
+                          {"collide_ms", optionalJson(f.collide_ms)}});
+    nlohmann::json reported = nlohmann::json::array();
+    for (const bench::PaperReported& r : path.reported)
+        reported.push_back({{"what", r.what}, {"low_ms", r.low_ms}, {"high_ms", r.high_ms}});
+    const bool has_gl = s.gl_queries.has_value();
+    return {{"name", path.name},
+            {"figure", path.figure},
+            {"scene", path.specification},
+            {"path", cameraPathName(path.path)},
+            {"level", orderLevelName(path.level)},
+            {"width", path.width},
+            {"height", path.height},
+            {"primitives", path.primitives},
+            {"triangles", path.triangles},
+            {"paper", reported},
+            {"coherent_medians",
+             {{"cpu_order_ms", optionalJson(s.cpu_ms)},
+              {"gl_order_ms", optionalJson(s.gl_ms)},
+              {"render_ms", optionalJson(s.render_ms)},
+              {"collide_ms", optionalJson(s.collide_ms)},
+              {"cpu_queries", optionalJson(s.cpu_queries)},
+              {"gl_queries", optionalJson(s.gl_queries)},
+              {"cpu_queries_per_primitive", bench::queriesPerPrimitive(path)},
+              {"gl_queries_per_primitive",
+               has_gl ? nlohmann::json(bench::queriesPerPrimitive(path, true)) : nullptr}}},
+            {"frames", frames}};
+}
+
+Status writeText(const std::filesystem::path& file, const std::string& text) {
+    std::ofstream out(file);
+    out << text;
+    out.close();
+    if (!out)
+        return Status::failure("cannot write " + file.string());
+    return {};
+}
+
+std::string pathsCsv(const std::vector<PaperPath>& paths) {
+    std::ostringstream csv;
+    csv << "path,figure,scene,level,width,height,primitives,frame,cpu_queries,cpu_order_ms,"
+           "gl_queries,gl_order_ms,render_ms,collide_ms\n";
+    for (const PaperPath& path : paths)
+        for (const PaperFrame& f : path.frames)
+            csv << path.name << ',' << path.figure << ',' << path.specification << ','
+                << orderLevelName(path.level) << ',' << path.width << ',' << path.height << ','
+                << path.primitives << ',' << f.frame << ',' << f.cpu_queries << ','
+                << f.cpu_order_ms << ','
+                << (f.gl_queries ? std::to_string(*f.gl_queries) : std::string()) << ','
+                << cell(f.gl_order_ms) << ',' << cell(f.render_ms) << ',' << cell(f.collide_ms)
+                << '\n';
+    return csv.str();
+}
+
+// A series of a per-frame value, frames without it (or with a value a log axis cannot show) left
+// out.
+template <class Get>
+PlotSeries frameSeries(const std::string& name, const PaperPath& path, Get get) {
+    PlotSeries series{name, {}, {}};
+    for (const PaperFrame& frame : path.frames)
+        if (const std::optional<double> value = get(frame); value && *value > 0) {
+            series.x.push_back(frame.frame);
+            series.y.push_back(*value);
+        }
+    return series;
+}
+
+// The paper's reported frame times as flat lines across the frames.
+void addReported(std::vector<PlotSeries>& series, const PaperPath& path) {
+    const double last = path.frames.empty() ? 1 : path.frames.back().frame;
+    for (const bench::PaperReported& r : path.reported) {
+        std::vector<double> levels = {r.low_ms};
+        if (r.high_ms != r.low_ms)
+            levels.push_back(r.high_ms);
+        for (const double ms : levels) {
+            std::ostringstream name;
+            name << r.what << " (" << std::lround(ms) << " ms)";
+            series.push_back({name.str(), {0, last}, {ms, ms}, true});
+        }
+    }
+}
+
+Status writePlot(const std::filesystem::path& file, std::vector<PlotSeries> series,
+                 const std::string& title, const std::string& x_label, const std::string& y_label) {
+    std::erase_if(series, [](const PlotSeries& s) { return s.x.empty(); });
+    if (series.empty())
+        return {};
+    const Strip plot = plotLines(series, title, x_label, y_label, 1000, 600);
+    return writePng(file.string(), plot.width, plot.height, plot.rgba);
+}
+
+Status writePlots(const std::filesystem::path& out, const bench::PaperBenchResult& result) {
+    const std::string machine = " (" + bench::machineName() + ")";
+    const PaperPath& plant = result.paths[0];
+    const auto cpu_ms = [](const PaperFrame& f) { return std::optional(f.cpu_order_ms); };
+    const auto gl_ms = [](const PaperFrame& f) { return f.gl_order_ms; };
+    const auto render_ms = [](const PaperFrame& f) { return f.render_ms; };
+    const auto collide_ms = [](const PaperFrame& f) { return f.collide_ms; };
+    const auto cpu_queries = [](const PaperFrame& f) {
+        return std::optional(double(f.cpu_queries));
+    };
+    const auto gl_queries = [](const PaperFrame& f) {
+        return f.gl_queries ? std::optional(double(*f.gl_queries)) : std::nullopt;
+    };
+    std::vector<PlotSeries> plant_ms = {frameSeries("ordering, cpu oracle", plant, cpu_ms),
+                                        frameSeries("ordering, gl oracle", plant, gl_ms),
+                                        frameSeries("frame with transparency", plant, render_ms)};
+    addReported(plant_ms, plant);
+    const std::string plant_what = "figure 5 (left): " + plant.specification + " walkthrough, " +
+                                   std::to_string(plant.width) + "x" + std::to_string(plant.height);
+    if (Status s = writePlot(out / "figure5-plant-ms.png", plant_ms, plant_what + machine, "frame",
+                             "ms per frame");
+        !s)
+        return s;
+    if (Status s = writePlot(out / "figure5-plant-queries.png",
+                             {frameSeries("cpu oracle", plant, cpu_queries),
+                              frameSeries("gl oracle", plant, gl_queries)},
+                             plant_what, "frame", "occlusion queries per frame");
+        !s)
+        return s;
+    std::vector<PlotSeries> bunnies_ms, bunnies_queries;
+    for (std::size_t i = 1; i < result.paths.size(); ++i) {
+        const PaperPath& path = result.paths[i];
+        const std::string viewer = path.path == CameraPath::fixed ? "static" : "moving";
+        bunnies_ms.push_back(frameSeries(viewer + ": ordering", path, cpu_ms));
+        bunnies_ms.push_back(frameSeries(viewer + ": with transparency", path, render_ms));
+        bunnies_ms.push_back(frameSeries(viewer + ": collisions", path, collide_ms));
+        bunnies_queries.push_back(frameSeries(viewer + ", cpu oracle", path, cpu_queries));
+        bunnies_queries.push_back(frameSeries(viewer + ", gl oracle", path, gl_queries));
+    }
+    addReported(bunnies_ms, result.paths[1]);
+    const std::string bunnies_what = "figure 5 (right): builtin:bunnies, " +
+                                     std::to_string(plant.width) + "x" +
+                                     std::to_string(plant.height);
+    if (Status s = writePlot(out / "figure5-bunnies-ms.png", bunnies_ms, bunnies_what + machine,
+                             "frame", "ms per frame");
+        !s)
+        return s;
+    if (Status s = writePlot(out / "figure5-bunnies-queries.png", bunnies_queries, bunnies_what,
+                             "frame", "occlusion queries per frame");
+        !s)
+        return s;
+#if VISSORT_WITH_GL
+    std::vector<PlotSeries> figure6;
+    for (const char* family : {"slabs", "plant"})
+        for (const std::size_t m : {bench::kTransparencyVissort, bench::kTransparencyPeel,
+                                    std::size_t{2}, bench::kTransparencyLinkedList}) {
+            PlotSeries series{std::string(family) + ": " +
+                                  blendMethodName(bench::kTransparencyMethods[m]),
+                              {},
+                              {}};
+            for (const bench::TransparencyBenchRow& row : result.figure6)
+                if (row.family == family && row.methods[m].ms > 0) {
+                    series.x.push_back(row.depth);
+                    series.y.push_back(row.methods[m].ms);
+                }
+            figure6.push_back(series);
+        }
+    const auto& f6 = result.figure6_settings;
+    if (Status s =
+            writePlot(out / "figure6.png", figure6,
+                      "figure 6: frame time against depth complexity, " + std::to_string(f6.width) +
+                          "x" + std::to_string(f6.height) + machine,
+                      "depth complexity D", "ms per frame");
+        !s)
+        return s;
+#endif
+    return {};
+}
+
+#if VISSORT_WITH_GL
+std::string figure6Csv(const std::vector<bench::TransparencyBenchRow>& rows) {
+    std::ostringstream csv;
+    csv << "family,scene,depth,seen,method,ms,order_ms,passes,max_abs_vs_linked_list\n";
+    for (const bench::TransparencyBenchRow& row : rows)
+        for (std::size_t m = 0; m < row.methods.size(); ++m) {
+            const bench::TransparencyMeasured& measured = row.methods[m];
+            csv << row.family << ',' << row.specification << ',' << row.depth << ',' << row.seen
+                << ',' << blendMethodName(bench::kTransparencyMethods[m]) << ',' << measured.ms
+                << ',' << measured.order_ms << ',' << measured.passes << ','
+                << (m == bench::kTransparencyLinkedList ? 0 : measured.max_abs) << '\n';
+        }
+    return csv.str();
+}
+
+nlohmann::json figure6Json(const bench::PaperBenchResult& result) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const bench::TransparencyBenchRow& row : result.figure6) {
+        nlohmann::json methods = nlohmann::json::object();
+        for (std::size_t m = 0; m < row.methods.size(); ++m)
+            methods[blendMethodName(bench::kTransparencyMethods[m])] = {
+                {"ms", row.methods[m].ms},
+                {"order_ms", row.methods[m].order_ms},
+                {"passes", row.methods[m].passes},
+                {"max_abs", row.methods[m].max_abs}};
+        rows.push_back({{"family", row.family},
+                        {"scene", row.specification},
+                        {"depth", row.depth},
+                        {"seen", row.seen},
+                        {"methods", methods}});
+    }
+    const auto& s = result.figure6_settings;
+    return {{"width", s.width},
+            {"height", s.height},
+            {"level", orderLevelName(s.level)},
+            {"frames", s.frames},
+            {"rows", rows}};
+}
+#endif
+
+void printSummary(const std::vector<PaperPath>& paths) {
+    std::cout << std::left << std::setw(19) << "path" << std::setw(9) << "figure" << std::right
+              << std::setw(10) << "prims" << std::setw(11) << "cpu ms" << std::setw(11) << "queries"
+              << std::setw(10) << "q/prim" << std::setw(11) << "gl ms" << std::setw(10)
+              << "gl q/prim" << std::setw(13) << "transp. ms" << std::setw(12) << "collide ms"
+              << "   paper\n";
+    for (const PaperPath& path : paths) {
+        const PathSummary s = summarize(path);
+        std::string paper;
+        for (const bench::PaperReported& r : path.reported)
+            paper += (paper.empty() ? "" : "; ") + std::string(r.what);
+        std::cout << std::left << std::setw(19) << path.name << std::setw(9) << path.figure
+                  << std::right << std::setw(10) << path.primitives << std::setw(11)
+                  << shown(s.cpu_ms) << std::setw(11) << shown(s.cpu_queries, 0) << std::setw(10)
+                  << shown(bench::queriesPerPrimitive(path), 2) << std::setw(11) << shown(s.gl_ms)
+                  << std::setw(10)
+                  << (s.gl_queries ? shown(bench::queriesPerPrimitive(path, true), 2) : "-")
+                  << std::setw(13) << shown(s.render_ms) << std::setw(12) << shown(s.collide_ms)
+                  << "   " << paper << '\n';
+    }
+}
+
+} // namespace
+
+int runPaperBench(const BenchOptions& options) {
+    bench::PaperBenchSettings settings;
+    settings.quick = options.quick;
+    if (options.frames) {
+        if (*options.frames < 2 || *options.frames > 10000)
+            return fail(kExitUsage, "--frames must be 2..10000 for bench paper");
+        settings.frames = *options.frames;
+    }
+    if (options.gl_frames) {
+        if (*options.gl_frames < 1)
+            return fail(kExitUsage, "--gl-frames must be at least 1");
+        settings.gl_frames = *options.gl_frames;
+    }
+    if (options.size) {
+        if (auto error = parseSize(*options.size, settings.width, settings.height); !error.empty())
+            return fail(kExitUsage, error);
+    }
+    const std::filesystem::path out = options.out_dir;
+    std::error_code error;
+    std::filesystem::create_directories(out, error);
+    if (error || !std::filesystem::is_directory(out))
+        return fail(kExitFailure, "--out " + options.out_dir + ": cannot create the folder (" +
+                                      error.message() + ")");
+    std::string gl_line;
+#if VISSORT_WITH_GL
+    if (Result<std::shared_ptr<GlContext>> context = GlContext::shared(); context) {
+        settings.context = *context.value;
+        gl_line = settings.context->info().renderer + " (" + settings.context->info().version + ")";
+    } else {
+        gl_line = "not measured: " + context.error;
+    }
+#else
+    gl_line = "not measured: this vissort was built without OpenGL (VISSORT_WITH_GL=OFF)";
+#endif
+    std::cout << "vissort bench paper" << (settings.quick ? " --quick" : "") << " on "
+              << bench::machineName() << ", " << bench::hardwareThreads() << " cores\n"
+              << "  OpenGL: " << gl_line << "\n  medians over the coherent frames (all but the "
+              << "first); cpu oracle on one thread\n";
+    Result<bench::PaperBenchResult> result = [&] {
+        ProgressBar progress;
+        return bench::runPaperBench(settings, std::ref(progress));
+    }();
+    if (!result)
+        return fail(kExitInput, result.error);
+    const bench::PaperBenchResult& measured = *result.value;
+    printSummary(measured.paths);
+
+    nlohmann::json paths = nlohmann::json::array();
+    for (const PaperPath& path : measured.paths)
+        paths.push_back(pathJson(path));
+    nlohmann::json document = {{"benchmark", "paper"},
+                               {"machine", bench::machineName()},
+                               {"cores", bench::hardwareThreads()},
+                               {"quick", settings.quick},
+                               {"gl", gl_line},
+                               {"paths", paths},
+                               {"figure6", nullptr}};
+#if VISSORT_WITH_GL
+    if (settings.context) {
+        document["figure6"] = figure6Json(measured);
+        if (Status s = writeText(out / "figure6.csv", figure6Csv(measured.figure6)); !s)
+            return fail(kExitFailure, s.error);
+    }
+#endif
+    if (const int code = writeJsonFile((out / "paper.json").string(), document); code != kExitOk)
+        return code;
+    if (Status s = writeText(out / "paper.csv", pathsCsv(measured.paths)); !s)
+        return fail(kExitFailure, s.error);
+    if (Status s = writePlots(out, measured); !s)
+        return fail(kExitFailure, s.error);
+    std::cout << "wrote " << (out / "paper.json").string() << ", paper.csv"
+              << (settings.context ? ", figure6.csv" : "") << " and the plots (figure5-*.png"
+              << (settings.context ? ", figure6.png" : "") << ")\n";
+    return kExitOk;
+}
+
+} // namespace vissort::cli

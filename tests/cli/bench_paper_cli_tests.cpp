@@ -1,0 +1,108 @@
+// End to end: `vissort bench paper --quick` as CI runs it: every output under --out produced and
+// well formed (the JSON's paths and frames, the CSV's rows, the PNG plots read back), the figures
+// plausible (every coherent frame ordered with queries, collisions on the bunnies only), and
+// one-line errors for bad options. With OpenGL also the gl oracle's frames, the frame times with
+// transparency and figure 6; without it, the files say so.
+
+#include <stb/stb_image.h>
+
+#include <algorithm>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_fixture.h"
+
+namespace vissort {
+namespace {
+
+std::vector<std::string> lines(const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);)
+        out.push_back(line);
+    return out;
+}
+
+std::size_t fields(const std::string& line) {
+    return std::size_t(std::count(line.begin(), line.end(), ',')) + 1;
+}
+
+TEST_F(Cli, BenchPaperQuickWritesEveryFigure) {
+    const std::string out = path("paper");
+    const RunResult r = run({"bench", "paper", "--quick", "--out", out});
+    ASSERT_EQ(r.code, 0) << r;
+    for (const char* name : {"plant-walkthrough", "bunnies-static", "bunnies-moving"})
+        EXPECT_NE(r.out.find(name), std::string::npos) << name << r;
+    // Not a terminal: one progress line a step on stderr, the last one complete.
+    EXPECT_NE(r.err.find("bench paper: 1/"), std::string::npos) << r;
+
+    const json doc = json::parse(readFile(out + "/paper.json"));
+    EXPECT_EQ(doc["benchmark"], "paper");
+    EXPECT_EQ(doc["quick"], true);
+    ASSERT_EQ(doc["paths"].size(), 3u);
+    std::size_t frames_seen = 0;
+    for (const json& path : doc["paths"]) {
+        const std::string name = path["name"];
+        ASSERT_EQ(path["frames"].size(), 6u) << name;
+        EXPECT_GT(path["primitives"].get<uint64_t>(), 0u) << name;
+        EXPECT_FALSE(path["paper"].empty()) << name;
+        const bool bunnies = name != "plant-walkthrough";
+        for (const json& frame : path["frames"]) {
+            EXPECT_GT(frame["cpu_queries"].get<uint64_t>(), 0u) << name;
+            EXPECT_GT(frame["cpu_order_ms"].get<double>(), 0.0) << name;
+            EXPECT_EQ(frame["collide_ms"].is_number(), bunnies) << name;
+#if VISSORT_WITH_GL
+            EXPECT_TRUE(frame["render_ms"].is_number()) << name;
+            EXPECT_EQ(frame["gl_queries"].is_number(), frame["frame"].get<int>() < 2) << name;
+#else
+            EXPECT_TRUE(frame["render_ms"].is_null()) << name;
+            EXPECT_TRUE(frame["gl_queries"].is_null()) << name;
+#endif
+            ++frames_seen;
+        }
+        const json& medians = path["coherent_medians"];
+        // Vis-sort asks at least one query a primitive and, on coherent frames, a few at most.
+        EXPECT_GE(medians["cpu_queries_per_primitive"].get<double>(), 1.0) << name;
+        EXPECT_LE(medians["cpu_queries_per_primitive"].get<double>(), 20.0) << name;
+    }
+
+    const std::vector<std::string> csv = lines(readFile(out + "/paper.csv"));
+    ASSERT_EQ(csv.size(), 1 + frames_seen);
+    for (const std::string& line : csv)
+        EXPECT_EQ(fields(line), fields(csv[0])) << line;
+
+    std::vector<std::string> plots = {"figure5-plant-ms.png", "figure5-plant-queries.png",
+                                      "figure5-bunnies-ms.png", "figure5-bunnies-queries.png"};
+#if VISSORT_WITH_GL
+    plots.push_back("figure6.png");
+    ASSERT_TRUE(doc["figure6"].is_object());
+    EXPECT_EQ(doc["figure6"]["rows"].size(), 4u); // two families at two depths
+    const std::vector<std::string> figure6 = lines(readFile(out + "/figure6.csv"));
+    EXPECT_EQ(figure6.size(), 1 + 4u * 6); // a line a method, six methods
+#else
+    EXPECT_TRUE(doc["figure6"].is_null());
+    EXPECT_NE(doc["gl"].get<std::string>().find("not measured"), std::string::npos);
+#endif
+    for (const std::string& plot : plots) {
+        int width = 0, height = 0, channels = 0;
+        unsigned char* png = stbi_load((out + "/" + plot).c_str(), &width, &height, &channels, 4);
+        ASSERT_NE(png, nullptr) << plot;
+        EXPECT_EQ(width, 1000) << plot;
+        EXPECT_EQ(height, 600) << plot;
+        stbi_image_free(png);
+    }
+}
+
+TEST_F(Cli, BenchPaperBadOptionsAreOneLineErrors) {
+    expectError({"bench", "paper", "--frames", "1", "--out", path("p")}, kUsage, {"--frames"});
+    expectError({"bench", "paper", "--size", "0x5", "--out", path("p")}, kUsage, {"size"});
+    std::ofstream(path("file")) << "x";
+    expectError({"bench", "paper", "--quick", "--out", path("file") + "/below"}, kFailure,
+                {"--out", "cannot create"});
+}
+
+} // namespace
+} // namespace vissort
