@@ -395,6 +395,15 @@ private:
         rings.push_back({end.centre + to * length, end.normal, end.binormal, radius});
     }
 
+    /// A pipe through `rings`, flat-capped at both ends, in a process colour; every
+    /// kTransparentPipeEvery-th one transparent.
+    void emitPipe(std::string name, const std::vector<Ring>& rings) {
+        const bool transparent = nextPipeIsTransparent();
+        SolidPart pipe = part(std::move(name), pipeColour(transparent), transparent);
+        addTube(pipe.triangles, rings, kPipeSegments, rings.front().centre, rings.back().centre);
+        emit(std::move(pipe));
+    }
+
     /// Runs along x under every storey's ceiling: four lanes in equipment rows, two in aisle
     /// rows, from the west wall to an elbow turning down before the east wall.
     void addPipeRunsAlongX(int storey) {
@@ -410,12 +419,7 @@ private:
                 straightRun(rings, axis, {1, 0, 0}, kRunStart, layout_.width() - kRunEndMargin,
                             radius, {0, 1, 0}, {0, 0, 1});
                 bend(rings, {1, 0, 0}, {0, -1, 0}, radius, kRunTurnLength);
-                const bool transparent = nextPipeIsTransparent();
-                SolidPart pipe =
-                    part(label("pipe_x", storey, lane, j), pipeColour(transparent), transparent);
-                addTube(pipe.triangles, rings, kPipeSegments, rings.front().centre,
-                        rings.back().centre);
-                emit(std::move(pipe));
+                emitPipe(label("pipe_x", storey, lane, j), rings);
             }
         }
     }
@@ -435,12 +439,7 @@ private:
                 straightRun(rings, axis, {0, 0, 1}, kRunStart, layout_.depth() - kRunEndMargin,
                             radius, {1, 0, 0}, {0, 1, 0});
                 bend(rings, {0, 0, 1}, {0, 1, 0}, radius, kRunTurnLength);
-                const bool transparent = nextPipeIsTransparent();
-                SolidPart pipe =
-                    part(label("pipe_z", storey, i, lane), pipeColour(transparent), transparent);
-                addTube(pipe.triangles, rings, kPipeSegments, rings.front().centre,
-                        rings.back().centre);
-                emit(std::move(pipe));
+                emitPipe(label("pipe_z", storey, i, lane), rings);
             }
         }
     }
@@ -460,10 +459,7 @@ private:
         straightRun(rings, axis, {0, 1, 0}, y + 0.25 + kGap, y + kStoreyHeight + kRiserTurnHeight,
                     radius, {0, 0, 1}, {1, 0, 0});
         bend(rings, {0, 1, 0}, {1, 0, 0}, radius, kRiserStubLength);
-        const bool transparent = nextPipeIsTransparent();
-        SolidPart riser = part(label("riser", storey, i, j), pipeColour(transparent), transparent);
-        addTube(riser.triangles, rings, kPipeSegments, rings.front().centre, rings.back().centre);
-        emit(std::move(riser));
+        emitPipe(label("riser", storey, i, j), rings);
     }
 
     /// A straight flight of treads between two stringers, with a handrail on posts each side.
