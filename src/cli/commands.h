@@ -31,8 +31,8 @@ int runInfo(const InfoOptions& options);
 struct BenchOptions {
     std::string what;
     int repeat = 3;
-    std::optional<int> frames; // each benchmark has its own default
-    std::optional<int> gl_frames;   // each benchmark has its own default
+    std::optional<int> frames;       // each benchmark has its own default
+    std::optional<int> gl_frames;    // each benchmark has its own default
     std::optional<std::string> size; // each benchmark has its own default
     std::string level = "multistage";
     std::string depths = "2,4,8,16,32,64";
