@@ -179,17 +179,53 @@ Result<PaperBenchResult> runPaperBench(const PaperBenchSettings& settings,
     return Result<PaperBenchResult>{std::move(result), {}};
 }
 
-double queriesPerPrimitive(const PaperPath& path, bool gl) {
-    std::vector<double> ratios;
-    for (const PaperFrame& frame : path.frames) {
-        if (frame.frame == 0 || path.primitives == 0)
-            continue;
-        if (!gl)
-            ratios.push_back(double(frame.cpu_queries) / double(path.primitives));
-        else if (frame.gl_queries)
-            ratios.push_back(double(*frame.gl_queries) / double(path.primitives));
+std::optional<double> metricOf(const PaperFrame& frame, PaperMetric metric) {
+    switch (metric) {
+    case PaperMetric::cpu_order_ms:
+        return frame.cpu_order_ms;
+    case PaperMetric::cpu_queries:
+        return double(frame.cpu_queries);
+    case PaperMetric::gl_order_ms:
+        return frame.gl_order_ms;
+    case PaperMetric::gl_queries:
+        return frame.gl_queries ? std::optional(double(*frame.gl_queries)) : std::nullopt;
+    case PaperMetric::render_ms:
+        return frame.render_ms;
+    case PaperMetric::collide_ms:
+        return frame.collide_ms;
     }
-    return median(ratios);
+    return std::nullopt;
+}
+
+namespace {
+
+// Median over the coherent frames of a metric divided by `divisor`.
+std::optional<double> coherentMedian(const PaperPath& path, PaperMetric metric,
+                                     double divisor = 1) {
+    std::vector<double> values;
+    for (const PaperFrame& frame : path.frames)
+        if (frame.frame > 0)
+            if (const std::optional<double> value = metricOf(frame, metric))
+                values.push_back(*value / divisor);
+    return values.empty() ? std::nullopt : std::optional(median(values));
+}
+
+} // namespace
+
+PaperSummary summarize(const PaperPath& path) {
+    PaperSummary s;
+    s.cpu_order_ms = coherentMedian(path, PaperMetric::cpu_order_ms);
+    s.cpu_queries = coherentMedian(path, PaperMetric::cpu_queries);
+    s.gl_order_ms = coherentMedian(path, PaperMetric::gl_order_ms);
+    s.gl_queries = coherentMedian(path, PaperMetric::gl_queries);
+    s.render_ms = coherentMedian(path, PaperMetric::render_ms);
+    s.collide_ms = coherentMedian(path, PaperMetric::collide_ms);
+    if (path.primitives > 0) {
+        const auto primitives = double(path.primitives);
+        s.cpu_queries_per_primitive = coherentMedian(path, PaperMetric::cpu_queries, primitives);
+        s.gl_queries_per_primitive = coherentMedian(path, PaperMetric::gl_queries, primitives);
+    }
+    return s;
 }
 
 } // namespace vissort::bench

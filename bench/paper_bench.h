@@ -89,7 +89,25 @@ std::vector<PaperPath> paperPaths(const PaperBenchSettings& settings);
 Result<PaperBenchResult> runPaperBench(const PaperBenchSettings& settings,
                                        const PaperProgress& progress = {});
 
-/// Median over the coherent frames (every frame but the first) of queries / primitives.
-double queriesPerPrimitive(const PaperPath& path, bool gl = false);
+/// What a frame measured, one value each: the summaries, the tables and the plots read them
+/// through metricOf.
+enum class PaperMetric {
+    cpu_order_ms,
+    cpu_queries,
+    gl_order_ms,
+    gl_queries,
+    render_ms,
+    collide_ms
+};
+/// The frame's value of a metric; none when the frame did not measure it.
+std::optional<double> metricOf(const PaperFrame& frame, PaperMetric metric);
+
+/// A path's medians over the coherent frames (every frame but the first, which starts from the
+/// depth-key order); none where no coherent frame measured the value.
+struct PaperSummary {
+    std::optional<double> cpu_order_ms, cpu_queries, gl_order_ms, gl_queries, render_ms, collide_ms;
+    std::optional<double> cpu_queries_per_primitive, gl_queries_per_primitive;
+};
+PaperSummary summarize(const PaperPath& path);
 
 } // namespace vissort::bench

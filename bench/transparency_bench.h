@@ -24,7 +24,7 @@ inline constexpr BlendMethod kTransparencyMethods[] = {
     BlendMethod::vissort,     BlendMethod::peel,     BlendMethod::dual_peel,
     BlendMethod::linked_list, BlendMethod::weighted, BlendMethod::centroid};
 inline constexpr std::size_t kTransparencyVissort = 0, kTransparencyPeel = 1,
-                             kTransparencyLinkedList = 3;
+                             kTransparencyDualPeel = 2, kTransparencyLinkedList = 3;
 
 /// A family of scenes by depth complexity D.
 struct TransparencyFamily {

@@ -57,36 +57,7 @@ private:
     bool drawn_ = false;
 };
 
-// Median over the coherent frames (all but the first) of a per-frame value, when any frame has it.
-template <class Get> std::optional<double> coherentMedian(const PaperPath& path, Get get) {
-    std::vector<double> values;
-    for (const PaperFrame& frame : path.frames)
-        if (frame.frame > 0)
-            if (const std::optional<double> value = get(frame))
-                values.push_back(*value);
-    if (values.empty())
-        return std::nullopt;
-    return bench::median(values);
-}
-
-struct PathSummary {
-    std::optional<double> cpu_ms, gl_ms, render_ms, collide_ms, cpu_queries, gl_queries;
-};
-
-PathSummary summarize(const PaperPath& path) {
-    PathSummary s;
-    s.cpu_ms =
-        coherentMedian(path, [](const PaperFrame& f) { return std::optional(f.cpu_order_ms); });
-    s.gl_ms = coherentMedian(path, [](const PaperFrame& f) { return f.gl_order_ms; });
-    s.render_ms = coherentMedian(path, [](const PaperFrame& f) { return f.render_ms; });
-    s.collide_ms = coherentMedian(path, [](const PaperFrame& f) { return f.collide_ms; });
-    s.cpu_queries = coherentMedian(
-        path, [](const PaperFrame& f) { return std::optional(double(f.cpu_queries)); });
-    s.gl_queries = coherentMedian(path, [](const PaperFrame& f) {
-        return f.gl_queries ? std::optional(double(*f.gl_queries)) : std::nullopt;
-    });
-    return s;
-}
+using bench::PaperMetric;
 
 nlohmann::json optionalJson(const std::optional<double>& value) {
     return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
@@ -109,7 +80,7 @@ std::string shown(const std::optional<double>& value, int precision = 1) {
 }
 
 nlohmann::json pathJson(const PaperPath& path) {
-    const PathSummary s = summarize(path);
+    const bench::PaperSummary s = bench::summarize(path);
     nlohmann::json frames = nlohmann::json::array();
     for (const PaperFrame& f : path.frames)
         frames.push_back({{"frame", f.frame},
@@ -122,7 +93,6 @@ nlohmann::json pathJson(const PaperPath& path) {
     nlohmann::json reported = nlohmann::json::array();
     for (const bench::PaperReported& r : path.reported)
         reported.push_back({{"what", r.what}, {"low_ms", r.low_ms}, {"high_ms", r.high_ms}});
-    const bool has_gl = s.gl_queries.has_value();
     return {{"name", path.name},
             {"figure", path.figure},
             {"scene", path.specification},
@@ -134,15 +104,14 @@ nlohmann::json pathJson(const PaperPath& path) {
             {"triangles", path.triangles},
             {"paper", reported},
             {"coherent_medians",
-             {{"cpu_order_ms", optionalJson(s.cpu_ms)},
-              {"gl_order_ms", optionalJson(s.gl_ms)},
+             {{"cpu_order_ms", optionalJson(s.cpu_order_ms)},
+              {"gl_order_ms", optionalJson(s.gl_order_ms)},
               {"render_ms", optionalJson(s.render_ms)},
               {"collide_ms", optionalJson(s.collide_ms)},
               {"cpu_queries", optionalJson(s.cpu_queries)},
               {"gl_queries", optionalJson(s.gl_queries)},
-              {"cpu_queries_per_primitive", bench::queriesPerPrimitive(path)},
-              {"gl_queries_per_primitive",
-               has_gl ? nlohmann::json(bench::queriesPerPrimitive(path, true)) : nullptr}}},
+              {"cpu_queries_per_primitive", optionalJson(s.cpu_queries_per_primitive)},
+              {"gl_queries_per_primitive", optionalJson(s.gl_queries_per_primitive)}}},
             {"frames", frames}};
 }
 
@@ -173,11 +142,11 @@ std::string pathsCsv(const std::vector<PaperPath>& paths) {
 
 // A series of a per-frame value, frames without it (or with a value a log axis cannot show) left
 // out.
-template <class Get>
-PlotSeries frameSeries(const std::string& name, const PaperPath& path, Get get) {
+PlotSeries frameSeries(const std::string& name, const PaperPath& path, PaperMetric metric) {
     PlotSeries series{name, {}, {}};
     for (const PaperFrame& frame : path.frames)
-        if (const std::optional<double> value = get(frame); value && *value > 0) {
+        if (const std::optional<double> value = bench::metricOf(frame, metric);
+            value && *value > 0) {
             series.x.push_back(frame.frame);
             series.y.push_back(*value);
         }
@@ -211,18 +180,9 @@ Status writePlot(const std::filesystem::path& file, std::vector<PlotSeries> seri
 Status writePlots(const std::filesystem::path& out, const bench::PaperBenchResult& result) {
     const std::string machine = " (" + bench::machineName() + ")";
     const PaperPath& plant = result.paths[0];
-    const auto cpu_ms = [](const PaperFrame& f) { return std::optional(f.cpu_order_ms); };
-    const auto gl_ms = [](const PaperFrame& f) { return f.gl_order_ms; };
-    const auto render_ms = [](const PaperFrame& f) { return f.render_ms; };
-    const auto collide_ms = [](const PaperFrame& f) { return f.collide_ms; };
-    const auto cpu_queries = [](const PaperFrame& f) {
-        return std::optional(double(f.cpu_queries));
-    };
-    const auto gl_queries = [](const PaperFrame& f) {
-        return f.gl_queries ? std::optional(double(*f.gl_queries)) : std::nullopt;
-    };
-    std::vector<PlotSeries> plant_ms = {frameSeries("ordering, cpu oracle", plant, cpu_ms),
-                                        frameSeries("ordering, gl oracle", plant, gl_ms),
+    using enum PaperMetric;
+    std::vector<PlotSeries> plant_ms = {frameSeries("ordering, cpu oracle", plant, cpu_order_ms),
+                                        frameSeries("ordering, gl oracle", plant, gl_order_ms),
                                         frameSeries("frame with transparency", plant, render_ms)};
     addReported(plant_ms, plant);
     const std::string plant_what = "figure 5 (left): " + plant.specification + " walkthrough, " +
@@ -241,7 +201,7 @@ Status writePlots(const std::filesystem::path& out, const bench::PaperBenchResul
     for (std::size_t i = 1; i < result.paths.size(); ++i) {
         const PaperPath& path = result.paths[i];
         const std::string viewer = path.path == CameraPath::fixed ? "static" : "moving";
-        bunnies_ms.push_back(frameSeries(viewer + ": ordering", path, cpu_ms));
+        bunnies_ms.push_back(frameSeries(viewer + ": ordering", path, cpu_order_ms));
         bunnies_ms.push_back(frameSeries(viewer + ": with transparency", path, render_ms));
         bunnies_ms.push_back(frameSeries(viewer + ": collisions", path, collide_ms));
         bunnies_queries.push_back(frameSeries(viewer + ", cpu oracle", path, cpu_queries));
@@ -263,7 +223,7 @@ Status writePlots(const std::filesystem::path& out, const bench::PaperBenchResul
     std::vector<PlotSeries> figure6;
     for (const char* family : {"slabs", "plant"})
         for (const std::size_t m : {bench::kTransparencyVissort, bench::kTransparencyPeel,
-                                    std::size_t{2}, bench::kTransparencyLinkedList}) {
+                                    bench::kTransparencyDualPeel, bench::kTransparencyLinkedList}) {
             PlotSeries series{std::string(family) + ": " +
                                   blendMethodName(bench::kTransparencyMethods[m]),
                               {},
@@ -334,16 +294,15 @@ void printSummary(const std::vector<PaperPath>& paths) {
               << "gl q/prim" << std::setw(13) << "transp. ms" << std::setw(12) << "collide ms"
               << "   paper\n";
     for (const PaperPath& path : paths) {
-        const PathSummary s = summarize(path);
+        const bench::PaperSummary s = bench::summarize(path);
         std::string paper;
         for (const bench::PaperReported& r : path.reported)
             paper += (paper.empty() ? "" : "; ") + std::string(r.what);
         std::cout << std::left << std::setw(19) << path.name << std::setw(9) << path.figure
                   << std::right << std::setw(10) << path.primitives << std::setw(11)
-                  << shown(s.cpu_ms) << std::setw(11) << shown(s.cpu_queries, 0) << std::setw(10)
-                  << shown(bench::queriesPerPrimitive(path), 2) << std::setw(11) << shown(s.gl_ms)
-                  << std::setw(10)
-                  << (s.gl_queries ? shown(bench::queriesPerPrimitive(path, true), 2) : "-")
+                  << shown(s.cpu_order_ms) << std::setw(11) << shown(s.cpu_queries, 0)
+                  << std::setw(10) << shown(s.cpu_queries_per_primitive, 2) << std::setw(11)
+                  << shown(s.gl_order_ms) << std::setw(10) << shown(s.gl_queries_per_primitive, 2)
                   << std::setw(13) << shown(s.render_ms) << std::setw(12) << shown(s.collide_ms)
                   << "   " << paper << '\n';
     }
