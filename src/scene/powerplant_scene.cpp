@@ -429,7 +429,7 @@ private:
     void addPipeRunsAlongZ(int storey) {
         const double y = floorOf(storey);
         for (int i = 0; i < layout_.bays_x; ++i) {
-            if (storey < kStoreys - 1 && i == layout_.stairBay(storey))
+            if (layout_.hasStair(storey, i, kAisleRow)) // its column keeps clear of the flight
                 continue;
             for (int lane = 0; lane < 4; ++lane) {
                 const double radius = random_.uniform(kMinPipeRadius, kMaxPipeRadius);

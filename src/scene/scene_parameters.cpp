@@ -8,8 +8,9 @@ namespace vissort::detail {
 namespace {
 
 // Accepts exactly what std::from_chars accepts and nothing around it: no spaces, no '+', no
-// hexadecimal, no fractions, so "1.5" or "12x" are errors rather than silently 1 or 12.
-template <class Integer> std::errc parseWhole(const std::string& text, Integer& value) {
+// hexadecimal, and for integers no fractions, so "1.5" or "12x" are errors rather than silently
+// 1 or 12.
+template <class Number> std::errc parseWhole(const std::string& text, Number& value) {
     const char* end = text.data() + text.size();
     const auto [stop, code] = std::from_chars(text.data(), end, value);
     if (code != std::errc{})
@@ -69,10 +70,8 @@ double ParameterReader::number(const std::string& key, double default_value, dou
         points += c == '.';
     }
     double value = 0;
-    const char* end = text->data() + text->size();
-    const auto [stop, code] = std::from_chars(text->data(), end, value);
-    if (digits == 0 || points > 1 || digits + points != text->size() || code != std::errc{} ||
-        stop != end) {
+    if (digits == 0 || points > 1 || digits + points != text->size() ||
+        parseWhole(*text, value) != std::errc{}) {
         fail("parameter " + key + "='" + *text + "' is not a decimal number");
         return default_value;
     }
