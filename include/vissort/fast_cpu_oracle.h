@@ -18,6 +18,11 @@
 //    walked whole, row by row in tile-aligned chunks of 8 pixels, its tiles cleared and culled
 //    before and their bounds updated after, without the per-tile set-up that costs more than
 //    the few pixels it has in each tile;
+//  - a primitive of many triangles (FastCpuOracleOptions::image_min_triangles: an object) is
+//    rasterized once per bind into a depth image of its nearest fragments and once into one of
+//    its farthest (src/raster/depth_images.h), each on first use: every later draw is a
+//    pixelwise minimum with the first over the tiles it covers, every query a comparison of the
+//    second with the stored depths, skipped per tile by the same bounds;
 //  - backToFrontPass and queryAgainst can split the tile rows into screen bands (one per thread,
 //    claimed in turn) on a WorkerPool (worker_pool.h): each band runs the whole sequence on its
 //    own tiles, and the answers are OR-ed across bands. Off by default
@@ -46,6 +51,7 @@ struct FastCpuOracleStats {
     uint64_t tiles_culled = 0;   // ... decided without per-pixel work: outside an edge, or by
                                  // depth bounds (query: nothing behind; draw: nothing passes)
     uint64_t tiles_accepted = 0; // query tiles answered "behind" without per-pixel work
+    uint64_t images_built = 0;   // depth images made (FastCpuOracleOptions::image_min_triangles)
 };
 
 /// How FastCpuOracle may use the machine. The answers and the depth buffer never depend on it.
@@ -70,6 +76,16 @@ struct FastCpuOracleOptions {
     /// The workers for the bands; must outlive the oracle. Null = WorkerPool::shared(), grown to
     /// threads on the first parallel pass (one pool per process, however many oracles).
     WorkerPool* pool = nullptr;
+    /// A primitive of at least this many triangles (after clipping) is rasterized once per bind
+    /// into a depth image of its nearest fragments, on its first draw, and once into one of its
+    /// farthest, on its first query; its draws and queries then compare its image with the
+    /// stored depths, tile by tile, with the same answers and depths (src/raster/depth_images.h
+    /// says why). 0: never. Measured on builtin:bunnies at object level (3,674 triangles an
+    /// object, about 4 draws and 4 queries each a frame): docs/benchmarks.md.
+    uint32_t image_min_triangles = 32;
+    /// The images' memory at most (each covered 8 x 8 tile takes 264 bytes); a primitive whose
+    /// image would pass it is drawn and queried triangle by triangle.
+    std::size_t image_budget_bytes = std::size_t(256) << 20;
 };
 
 class FastCpuOracle final : public GeometryOracle {

@@ -35,17 +35,20 @@ bool sameBits(std::span<const float> a, std::span<const float> b) {
 }
 
 // The row walks: SIMD allowed (AVX2 where the CPU has it), and the scalar fallback; each in
-// exact and in conservative mode (compared with CpuOracle in the same mode).
+// exact and in conservative mode (compared with CpuOracle in the same mode), each drawing and
+// querying triangle by triangle and through depth images of every primitive (however small).
 std::vector<FastCpuOracleOptions> rowWalks() {
     std::vector<FastCpuOracleOptions> all;
     for (RasterMode mode : {RasterMode::exact, RasterMode::conservative})
-        for (bool simd : {true, false}) {
-            FastCpuOracleOptions options;
-            options.allow_simd = simd;
-            options.threads = 1;
-            options.mode = mode;
-            all.push_back(options);
-        }
+        for (bool simd : {true, false})
+            for (uint32_t image_min_triangles : {0u, 1u}) {
+                FastCpuOracleOptions options;
+                options.allow_simd = simd;
+                options.threads = 1;
+                options.mode = mode;
+                options.image_min_triangles = image_min_triangles;
+                all.push_back(options);
+            }
     return all;
 }
 
@@ -64,7 +67,7 @@ std::vector<FastCpuOracleOptions> rowWalksAndThreads() {
 std::string describe(const FastCpuOracleOptions& options) {
     return std::string(options.mode == RasterMode::exact ? "exact, " : "conservative, ") +
            (options.allow_simd ? "simd" : "scalar") + ", " + std::to_string(options.threads) +
-           " threads";
+           " threads, images from " + std::to_string(options.image_min_triangles) + " triangles";
 }
 
 // Random clears, draws and queries, in the same order on both oracles; every answer and, after
@@ -454,6 +457,8 @@ TEST(FastCpuOracle, WholeTilesAreCulledAndAcceptedWithTheReferenceAnswers) {
     b.add({3, 3, 1});
     const ViewProjection view = viewOf(b, Projection::orthographic, 256, 192, {0, 0, 4});
     for (const FastCpuOracleOptions& options : rowWalks()) {
+        if (options.image_min_triangles != 0)
+            continue; // the triangle-by-triangle walk's tile shortcuts are the subject here
         SCOPED_TRACE(describe(options));
         CpuOracle reference(options.mode);
         FastCpuOracle fast(options);
@@ -514,6 +519,71 @@ TEST(FastCpuOracle, EmptyPrimitivesAndRebind) {
     EXPECT_FALSE(fast.anyBehind(1));
     fast.bind(p, view, {});
     EXPECT_EQ(fast.primitiveCount(), 0u);
+}
+
+// Primitives of many overlapping triangles (a primitive then occludes itself: its image must
+// hold its nearest and farthest fragments per pixel, not its last), in random groups.
+TEST(FastCpuOracle, DepthImagesOfPrimitivesOfManyTriangles) {
+    const TrianglePositions p = randomSoup(21, 240, 0.1, 0.9);
+    std::vector<PrimitiveRange> primitives;
+    std::mt19937 rng(5);
+    for (uint32_t t = 0; t < p.triangleCount();) {
+        const uint32_t n = std::min<uint32_t>(1 + rng() % 40, uint32_t(p.triangleCount()) - t);
+        primitives.push_back({t, n});
+        t += n;
+    }
+    for (Projection projection : {Projection::perspective, Projection::orthographic}) {
+        const ViewProjection view = viewOf(p.bounds(), projection, 203, 111);
+        FastCpuOracleStats totals;
+        EXPECT_GT(compareInterleaving(p, view, primitives, 8, 400, &totals), 0u);
+        comparePasses(p, view, primitives, 9);
+        compareDrawAllThenQueryAll(p, view, primitives);
+        // The camera among the triangles: clipped fans, primitives crossing the screen's edges.
+        compareInterleaving(p, viewOf(p.bounds(), projection, 203, 111, {0.1, 0, 0.3}), primitives,
+                            10, 400);
+    }
+}
+
+TEST(FastCpuOracle, DepthImagesAreMadeOncePerBindWithinTheirBudget) {
+    const Result<Scene> loaded = loadScene("builtin:bunnies?n=4");
+    ASSERT_TRUE(loaded) << loaded.error;
+    const Scene& scene = *loaded.value;
+    const auto objects = scene.objectPrimitives();
+    const ViewProjection view = frameCamera(defaultCamera(scene.positions.bounds(), 4.0 / 3),
+                                            scene.positions.bounds(), 320, 240);
+    CpuOracle reference;
+    reference.bind(scene.positions, view, objects);
+    FastCpuOracle fast; // the defaults: every bunny has far more triangles than the threshold
+    fast.bind(scene.positions, view, objects);
+    FastCpuOracleOptions no_room;
+    no_room.image_budget_bytes = 1000; // three covered tiles: less than any bunny covers
+    FastCpuOracle direct(no_room);
+    direct.bind(scene.positions, view, objects);
+    for (int round = 0; round < 3; ++round)
+        for (uint32_t id = 0; id < objects.size(); ++id) {
+            // Blending's negative tolerance on the last round: images made for the other one
+            // must not answer for it.
+            const float tolerance = round == 2 ? kNegativeTolerance : kDepthTolerance;
+            for (GeometryOracle* o :
+                 std::initializer_list<GeometryOracle*>{&reference, &fast, &direct})
+                o->setDepthTolerance(tolerance);
+            const bool expected = reference.anyBehind(id);
+            EXPECT_EQ(fast.anyBehind(id), expected) << "round " << round << ", object " << id;
+            EXPECT_EQ(direct.anyBehind(id), expected) << "round " << round << ", object " << id;
+            reference.draw(id);
+            fast.draw(id);
+            direct.draw(id);
+            EXPECT_TRUE(sameBits(fast.depthBuffer(), reference.depthBuffer()));
+            EXPECT_TRUE(sameBits(direct.depthBuffer(), reference.depthBuffer()));
+        }
+    // A near and a far image per object for each tolerance, each made once.
+    EXPECT_EQ(fast.stats().images_built, 2 * 2 * objects.size());
+    EXPECT_EQ(direct.stats().images_built, 0u);
+    fast.bind(scene.positions, view, objects); // a new bind: new images
+    fast.resetStats();
+    fast.draw(0);
+    fast.draw(0);
+    EXPECT_EQ(fast.stats().images_built, 1u);
 }
 
 TEST(FastCpuOracle, OptionsChooseTheRowWalkAndThreads) {
