@@ -119,9 +119,9 @@ public:
     void backToFrontPass(std::span<const uint32_t> sequence, std::span<const uint8_t> query,
                          std::span<uint8_t> behind) override;
     /// The group test (occlusion_oracle.h), split into screen bands over the threads; the same
-    /// answers as the sequential definition. Occluders' triangles whose pixel bounds miss every
-    /// target's are not drawn (a cycle search tests a few targets against much of the list), so
-    /// the depth buffer equals the definition's only inside the targets' pixel bounds.
+    /// answers as the sequential definition. Occluders are drawn only over the tiles of the
+    /// targets' pixel bounds (a cycle search tests a few targets against much of the list), so
+    /// the depth buffer equals the definition's only there.
     void queryAgainst(std::span<const uint32_t> occluders, std::span<const uint32_t> targets,
                       std::span<uint8_t> behind) override;
 

@@ -29,18 +29,21 @@ void DepthImages::begin(uint32_t slot) {
     count_[slot] = 0;
 }
 
-void DepthImages::addTile(uint32_t tile, const float* depths, bool near, bool negate) {
-    float values[kImageTileFloats];
-    float bound = near ? kInfinity : -kInfinity;
-    for (std::size_t i = 0; i < kImageTileFloats; ++i) {
-        values[i] = negate ? -depths[i] : depths[i];
-        bound = near ? std::min(bound, values[i]) : std::max(bound, values[i]);
-    }
-    if (bound == (near ? kInfinity : -kInfinity))
+void DepthImages::addTile(uint32_t tile, const float* rasterized) {
+    // The least rasterized depth: the near image's least, the negated far image's greatest.
+    const float least = *std::min_element(rasterized, rasterized + kImageTileFloats);
+    if (least == kInfinity)
         return; // no fragment here
     tiles_.push_back(tile);
-    bounds_.push_back(bound);
-    depths_.insert(depths_.end(), values, values + kImageTileFloats);
+    const std::size_t at = depths_.size();
+    depths_.insert(depths_.end(), rasterized, rasterized + kImageTileFloats);
+    if (kind_ == Kind::near) {
+        bounds_.push_back(least);
+    } else {
+        for (std::size_t i = at; i < depths_.size(); ++i)
+            depths_[i] = -depths_[i];
+        bounds_.push_back(-least);
+    }
     ++count_[building_];
 }
 

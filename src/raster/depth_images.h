@@ -27,6 +27,12 @@ constexpr std::size_t kImageTileFloats = 64;
 /// bound on them (near: their least; far: their greatest).
 class DepthImages {
 public:
+    enum class Kind : uint8_t {
+        near, // least fragment per pixel: for draws
+        far,  // greatest fragment per pixel, rasterized with the depth plane negated: queries
+    };
+    explicit DepthImages(Kind kind) : kind_(kind) {}
+
     enum class State : uint8_t {
         unbuilt, // not asked for since the last reset
         built,   // entries [first, first + count)
@@ -39,10 +45,9 @@ public:
 
     /// Starts slot's image: add its tiles, then finish it.
     void begin(uint32_t slot);
-    /// Adds one tile of the image being built, unless it holds no fragment (every depth
-    /// +infinity for a near image, -infinity for a far one). negate: store -depths[i] (the far
-    /// image is rasterized with the plane negated).
-    void addTile(uint32_t tile, const float* depths, bool near, bool negate);
+    /// Adds one tile of the image being built, as rasterized (a far image's negated), unless it
+    /// holds no fragment (every depth +infinity).
+    void addTile(uint32_t tile, const float* rasterized);
     /// Keeps the image begun last if the images' memory stays within budget_bytes; else drops
     /// it and marks the slot direct. Returns whether it was kept.
     bool finish(std::size_t budget_bytes);
@@ -57,6 +62,7 @@ public:
     std::size_t bytes() const;
 
 private:
+    Kind kind_;
     std::vector<State> state_;
     std::vector<uint32_t> first_, count_; // per slot, valid when built
     std::vector<uint32_t> tiles_;         // per entry

@@ -228,41 +228,48 @@ struct FastCpuOracle::Impl {
         int32_t row_first, row_last, column_first, column_last;
     };
     TileRect wholeScreen() const { return {0, int32_t(tiles_y_), 0, int32_t(tiles_x_) - 1}; }
-    /// Whether primitive has an image of the kind (near: for draws); builds it if unbuilt. Not
-    /// thread-safe: passes build what their bands need before starting them.
-    template <bool kNear> bool hasImage(uint32_t primitive) {
-        // Inline for the common case of a bind of single triangles: a call per draw or query
-        // costs about 5% of triangle-level Vis-sort on the bunnies.
-        return !imaged_.empty() && hasImageOrBuild<kNear>(primitive);
-    }
-    template <bool kNear> bool hasImageOrBuild(uint32_t primitive);
-    /// Whether primitive has an image of the kind already (thread-safe: reads only).
-    template <bool kNear> bool imageBuilt(uint32_t primitive) const {
-        if (imaged_.empty())
-            return false;
-        const uint32_t slot = slotOf(primitive);
-        return slot != kNoSlot && (kNear ? near_images_ : far_images_).state(slot) ==
-                                      detail::DepthImages::State::built;
-    }
-    template <bool kNear> void buildImage(uint32_t primitive, uint32_t slot);
     static constexpr uint32_t kNoSlot = ~uint32_t(0);
     /// primitive's place among imaged_, or kNoSlot when it has too few set-ups for images.
     uint32_t slotOf(uint32_t primitive) const {
-        if (image_min_triangles_ == 0 ||
+        if (imaged_.empty() ||
             primitive_setups_[primitive + 1] - primitive_setups_[primitive] < image_min_triangles_)
             return kNoSlot;
         return uint32_t(std::lower_bound(imaged_.begin(), imaged_.end(), primitive) -
                         imaged_.begin());
     }
-    void drawImage(uint32_t primitive, const TileRect& rect, FastCpuOracleStats& stats);
-    /// A query of primitive's set-ups one by one, in tile rows [rows.row_first, rows.row_last).
-    bool anyRasterizedBehind(uint32_t primitive, const TileRect& rows, FastCpuOracleStats& stats) {
-        for (uint32_t k = primitive_setups_[primitive]; k < primitive_setups_[primitive + 1]; ++k)
-            if (rasterize<false>(k, rows.row_first, rows.row_last, stats))
-                return true;
-        return false;
+    /// The slot of primitive's image of the kind (near: for draws) if it has one made, else
+    /// kNoSlot. Reads only: what bands call.
+    template <bool kNear> uint32_t builtSlot(uint32_t primitive) const {
+        const uint32_t slot = slotOf(primitive);
+        return slot != kNoSlot && images<kNear>().state(slot) == detail::DepthImages::State::built
+                   ? slot
+                   : kNoSlot;
     }
-    bool queryImage(uint32_t primitive, const TileRect& rect, FastCpuOracleStats& stats);
+    /// Makes primitive's image of the kind if it may have one and has none yet. Not
+    /// thread-safe: passes make what their bands need before starting them.
+    template <bool kNear> void makeImage(uint32_t primitive) {
+        const uint32_t slot = slotOf(primitive);
+        if (slot != kNoSlot && images<kNear>().state(slot) == detail::DepthImages::State::unbuilt)
+            buildImage<kNear>(primitive, slot);
+    }
+    template <bool kNear> void buildImage(uint32_t primitive, uint32_t slot);
+    template <bool kNear> detail::DepthImages& images() {
+        return kNear ? near_images_ : far_images_;
+    }
+    template <bool kNear> const detail::DepthImages& images() const {
+        return kNear ? near_images_ : far_images_;
+    }
+    /// Draws primitive within rect: through its near image if it has one made (and its bounds
+    /// meet rect), else set-up by set-up (those whose pixel bounds meet rect's columns).
+    void drawIn(uint32_t primitive, const TileRect& rect, FastCpuOracleStats& stats);
+    /// Queries primitive within rect's rows: through its far image if it has one made, else
+    /// set-up by set-up.
+    bool anyBehindIn(uint32_t primitive, const TileRect& rect, FastCpuOracleStats& stats);
+    /// Calls visit(entry, tile) for the entries of an image whose tiles lie in rect, in tile
+    /// order, until it returns true; returns whether it did.
+    template <class Visit>
+    bool forImageTiles(const detail::DepthImages& images, uint32_t slot, const TileRect& rect,
+                       Visit&& visit) const;
     /// Sets the tolerance of the coming draws and queries; images made with another are dropped
     /// (exact mode moves fragments by the snap slack in a direction that depends on its sign).
     void setTolerance(float tolerance) {
@@ -322,8 +329,9 @@ struct FastCpuOracle::Impl {
 
     uint32_t image_min_triangles_ = 0; // 0: no images
     std::size_t image_budget_bytes_ = 0;
-    // The primitives with image_min_triangles_ set-ups or more, ascending (a slot is a place
-    // here), and per slot the union of its set-ups' pixel bounds (x_min > x_max when empty).
+    // The primitives with image_min_triangles_ set-ups or more (none when it is 0), ascending (a
+    // slot is a place here), and per slot the union of its set-ups' pixel bounds (x_min > x_max
+    // when empty).
     // Only those have per-primitive entries: a triangle-level bind of millions of primitives
     // pays nothing for the images.
     std::vector<uint32_t> imaged_;
@@ -331,7 +339,8 @@ struct FastCpuOracle::Impl {
         int32_t x_min, x_max, y_min, y_max;
     };
     std::vector<PixelRect> imaged_rects_;
-    detail::DepthImages near_images_, far_images_; // by slot
+    detail::DepthImages near_images_{detail::DepthImages::Kind::near}; // by slot
+    detail::DepthImages far_images_{detail::DepthImages::Kind::far};
     // The buffer images are rasterized into: swapped with depth_, tiles_ and epoch_ meanwhile.
     std::vector<float> image_depth_;
     std::vector<TileState> image_tiles_;
@@ -453,7 +462,6 @@ void FastCpuOracle::Impl::bind(PositionsView positions, const ViewProjection& vi
     }
     near_images_.reset(uint32_t(imaged_.size()));
     far_images_.reset(uint32_t(imaged_.size()));
-    image_tiles_.clear(); // sized on the first image: a bind that makes none allocates nothing
 }
 
 void FastCpuOracle::Impl::changeTolerance(float tolerance) {
@@ -462,19 +470,10 @@ void FastCpuOracle::Impl::changeTolerance(float tolerance) {
     far_images_.reset(uint32_t(imaged_.size()));
 }
 
-template <bool kNear> bool FastCpuOracle::Impl::hasImageOrBuild(uint32_t primitive) {
-    const uint32_t slot = slotOf(primitive);
-    if (slot == kNoSlot)
-        return false;
-    detail::DepthImages& images = kNear ? near_images_ : far_images_;
-    if (images.state(slot) == detail::DepthImages::State::unbuilt)
-        buildImage<kNear>(primitive, slot);
-    return images.state(slot) == detail::DepthImages::State::built;
-}
-
 template <bool kNear> void FastCpuOracle::Impl::buildImage(uint32_t primitive, uint32_t slot) {
-    detail::DepthImages& images = kNear ? near_images_ : far_images_;
     const uint32_t first = primitive_setups_[primitive], last = primitive_setups_[primitive + 1];
+    // Sized on the first image (a bind that makes none allocates nothing); its stale tiles are
+    // cleared by the epochs, whatever an earlier bind of another size left.
     if (image_tiles_.size() != tiles_.size()) {
         image_depth_.resize(depth_.size());
         image_tiles_.assign(tiles_.size(), TileState{kInfinity, kInfinity, 0});
@@ -494,70 +493,90 @@ template <bool kNear> void FastCpuOracle::Impl::buildImage(uint32_t primitive, u
                                   int32_t(tiles_y_), unused);
         }
     }
-    images.begin(slot);
+    detail::DepthImages& made = images<kNear>();
+    made.begin(slot);
     const PixelRect& rect = imaged_rects_[slot];
     if (rect.x_min <= rect.x_max)
         for (int32_t ty = rect.y_min >> kTileShift; ty <= rect.y_max >> kTileShift; ++ty)
             for (int32_t tx = rect.x_min >> kTileShift; tx <= rect.x_max >> kTileShift; ++tx) {
                 const std::size_t tile = std::size_t(ty) * tiles_x_ + std::size_t(tx);
                 if (tiles_[tile].epoch == epoch_)
-                    images.addTile(uint32_t(tile), tileDepths(tile), kNear, !kNear);
+                    made.addTile(uint32_t(tile), tileDepths(tile));
             }
     std::swap(depth_, image_depth_);
     std::swap(tiles_, image_tiles_);
     std::swap(epoch_, image_epoch_);
-    if (images.finish(image_budget_bytes_))
+    if (made.finish(image_budget_bytes_))
         ++stats_.images_built;
 }
 
-void FastCpuOracle::Impl::drawImage(uint32_t primitive, const TileRect& rect,
-                                    FastCpuOracleStats& stats) {
-    const detail::DepthImages& images = near_images_;
-    const uint32_t slot = slotOf(primitive);
+template <class Visit>
+bool FastCpuOracle::Impl::forImageTiles(const detail::DepthImages& images, uint32_t slot,
+                                        const TileRect& rect, Visit&& visit) const {
     const std::size_t end = images.firstEntry(slot) + images.entryCount(slot);
     for (std::size_t e = images.firstEntry(slot); e < end; ++e) {
         const uint32_t tile = images.tile(e);
         const int32_t ty = int32_t(tile / tiles_x_), tx = int32_t(tile % tiles_x_);
         if (ty >= rect.row_last)
             break; // entries are in tile order
-        if (ty < rect.row_first || tx < rect.column_first || tx > rect.column_last)
-            continue;
-        ++stats.tiles_visited;
-        TileState& state = tiles_[tile];
-        if (state.epoch != epoch_)
-            clearTile(tile);
-        // Every depth of the image >= the tile's max >= every stored depth: none passes LESS.
-        if (images.bound(e) >= state.max) {
-            ++stats.tiles_culled;
-            continue;
-        }
-        detail::drawImageTile(images.depths(e), tileDepths(tile), state.min, state.max);
-    }
-}
-
-bool FastCpuOracle::Impl::queryImage(uint32_t primitive, const TileRect& rect,
-                                     FastCpuOracleStats& stats) {
-    const detail::DepthImages& images = far_images_;
-    const uint32_t slot = slotOf(primitive);
-    const std::size_t end = images.firstEntry(slot) + images.entryCount(slot);
-    for (std::size_t e = images.firstEntry(slot); e < end; ++e) {
-        const uint32_t tile = images.tile(e);
-        const int32_t ty = int32_t(tile / tiles_x_);
-        if (ty >= rect.row_last)
-            break;
-        if (ty < rect.row_first)
-            continue;
-        ++stats.tiles_visited;
-        const TileState& state = tiles_[tile];
-        // Cleared since last touched (nothing is behind +infinity), or every depth of the image
-        // <= the tile's min + tolerance <= stored + tolerance: none behind.
-        if (state.epoch != epoch_ || images.bound(e) <= state.min + depth_tolerance_) {
-            ++stats.tiles_culled;
-            continue;
-        }
-        if (detail::queryImageTile(images.depths(e), tileDepths(tile), depth_tolerance_))
+        if (ty >= rect.row_first && tx >= rect.column_first && tx <= rect.column_last &&
+            visit(e, tile))
             return true;
     }
+    return false;
+}
+
+void FastCpuOracle::Impl::drawIn(uint32_t primitive, const TileRect& rect,
+                                 FastCpuOracleStats& stats) {
+    // Pixel columns of rect.
+    const int32_t x_first = rect.column_first << kTileShift;
+    const int32_t x_last = (rect.column_last << kTileShift) + int32_t(kTileSize) - 1;
+    if (const uint32_t slot = builtSlot<true>(primitive); slot != kNoSlot) {
+        const PixelRect& bounds = imaged_rects_[slot];
+        const int32_t y_first = rect.row_first << kTileShift;
+        const int32_t y_last = (rect.row_last << kTileShift) - 1;
+        if (bounds.x_min > x_last || bounds.x_max < x_first || bounds.y_min > y_last ||
+            bounds.y_max < y_first)
+            return; // nothing of it in rect
+        const detail::DepthImages& near = near_images_;
+        forImageTiles(near, slot, rect, [&](std::size_t e, uint32_t tile) {
+            ++stats.tiles_visited;
+            TileState& state = tiles_[tile];
+            if (state.epoch != epoch_)
+                clearTile(tile);
+            // Every depth of the image >= the tile's max >= every stored depth: none passes.
+            if (near.bound(e) >= state.max)
+                ++stats.tiles_culled;
+            else
+                detail::drawImageTile(near.depths(e), tileDepths(tile), state.min, state.max);
+            return false;
+        });
+        return;
+    }
+    for (uint32_t k = primitive_setups_[primitive]; k < primitive_setups_[primitive + 1]; ++k)
+        if (setups_[k].px_min <= x_last && setups_[k].px_max >= x_first)
+            rasterize<true>(k, rect.row_first, rect.row_last, stats);
+}
+
+bool FastCpuOracle::Impl::anyBehindIn(uint32_t primitive, const TileRect& rect,
+                                      FastCpuOracleStats& stats) {
+    if (const uint32_t slot = builtSlot<false>(primitive); slot != kNoSlot) {
+        const detail::DepthImages& far = far_images_;
+        return forImageTiles(far, slot, rect, [&](std::size_t e, uint32_t tile) {
+            ++stats.tiles_visited;
+            const TileState& state = tiles_[tile];
+            // Cleared since last touched (nothing is behind +infinity), or every depth of the
+            // image <= the tile's min + tolerance <= stored + tolerance: none behind.
+            if (state.epoch != epoch_ || far.bound(e) <= state.min + depth_tolerance_) {
+                ++stats.tiles_culled;
+                return false;
+            }
+            return detail::queryImageTile(far.depths(e), tileDepths(tile), depth_tolerance_);
+        });
+    }
+    for (uint32_t k = primitive_setups_[primitive]; k < primitive_setups_[primitive + 1]; ++k)
+        if (rasterize<false>(k, rect.row_first, rect.row_last, stats))
+            return true;
     return false;
 }
 
@@ -777,25 +796,15 @@ bool FastCpuOracle::Impl::rasterizeSmall(const StoredSetup& s, bool narrow, doub
 void FastCpuOracle::Impl::draw(uint32_t primitive) {
     assert(primitive < primitive_count_);
     ++stats_.draws;
-    if (hasImage<true>(primitive)) {
-        drawImage(primitive, wholeScreen(), stats_);
-        return;
-    }
-    const uint32_t first = primitive_setups_[primitive], last = primitive_setups_[primitive + 1];
-    for (uint32_t i = first; i < last; ++i)
-        rasterize<true>(i, 0, int32_t(tiles_y_), stats_);
+    makeImage<true>(primitive);
+    drawIn(primitive, wholeScreen(), stats_);
 }
 
 bool FastCpuOracle::Impl::anyBehind(uint32_t primitive) {
     assert(primitive < primitive_count_);
     ++stats_.queries;
-    if (hasImage<false>(primitive))
-        return queryImage(primitive, wholeScreen(), stats_);
-    const uint32_t first = primitive_setups_[primitive], last = primitive_setups_[primitive + 1];
-    for (uint32_t i = first; i < last; ++i)
-        if (rasterize<false>(i, 0, int32_t(tiles_y_), stats_))
-            return true;
-    return false;
+    makeImage<false>(primitive);
+    return anyBehindIn(primitive, wholeScreen(), stats_);
 }
 
 // Bands per thread. Each band repeats the walk over the whole sequence (per triangle: its range,
@@ -871,28 +880,21 @@ void FastCpuOracle::Impl::backToFrontPass(uint32_t bands, std::span<const uint32
     stats_.draws += sequence.size();
     // Every image the bands use, made before they start.
     for (std::size_t i = 0; i < sequence.size(); ++i) {
-        hasImage<true>(sequence[i]);
+        makeImage<true>(sequence[i]);
         if (query[i])
-            hasImage<false>(sequence[i]);
+            makeImage<false>(sequence[i]);
     }
     runBands(bands, [&](uint32_t b, FastCpuOracleStats& stats) {
         TileRect rows = wholeScreen();
         bandRows(b, bands, rows.row_first, rows.row_last);
         for (std::size_t i = sequence.size(); i-- > 0;) {
-            const uint32_t p = sequence[i];
-            const uint32_t first = primitive_setups_[p], last = primitive_setups_[p + 1];
             if (query[i]) {
                 std::atomic_ref<uint8_t> answer(behind[i]);
                 if (answer.load(std::memory_order_relaxed) == 0 &&
-                    (imageBuilt<false>(p) ? queryImage(p, rows, stats)
-                                          : anyRasterizedBehind(p, rows, stats)))
+                    anyBehindIn(sequence[i], rows, stats))
                     answer.store(1, std::memory_order_relaxed);
             }
-            if (imageBuilt<true>(p))
-                drawImage(p, rows, stats);
-            else
-                for (uint32_t k = first; k < last; ++k)
-                    rasterize<true>(k, rows.row_first, rows.row_last, stats);
+            drawIn(sequence[i], rows, stats);
         }
     });
 }
@@ -922,46 +924,34 @@ void FastCpuOracle::Impl::queryAgainst(uint32_t bands, std::span<const uint32_t>
     }
     if (x_min > x_max || y_min > y_max)
         return; // no target has a fragment
+    const TileRect near_targets{y_min >> kTileShift, (y_max >> kTileShift) + 1, x_min >> kTileShift,
+                                x_max >> kTileShift};
     // Every image the bands use, made before they start: the targets', and those of the
     // occluders that reach the targets' bounds.
-    const auto reaches = [&](uint32_t p) {
-        const uint32_t slot = imaged_.empty() ? kNoSlot : slotOf(p);
+    for (uint32_t p : occluders) {
+        assert(p < primitive_count_);
+        const uint32_t slot = slotOf(p);
         if (slot == kNoSlot)
-            return true; // its set-ups are checked one by one
+            continue;
         const PixelRect& r = imaged_rects_[slot];
-        return r.x_min <= x_max && r.x_max >= x_min && r.y_min <= y_max && r.y_max >= y_min;
-    };
-    for (uint32_t p : occluders)
-        if (reaches(p))
-            hasImage<true>(p);
+        if (r.x_min <= x_max && r.x_max >= x_min && r.y_min <= y_max && r.y_max >= y_min)
+            makeImage<true>(p);
+    }
     for (uint32_t p : targets)
-        hasImage<false>(p);
+        makeImage<false>(p);
     const auto band = [&](uint32_t b, FastCpuOracleStats& stats) {
-        TileRect rect{0, 0, x_min >> kTileShift, x_max >> kTileShift};
-        bandRows(b, bands, rect.row_first, rect.row_last);
-        for (uint32_t p : occluders) {
-            assert(p < primitive_count_);
-            if (!reaches(p))
-                continue;
-            if (imageBuilt<true>(p)) {
-                drawImage(p, rect, stats);
-                continue;
-            }
-            const uint32_t last = primitive_setups_[p + 1];
-            for (uint32_t k = primitive_setups_[p]; k < last; ++k) {
-                const StoredSetup& s = setups_[k];
-                if (s.px_min <= x_max && s.px_max >= x_min && s.py_min <= y_max &&
-                    s.py_max >= y_min)
-                    rasterize<true>(k, rect.row_first, rect.row_last, stats);
-            }
-        }
+        TileRect rect = near_targets; // within the band's rows
+        int32_t first_row, last_row;
+        bandRows(b, bands, first_row, last_row);
+        rect.row_first = std::max(rect.row_first, first_row);
+        rect.row_last = std::min(rect.row_last, last_row);
+        if (rect.row_first >= rect.row_last)
+            return;
+        for (uint32_t p : occluders)
+            drawIn(p, rect, stats);
         for (std::size_t i = 0; i < targets.size(); ++i) {
             std::atomic_ref<uint8_t> answer(behind[i]);
-            if (answer.load(std::memory_order_relaxed) != 0)
-                continue;
-            const uint32_t p = targets[i];
-            if (imageBuilt<false>(p) ? queryImage(p, rect, stats)
-                                     : anyRasterizedBehind(p, rect, stats))
+            if (answer.load(std::memory_order_relaxed) == 0 && anyBehindIn(targets[i], rect, stats))
                 answer.store(1, std::memory_order_relaxed);
         }
     };

@@ -125,6 +125,7 @@ std::size_t compareInterleavingWith(const FastCpuOracleOptions& options, const T
         totals->tiles_visited += fast.stats().tiles_visited;
         totals->tiles_culled += fast.stats().tiles_culled;
         totals->tiles_accepted += fast.stats().tiles_accepted;
+        totals->images_built += fast.stats().images_built;
     }
     return behind;
 }
@@ -536,6 +537,7 @@ TEST(FastCpuOracle, DepthImagesOfPrimitivesOfManyTriangles) {
         const ViewProjection view = viewOf(p.bounds(), projection, 203, 111);
         FastCpuOracleStats totals;
         EXPECT_GT(compareInterleaving(p, view, primitives, 8, 400, &totals), 0u);
+        EXPECT_GT(totals.images_built, 0u); // the configurations with images used them
         comparePasses(p, view, primitives, 9);
         compareDrawAllThenQueryAll(p, view, primitives);
         // The camera among the triangles: clipped fans, primitives crossing the screen's edges.
@@ -559,6 +561,7 @@ TEST(FastCpuOracle, DepthImagesAreMadeOncePerBindWithinTheirBudget) {
     no_room.image_budget_bytes = 1000; // three covered tiles: less than any bunny covers
     FastCpuOracle direct(no_room);
     direct.bind(scene.positions, view, objects);
+    std::size_t answers[2] = {0, 0}; // false, true: both must be compared
     for (int round = 0; round < 3; ++round)
         for (uint32_t id = 0; id < objects.size(); ++id) {
             // Blending's negative tolerance on the last round: images made for the other one
@@ -568,6 +571,7 @@ TEST(FastCpuOracle, DepthImagesAreMadeOncePerBindWithinTheirBudget) {
                  std::initializer_list<GeometryOracle*>{&reference, &fast, &direct})
                 o->setDepthTolerance(tolerance);
             const bool expected = reference.anyBehind(id);
+            ++answers[expected];
             EXPECT_EQ(fast.anyBehind(id), expected) << "round " << round << ", object " << id;
             EXPECT_EQ(direct.anyBehind(id), expected) << "round " << round << ", object " << id;
             reference.draw(id);
@@ -576,6 +580,8 @@ TEST(FastCpuOracle, DepthImagesAreMadeOncePerBindWithinTheirBudget) {
             EXPECT_TRUE(sameBits(fast.depthBuffer(), reference.depthBuffer()));
             EXPECT_TRUE(sameBits(direct.depthBuffer(), reference.depthBuffer()));
         }
+    EXPECT_GT(answers[0], 0u);
+    EXPECT_GT(answers[1], 0u);
     // A near and a far image per object for each tolerance, each made once.
     EXPECT_EQ(fast.stats().images_built, 2 * 2 * objects.size());
     EXPECT_EQ(direct.stats().images_built, 0u);
