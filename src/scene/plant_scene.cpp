@@ -33,7 +33,6 @@ namespace vissort::detail {
 namespace {
 
 using glm::dvec3;
-using Triangle = SolidTriangle;
 
 // Units are metres; y is up, the floor's top is y = 0 and rows stack along -z, away from the
 // default camera. Row k is centred on z = ((layers - 1) / 2 - k) * kRowSpacing.
@@ -60,11 +59,10 @@ constexpr double kLevelJitter = 0.08;
 constexpr double kHeaderHeight = 5.4; // also the camera's height
 constexpr double kMinPipeRadius = 0.14, kMaxPipeRadius = 0.28;
 constexpr double kMinHeaderRadius = 0.32, kMaxHeaderRadius = 0.45;
-// A flange is a collar of radius kFlangeScale * r + kFlangeAdd on a lower level's pipe (the
-// header has none: a collar makes a pipe non-convex, and a ray grazing one crosses the pipe's
-// surface four times). Even the largest collars leave 0.27 between one level's band and the
-// next: 1.58 + 1.3 * 0.28 + 0.02 = 1.96 < 2.62 - 0.38 = 2.24; 4.36 < 5.4 - 0.45.
-constexpr double kFlangeScale = 1.3, kFlangeAdd = 0.02, kFlangeWidth = 0.12;
+// A flange (solid_shapes.h) is a collar on a lower level's pipe (the header has none: a collar
+// makes a pipe non-convex, and a ray grazing one crosses the pipe's surface four times). Even the
+// largest collars leave 0.27 between one level's band and the next: 1.58 + 1.3 * 0.28 + 0.02 = 1.96
+// < 2.62 - 0.38 = 2.24; 4.36 < 5.4 - 0.45.
 constexpr int kFlangesPerPipe = 2;
 constexpr double kOverhang = 0.45;      // a pipe runs on this far past its outer supports
 constexpr double kSupportKeepOut = 0.3; // no flange this close to a support's beam
@@ -103,20 +101,8 @@ constexpr std::size_t kMaxRowTriangles =
 static_assert(kMaxLayers * kMaxRowTriangles + 12 <= kMaxBuiltinTriangles,
               "the largest plant must stay under the built-in scenes' triangle limit");
 
-// CAD-like colours: process-pipe codes (cooling water, gas, air, hot oil, fire water, steam,
-// chemicals), pale vessel colours, painted steel and concrete.
-constexpr float kPipeColours[][3] = {
-    {0.20f, 0.62f, 0.32f}, {0.95f, 0.78f, 0.15f}, {0.22f, 0.45f, 0.80f}, {0.90f, 0.45f, 0.12f},
-    {0.80f, 0.18f, 0.15f}, {0.72f, 0.72f, 0.70f}, {0.55f, 0.35f, 0.65f}};
-constexpr float kTankColours[][3] = {
-    {0.86f, 0.88f, 0.90f}, {0.60f, 0.75f, 0.86f}, {0.74f, 0.85f, 0.70f}};
-constexpr Rgba kColumnColour{0.36f, 0.40f, 0.46f, 1.0f};
-constexpr Rgba kBeamColour{0.85f, 0.68f, 0.12f, 1.0f};
-constexpr Rgba kPumpColour{0.15f, 0.35f, 0.55f, 1.0f};
-constexpr Rgba kFloorColour{0.48f, 0.48f, 0.46f, 1.0f};
-
-/// One part of a row, in the row's own frame (row centred on z = 0, before mirroring).
-using Part = SolidPart;
+// The tanks take the first three vessel colours (solid_shapes.h).
+constexpr uint32_t kTankColourCount = 3;
 
 /// A horizontal pipe run along x with its flanges, on a T-support near each end.
 struct PipeRun {
@@ -124,10 +110,6 @@ struct PipeRun {
     double start = 0, end = 0;                  // x of the pipe's ends (level 0: of the elbow)
     double support_left = 0, support_right = 0; // x of the supports' axes
 };
-
-Rgba pick(const float (&palette)[3], float alpha) {
-    return {palette[0], palette[1], palette[2], alpha};
-}
 
 /// Rings of a straight run along +x from `start` to `end`, with `flanges` collars placed at random
 /// between the supports. The last ring is at `end`.
@@ -142,28 +124,25 @@ void straightRings(std::vector<Ring>& rings, const PipeRun& run, int flanges, Sc
     const double low = run.support_left + kBeamHalfWidth + kSupportKeepOut;
     const double high = run.support_right - kBeamHalfWidth - kSupportKeepOut;
     const double spacing = (high - low) / (flanges + 1);
-    const double flange_radius = kFlangeScale * run.radius + kFlangeAdd;
     for (int f = 0; f < flanges; ++f) {
         const double x = low + (f + 1) * spacing + random.uniform(-0.25, 0.25) * spacing;
-        ring(x - kFlangeWidth / 2, run.radius);
-        ring(x - kFlangeWidth / 2, flange_radius);
-        ring(x + kFlangeWidth / 2, flange_radius);
-        ring(x + kFlangeWidth / 2, run.radius);
+        for (const auto& [at, radius] : flangeRings(x, run.radius))
+            ring(at, radius);
     }
     ring(run.end, run.radius);
 }
 
 /// A column and the beam on top of it carrying a pipe of `run` at x = `x`.
-void addSupport(std::vector<Part>& parts, const PipeRun& run, double x, int index,
+void addSupport(std::vector<SolidPart>& parts, const PipeRun& run, double x, int index,
                 const std::string& prefix) {
     const double beam_top = run.height - run.radius - kShoeGap;
     const double beam_bottom = beam_top - kBeamHeight;
     const double column_top = beam_bottom - kCapGap;
-    Part column{prefix + "column_" + std::to_string(index), kColumnColour, false, {}};
+    SolidPart column{prefix + "column_" + std::to_string(index), kColumnColour, false, {}};
     addBox(column.triangles, {x - kColumnHalf, kFloorGap, -kColumnHalf},
            {x + kColumnHalf, column_top, kColumnHalf});
     parts.push_back(std::move(column));
-    Part beam{prefix + "beam_" + std::to_string(index), kBeamColour, false, {}};
+    SolidPart beam{prefix + "beam_" + std::to_string(index), kGirderColour, false, {}};
     addBox(beam.triangles, {x - kBeamHalfWidth, beam_bottom, -kBeamHalfDepth},
            {x + kBeamHalfWidth, beam_top, kBeamHalfDepth});
     parts.push_back(std::move(beam));
@@ -171,9 +150,9 @@ void addSupport(std::vector<Part>& parts, const PipeRun& run, double x, int inde
 
 /// The parts of one row in its own frame, left to right seen from the front: the nested pipe
 /// levels (level 0 innermost, with the pump under it and an elbow at its end), then the tank.
-std::vector<Part> makeRow(uint32_t row, SceneRandom& random) {
+std::vector<SolidPart> makeRow(uint32_t row, SceneRandom& random) {
     const std::string prefix = "row" + std::to_string(row) + "_";
-    std::vector<Part> parts;
+    std::vector<SolidPart> parts;
     const auto pipeColour = [&random] {
         const uint32_t colour = random.index(static_cast<uint32_t>(std::size(kPipeColours)));
         return pick(kPipeColours[colour], static_cast<float>(random.uniform(0.35, 0.6)));
@@ -233,7 +212,7 @@ std::vector<Part> makeRow(uint32_t row, SceneRandom& random) {
             rings.push_back(
                 {rings.back().centre + dvec3(0, 0, kStubLength), up, binormal, run.radius});
         }
-        Part pipe{prefix + "pipe_" + std::to_string(level), pipeColour(), true, {}};
+        SolidPart pipe{prefix + "pipe_" + std::to_string(level), pipeColour(), true, {}};
         addTube(pipe.triangles, rings, kPipeSegments, rings.front().centre, rings.back().centre);
         parts.push_back(std::move(pipe));
         addSupport(parts, run, run.support_left, support++, prefix);
@@ -242,7 +221,7 @@ std::vector<Part> makeRow(uint32_t row, SceneRandom& random) {
 
     // Level 0's supports are at least 2.9 apart: the pump keeps kClearance from both columns.
     const double pump_x = (low.support_left + low.support_right) / 2;
-    Part pump{prefix + "pump", kPumpColour, false, {}};
+    SolidPart pump{prefix + "pump", kEquipmentColour, false, {}};
     addBox(pump.triangles, {pump_x - kPumpHalfWidth, kFloorGap, -kPumpHalfDepth},
            {pump_x + kPumpHalfWidth, kFloorGap + kPumpHeight, kPumpHalfDepth});
     parts.push_back(std::move(pump));
@@ -269,11 +248,11 @@ std::vector<Part> makeRow(uint32_t row, SceneRandom& random) {
         }
         top.y = kFloorGap + height + dome;
     }
-    const uint32_t colour = random.index(static_cast<uint32_t>(std::size(kTankColours)));
-    Part tank{prefix + "tank",
-              pick(kTankColours[colour], static_cast<float>(random.uniform(0.3, 0.45))),
-              true,
-              {}};
+    const uint32_t colour = random.index(kTankColourCount);
+    SolidPart tank{prefix + "tank",
+                   pick(kVesselColours[colour], static_cast<float>(random.uniform(0.3, 0.45))),
+                   true,
+                   {}};
     addTube(tank.triangles, rings, kTankSegments, rings.front().centre, top);
     parts.push_back(std::move(tank));
     return parts;
@@ -281,7 +260,7 @@ std::vector<Part> makeRow(uint32_t row, SceneRandom& random) {
 
 /// Appends a part as one object, moved to the row's place: x -> (mirrored ? -x : x) + shift,
 /// z -> z + row's z. A mirrored part has its triangles' corners swapped to still face outwards.
-void addObject(Scene& scene, Part&& part, double shift, double z, bool mirrored) {
+void addObject(Scene& scene, SolidPart&& part, double shift, double z, bool mirrored) {
     SceneObject object;
     object.name = std::move(part.name);
     object.colour = part.colour;
@@ -289,7 +268,7 @@ void addObject(Scene& scene, Part&& part, double shift, double z, bool mirrored)
     object.first_triangle = static_cast<uint32_t>(scene.positions.x.size() / 3);
     object.triangle_count = static_cast<uint32_t>(part.triangles.size());
     TrianglePositions& out = scene.positions;
-    for (Triangle& triangle : part.triangles) {
+    for (SolidTriangle& triangle : part.triangles) {
         if (mirrored)
             std::swap(triangle[1], triangle[2]);
         for (const dvec3& p : triangle) {
@@ -351,7 +330,7 @@ Result<Scene> makePlantScene(const SceneParameters& parameters) {
 
     // The floor comes first; its size is known once the rows are placed, so it is written last
     // into the 12 triangles kept for it here.
-    scene.objects.push_back({"floor", kFloorColour, false, 0, 12});
+    scene.objects.push_back({"floor", kConcreteColour, false, 0, 12});
     scene.positions.resize(12);
     double min_x = 0, max_x = 0;
     for (uint32_t row = 0; row < layers; ++row) {
@@ -360,10 +339,10 @@ Result<Scene> makePlantScene(const SceneParameters& parameters) {
         // shifted by up to 1 it still covers x = -2.4 to 2.4: the camera's axis.
         const bool mirrored = random.uniform() < 0.5;
         const double shift = random.uniform(-kMaxRowShift, kMaxRowShift);
-        std::vector<Part> parts = makeRow(row, random);
+        std::vector<SolidPart> parts = makeRow(row, random);
         std::size_t row_triangles = 0;
-        for (Part& part : parts) {
-            for (const Triangle& triangle : part.triangles)
+        for (SolidPart& part : parts) {
+            for (const SolidTriangle& triangle : part.triangles)
                 for (const dvec3& p : triangle) {
                     min_x = std::min(min_x, (mirrored ? -p.x : p.x) + shift);
                     max_x = std::max(max_x, (mirrored ? -p.x : p.x) + shift);
@@ -378,7 +357,7 @@ Result<Scene> makePlantScene(const SceneParameters& parameters) {
     // Under every row, reaching 2.5 beyond the first and last rows' centres (a row reaches at
     // most 1.45 either side of its centre: the largest tank's radius).
     const double front = (layers - 1) / 2.0 * kRowSpacing + kRowSpacing / 2 + 0.5;
-    std::vector<Triangle> floor;
+    std::vector<SolidTriangle> floor;
     addBox(floor, {min_x - kFloorMargin, -kFloorThickness, -front},
            {max_x + kFloorMargin, 0, front});
     for (std::size_t t = 0; t < floor.size(); ++t)

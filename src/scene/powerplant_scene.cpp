@@ -65,7 +65,6 @@ constexpr double kXRunLanes[4] = {2.0, 2.8, 5.2, 6.0};
 constexpr double kZRunLanes[4] = {1.6, 2.4, 5.6, 6.4};
 constexpr double kRackU = 4.0;
 constexpr double kMinPipeRadius = 0.1, kMaxPipeRadius = 0.2;
-constexpr double kFlangeScale = 1.3, kFlangeAdd = 0.02, kFlangeWidth = 0.12;
 constexpr double kFlangeOffsets[2] = {2.0, 6.0}; // in every bay, each moved by up to 0.3
 constexpr double kRunStart = 0.5, kRunEndMargin = 0.9, kRunTurnLength = 0.8;
 // Risers: at (u, v) = (0.9, 0.9) of an equipment bay, through a hole of the grating above that
@@ -104,21 +103,13 @@ constexpr int kAisleRow = 1;
 constexpr int kPipeSegments = 28, kVesselSegments = 96, kSmallSegments = 32;
 constexpr int kBendSteps = 8, kHeadRings = 8;
 
-constexpr float kPipeColours[][3] = {
-    {0.20f, 0.62f, 0.32f}, {0.95f, 0.78f, 0.15f}, {0.22f, 0.45f, 0.80f}, {0.90f, 0.45f, 0.12f},
-    {0.80f, 0.18f, 0.15f}, {0.72f, 0.72f, 0.70f}, {0.55f, 0.35f, 0.65f}};
-constexpr float kVesselColours[][3] = {
-    {0.86f, 0.88f, 0.90f}, {0.60f, 0.75f, 0.86f}, {0.74f, 0.85f, 0.70f}, {0.90f, 0.80f, 0.62f}};
-constexpr Rgba kColumnColour{0.36f, 0.40f, 0.46f, 1.0f};
-constexpr Rgba kGirderColour{0.85f, 0.68f, 0.12f, 1.0f};
+// Besides the shared palette (solid_shapes.h):
 constexpr Rgba kRackColour{0.80f, 0.55f, 0.10f, 1.0f};
 constexpr Rgba kRodColour{0.50f, 0.50f, 0.52f, 1.0f};
 constexpr Rgba kGratingColour{0.30f, 0.34f, 0.32f, 1.0f};
 constexpr Rgba kStairColour{0.75f, 0.60f, 0.10f, 1.0f};
 constexpr Rgba kWallColour{0.70f, 0.69f, 0.66f, 1.0f};
 constexpr Rgba kGlassColour{0.55f, 0.75f, 0.90f, 0.3f};
-constexpr Rgba kConcreteColour{0.48f, 0.48f, 0.46f, 1.0f};
-constexpr Rgba kSkidColour{0.15f, 0.35f, 0.55f, 1.0f};
 constexpr Rgba kMotorColour{0.25f, 0.50f, 0.30f, 1.0f};
 
 // Every kTransparentPipeEvery-th pipe and every kTransparentVesselEvery-th vessel is transparent
@@ -149,10 +140,6 @@ double floorOf(int storey) {
     return kStoreyHeight * storey;
 }
 
-Rgba pick(const float (&palette)[3], float alpha) {
-    return {palette[0], palette[1], palette[2], alpha};
-}
-
 /// Builds the parts of the plant in order and appends each as an object.
 class PlantBuilder {
 public:
@@ -181,9 +168,13 @@ public:
     }
 
 private:
-    void emit(SolidPart&& part) {
-        appendPart(scene_, part);
-        part.triangles.clear();
+    void emit(const SolidPart& part) { appendPart(scene_, part); }
+    /// One box as a part of its own.
+    void emitBox(std::string name, Rgba colour, const dvec3& low, const dvec3& high,
+                 bool transparent = false) {
+        SolidPart box = part(std::move(name), colour, transparent);
+        addBox(box.triangles, low, high);
+        emit(box);
     }
     static SolidPart part(std::string name, Rgba colour, bool transparent = false) {
         return {std::move(name), colour, transparent, {}};
@@ -207,15 +198,11 @@ private:
 
     void addSlabs() {
         const double top = kStoreyHeight * kStoreys;
-        SolidPart ground = part("ground_slab", kConcreteColour);
-        addBox(ground.triangles, {-kSlabMargin, -kSlabThickness, -kSlabMargin},
-               {layout_.width() + kSlabMargin, 0, layout_.depth() + kSlabMargin});
-        emit(std::move(ground));
-        SolidPart roof = part("roof", kConcreteColour);
-        addBox(
-            roof.triangles, {-kSlabMargin, top, -kSlabMargin},
+        emitBox("ground_slab", kConcreteColour, {-kSlabMargin, -kSlabThickness, -kSlabMargin},
+                {layout_.width() + kSlabMargin, 0, layout_.depth() + kSlabMargin});
+        emitBox(
+            "roof", kConcreteColour, {-kSlabMargin, top, -kSlabMargin},
             {layout_.width() + kSlabMargin, top + kSlabThickness, layout_.depth() + kSlabMargin});
-        emit(std::move(roof));
     }
 
     /// Columns at every bay corner, girders along x and z between them, and in every bay a rack
@@ -224,26 +211,21 @@ private:
         const double y = floorOf(storey);
         for (int j = 0; j <= layout_.bays_z; ++j)
             for (int i = 0; i <= layout_.bays_x; ++i) {
-                SolidPart column = part(label("column", storey, i, j), kColumnColour);
-                addBox(column.triangles, {kBay * i - kColumnHalf, y + kGap, kBay * j - kColumnHalf},
-                       {kBay * i + kColumnHalf, y + kStoreyHeight - kGap, kBay * j + kColumnHalf});
-                emit(std::move(column));
+                emitBox(label("column", storey, i, j), kColumnColour,
+                        {kBay * i - kColumnHalf, y + kGap, kBay * j - kColumnHalf},
+                        {kBay * i + kColumnHalf, y + kStoreyHeight - kGap, kBay * j + kColumnHalf});
             }
         for (int j = 0; j <= layout_.bays_z; ++j)
             for (int i = 0; i < layout_.bays_x; ++i) {
-                SolidPart girder = part(label("girder_x", storey, i, j), kGirderColour);
-                addBox(girder.triangles,
-                       {kBay * i + kGirderEnd, y + kXGirderBottom, kBay * j - kGirderHalf},
-                       {kBay * (i + 1) - kGirderEnd, y + kXGirderTop, kBay * j + kGirderHalf});
-                emit(std::move(girder));
+                emitBox(label("girder_x", storey, i, j), kGirderColour,
+                        {kBay * i + kGirderEnd, y + kXGirderBottom, kBay * j - kGirderHalf},
+                        {kBay * (i + 1) - kGirderEnd, y + kXGirderTop, kBay * j + kGirderHalf});
             }
         for (int i = 0; i <= layout_.bays_x; ++i)
             for (int j = 0; j < layout_.bays_z; ++j) {
-                SolidPart girder = part(label("girder_z", storey, i, j), kGirderColour);
-                addBox(girder.triangles,
-                       {kBay * i - kGirderHalf, y + kZGirderBottom, kBay * j + kGirderEnd},
-                       {kBay * i + kGirderHalf, y + kZGirderTop, kBay * (j + 1) - kGirderEnd});
-                emit(std::move(girder));
+                emitBox(label("girder_z", storey, i, j), kGirderColour,
+                        {kBay * i - kGirderHalf, y + kZGirderBottom, kBay * j + kGirderEnd},
+                        {kBay * i + kGirderHalf, y + kZGirderTop, kBay * (j + 1) - kGirderEnd});
             }
         for (int j = 0; j < layout_.bays_z; ++j)
             for (int i = 0; i < layout_.bays_x; ++i) {
@@ -251,21 +233,17 @@ private:
                 const bool aisle = Layout::isAisleRow(j);
                 const double x = kBay * i + kRackU, z0 = kBay * j + 0.05;
                 const double z1 = kBay * j + (aisle ? 3.6 : kBay - 0.05);
-                SolidPart rack = part(label("rack", storey, i, j), kRackColour);
-                addBox(rack.triangles, {x - kRackHalf, y + kRackBottom, z0},
-                       {x + kRackHalf, y + kRackTop, z1});
-                emit(std::move(rack));
+                emitBox(label("rack", storey, i, j), kRackColour,
+                        {x - kRackHalf, y + kRackBottom, z0}, {x + kRackHalf, y + kRackTop, z1});
                 // Rods under the girders along x (v = 0.1 and 7.9), or under the grating.
                 const double rod_zs[2] = {kBay * j + 0.1, aisle ? z1 - 0.1 : kBay * (j + 1) - 0.1};
                 for (int r = 0; r < 2; ++r) {
                     const bool under_girder = !aisle || r == 0;
                     const double top =
                         under_girder ? kXGirderBottom : kStoreyHeight - kGratingThickness;
-                    SolidPart rod =
-                        part(label(r == 0 ? "rod_a" : "rod_b", storey, i, j), kRodColour);
-                    addBox(rod.triangles, {x - kRodHalf, y + kRackTop + kGap, rod_zs[r] - kRodHalf},
-                           {x + kRodHalf, y + top - kGap, rod_zs[r] + kRodHalf});
-                    emit(std::move(rod));
+                    emitBox(label(r == 0 ? "rod_a" : "rod_b", storey, i, j), kRodColour,
+                            {x - kRodHalf, y + kRackTop + kGap, rod_zs[r] - kRodHalf},
+                            {x + kRodHalf, y + top - kGap, rod_zs[r] + kRodHalf});
                 }
             }
     }
@@ -279,7 +257,7 @@ private:
             addBox(grating.triangles, {x0, bottom, z - kBarHalf}, {x1, middle, z + kBarHalf});
         for (double x = x0 + kBarPitch / 2; x + kBarHalf < x1; x += kBarPitch)
             addBox(grating.triangles, {x - kBarHalf, middle, z0}, {x + kBarHalf, y, z1});
-        emit(std::move(grating));
+        emit(grating);
     }
 
     /// The floor of a storey above the ground: a grating in every bay, open over a stair that
@@ -334,38 +312,36 @@ private:
                                          "_" + std::to_string(k);
                 SolidPart wall = part(name, kWallColour);
                 addFrame(wall.triangles, frame);
-                emit(std::move(wall));
+                emit(wall);
                 // The glass: the window's opening less kGap all round, 2 cm thick.
                 const dvec3 normal = glm::cross(frame.a, frame.b) * 0.01;
                 const dvec3 low = frame.origin + frame.a * (kWindowStart + kGap) +
                                   frame.b * (kWindowLow + kGap) - normal;
                 const dvec3 high = frame.origin + frame.a * (kWindowEnd - kGap) +
                                    frame.b * (kWindowHigh - kGap) + normal;
-                SolidPart glass = part(name + "_glass", kGlassColour, true);
-                addBox(glass.triangles, glm::min(low, high), glm::max(low, high));
-                emit(std::move(glass));
+                emitBox(name + "_glass", kGlassColour, glm::min(low, high), glm::max(low, high),
+                        true);
             }
     }
 
     /// Rings of a straight run from `start` along `direction` (x or z) to `end`, with two
     /// flanges in every bay it crosses, each moved by up to 0.3 from kFlangeOffsets.
+    /// The rings' normal is `normal`, their binormal direction x normal (so that normal x
+    /// binormal = direction).
     void straightRun(std::vector<Ring>& rings, const dvec3& axis_point, const dvec3& direction,
-                     double start, double end, double radius, const dvec3& normal,
-                     const dvec3& binormal) {
+                     double start, double end, double radius, const dvec3& normal) {
+        const dvec3 binormal = glm::cross(direction, normal);
         const auto ring = [&](double s, double r) {
             rings.push_back({axis_point + direction * s, normal, binormal, r});
         };
-        const double flange_radius = kFlangeScale * radius + kFlangeAdd;
         ring(start, radius);
         for (int bay = 0; kBay * bay < end; ++bay)
             for (const double offset : kFlangeOffsets) {
                 const double s = kBay * bay + offset + random_.uniform(-0.3, 0.3);
                 if (s - kFlangeWidth < start || s + kFlangeWidth > end)
                     continue;
-                ring(s - kFlangeWidth / 2, radius);
-                ring(s - kFlangeWidth / 2, flange_radius);
-                ring(s + kFlangeWidth / 2, flange_radius);
-                ring(s + kFlangeWidth / 2, radius);
+                for (const auto& [at, r] : flangeRings(s, radius))
+                    ring(at, r);
             }
         ring(end, radius);
     }
@@ -401,7 +377,7 @@ private:
         const bool transparent = nextPipeIsTransparent();
         SolidPart pipe = part(std::move(name), pipeColour(transparent), transparent);
         addTube(pipe.triangles, rings, kPipeSegments, rings.front().centre, rings.back().centre);
-        emit(std::move(pipe));
+        emit(pipe);
     }
 
     /// Runs along x under every storey's ceiling: four lanes in equipment rows, two in aisle
@@ -415,9 +391,8 @@ private:
                 const double axis_y = y + (lane % 2 == 0 ? kXRunLowBottom + radius : kXRunHighAxis);
                 const dvec3 axis{0, axis_y, kBay * j + kXRunLanes[lane]};
                 std::vector<Ring> rings;
-                // y x z = x: the rings' normal and binormal for a run along +x.
                 straightRun(rings, axis, {1, 0, 0}, kRunStart, layout_.width() - kRunEndMargin,
-                            radius, {0, 1, 0}, {0, 0, 1});
+                            radius, {0, 1, 0});
                 bend(rings, {1, 0, 0}, {0, -1, 0}, radius, kRunTurnLength);
                 emitPipe(label("pipe_x", storey, lane, j), rings);
             }
@@ -435,9 +410,8 @@ private:
                 const double radius = random_.uniform(kMinPipeRadius, kMaxPipeRadius);
                 const dvec3 axis{kBay * i + kZRunLanes[lane], y + kZRunAxis, 0};
                 std::vector<Ring> rings;
-                // x x y = z.
                 straightRun(rings, axis, {0, 0, 1}, kRunStart, layout_.depth() - kRunEndMargin,
-                            radius, {1, 0, 0}, {0, 1, 0});
+                            radius, {1, 0, 0});
                 bend(rings, {0, 0, 1}, {0, 1, 0}, radius, kRunTurnLength);
                 emitPipe(label("pipe_z", storey, i, lane), rings);
             }
@@ -450,14 +424,12 @@ private:
         const double y = floorOf(storey);
         const double x = kBay * i + kRiserUV, z = kBay * j + kRiserUV;
         const double radius = random_.uniform(kMinPipeRadius, kMaxRiserRadius);
-        SolidPart stand = part(label("riser_stand", storey, i, j), kSkidColour);
-        addBox(stand.triangles, {x - 0.2, y + kGap, z - 0.2}, {x + 0.2, y + 0.25, z + 0.2});
-        emit(std::move(stand));
+        emitBox(label("riser_stand", storey, i, j), kEquipmentColour, {x - 0.2, y + kGap, z - 0.2},
+                {x + 0.2, y + 0.25, z + 0.2});
         std::vector<Ring> rings;
-        // z x x = y.
         const dvec3 axis{x, 0, z};
         straightRun(rings, axis, {0, 1, 0}, y + 0.25 + kGap, y + kStoreyHeight + kRiserTurnHeight,
-                    radius, {0, 0, 1}, {1, 0, 0});
+                    radius, {0, 0, 1});
         bend(rings, {0, 1, 0}, {1, 0, 0}, radius, kRiserStubLength);
         emitPipe(label("riser", storey, i, j), rings);
     }
@@ -472,7 +444,7 @@ private:
                    {x + kStairStart + kGoing * k, top - kTreadThickness, z + kStairLow},
                    {x + kStairStart + kGoing * (k + 1), top, z + kStairHigh});
         }
-        emit(std::move(treads));
+        emit(treads);
         // The stringers' outline: a band under the treads, vertical at both ends, kept 3 cm
         // short of the treads' first and last faces so that no face of one lies in the plane of
         // a face of the other.
@@ -491,7 +463,7 @@ private:
             SolidPart stringer =
                 part(label(side == 0 ? "stringer_a" : "stringer_b", storey, i, j), kStairColour);
             addPrism(stringer.triangles, outline, {0, 0, 1}, kStringerWidth);
-            emit(std::move(stringer));
+            emit(stringer);
             // The rail kRailHeight above the stringer's top edge, on three posts standing on it;
             // its ends 5 cm inside the stringer's.
             SolidPart rail =
@@ -511,7 +483,7 @@ private:
                        {px + 0.02, edge + rail_low - rise_over_post - kGap,
                         z0 + kStringerWidth - 0.01});
             }
-            emit(std::move(rail));
+            emit(rail);
         }
     }
 
@@ -522,11 +494,9 @@ private:
         const double plinth_top = centre.y + 0.2;
         const double height =
             kEquipmentTop - (plinth_top + kGap - centre.y) - head - random_.uniform(0, 0.5);
-        SolidPart plinth = part(label("tank_plinth", storey, i, j), kConcreteColour);
-        addBox(plinth.triangles,
-               {centre.x - radius - 0.1, centre.y + kGap, centre.z - radius - 0.1},
-               {centre.x + radius + 0.1, plinth_top, centre.z + radius + 0.1});
-        emit(std::move(plinth));
+        emitBox(label("tank_plinth", storey, i, j), kConcreteColour,
+                {centre.x - radius - 0.1, centre.y + kGap, centre.z - radius - 0.1},
+                {centre.x + radius + 0.1, plinth_top, centre.z + radius + 0.1});
         const dvec3 normal{0, 0, 1}, binormal{1, 0, 0}; // z x x = y
         const double bottom = plinth_top + kGap;
         std::vector<Ring> rings = {
@@ -543,7 +513,7 @@ private:
         SolidPart tank = part(label("tank", storey, i, j), vesselColour(transparent), transparent);
         addTube(tank.triangles, rings, kVesselSegments, rings.front().centre,
                 {centre.x, bottom + height + head, centre.z});
-        emit(std::move(tank));
+        emit(tank);
     }
 
     /// A vessel lying along `direction` (x or z) with ellipsoidal heads of depth `head` at both
@@ -570,15 +540,14 @@ private:
         SolidPart vessel = part(name, colour, transparent);
         addTube(vessel.triangles, rings, segments, start - direction * head,
                 end + direction * head);
-        emit(std::move(vessel));
+        emit(vessel);
         const dvec3 across = glm::abs(binormal);
         for (int s = 0; s < 2; ++s) {
             const dvec3 at = axis + direction * ((s == 0 ? -1 : 1) * length / 3);
             const dvec3 half = glm::abs(direction) * 0.15 + across * (0.7 * radius);
-            SolidPart saddle = part(name + (s == 0 ? "_saddle_a" : "_saddle_b"), kColumnColour);
-            addBox(saddle.triangles, {at.x - half.x, floor_y + kGap, at.z - half.z},
-                   {at.x + half.x, axis.y - radius - kGap, at.z + half.z});
-            emit(std::move(saddle));
+            emitBox(name + (s == 0 ? "_saddle_a" : "_saddle_b"), kColumnColour,
+                    {at.x - half.x, floor_y + kGap, at.z - half.z},
+                    {at.x + half.x, axis.y - radius - kGap, at.z + half.z});
         }
     }
 
@@ -586,10 +555,9 @@ private:
     /// casing standing beside it.
     void addPumpSkid(const std::string& name, const dvec3& centre) {
         const double plate_top = centre.y + 0.2;
-        SolidPart plate = part(name + "_base", kSkidColour);
-        addBox(plate.triangles, {centre.x - 1.2, centre.y + kGap, centre.z - 0.45},
-               {centre.x + 1.2, plate_top, centre.z + 0.45});
-        emit(std::move(plate));
+        emitBox(name + "_base", kEquipmentColour,
+                {centre.x - 1.2, centre.y + kGap, centre.z - 0.45},
+                {centre.x + 1.2, plate_top, centre.z + 0.45});
         const double motor_radius = 0.32, motor_axis = plate_top + 0.15 + motor_radius;
         addHorizontalVessel(name + "_motor", {centre.x - 0.45, motor_axis, centre.z}, {1, 0, 0},
                             motor_radius, 1.0, 0.15, plate_top, kMotorColour, false,
@@ -604,7 +572,7 @@ private:
                                    {{casing_x, bottom + 0.9, centre.z}, normal, binormal, 0.18}};
         SolidPart casing = part(name + "_casing", kMotorColour);
         addTube(casing.triangles, rings, kSmallSegments, rings.front().centre, rings.back().centre);
-        emit(std::move(casing));
+        emit(casing);
     }
 
     void addEquipment(int storey, int i, int j) {

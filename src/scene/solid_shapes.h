@@ -62,4 +62,37 @@ struct SolidPart {
 /// Appends a part to a scene as one object, its corners rounded to float.
 void appendPart(Scene& scene, const SolidPart& part);
 
+// What the CAD-like scenes share besides shapes: their colours and their pipes' flanges.
+
+/// Process-pipe colour codes (cooling water, gas, air, hot oil, fire water, steam, chemicals) and
+/// pale vessel colours, picked at random; painted steel, equipment and concrete.
+inline constexpr float kPipeColours[][3] = {
+    {0.20f, 0.62f, 0.32f}, {0.95f, 0.78f, 0.15f}, {0.22f, 0.45f, 0.80f}, {0.90f, 0.45f, 0.12f},
+    {0.80f, 0.18f, 0.15f}, {0.72f, 0.72f, 0.70f}, {0.55f, 0.35f, 0.65f}};
+inline constexpr float kVesselColours[][3] = {
+    {0.86f, 0.88f, 0.90f}, {0.60f, 0.75f, 0.86f}, {0.74f, 0.85f, 0.70f}, {0.90f, 0.80f, 0.62f}};
+inline constexpr Rgba kColumnColour{0.36f, 0.40f, 0.46f, 1.0f};
+inline constexpr Rgba kGirderColour{0.85f, 0.68f, 0.12f, 1.0f};
+inline constexpr Rgba kEquipmentColour{0.15f, 0.35f, 0.55f, 1.0f};
+inline constexpr Rgba kConcreteColour{0.48f, 0.48f, 0.46f, 1.0f};
+
+/// A palette entry with an alpha.
+inline Rgba pick(const float (&palette)[3], float alpha) {
+    return {palette[0], palette[1], palette[2], alpha};
+}
+
+/// A flange: a collar of radius kFlangeScale r + kFlangeAdd and width kFlangeWidth on a pipe of
+/// radius r.
+inline constexpr double kFlangeScale = 1.3, kFlangeAdd = 0.02, kFlangeWidth = 0.12;
+
+/// The four rings of a flange centred at `at` along a pipe of radius `radius`, as (position
+/// along the pipe, radius), in order.
+inline std::array<std::array<double, 2>, 4> flangeRings(double at, double radius) {
+    const double collar = kFlangeScale * radius + kFlangeAdd;
+    return {{{at - kFlangeWidth / 2, radius},
+             {at - kFlangeWidth / 2, collar},
+             {at + kFlangeWidth / 2, collar},
+             {at + kFlangeWidth / 2, radius}}};
+}
+
 } // namespace vissort::detail

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "exact/ray_caster.h"
+#include "scene_checks.h"
 #include "solid_checks.h"
 #include "vissort/scene_library.h"
 
@@ -69,10 +70,7 @@ TEST(PlantScene, DefaultsAreEightLayersAndSeedOne) {
 }
 
 TEST(PlantScene, BadParametersAreOneLineErrorsNamingTheKey) {
-    const struct {
-        SceneParameters parameters;
-        const char* expected;
-    } cases[] = {
+    const test::ParameterErrorCase cases[] = {
         {{{"layers", "0"}},
          "builtin:plant: parameter layers=0 is out of range (allowed 1 to 1000)"},
         {{{"layers", "1001"}}, "builtin:plant: parameter layers=1001 is out of range"},
@@ -81,29 +79,15 @@ TEST(PlantScene, BadParametersAreOneLineErrorsNamingTheKey) {
         {{{"seed", "-1"}}, "builtin:plant: parameter seed='-1' is not a non-negative integer"},
         {{{"n", "3"}}, "builtin:plant: unknown parameter 'n' (accepted: layers, seed)"},
     };
-    for (const auto& c : cases) {
-        const Result<Scene> scene = makeBuiltinScene("plant", c.parameters);
-        EXPECT_FALSE(scene) << c.expected;
-        EXPECT_NE(scene.error.find(c.expected), std::string::npos) << scene.error;
-        EXPECT_EQ(scene.error.find('\n'), std::string::npos);
-    }
+    test::expectParameterErrors("plant", cases);
     EXPECT_TRUE(makeBuiltinScene("plant", {{"layers", "1000"}, {"seed", "18446744073709551615"}}));
 }
 
 TEST(PlantScene, SameSeedSameBitsOtherSeedOtherPlant) {
     const Scene a = makePlant(6, 7), b = makePlant(6, 7), c = makePlant(6, 8);
-    EXPECT_EQ(a.positions.x, b.positions.x);
-    EXPECT_EQ(a.positions.y, b.positions.y);
-    EXPECT_EQ(a.positions.z, b.positions.z);
-    ASSERT_EQ(a.objects.size(), b.objects.size());
-    for (std::size_t i = 0; i < a.objects.size(); ++i) {
-        EXPECT_EQ(a.objects[i].name, b.objects[i].name);
-        EXPECT_EQ(a.objects[i].colour.r, b.objects[i].colour.r);
-        EXPECT_EQ(a.objects[i].colour.a, b.objects[i].colour.a);
-    }
+    ASSERT_TRUE(a.camera);
+    test::expectSameScene(a, b);
     EXPECT_NE(a.positions.x, c.positions.x);
-    ASSERT_TRUE(a.camera && b.camera);
-    EXPECT_EQ(a.camera->eye.z, b.camera->eye.z);
 }
 
 TEST(PlantScene, EveryRowHasItsNamedPartsAndModerateTriangleCounts) {

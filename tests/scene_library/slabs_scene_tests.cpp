@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "scene_checks.h"
 #include "vissort/scene_library.h"
 
 namespace vissort_test {
@@ -62,9 +63,7 @@ TEST(SlabsScene, CountsAndObjects) {
 
 TEST(SlabsScene, SameSeedSameBitsOtherSeedOtherTilts) {
     const Scene a = makeSlabs("50", "7"), b = makeSlabs("50", "7"), c = makeSlabs("50", "8");
-    EXPECT_EQ(a.positions.x, b.positions.x);
-    EXPECT_EQ(a.positions.y, b.positions.y);
-    EXPECT_EQ(a.positions.z, b.positions.z);
+    test::expectSameScene(a, b);
     EXPECT_NE(a.positions.z, c.positions.z);
 }
 

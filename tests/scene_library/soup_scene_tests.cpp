@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "scene_checks.h"
 #include "vissort/scene_library.h"
 
 namespace vissort_test {
@@ -50,9 +51,7 @@ TEST(SoupScene, OneObjectPerTriangle) {
 
 TEST(SoupScene, SameSeedSameBitsOtherSeedOtherTriangles) {
     const Scene a = makeSoup("300", "5"), b = makeSoup("300", "5"), c = makeSoup("300", "6");
-    EXPECT_EQ(a.positions.x, b.positions.x);
-    EXPECT_EQ(a.positions.y, b.positions.y);
-    EXPECT_EQ(a.positions.z, b.positions.z);
+    test::expectSameScene(a, b);
     EXPECT_NE(a.positions.x, c.positions.x);
 }
 

@@ -1,0 +1,56 @@
+// The generator checks of scene_checks.h.
+
+#include "scene_checks.h"
+
+#include <gtest/gtest.h>
+
+namespace vissort::test {
+namespace {
+
+void expectSameCamera(const CameraSpec& a, const CameraSpec& b) {
+    EXPECT_EQ(a.eye.x, b.eye.x);
+    EXPECT_EQ(a.eye.y, b.eye.y);
+    EXPECT_EQ(a.eye.z, b.eye.z);
+    EXPECT_EQ(a.target.x, b.target.x);
+    EXPECT_EQ(a.target.y, b.target.y);
+    EXPECT_EQ(a.target.z, b.target.z);
+}
+
+} // namespace
+
+void expectParameterErrors(const std::string& scene, std::span<const ParameterErrorCase> cases) {
+    for (const ParameterErrorCase& c : cases) {
+        const Result<Scene> made = makeBuiltinScene(scene, c.parameters);
+        EXPECT_FALSE(made) << c.expected;
+        EXPECT_NE(made.error.find(c.expected), std::string::npos) << made.error;
+        EXPECT_EQ(made.error.find('\n'), std::string::npos) << made.error;
+    }
+}
+
+void expectSameScene(const Scene& a, const Scene& b) {
+    EXPECT_EQ(a.positions.x, b.positions.x);
+    EXPECT_EQ(a.positions.y, b.positions.y);
+    EXPECT_EQ(a.positions.z, b.positions.z);
+    ASSERT_EQ(a.objects.size(), b.objects.size());
+    for (std::size_t i = 0; i < a.objects.size(); ++i) {
+        const SceneObject &x = a.objects[i], &y = b.objects[i];
+        EXPECT_EQ(x.name, y.name);
+        EXPECT_EQ(x.first_triangle, y.first_triangle) << x.name;
+        EXPECT_EQ(x.triangle_count, y.triangle_count) << x.name;
+        EXPECT_EQ(x.transparent, y.transparent) << x.name;
+        EXPECT_EQ(x.colour.r, y.colour.r) << x.name;
+        EXPECT_EQ(x.colour.g, y.colour.g) << x.name;
+        EXPECT_EQ(x.colour.b, y.colour.b) << x.name;
+        EXPECT_EQ(x.colour.a, y.colour.a) << x.name;
+    }
+    ASSERT_EQ(a.camera.has_value(), b.camera.has_value());
+    if (a.camera)
+        expectSameCamera(*a.camera, *b.camera);
+    ASSERT_EQ(a.camera_path.size(), b.camera_path.size());
+    for (std::size_t k = 0; k < a.camera_path.size(); ++k) {
+        EXPECT_EQ(a.camera_path[k].time, b.camera_path[k].time);
+        expectSameCamera(a.camera_path[k].camera, b.camera_path[k].camera);
+    }
+}
+
+} // namespace vissort::test
