@@ -18,12 +18,10 @@
 #include <string>
 #include <vector>
 
+#include "transparency_bench.h"
 #include "vissort/camera_path.h"
 #include "vissort/result.h"
 #include "vissort/scene_orderer.h"
-#if VISSORT_WITH_GL
-#include "transparency_bench.h"
-#endif
 
 namespace vissort {
 class GlContext;
@@ -45,7 +43,7 @@ struct PaperFrame {
     std::optional<uint64_t> gl_queries; // the first gl_frames frames only
     std::optional<double> gl_order_ms;
     std::optional<double> render_ms;  // vissort's transparency renderer, whole frame (OpenGL)
-    std::optional<double> collide_ms; // vissort's collision detector (dynamic scenes)
+    std::optional<double> collide_ms; // vissort's collision detector (PaperPath::collide)
 };
 
 /// A scene walked frame by frame along a camera path.
@@ -59,6 +57,7 @@ struct PaperPath {
     uint64_t primitives = 0; // of the ordering level (objects, or triangles)
     uint64_t triangles = 0;
     std::vector<PaperReported> reported;
+    bool collide = false; // measure vissort's collision detector too (a dynamic scene)
     std::vector<PaperFrame> frames;
 };
 
@@ -72,17 +71,12 @@ struct PaperBenchSettings {
 
 struct PaperBenchResult {
     std::vector<PaperPath> paths;
-#if VISSORT_WITH_GL
-    std::vector<TransparencyBenchRow> figure6;
+    std::vector<TransparencyBenchRow> figure6; // empty without an OpenGL context
     TransparencyBenchSettings figure6_settings;
-#endif
 };
 
 /// Progress: what is being measured, and steps done of the run's total.
 using PaperProgress = std::function<void(const std::string& what, int done, int total)>;
-
-/// The paths measured, before any is run (their frames empty).
-std::vector<PaperPath> paperPaths(const PaperBenchSettings& settings);
 
 /// Measures every path frame by frame (each oracle's orderer starting from its own previous
 /// frame), then figure 6 when there is a context. A one-line message when a scene cannot be made.

@@ -21,6 +21,7 @@
 #include "support/measurement.h"
 #include "vissort/image.h"
 #if VISSORT_WITH_GL
+#include "cli/transparency_records.h"
 #include "vissort/gl_context.h"
 #endif
 
@@ -256,28 +257,18 @@ std::string figure6Csv(const std::vector<bench::TransparencyBenchRow>& rows) {
             const bench::TransparencyMeasured& measured = row.methods[m];
             csv << row.family << ',' << row.specification << ',' << row.depth << ',' << row.seen
                 << ',' << blendMethodName(bench::kTransparencyMethods[m]) << ',' << measured.ms
-                << ',' << measured.order_ms << ',' << measured.passes << ','
-                << (m == bench::kTransparencyLinkedList ? 0 : measured.max_abs) << '\n';
+                << ',' << measured.order_ms << ',' << measured.passes << ',' << measured.max_abs
+                << '\n';
         }
     return csv.str();
 }
 
+// Settings, and the rows as `bench transparency --json` writes them (a record a method).
 nlohmann::json figure6Json(const bench::PaperBenchResult& result) {
     nlohmann::json rows = nlohmann::json::array();
-    for (const bench::TransparencyBenchRow& row : result.figure6) {
-        nlohmann::json methods = nlohmann::json::object();
-        for (std::size_t m = 0; m < row.methods.size(); ++m)
-            methods[blendMethodName(bench::kTransparencyMethods[m])] = {
-                {"ms", row.methods[m].ms},
-                {"order_ms", row.methods[m].order_ms},
-                {"passes", row.methods[m].passes},
-                {"max_abs", row.methods[m].max_abs}};
-        rows.push_back({{"family", row.family},
-                        {"scene", row.specification},
-                        {"depth", row.depth},
-                        {"seen", row.seen},
-                        {"methods", methods}});
-    }
+    for (const bench::TransparencyBenchRow& row : result.figure6)
+        for (nlohmann::json& record : transparencyRecords(row))
+            rows.push_back(std::move(record));
     const auto& s = result.figure6_settings;
     return {{"width", s.width},
             {"height", s.height},

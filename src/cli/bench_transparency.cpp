@@ -10,6 +10,7 @@
 #include "cli/bench_common.h"
 #include "cli/commands.h"
 #include "cli/json_output.h"
+#include "cli/transparency_records.h"
 #include "support/measurement.h"
 #include "transparency_bench.h"
 
@@ -75,22 +76,8 @@ int runTransparencyBench(const BenchOptions& options) {
                 std::cout << (i > 0 ? ", " : "") << blendMethodName(kTransparencyMethods[i]) << ' '
                           << measured[i].max_abs;
         std::cout << std::endl; // a row at a time: a long run shows its progress
-        for (std::size_t i = 0; i < measured.size(); ++i) {
-            const bench::TransparencyMeasured& m = measured[i];
-            nlohmann::json record = {{"scene", row.family},
-                                     {"specification", row.specification},
-                                     {"depth", row.depth},
-                                     {"depth_seen", row.seen},
-                                     {"method", blendMethodName(kTransparencyMethods[i])},
-                                     {"ms", m.ms},
-                                     {"order_ms", m.order_ms},
-                                     {"passes", m.passes},
-                                     {"fragments", m.fragments},
-                                     {"ms_over_vissort", m.ms / vissort_ms}};
-            if (kTransparencyMethods[i] != BlendMethod::linked_list)
-                record["error"] = {{"max_abs", m.max_abs}, {"rmse", m.rmse}};
+        for (nlohmann::json& record : transparencyRecords(row))
             rows.push_back(std::move(record));
-        }
     };
     const Result<std::vector<bench::TransparencyBenchRow>> measured =
         bench::runTransparencyBench(settings, print_family, print_row);

@@ -1,0 +1,16 @@
+#pragma once
+// The JSON records of a `bench transparency` row, one per method: what `bench transparency
+// --json` writes and `bench paper`'s figure 6 holds.
+
+#include <nlohmann/json.hpp>
+
+#include "transparency_bench.h"
+
+namespace vissort::cli {
+
+/// {"scene", "specification", "depth", "depth_seen", "method", "ms", "order_ms", "passes",
+/// "fragments", "ms_over_vissort", "error": {"max_abs", "rmse"} (not for linked-list, the
+/// reference)} for each method of the row.
+nlohmann::json transparencyRecords(const bench::TransparencyBenchRow& row);
+
+} // namespace vissort::cli
