@@ -111,8 +111,9 @@ struct RenderStats {
     uint32_t passes = 0;    // geometry passes over the transparent primitives (or some of them)
     uint64_t fragments = 0; // fragments blended from fragment lists (linked-list, vissort's
                             // per-pixel groups); 0 for the other methods
-    uint32_t groups = 0;    // vissort: groups composited per pixel (cycles, self-overlapping
-                            // objects)
+    uint32_t groups = 0;    // vissort: groups composited per pixel: the order's cycles
+                            // (checked, in the repair's list pass; unchecked, each at its place,
+                            // with the objects that overlap themselves at object level)
     uint64_t repaired_pixels = 0; // vissort: pixels where the GPU's depths contradicted the
                                   // order (near an edge, or a tie), composited again
     VisSortStats order;           // vissort: the ordering's statistics

@@ -27,6 +27,44 @@ void sequenceFromOrder(std::span<const uint32_t> front_to_back,
     }
 }
 
+namespace {
+
+// Distance along the view direction: monotone in depth for both projections, and defined for
+// points behind the eye.
+double depthAlongView(const Vec3& point, const ViewProjection& view) {
+    return (point.x - view.eye_position.x) * view.forward.x +
+           (point.y - view.eye_position.y) * view.forward.y +
+           (point.z - view.eye_position.z) * view.forward.z;
+}
+
+} // namespace
+
+void blendGroupsInSequence(PositionsView positions, const ViewProjection& view,
+                           DrawSequence& sequence) {
+    std::vector<std::pair<double, uint32_t>> keyed;
+    for (const DrawSegment& segment : sequence.segments) {
+        if (!segment.per_pixel)
+            continue;
+        const std::span<uint32_t> group =
+            std::span(sequence.triangles).subspan(segment.first_triangle, segment.triangle_count);
+        keyed.clear();
+        for (uint32_t t : group) {
+            const std::size_t c = std::size_t(t) * 3;
+            const Vec3 sum =
+                positions.corner(c) + positions.corner(c + 1) + positions.corner(c + 2);
+            keyed.push_back({depthAlongView(sum / 3.0, view), t});
+        }
+        // Farthest first; ties by id, so that the sequence is deterministic.
+        std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) {
+            return a.first > b.first || (a.first == b.first && a.second < b.second);
+        });
+        for (std::size_t i = 0; i < group.size(); ++i)
+            group[i] = keyed[i].second;
+    }
+    if (!sequence.triangles.empty())
+        sequence.segments.assign(1, {0, uint32_t(sequence.triangles.size()), false, PixelRect{}});
+}
+
 std::vector<uint32_t> centroidBackToFront(PositionsView positions,
                                           std::span<const PrimitiveRange> primitives,
                                           const ViewProjection& view) {
@@ -38,12 +76,7 @@ std::vector<uint32_t> centroidBackToFront(PositionsView positions,
         for (std::size_t c = first; c < first + count; ++c)
             sum = {sum.x + positions.x[c], sum.y + positions.y[c], sum.z + positions.z[c]};
         const double n = double(std::max<std::size_t>(count, 1));
-        // Distance along the view direction: monotone in depth for both projections, and
-        // defined for centroids behind the eye.
-        const Vec3 centroid{sum.x / n, sum.y / n, sum.z / n};
-        depth[p] = (centroid.x - view.eye_position.x) * view.forward.x +
-                   (centroid.y - view.eye_position.y) * view.forward.y +
-                   (centroid.z - view.eye_position.z) * view.forward.z;
+        depth[p] = depthAlongView({sum.x / n, sum.y / n, sum.z / n}, view);
     }
     std::vector<uint32_t> order(primitives.size());
     std::iota(order.begin(), order.end(), 0u);
@@ -78,6 +111,17 @@ PixelRect screenRectOf(PositionsView positions, std::span<const uint32_t> triang
     const double y0 = std::clamp(std::floor(low_y) - 1, 0.0, double(view.height));
     const double y1 = std::clamp(std::ceil(high_y) + 1, 0.0, double(view.height));
     return {uint32_t(x0), uint32_t(y0), uint32_t(x1 - x0), uint32_t(y1 - y0)};
+}
+
+void trianglesCovering(PositionsView positions, std::span<const uint32_t> triangles,
+                       const ViewProjection& view, const MarkedPixels& marked,
+                       std::vector<uint32_t>& covering) {
+    covering.clear();
+    if (marked.count() == 0)
+        return;
+    for (uint32_t t : triangles)
+        if (marked.anyTileIn(screenRectOf(positions, std::span(&t, 1), view)))
+            covering.push_back(t);
 }
 
 } // namespace vissort::detail

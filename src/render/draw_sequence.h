@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "render/marked_pixels.h"
 #include "render/pixel_rect.h"
 #include "vissort/camera.h"
 #include "vissort/scene.h"
@@ -38,6 +39,15 @@ void sequenceFromOrder(std::span<const uint32_t> front_to_back,
                        std::span<const PrimitiveRange> primitives,
                        std::span<const uint32_t> group_of, DrawSequence& sequence);
 
+/// Turns the sequence's groups into runs blended in sequence, for a checked blend
+/// (verified_blending.h): the check marks every pixel where fragments of a group came out of
+/// depth order, and its repair composites all those pixels in one list pass, where a group per
+/// pixel costs a list pass of its own. Each group's triangles (scene ids into positions) are put
+/// back to front by centroid depth, so that few pixels need the repair; runs are merged into one
+/// segment (one draw).
+void blendGroupsInSequence(PositionsView positions, const ViewProjection& view,
+                           DrawSequence& sequence);
+
 /// Primitives sorted by the depth of their centroid (the mean of their corners), farthest first:
 /// the engines' approximation. Ties keep id order.
 std::vector<uint32_t> centroidBackToFront(PositionsView positions,
@@ -48,5 +58,11 @@ std::vector<uint32_t> centroidBackToFront(PositionsView positions,
 /// with a pixel's margin; the whole image when a corner is at or behind the eye plane.
 PixelRect screenRectOf(PositionsView positions, std::span<const uint32_t> triangles,
                        const ViewProjection& view);
+
+/// The triangles (scene ids into positions) whose screen rectangle (screenRectOf) overlaps a tile
+/// holding a marked pixel, in the order given: every triangle that may cover a marked pixel.
+void trianglesCovering(PositionsView positions, std::span<const uint32_t> triangles,
+                       const ViewProjection& view, const MarkedPixels& marked,
+                       std::vector<uint32_t>& covering);
 
 } // namespace vissort::detail

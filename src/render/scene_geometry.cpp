@@ -24,6 +24,7 @@ SceneGeometry::SceneGeometry(const Scene& scene, std::span<const float> object_c
     objects_ = createBuffer();
     colours_ = createBuffer();
     elements_ = createBuffer();
+    subset_elements_ = createBuffer();
     highlighted_ = createBuffer();
     highlight_flags_.assign(scene.triangleCount(), 0);
     glNamedBufferStorage(highlighted_.get(),
@@ -71,18 +72,54 @@ void SceneGeometry::upload(PositionsView positions) {
                       vertex_data_.data(), GL_STREAM_DRAW);
 }
 
-void SceneGeometry::setTriangles(std::span<const uint32_t> opaque,
-                                 std::span<const uint32_t> transparent) {
-    element_data_.clear();
-    element_data_.reserve((opaque.size() + transparent.size()) * 3);
+namespace {
+
+// The corners of the opaque triangles, then of the transparent ones, into buffer.
+void uploadElements(std::span<const uint32_t> opaque, std::span<const uint32_t> transparent,
+                    std::vector<uint32_t>& data, const GlBuffer& buffer) {
+    data.clear();
+    data.reserve((opaque.size() + transparent.size()) * 3);
     for (std::span<const uint32_t> list : {opaque, transparent})
         for (uint32_t t : list)
             for (uint32_t k = 0; k < 3; ++k)
-                element_data_.push_back(t * 3 + k);
-    glNamedBufferData(elements_.get(), GLsizeiptr(element_data_.size() * sizeof(uint32_t)),
-                      element_data_.data(), GL_STREAM_DRAW);
+                data.push_back(t * 3 + k);
+    glNamedBufferData(buffer.get(), GLsizeiptr(data.size() * sizeof(uint32_t)), data.data(),
+                      GL_STREAM_DRAW);
+}
+
+void drawElements(std::size_t first_triangle, std::size_t count) {
+    if (count == 0)
+        return;
+    glDrawElements(GL_TRIANGLES, GLsizei(count * 3), GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(first_triangle * 3 * sizeof(uint32_t)));
+}
+
+} // namespace
+
+void SceneGeometry::setTriangles(std::span<const uint32_t> opaque,
+                                 std::span<const uint32_t> transparent) {
+    uploadElements(opaque, transparent, element_data_, elements_);
     opaque_count_ = opaque.size();
     transparent_count_ = transparent.size();
+}
+
+void SceneGeometry::setSubset(std::span<const uint32_t> opaque,
+                              std::span<const uint32_t> transparent) {
+    uploadElements(opaque, transparent, subset_data_, subset_elements_);
+    subset_opaque_count_ = opaque.size();
+    subset_transparent_count_ = transparent.size();
+}
+
+void SceneGeometry::drawOpaqueSubset() const {
+    glVertexArrayElementBuffer(vertex_array_.get(), subset_elements_.get());
+    drawElements(0, subset_opaque_count_);
+    glVertexArrayElementBuffer(vertex_array_.get(), elements_.get());
+}
+
+void SceneGeometry::drawTransparentSubset() const {
+    glVertexArrayElementBuffer(vertex_array_.get(), subset_elements_.get());
+    drawElements(subset_opaque_count_, subset_transparent_count_);
+    glVertexArrayElementBuffer(vertex_array_.get(), elements_.get());
 }
 
 void SceneGeometry::setHighlighted(std::span<const uint32_t> triangles) {
@@ -121,17 +158,11 @@ void SceneGeometry::bind() const {
 }
 
 void SceneGeometry::drawOpaque() const {
-    if (opaque_count_ == 0)
-        return;
-    glDrawElements(GL_TRIANGLES, GLsizei(opaque_count_ * 3), GL_UNSIGNED_INT, nullptr);
+    drawElements(0, opaque_count_);
 }
 
 void SceneGeometry::drawTransparent(std::size_t first, std::size_t count) const {
-    if (count == 0)
-        return;
-    const std::size_t first_corner = (opaque_count_ + first) * 3;
-    glDrawElements(GL_TRIANGLES, GLsizei(count * 3), GL_UNSIGNED_INT,
-                   reinterpret_cast<const void*>(first_corner * sizeof(uint32_t)));
+    drawElements(opaque_count_ + first, count);
 }
 
 } // namespace vissort::detail

@@ -42,14 +42,23 @@ public:
     void drawTransparent(std::size_t first, std::size_t count) const;
     std::size_t transparentCount() const { return transparent_count_; }
 
+    /// A second list of triangles (scene ids), opaque and transparent, drawn on their own by the
+    /// two calls below: the few a repair redraws (verified_blending.h), without touching the
+    /// frame's list.
+    void setSubset(std::span<const uint32_t> opaque, std::span<const uint32_t> transparent);
+    void drawOpaqueSubset() const;
+    void drawTransparentSubset() const;
+
 private:
     RenderMesh mesh_;
     GlVertexArray vertex_array_;
-    GlBuffer vertices_, objects_, colours_, elements_, highlighted_;
+    GlBuffer vertices_, objects_, colours_, elements_, subset_elements_, highlighted_;
     TrianglePositions uploaded_; // what the vertex buffer holds
     std::vector<float> vertex_data_;
     std::vector<uint32_t> element_data_;
     std::size_t opaque_count_ = 0, transparent_count_ = 0;
+    std::vector<uint32_t> subset_data_;
+    std::size_t subset_opaque_count_ = 0, subset_transparent_count_ = 0;
     std::vector<uint32_t> highlight_flags_; // one per triangle
     bool flat_ = false;
     bool highlighting_ = false;

@@ -20,22 +20,6 @@ void main() {
 }
 )";
 
-// How many pixels are marked, and the rectangle around them: (count, x0, y0, x1, y1) with the
-// bounds inclusive, set by atomics from (0, ~0, ~0, 0, 0).
-constexpr const char* kScanBody = R"(
-layout(binding = 0) uniform usampler2D marks;
-layout(std430, binding = 4) buffer Marked { uint count; uint x0; uint y0; uint x1; uint y1; };
-void main() {
-    ivec2 pixel;
-    if (!rectanglePixel(pixel) || texelFetch(marks, pixel, 0).r == 0u) return;
-    atomicAdd(count, 1u);
-    atomicMin(x0, uint(pixel.x));
-    atomicMin(y0, uint(pixel.y));
-    atomicMax(x1, uint(pixel.x));
-    atomicMax(y1, uint(pixel.y));
-}
-)";
-
 // A triangle over the whole viewport, for the passes that only test the stencil.
 constexpr const char* kCoverVertexShader = R"(#version 450 core
 void main() {
@@ -77,15 +61,10 @@ VerifiedBlending::VerifiedBlending()
     : blend_program_(linkProgram(kShadeVertexShader, kShadeFragmentShader)),
       opaque_blend_program_(linkProgram(kShadeVertexShader, kCheckedBlendFragmentShader)),
       opaque_program_(linkProgram(kShadeVertexShader, kOpaqueAgainFragmentShader)),
-      background_program_(linkProgram(kCoverVertexShader, kBackgroundFragmentShader)),
-      scan_program_(linkPixelProgram(kScanBody)), query_(makeQuery()) {
+      background_program_(linkProgram(kCoverVertexShader, kBackgroundFragmentShader)) {
     GLuint name = 0;
     glCreateVertexArrays(1, &name);
     empty_vertex_array_ = GlVertexArray(name);
-    glCreateBuffers(1, &name);
-    marked_ = GlBuffer(name);
-    glNamedBufferStorage(marked_.get(), 5 * sizeof(GLuint), nullptr,
-                         GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
 }
 
 void VerifiedBlending::resize(const RenderTarget& target) {
@@ -96,20 +75,15 @@ void VerifiedBlending::resize(const RenderTarget& target) {
     height_ = target.height();
     target_colour_ = target.colourTexture();
     nearest_ = makeTexture(GL_DEPTH32F_STENCIL8, width_, height_);
-    // Compute passes read the marks: the stencil, as an unsigned integer texture, which is only
-    // complete (readable) with nearest filtering.
-    glTextureParameteri(nearest_.get(), GL_DEPTH_STENCIL_TEXTURE_MODE, GL_STENCIL_INDEX);
-    glTextureParameteri(nearest_.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(nearest_.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     framebuffer_ = makeFramebuffer({target_colour_}, nearest_.get(), GL_DEPTH_STENCIL_ATTACHMENT);
 }
 
-VerifiedBlending::Result VerifiedBlending::composite(
-    const RenderTarget& target, FragmentLists& lists, const DrawSequence& sequence, bool repair,
-    const Rgba& background, bool has_opaque, const std::function<void(GLuint program)>& draw_opaque,
+VerifiedBlending::Result VerifiedBlending::blend(
+    const RenderTarget& target, FragmentLists& lists, const DrawSequence& sequence, bool has_opaque,
     const std::function<void(GLuint program, std::size_t first, std::size_t count)>& draw) {
     Result result;
-    if (sequence.triangles.empty())
+    blended_ = !sequence.triangles.empty();
+    if (!blended_)
         return result;
     resize(target);
     const float far = 1.0f;
@@ -156,38 +130,40 @@ VerifiedBlending::Result VerifiedBlending::composite(
     glDepthMask(GL_FALSE);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_STENCIL_TEST);
-    if (!repair)
-        return result;
+    return result;
+}
 
-    // Any mark? One stencil-tested triangle over the screen answers; only then are the marks
-    // counted and bounded, and repaired.
+MarkedPixels VerifiedBlending::marked() const {
+    if (!blended_)
+        return {};
+    // One byte a pixel (2 MB at 1600x1200), scanned on the CPU: cheaper than counting and
+    // bounding the marks in a pass over every pixel (14 ms at 1024x1024 on llvmpipe).
+    std::vector<uint8_t> stencil(std::size_t(width_) * height_);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTextureImage(nearest_.get(), 0, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE,
+                      GLsizei(stencil.size()), stencil.data());
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    return MarkedPixels(stencil, width_, height_);
+}
+
+VerifiedBlending::Result
+VerifiedBlending::repair(const RenderTarget& target, FragmentLists& lists,
+                         const MarkedPixels& marked, const Rgba& background, bool has_opaque,
+                         const std::function<void(GLuint program)>& draw_opaque,
+                         const std::function<void(GLuint program)>& draw_transparent) {
+    Result result;
+    if (marked.count() == 0)
+        return result;
+    result.repaired_pixels = marked.count();
+    const PixelRect rect = marked.bounds();
+
+    // On marked pixels only (stencil test): the background, the opaque surfaces again, then
+    // every transparent fragment from lists.
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
+    glViewport(0, 0, GLsizei(width_), GLsizei(height_));
     glEnable(GL_STENCIL_TEST);
     glStencilFunc(GL_EQUAL, kMark, 0xFF);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glUseProgram(background_program_.get());
-    glBindVertexArray(empty_vertex_array_.get());
-    const bool any_marked = anySamplePasses(query_, [] { glDrawArrays(GL_TRIANGLES, 0, 3); });
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glDisable(GL_STENCIL_TEST);
-    if (!any_marked)
-        return result;
-    const GLuint initial[5] = {0, ~0u, ~0u, 0, 0};
-    glNamedBufferSubData(marked_.get(), 0, sizeof(initial), initial);
-    glBindTextureUnit(0, nearest_.get());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, marked_.get());
-    runPixelProgram(scan_program_.get(), target.whole());
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    GLuint marked[5];
-    glGetNamedBufferSubData(marked_.get(), 0, sizeof(marked), marked);
-    result.repaired_pixels = marked[0];
-    const PixelRect rect{marked[1], marked[2], marked[3] - marked[1] + 1,
-                         marked[4] - marked[2] + 1};
-
-    // The repair, on marked pixels only (stencil test): the background, the opaque surfaces
-    // again, then every transparent fragment from lists.
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
-    glEnable(GL_STENCIL_TEST);
     glEnable(GL_SCISSOR_TEST);
     glScissor(GLint(rect.x), GLint(rect.y), GLsizei(rect.width), GLsizei(rect.height));
     glProgramUniform4f(background_program_.get(),
@@ -197,14 +173,15 @@ VerifiedBlending::Result VerifiedBlending::composite(
     glBindVertexArray(empty_vertex_array_.get());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindTextureUnit(1, target.depthTexture());
-    draw_opaque(opaque_program_.get());
+    if (has_opaque)
+        draw_opaque(opaque_program_.get());
     glDisable(GL_SCISSOR_TEST);
-    const FragmentLists::Result listed = lists.composite(target, rect, opaque_depth, [&] {
-        draw(lists.buildProgram(), 0, sequence.triangles.size());
-    });
+    const GLuint opaque_depth = has_opaque ? target.depthTexture() : 0;
+    const FragmentLists::Result listed = lists.composite(
+        target, rect, opaque_depth, [&] { draw_transparent(lists.buildProgram()); });
     glDisable(GL_STENCIL_TEST);
-    result.fragments += listed.fragments;
-    result.extra_passes += listed.passes;
+    result.fragments = listed.fragments;
+    result.extra_passes = listed.passes;
     return result;
 }
 

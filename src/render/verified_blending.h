@@ -3,13 +3,15 @@
 // the image is exact whatever the order's source got wrong. While the order's runs blend, a depth
 // buffer of their own keeps each pixel's nearest blended depth (test LESS, writes on); a fragment
 // that is not nearer than it came after something in front of it, and the stencil marks its
-// pixel. Groups (the primitives the order cannot separate) are composited per pixel from fragment
-// lists at their place, checked the same way. Marked pixels are composited again at the end:
-// the background, the opaque surfaces drawn again, and every transparent fragment from lists.
+// pixel. Groups (the primitives the order cannot separate) are blended in the sequence like the
+// rest, and the check marks the pixels where their fragments came out of depth order (unchecked,
+// they are composited per pixel from fragment lists at their place). Marked pixels are
+// composited again at the end, in one list pass: the background, the opaque surfaces drawn
+// again, and every transparent fragment that covers them.
 //
-// With Vis-sort's order marked pixels are rare: a pixel centre within a rounding error of an
-// edge, which the oracle's rasterizer and the GPU's put on different sides, or depths that tie
-// exactly (docs/transparency.md).
+// With Vis-sort's order marked pixels are few: where a cycle's triangles overlap, a pixel centre
+// within a rounding error of an edge, which the oracle's rasterizer and the GPU's put on
+// different sides, or depths that tie exactly (docs/transparency.md).
 
 #include <cstddef>
 #include <cstdint>
@@ -18,6 +20,7 @@
 #include "gl/gl_objects.h"
 #include "render/draw_sequence.h"
 #include "render/fragment_lists.h"
+#include "render/marked_pixels.h"
 #include "render/render_target.h"
 #include "vissort/geometry.h"
 
@@ -34,30 +37,39 @@ public:
     };
 
     /// Composites the sequence's transparent triangles onto the target's colour (which holds the
-    /// opaque surfaces, their depth in the target's depth). `draw(program, first, count)` draws
+    /// opaque surfaces, their depth in the target's depth), marking every pixel where a fragment
+    /// came after one in front of it or tied with it. `draw(program, first, count)` draws
     /// sequence triangles [first, first + count) with program bound and its view set; programs
-    /// are the shading vertex shader's. lists serves the groups and the repair. Without repair,
-    /// marked pixels keep the order's blend (an unchecked order, its groups still per pixel).
-    /// `draw_opaque(program)` draws the opaque triangles (none unless has_opaque) the same way:
-    /// the repair draws the background over marked pixels, then the opaque surfaces again.
-    Result composite(
-        const RenderTarget& target, FragmentLists& lists, const DrawSequence& sequence, bool repair,
-        const Rgba& background, bool has_opaque,
-        const std::function<void(GLuint program)>& draw_opaque,
-        const std::function<void(GLuint program, std::size_t first, std::size_t count)>& draw);
+    /// are the shading vertex shader's. lists serve the sequence's per-pixel groups; without a
+    /// repair, marked pixels keep the order's blend (an unchecked order, its groups per pixel).
+    Result
+    blend(const RenderTarget& target, FragmentLists& lists, const DrawSequence& sequence,
+          bool has_opaque,
+          const std::function<void(GLuint program, std::size_t first, std::size_t count)>& draw);
+
+    /// The pixels the last blend marked (none when it had nothing to blend).
+    MarkedPixels marked() const;
+
+    /// Composites the marked pixels again: the background, the opaque surfaces again, then every
+    /// transparent fragment from lists. `draw_opaque(program)` and `draw_transparent(program)`
+    /// draw, the same way as blend's draw, at least every opaque and transparent triangle that
+    /// may cover a marked pixel (trianglesCovering); each may run more than once.
+    Result repair(const RenderTarget& target, FragmentLists& lists, const MarkedPixels& marked,
+                  const Rgba& background, bool has_opaque,
+                  const std::function<void(GLuint program)>& draw_opaque,
+                  const std::function<void(GLuint program)>& draw_transparent);
 
 private:
     void resize(const RenderTarget& target);
 
     GlProgram blend_program_, opaque_blend_program_; // without and with the opaque test
-    GlProgram opaque_program_, background_program_, scan_program_;
-    GlQuery query_;
+    GlProgram opaque_program_, background_program_;
     GlVertexArray empty_vertex_array_;
     GlTexture nearest_;         // depth and stencil of the check
     GlFramebuffer framebuffer_; // the target's colour with nearest_
-    GlBuffer marked_;           // count and bounds of the marked pixels
     uint32_t width_ = 0, height_ = 0;
     GLuint target_colour_ = 0;
+    bool blended_ = false; // the last blend drew something: its marks are in nearest_
 };
 
 } // namespace vissort::detail

@@ -254,6 +254,38 @@ TEST(TransparencyRenderer, NearTiesAreRepairedOrCompositedPerPixel) {
     EXPECT_GT(unchecked.groups, checked.groups + 10); // the near ties, each composited per pixel
 }
 
+// Checked, the groups (cycles; at object level every object, its triangles by centroid depth)
+// are blended in the sequence and the check marks where their fragments came out of depth order:
+// one geometry pass and one list pass for the whole frame, exact. Unchecked, each group takes a
+// list pass of its own.
+TEST(TransparencyRenderer, CheckedGroupsShareTheRepairsListPass) {
+    const RenderCase c = renderCases()[1]; // interpenetrating: cycles at both levels
+    const Scene scene = test::loadTestScene(c.scene);
+    const ViewProjection view = frameCamera(*scene.camera, scene.positions.bounds(), 384, 288);
+    const std::vector<uint8_t> reference =
+        render(scene, settingsOf(c, BlendMethod::linked_list), view);
+    for (OrderLevel level : {OrderLevel::object, OrderLevel::multistage}) {
+        SCOPED_TRACE(orderLevelName(level));
+        RenderSettings settings = settingsOf(c, BlendMethod::vissort, level);
+        RenderStats checked, unchecked;
+        const ImageError checked_error =
+            compareImages(render(scene, settings, view, &checked), reference);
+        EXPECT_LE(checked_error.max_abs, 1)
+            << checked_error.pixels_over_one << " pixels off by more than 1/255";
+        EXPECT_GE(checked.groups, 2u);
+        EXPECT_EQ(checked.passes, 2u);
+        EXPECT_GT(checked.repaired_pixels, 0u);
+        EXPECT_GT(checked.fragments, 0u);
+        settings.check = RenderSettings::OrderCheck::off;
+        const ImageError unchecked_error =
+            compareImages(render(scene, settings, view, &unchecked), reference);
+        EXPECT_LE(unchecked_error.max_abs, 1)
+            << unchecked_error.pixels_over_one << " pixels off by more than 1/255";
+        EXPECT_GE(unchecked.passes, 1u + unchecked.groups); // more where lists grew
+        EXPECT_GE(unchecked.groups, checked.groups);
+    }
+}
+
 // The check and repair on their own: blending in submission order is wrong on these scenes, and
 // checked it is exact, every wrong pixel found and composited again (over the background, and
 // on the plant over its opaque surfaces drawn again); vissort unchecked still composites its
