@@ -84,6 +84,12 @@ public:
 
 private:
     void orderMultistage(PositionsView positions, const ViewProjection& view, FrameOrder& frame);
+    /// Multistage: the end of the group (an object, or the objects of one cycle of cycle_of_)
+    /// that starts at object_order[first].
+    std::size_t groupEnd(std::span<const uint32_t> object_order, std::size_t first) const;
+    /// Multistage: each group's start list (its triangles in last frame's order, as ids local to
+    /// the group) into starts_, from group_starts_at_[g]; false on the first frame.
+    bool buildGroupStarts(std::span<const uint32_t> object_order);
     /// Sorts stage 1's primitives (triangles at triangle level, else objects) into sorted_,
     /// starting from previous_order_ when it has the right size, else from the depth-key order;
     /// then swaps the order into previous_order_.
@@ -100,18 +106,23 @@ private:
     uint32_t triangle_count_;
     OrderLevel level_;
     GeometryOracle& oracle_;
-    std::vector<uint32_t> previous_order_;         // last frame, at level_ (objects for multistage)
-    std::vector<uint32_t> previous_triangle_rank_; // multistage: last frame's triangle positions
+    std::vector<uint32_t> previous_order_; // last frame, at level_ (objects for multistage)
+    std::vector<uint32_t> previous_triangle_order_; // multistage: last frame's order
     // Reused every frame, so that a steady-state frame without cycles allocates nothing
     // (tests/order/orderer_allocation_tests.cpp).
     VisSortWorkspace workspace_;
     VisibilityOrder sorted_, group_sorted_;
     std::vector<PrimitiveRange> group_;
     std::vector<uint32_t> group_start_;
-    std::vector<PrimitiveRange> bound_;   // primitives in start order, as bound
-    std::vector<uint32_t> identity_;      // 0..n-1: the start list of the bound primitives
-    std::vector<int32_t> cycle_of_;       // multistage: object -> its cycle in stage 1, or -1
-    std::vector<uint32_t> triangle_rank_; // multistage: this frame's triangle positions
+    std::vector<PrimitiveRange> bound_; // primitives in start order, as bound
+    std::vector<uint32_t> identity_;    // 0..n-1: the start list of the bound primitives
+    std::vector<int32_t> cycle_of_;     // multistage: object -> its cycle in stage 1, or -1
+    // Multistage's groups (an object, or the objects of a cycle) and their start lists.
+    static constexpr uint32_t kNoObject = 0xFFFFFFFFu;
+    std::vector<uint32_t> object_of_triangle_;            // or kNoObject (a triangle of no object)
+    std::vector<uint32_t> group_of_object_, first_local_; // object -> group, its first local id
+    std::vector<uint32_t> starts_;          // every group's start list, one after another
+    std::vector<uint32_t> group_starts_at_; // where each group's start list begins in starts_
 };
 
 } // namespace vissort
