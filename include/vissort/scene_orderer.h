@@ -119,7 +119,9 @@ private:
     std::vector<int32_t> cycle_of_;     // multistage: object -> its cycle in stage 1, or -1
     // Multistage's groups (an object, or the objects of a cycle) and their start lists.
     static constexpr uint32_t kNoObject = 0xFFFFFFFFu;
-    std::vector<uint32_t> object_of_triangle_;            // or kNoObject (a triangle of no object)
+    // Each triangle's object, or kNoObject (a triangle of no object); empty when objects share
+    // triangles.
+    std::vector<uint32_t> object_of_triangle_;
     std::vector<uint32_t> group_of_object_, first_local_; // object -> group, its first local id
     std::vector<uint32_t> starts_;          // every group's start list, one after another
     std::vector<uint32_t> group_starts_at_; // where each group's start list begins in starts_

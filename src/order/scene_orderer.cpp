@@ -41,8 +41,16 @@ SceneOrderer::SceneOrderer(std::span<const PrimitiveRange> objects, uint32_t tri
         return;
     object_of_triangle_.assign(triangle_count_, kNoObject);
     for (uint32_t o = 0; o < objects_.size(); ++o)
-        std::fill_n(object_of_triangle_.begin() + objects_[o].first_triangle,
-                    objects_[o].triangle_count, o);
+        for (uint32_t t = objects_[o].first_triangle;
+             t < objects_[o].first_triangle + objects_[o].triangle_count; ++t) {
+            if (object_of_triangle_[t] != kNoObject) {
+                // Objects sharing triangles: a triangle has no single group to be dealt to;
+                // every frame starts from the depth-key order (buildGroupStarts).
+                object_of_triangle_.clear();
+                return;
+            }
+            object_of_triangle_[t] = o;
+        }
 }
 
 void SceneOrderer::sortStage1(PositionsView positions, const ViewProjection& view) {
@@ -192,7 +200,8 @@ bool SceneOrderer::buildGroupStarts(std::span<const uint32_t> object_order) {
     std::size_t object_triangles = 0;
     for (const PrimitiveRange& object : objects_)
         object_triangles += object.triangle_count;
-    if (previous_triangle_order_.size() != object_triangles || object_triangles == 0)
+    if (previous_triangle_order_.size() != object_triangles || object_triangles == 0 ||
+        object_of_triangle_.empty())
         return false;
     // Each group's triangles numbered from 0 in object order (the ids sortFrom sees); where its
     // start list ends in starts_.

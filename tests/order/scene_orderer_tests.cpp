@@ -10,6 +10,7 @@
 #include "ground_truth.h"
 #include "tarjan_scc.h"
 #include "test_scene_loading.h"
+#include "vissort/camera_path.h"
 #include "vissort/oracles.h"
 #include "vissort/scene_library.h"
 #include "vissort/scene_orderer.h"
@@ -222,6 +223,40 @@ TEST(SceneOrderer, MultistageOutputsEveryTriangleOnce) {
     std::sort(frame.order.begin(), frame.order.end());
     for (uint32_t i = 0; i < frame.order.size(); ++i)
         ASSERT_EQ(frame.order[i], i);
+}
+
+// Objects may share triangles (the oracle sets each up once per primitive): multistage orders
+// every object's triangles, a shared one once per object, on coherent frames too, where each
+// group's start comes from last frame's order (a shared triangle belongs to no single group).
+TEST(SceneOrderer, MultistageOrdersObjectsThatShareTriangles) {
+    // Separate slabs, no cycle among them: every object is a group of its own.
+    const Scene scene = test::loadTestScene("builtin:slabs?layers=4");
+    std::vector<PrimitiveRange> objects = scene.objectPrimitives();
+    ASSERT_GE(objects.size(), 2u);
+    // One more object: the last half of object 0 and the first half of object 1.
+    const PrimitiveRange& a = objects[0];
+    const PrimitiveRange& b = objects[1];
+    ASSERT_EQ(a.first_triangle + a.triangle_count, b.first_triangle);
+    objects.push_back({a.first_triangle + a.triangle_count / 2,
+                       a.triangle_count - a.triangle_count / 2 + b.triangle_count / 2});
+    std::vector<uint32_t> expected_count(scene.triangleCount(), 0);
+    for (const PrimitiveRange& object : objects)
+        for (uint32_t t = 0; t < object.triangle_count; ++t)
+            ++expected_count[object.first_triangle + t];
+    auto oracle = oracleOf(OracleKind::cpu);
+    ASSERT_TRUE(oracle);
+    SceneOrderer orderer(objects, uint32_t(scene.triangleCount()), OrderLevel::multistage, *oracle);
+    for (int f = 0; f < 3; ++f) {
+        const CameraSpec camera =
+            cameraOnPath(scene.camera.value_or(defaultCamera(scene.positions.bounds())),
+                         CameraPath::orbit, f, scene.positions.bounds());
+        const FrameOrder frame = orderer.orderFrame(
+            scene.positions, frameCamera(camera, scene.positions.bounds(), 64, 64));
+        std::vector<uint32_t> count(scene.triangleCount(), 0);
+        for (uint32_t t : frame.order)
+            ++count[t];
+        EXPECT_EQ(count, expected_count) << "frame " << f;
+    }
 }
 
 TEST(MakeOracle, ConservativeModeAddsBehindAnswersAndExactOracleRefusesIt) {
