@@ -195,13 +195,8 @@ std::size_t SceneOrderer::groupEnd(std::span<const uint32_t> object_order,
 }
 
 bool SceneOrderer::buildGroupStarts(std::span<const uint32_t> object_order) {
-    // Last frame's order holds every triangle of the objects once; anything else (the first
-    // frame) has no coherence to keep.
-    std::size_t object_triangles = 0;
-    for (const PrimitiveRange& object : objects_)
-        object_triangles += object.triangle_count;
-    if (previous_triangle_order_.size() != object_triangles || object_triangles == 0 ||
-        object_of_triangle_.empty())
+    // The first frame has no last order to keep; objects sharing triangles have no map.
+    if (previous_triangle_order_.empty() || object_of_triangle_.empty())
         return false;
     // Each group's triangles numbered from 0 in object order (the ids sortFrom sees); where its
     // start list ends in starts_.

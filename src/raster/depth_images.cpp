@@ -31,12 +31,12 @@ void DepthImages::begin(uint32_t slot) {
 
 void DepthImages::addTile(uint32_t tile, const float* rasterized) {
     // The least rasterized depth: the near image's least, the negated far image's greatest.
-    const float least = *std::min_element(rasterized, rasterized + kImageTileFloats);
+    const float least = *std::min_element(rasterized, rasterized + kTileFloats);
     if (least == kInfinity)
         return; // no fragment here
     tiles_.push_back(tile);
     const std::size_t at = depths_.size();
-    depths_.insert(depths_.end(), rasterized, rasterized + kImageTileFloats);
+    depths_.insert(depths_.end(), rasterized, rasterized + kTileFloats);
     if (kind_ == Kind::near) {
         bounds_.push_back(least);
     } else {
@@ -55,19 +55,19 @@ bool DepthImages::finish(std::size_t budget_bytes) {
     const std::size_t first = first_[building_];
     tiles_.resize(first);
     bounds_.resize(first);
-    depths_.resize(first * kImageTileFloats);
+    depths_.resize(first * kTileFloats);
     count_[building_] = 0;
     state_[building_] = State::direct;
     return false;
 }
 
 std::size_t DepthImages::bytes() const {
-    return tiles_.size() * (sizeof(uint32_t) + sizeof(float) + kImageTileFloats * sizeof(float));
+    return tiles_.size() * (sizeof(uint32_t) + sizeof(float) + kTileFloats * sizeof(float));
 }
 
 void drawImageTile(const float* image, float* stored, float& stored_min, float& stored_max) {
     float least = kInfinity, greatest = -kInfinity;
-    for (std::size_t i = 0; i < kImageTileFloats; ++i) {
+    for (std::size_t i = 0; i < kTileFloats; ++i) {
         // LESS: the image's depth replaces the stored one only when strictly nearer.
         const float depth = image[i] < stored[i] ? image[i] : stored[i];
         stored[i] = depth;
@@ -80,7 +80,7 @@ void drawImageTile(const float* image, float* stored, float& stored_min, float& 
 
 bool queryImageTile(const float* image, const float* stored, float tolerance) {
     bool behind = false;
-    for (std::size_t i = 0; i < kImageTileFloats; ++i)
+    for (std::size_t i = 0; i < kTileFloats; ++i)
         behind |= image[i] > stored[i] + tolerance;
     return behind;
 }

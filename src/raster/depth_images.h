@@ -16,10 +16,9 @@
 #include <cstdint>
 #include <vector>
 
-namespace vissort::detail {
+#include "raster/fast_rows.h"
 
-/// Floats in one depth tile (fast_rows.h: 8 rows of 8).
-constexpr std::size_t kImageTileFloats = 64;
+namespace vissort::detail {
 
 /// The images of one kind (near or far) of the large primitives of a bind, each at a slot (the
 /// oracle maps primitives to slots). Each slot's image is
@@ -56,9 +55,7 @@ public:
     std::size_t entryCount(uint32_t slot) const { return count_[slot]; }
     uint32_t tile(std::size_t entry) const { return tiles_[entry]; }
     float bound(std::size_t entry) const { return bounds_[entry]; }
-    const float* depths(std::size_t entry) const {
-        return depths_.data() + entry * kImageTileFloats;
-    }
+    const float* depths(std::size_t entry) const { return depths_.data() + entry * kTileFloats; }
     std::size_t bytes() const;
 
 private:
@@ -67,7 +64,7 @@ private:
     std::vector<uint32_t> first_, count_; // per slot, valid when built
     std::vector<uint32_t> tiles_;         // per entry
     std::vector<float> bounds_;           // per entry
-    std::vector<float> depths_;           // kImageTileFloats per entry
+    std::vector<float> depths_;           // kTileFloats per entry
     uint32_t building_ = 0;
 };
 

@@ -42,7 +42,7 @@ constexpr float kInfinity = std::numeric_limits<float>::infinity();
 constexpr int kTileShift = 3; // kTileSize = 8
 static_assert(FastCpuOracle::kTileSize == 1u << kTileShift);
 static_assert(FastCpuOracle::kTileSize == detail::kTileRowFloats);
-constexpr std::size_t kTilePixels = std::size_t(detail::kTileRowFloats) * detail::kTileRowFloats;
+constexpr std::size_t kTilePixels = detail::kTileFloats;
 
 // Relative bound on the rounding of the depth expression (about 8 ulps of the summed magnitudes,
 // with a wide safety factor on the 4 roundings it takes).

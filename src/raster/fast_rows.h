@@ -18,6 +18,8 @@ namespace vissort::detail {
 /// walked, so it keeps whatever a clear wrote). Why: a tile then spans 4 cache lines of one page,
 /// where a row-major buffer put each of its rows on a different page.
 constexpr int32_t kTileRowFloats = 8;
+/// Floats in one tile.
+constexpr std::size_t kTileFloats = std::size_t(kTileRowFloats) * kTileRowFloats;
 
 /// What every walk of one fan triangle shares, whichever pixels it covers.
 struct TriangleWalk {

@@ -32,9 +32,7 @@ namespace {
 // Distance along the view direction: monotone in depth for both projections, and defined for
 // points behind the eye.
 double depthAlongView(const Vec3& point, const ViewProjection& view) {
-    return (point.x - view.eye_position.x) * view.forward.x +
-           (point.y - view.eye_position.y) * view.forward.y +
-           (point.z - view.eye_position.z) * view.forward.z;
+    return dot(point - view.eye_position, view.forward);
 }
 
 } // namespace

@@ -110,15 +110,9 @@ void SceneGeometry::setSubset(std::span<const uint32_t> opaque,
     subset_transparent_count_ = transparent.size();
 }
 
-void SceneGeometry::drawOpaqueSubset() const {
+void SceneGeometry::drawSubset(std::size_t first, std::size_t count) const {
     glVertexArrayElementBuffer(vertex_array_.get(), subset_elements_.get());
-    drawElements(0, subset_opaque_count_);
-    glVertexArrayElementBuffer(vertex_array_.get(), elements_.get());
-}
-
-void SceneGeometry::drawTransparentSubset() const {
-    glVertexArrayElementBuffer(vertex_array_.get(), subset_elements_.get());
-    drawElements(subset_opaque_count_, subset_transparent_count_);
+    drawElements(first, count);
     glVertexArrayElementBuffer(vertex_array_.get(), elements_.get());
 }
 
@@ -149,6 +143,12 @@ void SceneGeometry::setView(GLuint program, const ViewProjection& view) const {
     glProgramUniform1i(program, glGetUniformLocation(program, "unlit"), flat_ ? 1 : 0);
     glProgramUniform1i(program, glGetUniformLocation(program, "highlighting"),
                        highlighting_ ? 1 : 0);
+}
+
+void SceneGeometry::use(GLuint program, const ViewProjection& view) const {
+    setView(program, view);
+    glUseProgram(program);
+    bind();
 }
 
 void SceneGeometry::bind() const {

@@ -36,6 +36,9 @@ public:
     /// Binds the vertex stream, the colours (SSBO binding 0) and the highlight flags (binding 5)
     /// for the draws below.
     void bind() const;
+    /// Sets program's view (setView), makes it current and binds the geometry (bind): what
+    /// every draw below needs first.
+    void use(GLuint program, const ViewProjection& view) const;
     /// Draws every opaque triangle with the bound program and state.
     void drawOpaque() const;
     /// Draws transparent triangles [first, first + count) of setTriangles' order.
@@ -46,10 +49,15 @@ public:
     /// two calls below: the few a repair redraws (verified_blending.h), without touching the
     /// frame's list.
     void setSubset(std::span<const uint32_t> opaque, std::span<const uint32_t> transparent);
-    void drawOpaqueSubset() const;
-    void drawTransparentSubset() const;
+    void drawOpaqueSubset() const { drawSubset(0, subset_opaque_count_); }
+    void drawTransparentSubset() const {
+        drawSubset(subset_opaque_count_, subset_transparent_count_);
+    }
 
 private:
+    /// Draws subset triangles [first, first + count) through the subset's element buffer.
+    void drawSubset(std::size_t first, std::size_t count) const;
+
     RenderMesh mesh_;
     GlVertexArray vertex_array_;
     GlBuffer vertices_, objects_, colours_, elements_, subset_elements_, highlighted_;

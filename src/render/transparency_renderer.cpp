@@ -193,9 +193,7 @@ struct TransparencyRenderer::Impl {
     // Draws transparent triangles [first, first + count) with program, its view set.
     void drawTransparent(GLuint program, const ViewProjection& view, std::size_t first,
                          std::size_t count) const {
-        geometry->setView(program, view);
-        glUseProgram(program);
-        geometry->bind();
+        geometry->use(program, view);
         geometry->drawTransparent(first, count);
     }
 
@@ -248,15 +246,11 @@ struct TransparencyRenderer::Impl {
         const detail::VerifiedBlending::Result repaired = verified->repair(
             target, fragmentLists(), marked, settings.background, has_opaque,
             [&](GLuint program) {
-                geometry->setView(program, view);
-                glUseProgram(program);
-                geometry->bind();
+                geometry->use(program, view);
                 geometry->drawOpaqueSubset();
             },
             [&](GLuint program) {
-                geometry->setView(program, view);
-                glUseProgram(program);
-                geometry->bind();
+                geometry->use(program, view);
                 geometry->drawTransparentSubset();
             });
         stats.passes += repaired.extra_passes;
@@ -418,9 +412,7 @@ Image TransparencyRenderer::render(PositionsView positions, const ViewProjection
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
-    d.geometry->setView(d.shade_program.get(), view);
-    glUseProgram(d.shade_program.get());
-    d.geometry->bind();
+    d.geometry->use(d.shade_program.get(), view);
     d.geometry->drawOpaque();
 
     // Transparent ones: tested against the opaque depth, never written.

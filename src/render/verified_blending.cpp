@@ -133,17 +133,17 @@ VerifiedBlending::Result VerifiedBlending::blend(
     return result;
 }
 
-MarkedPixels VerifiedBlending::marked() const {
+MarkedPixels VerifiedBlending::marked() {
     if (!blended_)
         return {};
     // One byte a pixel (2 MB at 1600x1200), scanned on the CPU: cheaper than counting and
     // bounding the marks in a pass over every pixel (14 ms at 1024x1024 on llvmpipe).
-    std::vector<uint8_t> stencil(std::size_t(width_) * height_);
+    stencil_.resize(std::size_t(width_) * height_);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTextureImage(nearest_.get(), 0, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE,
-                      GLsizei(stencil.size()), stencil.data());
+                      GLsizei(stencil_.size()), stencil_.data());
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    return MarkedPixels(stencil, width_, height_);
+    return MarkedPixels(stencil_, width_, height_);
 }
 
 VerifiedBlending::Result

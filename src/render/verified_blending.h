@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 #include "gl/gl_objects.h"
 #include "render/draw_sequence.h"
@@ -48,7 +49,7 @@ public:
           const std::function<void(GLuint program, std::size_t first, std::size_t count)>& draw);
 
     /// The pixels the last blend marked (none when it had nothing to blend).
-    MarkedPixels marked() const;
+    MarkedPixels marked();
 
     /// Composites the marked pixels again: the background, the opaque surfaces again, then every
     /// transparent fragment from lists. `draw_opaque(program)` and `draw_transparent(program)`
@@ -69,7 +70,8 @@ private:
     GlFramebuffer framebuffer_; // the target's colour with nearest_
     uint32_t width_ = 0, height_ = 0;
     GLuint target_colour_ = 0;
-    bool blended_ = false; // the last blend drew something: its marks are in nearest_
+    bool blended_ = false;         // the last blend drew something: its marks are in nearest_
+    std::vector<uint8_t> stencil_; // the marks as read back, reused from frame to frame
 };
 
 } // namespace vissort::detail
