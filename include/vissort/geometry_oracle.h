@@ -34,6 +34,14 @@ public:
     virtual void bind(PositionsView positions, const ViewProjection& view,
                       std::span<const PrimitiveRange> primitives) = 0;
 
+    /// bind, for a caller whose positions and view are those of the last bind and have not
+    /// changed since (multi-stage ordering binds each group of a frame after the frame's
+    /// objects): an oracle may reuse per-triangle work of that bind. The same answers as bind.
+    virtual void rebind(PositionsView positions, const ViewProjection& view,
+                        std::span<const PrimitiveRange> primitives) {
+        bind(positions, view, primitives);
+    }
+
     /// Sets the depth tolerance of later queries: anyBehind is true when some fragment's depth
     /// exceeds the stored depth + tolerance (a float sum). kDepthTolerance until set; negative
     /// values make near ties count as occlusion (kBlendingDepthTolerance). Must be finite.

@@ -96,11 +96,13 @@ private:
     void sortStage1(PositionsView positions, const ViewProjection& view);
     /// Vis-sort of n primitives (primitive(i) is the range of primitive i) from the list `start`
     /// (a permutation of 0..n-1), with the oracle bound to them in that order and the answer
-    /// mapped back to primitive indices.
+    /// mapped back to primitive indices. same_frame: the positions and view of the last bind
+    /// (GeometryOracle::rebind).
+    enum class Bind { new_frame, same_frame };
     template <class PrimitiveAt>
     void sortFrom(PositionsView positions, const ViewProjection& view, std::size_t n,
                   const PrimitiveAt& primitive, std::span<const uint32_t> start,
-                  VisibilityOrder& into);
+                  VisibilityOrder& into, Bind how = Bind::new_frame);
 
     std::vector<PrimitiveRange> objects_;
     uint32_t triangle_count_;

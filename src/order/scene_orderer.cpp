@@ -85,7 +85,7 @@ void SceneOrderer::sortStage1(PositionsView positions, const ViewProjection& vie
 template <class PrimitiveAt>
 void SceneOrderer::sortFrom(PositionsView positions, const ViewProjection& view, std::size_t n,
                             const PrimitiveAt& primitive, std::span<const uint32_t> start,
-                            VisibilityOrder& into) {
+                            VisibilityOrder& into, Bind how) {
     bound_.resize(n);
     for (std::size_t i = 0; i < n; ++i)
         bound_[i] = primitive(start[i]);
@@ -93,7 +93,10 @@ void SceneOrderer::sortFrom(PositionsView positions, const ViewProjection& view,
         identity_.resize(n);
         std::iota(identity_.begin(), identity_.end(), 0u);
     }
-    oracle_.bind(positions, view, bound_);
+    if (how == Bind::same_frame)
+        oracle_.rebind(positions, view, bound_);
+    else
+        oracle_.bind(positions, view, bound_);
     visSort(oracle_, identity_, into, workspace_);
     for (uint32_t& p : into.order)
         p = start[p];
@@ -168,8 +171,10 @@ void SceneOrderer::orderMultistage(PositionsView positions, const ViewProjection
             start = group_start;
         }
         VisibilityOrder& triangles = group_sorted_;
+        // The objects' bind set up every triangle of this frame: a group reuses its set-ups.
         sortFrom(
-            positions, view, group.size(), [&](uint32_t i) { return group[i]; }, start, triangles);
+            positions, view, group.size(), [&](uint32_t i) { return group[i]; }, start, triangles,
+            Bind::same_frame);
         addStats(frame.stats, triangles.stats);
         for (uint32_t local : triangles.order)
             frame.order.push_back(group[local].first_triangle);

@@ -154,6 +154,14 @@ struct FastCpuOracle::Impl {
 
     void bind(PositionsView positions, const ViewProjection& view,
               std::span<const PrimitiveRange> primitives);
+    /// FastCpuOracle::rebind: the set-ups copied from the bind's where it made them all.
+    void rebind(PositionsView positions, const ViewProjection& view,
+                std::span<const PrimitiveRange> primitives);
+    /// What bind and rebind do after the set-ups: the depth buffer sized and cleared, the
+    /// primitives given images found.
+    void finishBind();
+    /// True when positions and view are those of the last bind (not checked: unchanged since).
+    bool sameAsBound(PositionsView positions, const ViewProjection& view) const;
     void draw(uint32_t primitive);
     bool anyBehind(uint32_t primitive);
     // The banded passes; bands >= 2 (bandsFor), else the oracle runs the sequential definition.
@@ -287,6 +295,30 @@ struct FastCpuOracle::Impl {
     std::vector<uint8_t> narrow_;        // FastSetup::narrow, beside setups_
     std::vector<double> spreads_;        // FastSetup::spread, beside setups_
     std::vector<detail::FastSetup> fan_; // bind's scratch: one triangle's fan set-ups
+
+    // For rebind, once one has been asked for (an oracle never rebound pays nothing for it):
+    // where bind put each triangle's set-ups. A triangle's entry is current when its
+    // stamp's high bits are bind_stamp_ (the last bind's number: no clearing per bind); the low
+    // kCountBits hold its set-up count (a clipped triangle's fan has at most 7).
+    static constexpr uint32_t kCountBits = 4;
+    struct TriangleSetups {
+        uint32_t first, stamp;
+    };
+    bool keep_for_rebind_ = false;
+    std::vector<TriangleSetups> triangle_setups_;
+    uint32_t bind_stamp_ = 0;
+    // Where the set-ups that triangle_setups_ points into are: still setups_ until the first
+    // rebind after a bind moves them to source_ (its set-ups are then copied from there); none
+    // when the last bind kept no map.
+    enum class Source { none, setups, source };
+    Source source_at_ = Source::none;
+    std::vector<StoredSetup> source_setups_;
+    std::vector<uint8_t> source_narrow_;
+    std::vector<double> source_spreads_;
+    // What the last bind was given (rebind's check that it is the same geometry and view).
+    const float* bound_x_ = nullptr;
+    std::size_t bound_triangles_ = 0;
+    detail::Matrix4 bound_matrix_{};
     // Per tile, in one struct so that a tile's bounds and epoch share a cache line (the tiles a
     // pass touches are scattered over a buffer larger than the caches: one miss, not three).
     // Clearing is lazy: clear() starts a new epoch, and a tile whose epoch is older holds only
@@ -386,6 +418,23 @@ void FastCpuOracle::Impl::bind(PositionsView positions, const ViewProjection& vi
     // set up, those of several are set up once each. Triangles are taken four at a time in that
     // order (bind order), for the batch set-up.
     const detail::Matrix4 m = detail::multiply(view.projection_matrix, view.view);
+    if (source_at_ == Source::source) { // the larger buffers back: the groups' stay small
+        std::swap(setups_, source_setups_);
+        std::swap(narrow_, source_narrow_);
+        std::swap(spreads_, source_spreads_);
+    }
+    source_at_ = Source::none;
+    if (keep_for_rebind_) {
+        bound_x_ = positions.x.data();
+        bound_triangles_ = positions.triangleCount();
+        bound_matrix_ = m;
+        if (triangle_setups_.size() != bound_triangles_ ||
+            ++bind_stamp_ >> (32 - kCountBits) != 0) {
+            triangle_setups_.assign(bound_triangles_, TriangleSetups{0, 0});
+            bind_stamp_ = 1;
+        }
+        source_at_ = Source::setups;
+    }
     std::size_t n = 0;
     for (const PrimitiveRange& range : primitives)
         n += range.triangle_count;
@@ -417,6 +466,7 @@ void FastCpuOracle::Impl::bind(PositionsView positions, const ViewProjection& vi
             std::fill_n(lanes, 4, detail::LaneSetup::scalar);
         for (std::size_t l = 0; l < quad_size; ++l) {
             reach(quad_first + l);
+            const uint32_t first = uint32_t(setups_.size());
             if (lanes[l] == detail::LaneSetup::ready) {
                 quad[l].narrow = detail::edgesFitInt32(quad[l]);
                 store({&quad[l], 1});
@@ -425,6 +475,11 @@ void FastCpuOracle::Impl::bind(PositionsView positions, const ViewProjection& vi
                 detail::appendFastSetups(m, positions, quad_triangles[l], width_, height_,
                                          conservative_, fan_);
                 store(fan_);
+            }
+            if (keep_for_rebind_) {
+                const uint32_t count = uint32_t(setups_.size()) - first;
+                assert(count < 1u << kCountBits);
+                triangle_setups_[quad_triangles[l]] = {first, bind_stamp_ << kCountBits | count};
             }
         }
         quad_first += quad_size;
@@ -440,7 +495,90 @@ void FastCpuOracle::Impl::bind(PositionsView positions, const ViewProjection& vi
     setUpQuad();
     reach(n);
     primitive_setups_[primitives.size()] = uint32_t(setups_.size());
+    finishBind();
+}
 
+bool FastCpuOracle::Impl::sameAsBound(PositionsView positions, const ViewProjection& view) const {
+    return source_at_ != Source::none && positions.x.data() == bound_x_ &&
+           positions.triangleCount() == bound_triangles_ && view.width == width_ &&
+           view.height == height_ &&
+           detail::multiply(view.projection_matrix, view.view) == bound_matrix_;
+}
+
+void FastCpuOracle::Impl::rebind(PositionsView positions, const ViewProjection& view,
+                                 std::span<const PrimitiveRange> primitives) {
+    keep_for_rebind_ = true; // from now on binds keep their map
+    // Binding instead: the groups' buffers grow to the group's size now, not when a later
+    // rebind swaps them in, with room for a triangle each and an eighth more for clipped fans
+    // (a triangle covering no pixel centre has none: a group's set-ups vary from frame to
+    // frame, and steady frames should allocate nothing).
+    const auto bindInstead = [&] {
+        bind(positions, view, primitives);
+        std::size_t triangles = 0;
+        for (const PrimitiveRange& range : primitives)
+            triangles += range.triangle_count;
+        const std::size_t room = std::max(setups_.size(), triangles) + triangles / 8;
+        source_setups_.reserve(room);
+        source_narrow_.reserve(room);
+        source_spreads_.reserve(room);
+    };
+    if (!sameAsBound(positions, view)) {
+        bindInstead();
+        return;
+    }
+    std::size_t n = 0;                             // set-ups to copy
+    for (const PrimitiveRange& range : primitives) // every triangle set up by the bind?
+        for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count;
+             ++t) {
+            if (triangle_setups_[t].stamp >> kCountBits != bind_stamp_) {
+                bindInstead();
+                return;
+            }
+            n += triangle_setups_[t].stamp & ((1u << kCountBits) - 1);
+        }
+    if (source_at_ == Source::setups) {
+        std::swap(setups_, source_setups_);
+        std::swap(narrow_, source_narrow_);
+        std::swap(spreads_, source_spreads_);
+        source_at_ = Source::source;
+    }
+    primitive_count_ = uint32_t(primitives.size());
+    primitive_setups_.resize(primitives.size() + 1);
+    // Sized once and copied element by element: a group's triangles come in last frame's order,
+    // scattered over the source, and an insert per triangle spent 9% of a multi-stage frame in
+    // memmove's start-up.
+    setups_.resize(n);
+    narrow_.resize(n);
+    spreads_.resize(n);
+    uint32_t k = 0;
+    constexpr std::size_t kAhead = 8; // primitives: a few cache misses in flight
+    for (std::size_t p = 0; p < primitives.size(); ++p) {
+        if (p + kAhead < primitives.size()) {
+            const TriangleSetups& ahead = triangle_setups_[primitives[p + kAhead].first_triangle];
+            const char* setup = reinterpret_cast<const char*>(&source_setups_[ahead.first]);
+            __builtin_prefetch(setup);
+            __builtin_prefetch(setup + sizeof(StoredSetup) - 1);
+            __builtin_prefetch(&source_spreads_[ahead.first]);
+            __builtin_prefetch(&source_narrow_[ahead.first]);
+        }
+        primitive_setups_[p] = k;
+        const PrimitiveRange& range = primitives[p];
+        for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count;
+             ++t) {
+            const TriangleSetups& at = triangle_setups_[t];
+            const uint32_t end = at.first + (at.stamp & ((1u << kCountBits) - 1));
+            for (uint32_t i = at.first; i < end; ++i, ++k) {
+                setups_[k] = source_setups_[i];
+                narrow_[k] = source_narrow_[i];
+                spreads_[k] = source_spreads_[i];
+            }
+        }
+    }
+    primitive_setups_[primitives.size()] = k;
+    finishBind();
+}
+
+void FastCpuOracle::Impl::finishBind() {
     depth_.resize(std::size_t(tiles_x_) * tiles_y_ * kTilePixels);
     tiles_.assign(std::size_t(tiles_x_) * tiles_y_, TileState{kInfinity, kInfinity, 0});
     epoch_ = 1; // every tile pending a clear
@@ -972,6 +1110,11 @@ FastCpuOracle::~FastCpuOracle() = default;
 void FastCpuOracle::bind(PositionsView positions, const ViewProjection& view,
                          std::span<const PrimitiveRange> primitives) {
     impl_->bind(positions, view, primitives);
+}
+
+void FastCpuOracle::rebind(PositionsView positions, const ViewProjection& view,
+                           std::span<const PrimitiveRange> primitives) {
+    impl_->rebind(positions, view, primitives);
 }
 
 uint32_t FastCpuOracle::primitiveCount() const {
