@@ -17,6 +17,9 @@ packages=(
   libegl-mesa0               # Mesa's EGL: the surfaceless platform, and the device platform
   libgl1-mesa-dri            # llvmpipe: OpenGL on the CPU, where there is no GPU driver
   libstb-dev                 # PNG output of the renderer (stb_image_write)
+  libglfw3-dev               # vissort view: the window and its input
+  libimgui-dev               # vissort view: the panel (Dear ImGui, with its GLFW and OpenGL 3 backends)
+  xvfb xauth                 # tests only: vissort view's tests run in a virtual X server (xvfb-run)
   libgtest-dev               # the test suite
   libbenchmark-dev           # the Google Benchmark suite (built by the test script, not run)
   libbullet-dev              # the bullet collision peer

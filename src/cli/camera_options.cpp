@@ -159,4 +159,14 @@ std::optional<Scene> loadSceneOrReport(const std::string& specification) {
     return std::move(*loaded.value);
 }
 
+int loadSceneAndView(const std::string& specification, const ViewOptions& options,
+                     std::optional<Scene>& scene, ResolvedView& view) {
+    scene = loadSceneOrReport(specification);
+    if (!scene)
+        return kExitInput;
+    if (auto error = resolveView(options, *scene, view); !error.empty())
+        return fail(kExitUsage, error);
+    return kExitOk;
+}
+
 } // namespace vissort::cli

@@ -52,4 +52,9 @@ std::string resolveView(const ViewOptions& options, const Scene& scene, Resolved
 /// Loads a scene, printing the error and returning nullopt on failure.
 std::optional<Scene> loadSceneOrReport(const std::string& specification);
 
+/// loadSceneOrReport, then resolveView: kExitOk with both set, else the exit code after the
+/// error is printed (kExitInput for the scene, kExitUsage for the view).
+int loadSceneAndView(const std::string& specification, const ViewOptions& options,
+                     std::optional<Scene>& scene, ResolvedView& view);
+
 } // namespace vissort::cli

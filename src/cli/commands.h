@@ -5,6 +5,10 @@
 
 #include "cli/cli_common.h"
 
+namespace vissort {
+struct RenderSettings; // transparency_renderer.h: builds with OpenGL only
+}
+
 namespace vissort::cli {
 
 struct OrderOptions {
@@ -64,24 +68,49 @@ struct CollideOptions {
 CLI::App* addCollideCommand(CLI::App& app, CollideOptions& options);
 int runCollide(const CollideOptions& options);
 
-struct RenderOptions {
-    std::string scene;
-    ViewOptions view;
+/// The transparency renderer's settings, shared by render and view.
+struct RendererOptions {
     std::string method = "vissort";
     std::string level = "object";
     std::string oracle = "cpu";
-    std::string output;
-    std::string json_path;
     bool all_transparent = false;
     double alpha = 0.5;
-    std::string reference;
-    std::string error_map;
     std::string shading = "lit";
     std::string check = "auto";
     double list_memory_mib = 3072;
+};
+/// Adds --method (its help: method_help) --level --oracle --all-transparent --alpha --shading
+/// --check --list-memory.
+void addRendererOptions(CLI::App& command, RendererOptions& options,
+                        const std::string& method_help);
+/// Empty on success, else a one-line message naming the bad option. The method is left to the
+/// caller when it is "all" and allow_all.
+std::string resolveRendererOptions(const RendererOptions& options, bool allow_all,
+                                   RenderSettings& settings);
+
+struct RenderOptions {
+    std::string scene;
+    ViewOptions view;
+    RendererOptions renderer;
+    std::string output;
+    std::string json_path;
+    std::string reference;
+    std::string error_map;
     bool highlight_collisions = false;
 };
 CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options);
 int runRender(const RenderOptions& options);
+
+struct ViewerOptions {
+    std::string scene;
+    ViewOptions view;
+    RendererOptions renderer;
+    std::string screenshot;
+    std::string script;
+    bool hide_ui = false;
+    bool frames_given = false; // --frames on the command line (else: until the window closes)
+};
+CLI::App* addViewCommand(CLI::App& app, ViewerOptions& options);
+int runView(const ViewerOptions& options);
 
 } // namespace vissort::cli

@@ -56,12 +56,11 @@ int runInfo(const InfoOptions& options) {
     } else if (options.scene.empty()) {
         return fail(kExitUsage, "info needs a scene, or --gl (run 'vissort info --help')");
     }
-    std::optional<Scene> scene = loadSceneOrReport(options.scene);
-    if (!scene)
-        return kExitInput;
+    std::optional<Scene> scene;
     ResolvedView view;
-    if (auto error = resolveView(options.view, *scene, view); !error.empty())
-        return fail(kExitUsage, error);
+    if (const int code = loadSceneAndView(options.scene, options.view, scene, view);
+        code != kExitOk)
+        return code;
 
     const Bounds bounds = scene->positions.bounds();
     std::size_t transparent = 0;

@@ -22,6 +22,8 @@ int main(int argc, char** argv) {
     CLI::App* render_command = addRenderCommand(app, render);
     CollideOptions collide;
     CLI::App* collide_command = addCollideCommand(app, collide);
+    ViewerOptions view;
+    CLI::App* view_command = addViewCommand(app, view);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -45,6 +47,10 @@ int main(int argc, char** argv) {
             return runRender(render);
         if (collide_command->parsed())
             return runCollide(collide);
+        if (view_command->parsed()) {
+            view.frames_given = view_command->count("--frames") > 0;
+            return runView(view);
+        }
     } catch (const std::bad_alloc&) {
         return fail(kExitFailure, "out of memory (try a smaller --size or scene)");
     } catch (const std::exception& e) {

@@ -70,12 +70,11 @@ int runOrder(const OrderOptions& options) {
     if (!parsed_oracle)
         return fail(kExitUsage, "--oracle: " + parsed_oracle.error);
     const OracleKind oracle_kind = *parsed_oracle.value;
-    std::optional<Scene> scene = loadSceneOrReport(options.scene);
-    if (!scene)
-        return kExitInput;
+    std::optional<Scene> scene;
     ResolvedView view;
-    if (auto error = resolveView(options.view, *scene, view); !error.empty())
-        return fail(kExitUsage, error);
+    if (const int code = loadSceneAndView(options.scene, options.view, scene, view);
+        code != kExitOk)
+        return code;
 
     Result<std::unique_ptr<GeometryOracle>> made =
         makeOracle(oracle_kind, environmentOracleOptions());

@@ -128,46 +128,17 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
         ->add_option("scene", options.scene, "Mesh file, JSON scene, or builtin:NAME?key=value&...")
         ->required(kWithGl);
     addViewOptions(*command, options.view);
-    command
-        ->add_option("--method", options.method,
-                     blendMethodNames() + "; all: every method side by side in one PNG, with "
-                                          "error maps against linked-list")
-        ->capture_default_str();
-    command
-        ->add_option("--level", options.level,
-                     "object, triangle or multistage: vissort's ordering level, centroid's unit")
-        ->capture_default_str();
-    command
-        ->add_option("--oracle", options.oracle,
-                     "vissort's oracle: cpu, cpu-reference, exact or gl")
-        ->capture_default_str();
+    addRendererOptions(*command, options.renderer,
+                       blendMethodNames() + "; all: every method side by side in one PNG, with "
+                                            "error maps against linked-list");
     command
         ->add_option("-o,--output", options.output,
                      "PNG to write; with --frames N, a pattern such as frame_%04d.png")
         ->required(kWithGl);
     command->add_option("--json", options.json_path, "Write the statistics (and error) as JSON");
-    command->add_flag("--all-transparent", options.all_transparent,
-                      "Treat every object as transparent with alpha --alpha");
-    command->add_option("--alpha", options.alpha, "Alpha of --all-transparent, in (0, 1]")
-        ->capture_default_str();
     command->add_option("--reference", options.reference,
                         "Also render this method and print RMSE, PSNR and the largest channel "
                         "error against it");
-    command
-        ->add_option("--shading", options.shading,
-                     "lit (a headlight and a rim term, per vertex) or flat (each object's "
-                     "colour, unlit)")
-        ->capture_default_str();
-    command
-        ->add_option("--check", options.check,
-                     "auto, on or off: check every pixel of an ordered blend against the GPU's "
-                     "depths and repair it from fragment lists (auto: on for vissort only)")
-        ->capture_default_str();
-    command
-        ->add_option("--list-memory", options.list_memory_mib,
-                     "MiB for per-pixel fragment lists (linked-list, vissort's cycles); more "
-                     "fragments are drawn in bands")
-        ->capture_default_str();
     command->add_flag("--highlight-collisions", options.highlight_collisions,
                       "Draw every triangle that intersects another object's in magenta "
                       "(vissort's collision detector, each frame)");
@@ -184,13 +155,10 @@ int runRender(const RenderOptions&) {
 #else
 int runRender(const RenderOptions& options) {
     RenderSettings settings;
-    const bool all_methods = options.method == "all";
-    if (!all_methods) {
-        const Result<BlendMethod> method = parseBlendMethod(options.method);
-        if (!method)
-            return fail(kExitUsage, "--method: " + method.error + " or all");
-        settings.method = *method.value;
-    }
+    const bool all_methods = options.renderer.method == "all";
+    if (std::string error = resolveRendererOptions(options.renderer, true, settings);
+        !error.empty())
+        return fail(kExitUsage, error);
     if (all_methods && options.highlight_collisions)
         return fail(kExitUsage, "--highlight-collisions renders one method: not with --method all");
     if (all_methods && (options.view.frames > 1 || !options.reference.empty()))
@@ -203,33 +171,8 @@ int runRender(const RenderOptions& options) {
             return fail(kExitUsage, "--reference: " + reference.error);
         reference_method = *reference.value;
     }
-    const Result<OrderLevel> level = parseOrderLevel(options.level);
-    if (!level)
-        return fail(kExitUsage, "--level: " + level.error);
-    settings.level = *level.value;
-    const Result<OracleKind> oracle = parseOracleKind(options.oracle);
-    if (!oracle)
-        return fail(kExitUsage, "--oracle: " + oracle.error);
-    settings.oracle = *oracle.value;
-    settings.oracle_options = environmentOracleOptions();
-    if (!(options.alpha > 0.0 && options.alpha <= 1.0))
-        return fail(kExitUsage, "--alpha must be in (0, 1], got " + std::to_string(options.alpha));
-    if (options.shading != "lit" && options.shading != "flat")
-        return fail(kExitUsage, "--shading must be lit or flat, got '" + options.shading + "'");
-    settings.flat_shading = options.shading == "flat";
-    const Result<RenderSettings::OrderCheck> check = parseOrderCheck(options.check);
-    if (!check)
-        return fail(kExitUsage, "--check: " + check.error);
-    settings.check = *check.value;
-    // At least one fragment (28 bytes); at most a petabyte, far beyond any driver.
-    if (!(options.list_memory_mib >= 1.0 / 1024 && options.list_memory_mib <= 1e9))
-        return fail(kExitUsage, "--list-memory must be between 0.001 and 1e9 MiB, got " +
-                                    std::to_string(options.list_memory_mib));
-    settings.list_bytes = uint64_t(options.list_memory_mib * 1024 * 1024);
     if (!options.error_map.empty() && options.reference.empty())
         return fail(kExitUsage, "--error-map needs --reference METHOD");
-    settings.all_transparent = options.all_transparent;
-    settings.alpha = float(options.alpha);
     if (options.view.frames > 1 && !isFramePattern(options.output))
         return fail(kExitUsage, "with --frames, -o needs one %d (such as frame_%04d.png), got '" +
                                     options.output + "'");
@@ -237,12 +180,11 @@ int runRender(const RenderOptions& options) {
         return fail(kExitUsage, "with --frames, --error-map needs one %d (such as "
                                 "error_%04d.png), got '" +
                                     options.error_map + "'");
-    std::optional<Scene> scene = loadSceneOrReport(options.scene);
-    if (!scene)
-        return kExitInput;
+    std::optional<Scene> scene;
     ResolvedView view;
-    if (auto error = resolveView(options.view, *scene, view); !error.empty())
-        return fail(kExitUsage, error);
+    if (const int code = loadSceneAndView(options.scene, options.view, scene, view);
+        code != kExitOk)
+        return code;
     Result<std::shared_ptr<GlContext>> context = GlContext::shared();
     if (!context)
         return fail(kExitFailure, context.error);

@@ -79,10 +79,12 @@ protected:
     std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
     // Runs the tool; killed (code 124) after timeout_seconds: a hang fails the test, not the run.
-    RunResult run(const std::vector<std::string>& args, int timeout_seconds = 60) {
+    // wrapper: a command line the tool runs under (xvfb-run for the viewer), shell words.
+    RunResult run(const std::vector<std::string>& args, int timeout_seconds = 60,
+                  const std::string& wrapper = "") {
         RunResult r;
-        std::string command =
-            "timeout " + std::to_string(timeout_seconds) + " " + shellQuote(kTool);
+        std::string command = (wrapper.empty() ? "" : wrapper + " ") + "timeout " +
+                              std::to_string(timeout_seconds) + " " + shellQuote(kTool);
         for (const std::string& a : args)
             command += ' ' + shellQuote(a);
         r.command = command;

@@ -2,8 +2,6 @@
 // they write (read back with stb_image and, for flat shading, checked against the ray-cast
 // A-buffer of tests/support), the statistics JSON, frame sequences, and one-line errors.
 
-#include <stb/stb_image.h>
-
 #include <cstring>
 #include <map>
 #include <set>
@@ -12,29 +10,12 @@
 
 #include "a_buffer.h"
 #include "cli_fixture.h"
+#include "png_reading.h"
 #include "vissort/camera.h"
 #include "vissort/scene.h"
 
 namespace vissort {
 namespace {
-
-struct Png {
-    int width = 0, height = 0;
-    std::vector<uint8_t> rgba;
-};
-
-Png readPng(const std::string& path) {
-    Png png;
-    int channels = 0;
-    unsigned char* data = stbi_load(path.c_str(), &png.width, &png.height, &channels, 4);
-    if (data == nullptr) {
-        ADD_FAILURE() << "cannot read " << path << ": " << stbi_failure_reason();
-        return png;
-    }
-    png.rgba.assign(data, data + std::size_t(png.width) * png.height * 4);
-    stbi_image_free(data);
-    return png;
-}
 
 const std::string kSticks = dataPath("scenes/three_sticks.json");
 

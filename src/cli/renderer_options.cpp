@@ -1,0 +1,78 @@
+// The transparency renderer's options, shared by `render` and `view` (commands.h).
+
+#include "cli/commands.h"
+#include "cli/environment.h"
+#include "vissort/transparency_renderer.h" // names and settings only: header-only without GL
+
+namespace vissort::cli {
+
+void addRendererOptions(CLI::App& command, RendererOptions& options,
+                        const std::string& method_help) {
+    command.add_option("--method", options.method, method_help)->capture_default_str();
+    command
+        .add_option("--level", options.level,
+                    "object, triangle or multistage: vissort's ordering level, centroid's unit")
+        ->capture_default_str();
+    command
+        .add_option("--oracle", options.oracle, "vissort's oracle: cpu, cpu-reference, exact or gl")
+        ->capture_default_str();
+    command.add_flag("--all-transparent", options.all_transparent,
+                     "Treat every object as transparent with alpha --alpha");
+    command.add_option("--alpha", options.alpha, "Alpha of --all-transparent, in (0, 1]")
+        ->capture_default_str();
+    command
+        .add_option("--shading", options.shading,
+                    "lit (a headlight and a rim term, per vertex) or flat (each object's "
+                    "colour, unlit)")
+        ->capture_default_str();
+    command
+        .add_option("--check", options.check,
+                    "auto, on or off: check every pixel of an ordered blend against the GPU's "
+                    "depths and repair it from fragment lists (auto: on for vissort only)")
+        ->capture_default_str();
+    command
+        .add_option("--list-memory", options.list_memory_mib,
+                    "MiB for per-pixel fragment lists (linked-list, vissort's cycles); more "
+                    "fragments are drawn in bands")
+        ->capture_default_str();
+}
+
+#if VISSORT_WITH_GL
+std::string resolveRendererOptions(const RendererOptions& options, bool allow_all,
+                                   RenderSettings& settings) {
+    if (!(allow_all && options.method == "all")) {
+        const Result<BlendMethod> method = parseBlendMethod(options.method);
+        if (!method)
+            return "--method: " + method.error + (allow_all ? " or all" : "");
+        settings.method = *method.value;
+    }
+    const Result<OrderLevel> level = parseOrderLevel(options.level);
+    if (!level)
+        return "--level: " + level.error;
+    settings.level = *level.value;
+    const Result<OracleKind> oracle = parseOracleKind(options.oracle);
+    if (!oracle)
+        return "--oracle: " + oracle.error;
+    settings.oracle = *oracle.value;
+    settings.oracle_options = environmentOracleOptions();
+    if (!(options.alpha > 0.0 && options.alpha <= 1.0))
+        return "--alpha must be in (0, 1], got " + std::to_string(options.alpha);
+    if (options.shading != "lit" && options.shading != "flat")
+        return "--shading must be lit or flat, got '" + options.shading + "'";
+    settings.flat_shading = options.shading == "flat";
+    const Result<RenderSettings::OrderCheck> check = parseOrderCheck(options.check);
+    if (!check)
+        return "--check: " + check.error;
+    settings.check = *check.value;
+    // At least one fragment (28 bytes); at most a petabyte, far beyond any driver.
+    if (!(options.list_memory_mib >= 1.0 / 1024 && options.list_memory_mib <= 1e9))
+        return "--list-memory must be between 0.001 and 1e9 MiB, got " +
+               std::to_string(options.list_memory_mib);
+    settings.list_bytes = uint64_t(options.list_memory_mib * 1024 * 1024);
+    settings.all_transparent = options.all_transparent;
+    settings.alpha = float(options.alpha);
+    return "";
+}
+#endif
+
+} // namespace vissort::cli

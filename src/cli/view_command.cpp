@@ -1,0 +1,107 @@
+// `vissort view`: the interactive viewer (src/viewer), parsed here and run there.
+
+#include <iomanip>
+#include <iostream>
+
+#include "cli/commands.h"
+
+#if VISSORT_WITH_VIEWER
+#include "viewer/input_script.h"
+#include "viewer/viewer.h"
+#include "vissort/transparency_renderer.h"
+#endif
+
+namespace vissort::cli {
+
+CLI::App* addViewCommand(CLI::App& app, ViewerOptions& options) {
+    CLI::App* command = app.add_subcommand(
+        "view", "Open a window on a scene: move around it, switch methods, watch the statistics");
+    command->add_option("scene", options.scene,
+                        "Mesh file, JSON scene, or builtin:NAME?key=value&...");
+    options.view.size = "1024x768";
+    addViewOptions(*command, options.view);
+    addRendererOptions(*command, options.renderer, "The method shown first (1-7 switch)");
+    command->add_option("--screenshot", options.screenshot,
+                        "With --frames N: save the window after the last frame (PNG) and exit");
+    command->add_flag("--hide-ui", options.hide_ui, "No panel or overlay (nor in screenshots)");
+    command->add_option("--script", options.script,
+                        "Replay input from a file: key presses, drags, wheel steps and resizes "
+                        "at given frames (docs/viewer.md)");
+    command->footer(
+        "Without --frames the window stays until closed; with --frames N it renders N frames\n"
+        "(each before the next is asked for, the script's events between them) and exits.\n"
+        "Controls:\n"
+        "  left drag        orbit about the target     right/middle drag  pan\n"
+        "  wheel            zoom                       W/S  fly forward/back\n"
+        "  A/D              fly left/right             Q/E  fly down/up\n"
+        "  F                frame the scene            R    reset the camera\n"
+        "  Space            play/pause                 P    screenshot (vissort-view-N.png)\n"
+        "  1-7              vissort, unsorted, centroid, peel, dual-peel, linked-list, weighted\n"
+        "  H                help overlay               Escape  quit\n"
+        "Needs a display: on a machine without one, run it under xvfb-run.");
+    return command;
+}
+
+#if !VISSORT_WITH_VIEWER
+int runView(const ViewerOptions&) {
+    return failWithoutGl("view");
+}
+#else
+namespace {
+
+void printVec(const char* name, const Vec3& v) {
+    std::cout << ' ' << name << ' ' << v.x << ',' << v.y << ',' << v.z;
+}
+
+} // namespace
+
+int runView(const ViewerOptions& options) {
+    if (options.scene.empty())
+        return fail(kExitUsage, "view needs a scene (a mesh file, JSON scene or builtin:NAME)");
+    viewer::ViewerSettings settings;
+    if (std::string error = resolveRendererOptions(options.renderer, false, settings.render);
+        !error.empty())
+        return fail(kExitUsage, error);
+    if (!options.screenshot.empty() && !options.frames_given)
+        return fail(kExitUsage, "--screenshot needs --frames N");
+    if (!options.script.empty()) {
+        Result<std::vector<viewer::ScriptEvent>> script = viewer::loadInputScript(options.script);
+        if (!script)
+            return fail(kExitUsage, "--script: " + script.error);
+        settings.script = std::move(*script.value);
+    }
+    if (Status display = viewer::checkDisplay(); !display)
+        return fail(kExitFailure, display.error);
+    std::optional<Scene> scene;
+    ResolvedView view;
+    if (const int code = loadSceneAndView(options.scene, options.view, scene, view);
+        code != kExitOk)
+        return code;
+    settings.title = "vissort view " + options.scene;
+    settings.camera = view.camera;
+    settings.path = view.path;
+    settings.width = view.width;
+    settings.height = view.height;
+    settings.frames = options.frames_given ? view.frames : 0;
+    settings.screenshot = options.screenshot;
+    settings.hide_ui = options.hide_ui;
+    Result<viewer::ViewerSummary> summary = viewer::runViewer(*scene, settings);
+    if (!summary)
+        return fail(kExitFailure, summary.error);
+    const viewer::ViewerSummary& s = *summary.value;
+    std::cout << s.frames << (s.frames == 1 ? " frame" : " frames") << " at " << s.width << 'x'
+              << s.height << ", " << blendMethodName(s.render.method) << ", "
+              << orderLevelName(s.render.level) << " level: median " << std::fixed
+              << std::setprecision(1) << s.median_ms << " ms a frame, " << s.fps << " frames/s\n";
+    std::cout << std::setprecision(9) << std::defaultfloat << "camera:";
+    printVec("eye", s.camera.eye);
+    printVec("target", s.camera.target);
+    printVec("up", s.camera.up);
+    std::cout << " fov " << s.camera.fov_degrees << '\n';
+    for (const std::string& path : s.screenshots)
+        std::cout << path << ": screenshot\n";
+    return kExitOk;
+}
+#endif
+
+} // namespace vissort::cli

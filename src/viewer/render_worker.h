@@ -1,0 +1,74 @@
+#pragma once
+// The viewer's renderer on a thread of its own: ordering and rendering a frame can take from tens
+// of milliseconds to seconds on a CPU renderer (llvmpipe), and the window must keep handling
+// input meanwhile. The worker owns the headless OpenGL context (gl_context.h) and the
+// TransparencyRenderer; the window's thread only hands it requests and takes finished images,
+// the same pixels `vissort render` writes for the same camera and frame.
+
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "vissort/camera.h"
+#include "vissort/scene.h"
+#include "vissort/transparency_renderer.h"
+
+namespace vissort::viewer {
+
+/// What to render: the scene at a frame (time frame * kFrameInterval) through a camera.
+struct RenderRequest {
+    RenderSettings settings;
+    CameraSpec camera;
+    int frame = 0;
+    uint32_t width = 0, height = 0;
+};
+
+/// A finished request: 8-bit RGBA rows from the top, or the one-line error that stopped it.
+struct RenderedFrame {
+    RenderRequest request;
+    std::vector<uint8_t> rgba;
+    RenderStats stats;
+    std::string error;
+};
+
+class RenderWorker {
+public:
+    /// Starts the thread; scene must outlive the worker.
+    explicit RenderWorker(const Scene& scene);
+    /// Finishes the frame in progress, then stops the thread.
+    ~RenderWorker();
+    RenderWorker(const RenderWorker&) = delete;
+    RenderWorker& operator=(const RenderWorker&) = delete;
+
+    /// True from submit until the frame is taken.
+    bool busy() const;
+    /// Starts rendering request; the worker must not be busy.
+    void submit(const RenderRequest& request);
+    /// The finished frame, if there is one (the worker is then free).
+    std::optional<RenderedFrame> take();
+    /// Waits for the submitted frame and takes it.
+    RenderedFrame wait();
+
+private:
+    void run();
+    RenderedFrame render(const RenderRequest& request);
+
+    const Scene& scene_;
+    mutable std::mutex mutex_;
+    std::condition_variable changed_;
+    std::optional<RenderRequest> pending_;
+    std::optional<RenderedFrame> done_;
+    bool busy_ = false, stopping_ = false;
+    // The worker thread's own: made on the first request, remade when the settings change.
+    std::unique_ptr<TransparencyRenderer> renderer_;
+    RenderSettings renderer_settings_;
+    TrianglePositions positions_;
+    std::thread thread_; // last: started once everything above exists
+};
+
+} // namespace vissort::viewer

@@ -1,0 +1,59 @@
+#pragma once
+// `vissort view`: a window showing a scene rendered by the transparency renderer (the same pixels
+// `vissort render` writes for the same camera and size), moved with the mouse and keys, with a
+// panel of settings and live statistics (Dear ImGui). GLFW makes the window and its OpenGL
+// context on the calling thread; a RenderWorker renders on its own thread through the headless
+// context, so input is handled while a slow frame renders.
+//
+// Controls (also in `vissort view --help` and the help overlay, H):
+//   left drag: orbit about the target      right or middle drag: pan       wheel: zoom
+//   W/S: fly forward/back   A/D: left/right   Q/E: down/up   F: frame the scene   R: reset camera
+//   Space: play/pause       1-7: method (vissort, unsorted, centroid, peel, dual-peel,
+//   linked-list, weighted)  P: screenshot     H: help overlay      Escape: quit
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "viewer/input_script.h"
+#include "vissort/camera.h"
+#include "vissort/camera_path.h"
+#include "vissort/result.h"
+#include "vissort/scene.h"
+#include "vissort/transparency_renderer.h"
+
+namespace vissort::viewer {
+
+struct ViewerSettings {
+    std::string title = "vissort";
+    RenderSettings render;
+    CameraSpec camera; // the start camera, as `render` resolves it; R comes back to it
+    CameraPath path = CameraPath::fixed;
+    uint32_t width = 1024, height = 768; // the window's size
+    int frames = 0;         // 0: until the window closes; N: render N frames, then close
+    std::string screenshot; // with frames: where the last frame is saved (PNG)
+    bool hide_ui = false;   // no panel (and no help overlay) in the window or the screenshot
+    std::vector<ScriptEvent> script; // input replayed (input_script.h)
+};
+
+/// What a run of the viewer did.
+struct ViewerSummary {
+    int frames = 0;                 // frames rendered
+    double median_ms = 0;           // per frame, ordering and rendering (the renderer's total)
+    double fps = 0;                 // frames rendered per second of the window's life
+    CameraSpec camera;              // the camera of the last frame
+    RenderSettings render;          // the settings of the last frame
+    uint32_t width = 0, height = 0; // the last frame's size
+    std::vector<std::string> screenshots; // files written (the final one and P presses)
+};
+
+/// Whether a display is there to open windows on (X11 or Wayland); the error says in one line
+/// that `view` needs one and points to `xvfb-run` and `vissort render`.
+Status checkDisplay();
+
+/// Opens the window and runs until it is closed (or settings.frames are rendered). Errors: no
+/// display, no OpenGL context for the window, a frame the renderer could not render, a
+/// screenshot that could not be written; each one line.
+Result<ViewerSummary> runViewer(const Scene& scene, const ViewerSettings& settings);
+
+} // namespace vissort::viewer

@@ -1,0 +1,138 @@
+// The viewer's panel (viewer_panel.h).
+
+#include "viewer/viewer_panel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <iterator>
+#include <numeric>
+
+namespace vissort::viewer {
+namespace {
+
+// A combo over an enum's names; true when the choice changed.
+template <class Enum, std::size_t N>
+bool enumCombo(const char* label, const EnumName<Enum> (&names)[N], Enum& value) {
+    bool changed = false;
+    if (ImGui::BeginCombo(label, enumName<Enum>(names, value))) {
+        for (const EnumName<Enum>& entry : names) {
+            const bool selected = entry.value == value;
+            if (ImGui::Selectable(entry.name, selected) && !selected) {
+                value = entry.value;
+                changed = true;
+            }
+        }
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
+} // namespace
+
+PanelActions drawPanel(const PanelState& state, RenderSettings& settings) {
+    PanelActions actions;
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(310, 0), ImGuiCond_FirstUseEver);
+    ImGui::Begin("vissort");
+    const Scene& scene = *state.scene;
+    if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) {
+        std::size_t transparent = 0, transparent_triangles = 0;
+        for (const SceneObject& object : scene.objects)
+            if (object.transparent) {
+                ++transparent;
+                transparent_triangles += object.triangle_count;
+            }
+        ImGui::TextWrapped("%s", scene.name.c_str());
+        ImGui::Text("%zu objects, %zu transparent", scene.objects.size(), transparent);
+        ImGui::Text("%zu triangles, %zu transparent", scene.triangleCount(), transparent_triangles);
+        if (*state.complexity)
+            ImGui::Text("depth complexity: max %llu, mean %.2f",
+                        static_cast<unsigned long long>((*state.complexity)->max),
+                        (*state.complexity)->mean);
+        if (ImGui::Button("Measure depth complexity (this view)"))
+            actions.measure_complexity = true;
+    }
+    if (ImGui::CollapsingHeader("Rendering", ImGuiTreeNodeFlags_DefaultOpen)) {
+        actions.settings_changed |= enumCombo("method", kBlendMethodNames, settings.method);
+        actions.settings_changed |= enumCombo("level", kOrderLevelNames, settings.level);
+        actions.settings_changed |= enumCombo("oracle", kOracleKindNames, settings.oracle);
+        actions.settings_changed |= ImGui::Checkbox("all transparent", &settings.all_transparent);
+        if (settings.all_transparent) {
+            float alpha = settings.alpha;
+            if (ImGui::SliderFloat("alpha", &alpha, 0.01f, 1.0f, "%.2f")) {
+                settings.alpha = std::clamp(alpha, 0.01f, 1.0f);
+                actions.settings_changed = true;
+            }
+        }
+        actions.settings_changed |= ImGui::Checkbox("flat shading", &settings.flat_shading);
+        actions.settings_changed |= enumCombo("check", kOrderCheckNames, settings.check);
+    }
+    if (ImGui::CollapsingHeader("Camera and time", ImGuiTreeNodeFlags_DefaultOpen)) {
+        if (ImGui::Button(state.playing ? "Pause (Space)" : "Play (Space)"))
+            actions.toggle_play = true;
+        ImGui::SameLine();
+        ImGui::Text("frame %d", state.frame);
+        if (ImGui::Button("Frame scene (F)"))
+            actions.frame_scene = true;
+        ImGui::SameLine();
+        if (ImGui::Button("Reset (R)"))
+            actions.reset_camera = true;
+        ImGui::SameLine();
+        if (ImGui::Button("Screenshot (P)"))
+            actions.screenshot = true;
+    }
+    if (ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::Text("%.1f frames/s", state.fps);
+        if (state.last != nullptr && state.last->error.empty()) {
+            const RenderStats& stats = state.last->stats;
+            ImGui::Text("frame %.1f ms: order %.1f, render %.1f", stats.total_ms, stats.order_ms,
+                        stats.render_ms);
+            ImGui::Text("%llu queries, %u iterations",
+                        static_cast<unsigned long long>(stats.order.queries),
+                        stats.order.iterations);
+            ImGui::Text("%u passes, %u groups per pixel (cycles)", stats.passes, stats.groups);
+            ImGui::Text("%llu pixels repaired",
+                        static_cast<unsigned long long>(stats.repaired_pixels));
+        }
+        if (!state.frame_ms.empty()) {
+            const float top = *std::max_element(state.frame_ms.begin(), state.frame_ms.end());
+            ImGui::PlotLines("ms", state.frame_ms.data(), int(state.frame_ms.size()), 0, nullptr,
+                             0.0f, std::max(1.0f, top * 1.1f), ImVec2(0, 60));
+        }
+    }
+    ImGui::TextDisabled("H: help");
+    ImGui::End();
+    return actions;
+}
+
+void drawHelpOverlay() {
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f),
+                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::Begin("Controls", nullptr,
+                 ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
+    static constexpr const char* kLines[][2] = {
+        {"left drag", "orbit about the target"},
+        {"right or middle drag", "pan"},
+        {"wheel", "zoom"},
+        {"W / S", "fly forward / back"},
+        {"A / D", "fly left / right"},
+        {"Q / E", "fly down / up"},
+        {"F", "frame the scene"},
+        {"R", "reset the camera"},
+        {"Space", "play / pause"},
+        {"1 to 7", "vissort, unsorted, centroid, peel, dual-peel, linked-list, weighted"},
+        {"P", "screenshot (vissort-view-N.png)"},
+        {"H", "this help"},
+        {"Escape", "quit"},
+    };
+    for (const auto& line : kLines) {
+        ImGui::Text("%-22s", line[0]);
+        ImGui::SameLine();
+        ImGui::TextUnformatted(line[1]);
+    }
+    ImGui::End();
+}
+
+} // namespace vissort::viewer

@@ -1,0 +1,41 @@
+#pragma once
+// The viewer's panel and help overlay (Dear ImGui): scene facts, the renderer's settings, live
+// statistics with a frame-time plot, and the controls. Drawn between ImGui::NewFrame and
+// ImGui::Render; reads the viewer's state and returns what the user asked for.
+
+#include <optional>
+#include <span>
+
+#include "viewer/render_worker.h"
+#include "vissort/depth_complexity.h"
+#include "vissort/scene.h"
+#include "vissort/transparency_renderer.h"
+
+namespace vissort::viewer {
+
+struct PanelState {
+    const Scene* scene = nullptr;
+    const RenderedFrame* last = nullptr; // the frame on screen, if any
+    std::span<const float> frame_ms;     // recent frames' total ms, oldest first
+    double fps = 0;                      // frames rendered per second, recently
+    int frame = 0;                       // the animation frame
+    bool playing = false;
+    const std::optional<DepthComplexity>* complexity = nullptr; // measured on demand
+};
+
+struct PanelActions {
+    bool settings_changed = false;
+    bool toggle_play = false;
+    bool reset_camera = false;
+    bool frame_scene = false;
+    bool measure_complexity = false;
+    bool screenshot = false;
+};
+
+/// The panel at the window's top-left; settings are edited in place.
+PanelActions drawPanel(const PanelState& state, RenderSettings& settings);
+
+/// The controls, centred.
+void drawHelpOverlay();
+
+} // namespace vissort::viewer

@@ -1,0 +1,126 @@
+// The viewer's camera controls against their documented geometry (camera_controls.h), computed
+// here from first principles, and the input script's format (input_script.h).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "viewer/camera_controls.h"
+#include "viewer/input_script.h"
+
+namespace vissort::viewer {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+CameraSpec startCamera() {
+    CameraSpec camera;
+    camera.eye = {0, 0, 10};
+    camera.target = {0, 0, 0};
+    camera.up = {0, 1, 0};
+    camera.fov_degrees = 45;
+    return camera;
+}
+
+void expectNear(const Vec3& a, const Vec3& b, double tolerance = 1e-9) {
+    EXPECT_NEAR(a.x, b.x, tolerance);
+    EXPECT_NEAR(a.y, b.y, tolerance);
+    EXPECT_NEAR(a.z, b.z, tolerance);
+}
+
+TEST(CameraControls, OrbitTurnsAboutUpThenTowardsIt) {
+    const CameraSpec start = startCamera();
+    // 50 pixels right: -0.5 rad about +y, the eye from +z towards -x.
+    const CameraSpec yawed = orbit(start, 50, 0);
+    expectNear(yawed.eye, {10 * std::sin(-0.5), 0, 10 * std::cos(-0.5)});
+    expectNear(yawed.target, start.target);
+    // 30 pixels down: 0.3 rad up, at the same distance.
+    const CameraSpec raised = orbit(start, 0, 30);
+    expectNear(raised.eye, {0, 10 * std::sin(0.3), 10 * std::cos(0.3)});
+    // Never over the pole: 10 rad up stops within 0.01 rad of it.
+    const CameraSpec top = orbit(start, 0, 1000);
+    EXPECT_NEAR(std::acos(top.eye.y / 10), 0.01, 1e-9);
+    EXPECT_GT(top.eye.z, 0);
+    // Orthographic: the direction turns the same way.
+    CameraSpec ortho = start;
+    ortho.projection = Projection::orthographic;
+    ortho.ortho_direction = {0, 0, -1};
+    expectNear(orbit(ortho, 50, 0).ortho_direction, {-std::sin(-0.5), 0, -std::cos(-0.5)});
+}
+
+TEST(CameraControls, PanMovesEyeAndTargetWithTheCursor) {
+    const CameraSpec start = startCamera();
+    // At distance 10 and 45 degrees over 500 pixels: 2 * 10 * tan(22.5 deg) / 500 a pixel.
+    const double per_pixel = 2 * 10 * std::tan(22.5 * kPi / 180) / 500;
+    const CameraSpec moved = pan(start, 100, 50, 500);
+    // Right drags the scene right: the camera moves left (-x); down: the camera moves up.
+    expectNear(moved.eye, {-100 * per_pixel, 50 * per_pixel, 10});
+    expectNear(moved.target, {-100 * per_pixel, 50 * per_pixel, 0});
+}
+
+TEST(CameraControls, ZoomScalesTheDistanceAndStops) {
+    const CameraSpec start = startCamera();
+    expectNear(zoom(start, 2, 0.1).eye, {0, 0, 10 * 0.9 * 0.9});
+    expectNear(zoom(start, -1, 0.1).eye, {0, 0, 10 / 0.9});
+    expectNear(zoom(start, 500, 0.1).eye, {0, 0, 0.1});
+}
+
+TEST(CameraControls, FlyMovesAlongViewRightAndUp) {
+    const CameraSpec start = startCamera();
+    const CameraSpec moved = fly(start, 1, 2, -3, 0.5);
+    expectNear(moved.eye, {1.0, -1.5, 9.5});
+    expectNear(moved.target, {1.0, -1.5, -0.5});
+}
+
+TEST(CameraControls, FrameBoundsFitsTheSphereFromTheSameDirection) {
+    Bounds bounds;
+    bounds.add({1, 1, 1});
+    bounds.add({3, 5, 2});
+    const CameraSpec framed = frameBounds(orbit(startCamera(), 20, 10), bounds);
+    expectNear(framed.target, bounds.centre());
+    const double distance = length(framed.eye - framed.target);
+    EXPECT_NEAR(distance * std::sin(22.5 * kPi / 180), bounds.radius(), 1e-9);
+    expectNear(normalized(framed.eye - framed.target),
+               normalized(orbit(startCamera(), 20, 10).eye));
+}
+
+TEST(InputScript, ParsesEveryEventSortedByFrame) {
+    const auto events = parseInputScript("# a comment\n"
+                                         "3 key w\n"
+                                         "0 drag left 10 20 30 40   # orbit\n"
+                                         "\n"
+                                         "1 wheel -2.5\n"
+                                         "1 resize 200 150\n"
+                                         "0 key 7\n");
+    ASSERT_TRUE(events) << events.error;
+    ASSERT_EQ(events.value->size(), 5u);
+    const auto& e = *events.value;
+    EXPECT_EQ(e[0].kind, ScriptEvent::Kind::drag);
+    EXPECT_EQ(e[0].button, 0);
+    EXPECT_EQ(e[0].x1 - e[0].x0, 20);
+    EXPECT_EQ(e[1].key, "7"); // file order within frame 0
+    EXPECT_EQ(e[2].kind, ScriptEvent::Kind::wheel);
+    EXPECT_EQ(e[2].steps, -2.5);
+    EXPECT_EQ(e[3].width, 200u);
+    EXPECT_EQ(e[4].key, "W");
+    EXPECT_EQ(e[4].frame, 3);
+}
+
+TEST(InputScript, RejectsBadLinesNamingThem) {
+    const std::pair<const char*, const char*> cases[] = {
+        {"x key W", "line 1: the frame"},      {"0 key W\n-1 key W", "line 2: the frame"},
+        {"0 key 8", "unknown key '8'"},        {"0 press W", "unknown event 'press'"},
+        {"0 drag left 1 2 3", "four numbers"}, {"0 drag top 1 2 3 4", "button"},
+        {"0 wheel nan", "wheel needs"},        {"0 resize 0 10", "resize needs"},
+        {"0 key W W", "unexpected 'W'"},       {"0", "an event"},
+    };
+    for (const auto& [text, needle] : cases) {
+        const auto events = parseInputScript(text);
+        EXPECT_FALSE(events) << text;
+        EXPECT_NE(events.error.find(needle), std::string::npos) << text << ": " << events.error;
+    }
+    EXPECT_FALSE(loadInputScript("/nonexistent/script.txt"));
+}
+
+} // namespace
+} // namespace vissort::viewer
