@@ -51,6 +51,8 @@ inline Vec3 normalized(const Vec3& a) {
 
 struct Rgba {
     float r = 0.8f, g = 0.8f, b = 0.8f, a = 1.0f;
+
+    friend bool operator==(const Rgba&, const Rgba&) = default;
 };
 
 /// Axis-aligned box; `isEmpty()` until a point is added.

@@ -46,6 +46,8 @@ struct OracleOptions {
     uint32_t threads = 1;
     /// The cpu oracle walks rows with AVX2 where the CPU has it (FastCpuOracleOptions).
     bool allow_simd = true;
+
+    friend bool operator==(const OracleOptions&, const OracleOptions&) = default;
 };
 
 /// The oracle of that kind with those options. The exact and gl oracles have no conservative

@@ -91,6 +91,10 @@ struct RenderSettings {
     /// off for unsorted and centroid (measured as the wrong answers they are). The other methods
     /// ignore it.
     enum class OrderCheck { automatic, on, off } check = OrderCheck::automatic;
+
+    /// Every setting equal: a renderer made with one renders the other's images (the viewer
+    /// keeps its renderer while the settings stay the same).
+    friend bool operator==(const RenderSettings&, const RenderSettings&) = default;
 };
 
 inline constexpr EnumName<RenderSettings::OrderCheck> kOrderCheckNames[] = {

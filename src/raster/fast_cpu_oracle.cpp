@@ -303,6 +303,8 @@ struct FastCpuOracle::Impl {
     static constexpr uint32_t kCountBits = 4;
     struct TriangleSetups {
         uint32_t first, stamp;
+        uint32_t count() const { return stamp & ((1u << kCountBits) - 1); }
+        bool current(uint32_t bind_stamp) const { return stamp >> kCountBits == bind_stamp; }
     };
     bool keep_for_rebind_ = false;
     std::vector<TriangleSetups> triangle_setups_;
@@ -530,11 +532,11 @@ void FastCpuOracle::Impl::rebind(PositionsView positions, const ViewProjection& 
     for (const PrimitiveRange& range : primitives) // every triangle set up by the bind?
         for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count;
              ++t) {
-            if (triangle_setups_[t].stamp >> kCountBits != bind_stamp_) {
+            if (!triangle_setups_[t].current(bind_stamp_)) {
                 bindInstead();
                 return;
             }
-            n += triangle_setups_[t].stamp & ((1u << kCountBits) - 1);
+            n += triangle_setups_[t].count();
         }
     if (source_at_ == Source::setups) {
         std::swap(setups_, source_setups_);
@@ -553,20 +555,24 @@ void FastCpuOracle::Impl::rebind(PositionsView positions, const ViewProjection& 
     uint32_t k = 0;
     constexpr std::size_t kAhead = 8; // primitives: a few cache misses in flight
     for (std::size_t p = 0; p < primitives.size(); ++p) {
-        if (p + kAhead < primitives.size()) {
+        // Only a range with triangles has an entry, and only one with set-ups a set-up to fetch
+        // (an empty range may start at the last triangle's end).
+        if (p + kAhead < primitives.size() && primitives[p + kAhead].triangle_count != 0) {
             const TriangleSetups& ahead = triangle_setups_[primitives[p + kAhead].first_triangle];
-            const char* setup = reinterpret_cast<const char*>(&source_setups_[ahead.first]);
-            __builtin_prefetch(setup);
-            __builtin_prefetch(setup + sizeof(StoredSetup) - 1);
-            __builtin_prefetch(&source_spreads_[ahead.first]);
-            __builtin_prefetch(&source_narrow_[ahead.first]);
+            if (ahead.count() != 0) {
+                const char* setup = reinterpret_cast<const char*>(&source_setups_[ahead.first]);
+                __builtin_prefetch(setup);
+                __builtin_prefetch(setup + sizeof(StoredSetup) - 1);
+                __builtin_prefetch(&source_spreads_[ahead.first]);
+                __builtin_prefetch(&source_narrow_[ahead.first]);
+            }
         }
         primitive_setups_[p] = k;
         const PrimitiveRange& range = primitives[p];
         for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count;
              ++t) {
             const TriangleSetups& at = triangle_setups_[t];
-            const uint32_t end = at.first + (at.stamp & ((1u << kCountBits) - 1));
+            const uint32_t end = at.first + at.count();
             for (uint32_t i = at.first; i < end; ++i, ++k) {
                 setups_[k] = source_setups_[i];
                 narrow_[k] = source_narrow_[i];

@@ -5,24 +5,11 @@
 #include <cassert>
 #include <exception>
 
-#include "vissort/camera_path.h"
 #include "vissort/gl_context.h"
 
 namespace vissort::viewer {
-namespace {
-
-// Whether a renderer made with a can render with b (every setting it is made with).
-bool sameSettings(const RenderSettings& a, const RenderSettings& b) {
-    return a.method == b.method && a.level == b.level && a.oracle == b.oracle &&
-           a.all_transparent == b.all_transparent && a.alpha == b.alpha &&
-           a.flat_shading == b.flat_shading && a.check == b.check && a.list_bytes == b.list_bytes &&
-           a.background.r == b.background.r && a.background.g == b.background.g &&
-           a.background.b == b.background.b && a.background.a == b.background.a;
-}
-
-} // namespace
-
-RenderWorker::RenderWorker(const Scene& scene) : scene_(scene), thread_([this] { run(); }) {}
+RenderWorker::RenderWorker(const Scene& scene)
+    : scene_(scene), frames_(scene), thread_([this] { run(); }) {}
 
 RenderWorker::~RenderWorker() {
     {
@@ -93,7 +80,7 @@ RenderedFrame RenderWorker::render(const RenderRequest& request) {
     RenderedFrame frame;
     frame.request = request;
     try {
-        if (!renderer_ || !sameSettings(renderer_settings_, request.settings)) {
+        if (!renderer_ || renderer_settings_ != request.settings) {
             renderer_.reset();
             Result<std::shared_ptr<GlContext>> context = GlContext::shared();
             if (!context) {
@@ -104,13 +91,9 @@ RenderedFrame RenderWorker::render(const RenderRequest& request) {
                 std::make_unique<TransparencyRenderer>(*context.value, scene_, request.settings);
             renderer_settings_ = request.settings;
         }
-        // As FrameDriver does for `vissort render`: a dynamic scene's positions at the frame's
-        // time, the view framed to that frame's bounds.
-        PositionsView positions = scene_.positions.view();
-        if (scene_.isDynamic()) {
-            scene_.frame(request.frame * kFrameInterval, positions_);
-            positions = positions_.view();
-        }
+        // The frame's positions as `vissort render` takes them; the view framed to its bounds.
+        frames_.seek(request.frame);
+        const PositionsView positions = frames_.positions();
         const ViewProjection view =
             frameCamera(request.camera, positions.bounds(), request.width, request.height);
         frame.rgba = renderer_->render(positions, view, frame.stats).toRgba8();

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "vissort/camera.h"
+#include "vissort/frame_driver.h"
 #include "vissort/scene.h"
 #include "vissort/transparency_renderer.h"
 
@@ -67,7 +68,7 @@ private:
     // The worker thread's own: made on the first request, remade when the settings change.
     std::unique_ptr<TransparencyRenderer> renderer_;
     RenderSettings renderer_settings_;
-    TrianglePositions positions_;
+    FrameDriver frames_; // positions only: the camera comes with each request
     std::thread thread_; // last: started once everything above exists
 };
 

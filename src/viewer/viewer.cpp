@@ -14,7 +14,6 @@
 #include <chrono>
 #include <cstdlib>
 #include <deque>
-#include <filesystem>
 #include <string>
 #include <thread>
 
@@ -30,6 +29,7 @@ namespace vissort::viewer {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+constexpr std::size_t kPlotted = 120; // frame times in the panel's plot
 
 // The last GLFW error, for the one-line messages.
 std::string g_glfw_error;
@@ -111,12 +111,13 @@ private:
     std::string pending_error_;
     std::size_t next_event_ = 0;
     int screenshot_count_ = 0;
+    bool screenshot_asked_ = false; // P: saved once the window is drawn, before it is shown
     // Dragging: the button held and the cursor's last position.
     int drag_button_ = -1;
     double cursor_x_ = 0, cursor_y_ = 0;
 
     std::optional<RenderedFrame> shown_;
-    std::deque<float> frame_ms_;
+    std::vector<float> frame_ms_; // the last kPlotted frames, for the panel's plot
     std::vector<double> all_ms_;
     std::deque<Clock::time_point> frame_times_;
     std::optional<DepthComplexity> complexity_;
@@ -172,24 +173,15 @@ Status Viewer::open() {
     glfwSetKeyCallback(window_, [](GLFWwindow* window, int key, int, int action, int) {
         if (action == GLFW_RELEASE || ImGui::GetIO().WantCaptureKeyboard)
             return;
-        const char* name = nullptr;
-        switch (key) {
-        case GLFW_KEY_SPACE:
-            name = "SPACE";
-            break;
-        case GLFW_KEY_ESCAPE:
-            name = "ESCAPE";
-            break;
-        default:
-            if ((key >= GLFW_KEY_A && key <= GLFW_KEY_Z) ||
-                (key >= GLFW_KEY_1 && key <= GLFW_KEY_7)) {
-                static char letter[2] = {0, 0};
-                letter[0] = char(key); // GLFW's codes for these are their ASCII capitals
-                name = letter;
-            }
-        }
-        if (name != nullptr)
-            of(window).onKey(name);
+        // The names scripts use (input_script.h); GLFW's codes for letters and digits are their
+        // ASCII characters.
+        if (key == GLFW_KEY_SPACE)
+            of(window).onKey("SPACE");
+        else if (key == GLFW_KEY_ESCAPE)
+            of(window).onKey("ESCAPE");
+        else if ((key >= GLFW_KEY_A && key <= GLFW_KEY_Z) ||
+                 (key >= GLFW_KEY_1 && key <= GLFW_KEY_7))
+            of(window).onKey(std::string(1, char(key)));
     });
     glfwSetMouseButtonCallback(window_, [](GLFWwindow* window, int button, int action, int) {
         Viewer& viewer = of(window);
@@ -281,10 +273,7 @@ void Viewer::onKey(const std::string& name) {
         playing_ = !playing_;
         dirty_ = true;
     } else if (name == "P") {
-        const std::string path = "vissort-view-" + std::to_string(++screenshot_count_) + ".png";
-        drawWindow();
-        if (Status saved = saveScreenshot(path); !saved)
-            pending_error_ = saved.error;
+        screenshot_asked_ = true;
     } else if (name == "H") {
         help_ = !help_;
     } else if (name.size() == 1 && name[0] >= '1' && name[0] <= '7') {
@@ -370,9 +359,9 @@ void Viewer::show(RenderedFrame frame) {
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, GLsizei(frame.request.width),
                  GLsizei(frame.request.height), 0, GL_RGBA, GL_UNSIGNED_BYTE, frame.rgba.data());
     const float ms = float(frame.stats.total_ms);
+    if (frame_ms_.size() == kPlotted)
+        frame_ms_.erase(frame_ms_.begin());
     frame_ms_.push_back(ms);
-    if (frame_ms_.size() > 120)
-        frame_ms_.pop_front();
     all_ms_.push_back(ms);
     const Clock::time_point now = Clock::now();
     frame_times_.push_back(now);
@@ -411,11 +400,10 @@ void Viewer::drawWindow() {
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     if (!settings_.hide_ui) {
-        std::vector<float> ms(frame_ms_.begin(), frame_ms_.end());
         PanelState state;
         state.scene = &scene_;
         state.last = shown_ ? &*shown_ : nullptr;
-        state.frame_ms = ms;
+        state.frame_ms = frame_ms_;
         state.frame = frame_;
         state.playing = playing_;
         state.complexity = &complexity_;
@@ -482,36 +470,37 @@ Result<ViewerSummary> Viewer::run() {
     while (!quit_ && !glfwWindowShouldClose(window_)) {
         if (lockstep) {
             applyScript(summary_.frames);
-            if (!pending_error_.empty())
-                break;
-            if (quit_)
+            if (!pending_error_.empty() || quit_)
                 break;
             worker_->submit(request());
             show(worker_->wait());
             glfwPollEvents();
-            if (!pending_error_.empty())
-                break;
-            drawWindow();
-            if (summary_.frames >= settings_.frames) {
-                if (!settings_.screenshot.empty())
-                    if (Status saved = saveScreenshot(settings_.screenshot); !saved)
-                        pending_error_ = saved.error;
-                break;
+        } else {
+            glfwWaitEventsTimeout(shown_ && !dirty_ && !(playing_ && animated_) ? 0.05 : 0.005);
+            applyScript(summary_.frames);
+            if (std::optional<RenderedFrame> frame = worker_->take())
+                show(std::move(*frame));
+            if (!worker_->busy() && (dirty_ || (playing_ && animated_))) {
+                dirty_ = false;
+                worker_->submit(request());
             }
-            glfwSwapBuffers(window_);
-            continue;
         }
-        glfwWaitEventsTimeout(shown_ && !dirty_ && !(playing_ && animated_) ? 0.05 : 0.005);
-        applyScript(summary_.frames);
-        if (std::optional<RenderedFrame> frame = worker_->take())
-            show(std::move(*frame));
         if (!pending_error_.empty())
             break;
-        if (!worker_->busy() && (dirty_ || (playing_ && animated_))) {
-            dirty_ = false;
-            worker_->submit(request());
-        }
         drawWindow();
+        // Screenshots read the drawn back buffer, before it is shown.
+        if (screenshot_asked_) {
+            screenshot_asked_ = false;
+            const std::string path = "vissort-view-" + std::to_string(++screenshot_count_) + ".png";
+            if (Status saved = saveScreenshot(path); !saved)
+                pending_error_ = saved.error;
+        }
+        if (lockstep && summary_.frames >= settings_.frames) {
+            if (!settings_.screenshot.empty())
+                if (Status saved = saveScreenshot(settings_.screenshot); !saved)
+                    pending_error_ = saved.error;
+            break;
+        }
         glfwSwapBuffers(window_);
     }
     if (!pending_error_.empty())
@@ -541,8 +530,6 @@ Status checkDisplay() {
 }
 
 Result<ViewerSummary> runViewer(const Scene& scene, const ViewerSettings& settings) {
-    if (Status display = checkDisplay(); !display)
-        return {std::nullopt, display.error};
     Viewer viewer(scene, settings);
     if (Status opened = viewer.open(); !opened)
         return {std::nullopt, opened.error};

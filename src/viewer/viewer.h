@@ -47,13 +47,14 @@ struct ViewerSummary {
     std::vector<std::string> screenshots; // files written (the final one and P presses)
 };
 
-/// Whether a display is there to open windows on (X11 or Wayland); the error says in one line
-/// that `view` needs one and points to `xvfb-run` and `vissort render`.
+/// Whether a display is named to open windows on (X11 or Wayland), without connecting to it: a
+/// caller can say that `view` needs one (pointing to `xvfb-run` and `vissort render`) before
+/// loading a scene.
 Status checkDisplay();
 
 /// Opens the window and runs until it is closed (or settings.frames are rendered). Errors: no
-/// display, no OpenGL context for the window, a frame the renderer could not render, a
-/// screenshot that could not be written; each one line.
+/// display to connect to (the same advice as checkDisplay's), no OpenGL context for the window,
+/// a frame the renderer could not render, a screenshot that could not be written; each one line.
 Result<ViewerSummary> runViewer(const Scene& scene, const ViewerSettings& settings);
 
 } // namespace vissort::viewer

@@ -10,6 +10,8 @@
 
 #include "cli_fixture.h"
 #include "png_reading.h"
+#include "vissort/geometry.h"
+#include "vissort/image.h"
 
 namespace vissort {
 namespace {
@@ -21,11 +23,7 @@ const std::string kXvfb = "xvfb-run -a -s '-screen 0 1280x1024x24'";
 int maxDifference(const Png& a, const Png& b) {
     if (a.width != b.width || a.height != b.height)
         return -1;
-    int worst = 0;
-    for (std::size_t i = 0; i < a.rgba.size(); ++i)
-        if (i % 4 != 3)
-            worst = std::max(worst, std::abs(int(a.rgba[i]) - int(b.rgba[i])));
-    return worst;
+    return compareImages(a.rgba, b.rgba).max_abs;
 }
 
 class View : public Cli {
@@ -56,6 +54,13 @@ protected:
     }
 };
 
+// The eye and target of the camera line view prints.
+struct Reported {
+    Vec3 eye, target;
+    double distance() const { return length(eye - target); }
+    Vec3 direction() const { return normalized(target - eye); }
+};
+
 // The camera line view prints: "camera: eye X,Y,Z target X,Y,Z up X,Y,Z fov F".
 std::vector<std::string> cameraOptions(const std::string& out) {
     const std::size_t at = out.find("camera: eye ");
@@ -65,6 +70,28 @@ std::vector<std::string> cameraOptions(const std::string& out) {
     std::string word, eye, target, up, fov;
     in >> word >> eye >> word >> target >> word >> up >> word >> fov;
     return {"--eye", eye, "--target", target, "--up", up, "--fov", fov};
+}
+
+Reported reportedCamera(const RunResult& r) {
+    const std::vector<std::string> options = cameraOptions(r.out);
+    Reported camera;
+    EXPECT_EQ(options.size(), 8u) << r;
+    if (options.size() != 8u)
+        return camera;
+    const auto vec = [](const std::string& text) {
+        Vec3 v;
+        std::sscanf(text.c_str(), "%lf,%lf,%lf", &v.x, &v.y, &v.z);
+        return v;
+    };
+    camera.eye = vec(options[1]);
+    camera.target = vec(options[3]);
+    return camera;
+}
+
+void expectNear(const Vec3& a, const Vec3& b, double tolerance) {
+    EXPECT_NEAR(a.x, b.x, tolerance);
+    EXPECT_NEAR(a.y, b.y, tolerance);
+    EXPECT_NEAR(a.z, b.z, tolerance);
 }
 
 TEST_F(View, ScreenshotEqualsRenderOfTheSameFrame) {
@@ -86,30 +113,84 @@ TEST_F(View, ScriptedOrbitMovesTheCameraAsDocumented) {
         view({scene, "--size", "200x160", "--script", path("orbit.txt")}, 2, path("orbit.png"));
     ASSERT_EQ(r.code, 0) << r;
     // The eye turned about the target: same distance, about up by -0.5 rad, then 0.3 rad up.
-    const std::vector<std::string> before = cameraOptions(start.out), after = cameraOptions(r.out);
-    ASSERT_EQ(after.size(), 8u) << r;
-    ASSERT_EQ(before.size(), 8u) << start;
-    const auto vec = [](const std::string& text) {
-        std::array<double, 3> v{};
-        std::sscanf(text.c_str(), "%lf,%lf,%lf", &v[0], &v[1], &v[2]);
-        return v;
-    };
-    const auto e0 = vec(before[1]), t0 = vec(before[3]), e1 = vec(after[1]), t1 = vec(after[3]);
-    const auto offset = [](std::array<double, 3> e, std::array<double, 3> t) {
-        return std::array<double, 3>{e[0] - t[0], e[1] - t[1], e[2] - t[2]};
-    };
-    const auto o0 = offset(e0, t0), o1 = offset(e1, t1);
-    const double d0 = std::hypot(o0[0], o0[1], o0[2]), d1 = std::hypot(o1[0], o1[1], o1[2]);
-    EXPECT_NEAR(d1, d0, 1e-6 * d0);
-    EXPECT_EQ(t0, t1);
-    const double yaw0 = std::atan2(o0[0], o0[2]), yaw1 = std::atan2(o1[0], o1[2]);
+    const Reported before = reportedCamera(start), after = reportedCamera(r);
+    const Vec3 o0 = before.eye - before.target, o1 = after.eye - after.target;
+    EXPECT_NEAR(length(o1), length(o0), 1e-6 * length(o0));
+    EXPECT_EQ(after.target, before.target);
+    const double yaw0 = std::atan2(o0.x, o0.z), yaw1 = std::atan2(o1.x, o1.z);
     EXPECT_NEAR(std::remainder(yaw1 - yaw0, 2 * M_PI), -0.5, 1e-6);
-    EXPECT_NEAR(std::asin(o1[1] / d1) - std::asin(o0[1] / d0), 0.3, 1e-6);
+    EXPECT_NEAR(std::asin(o1.y / length(o1)) - std::asin(o0.y / length(o0)), 0.3, 1e-6);
     // And the window shows what render draws from that camera.
     std::vector<std::string> args{scene, "--size", "200x160"};
-    args.insert(args.end(), after.begin(), after.end());
+    const std::vector<std::string> camera = cameraOptions(r.out);
+    args.insert(args.end(), camera.begin(), camera.end());
     EXPECT_LE(maxDifference(readPng(path("orbit.png")), render(args, 1)), 1);
     EXPECT_GT(maxDifference(readPng(path("orbit.png")), readPng(path("start.png"))), 1);
+}
+
+// The other controls through the window, each against docs/viewer.md's geometry: the wheel,
+// flying, panning, framing, reset; Space pauses; P saves what the window shows.
+TEST_F(View, ScriptedControlsMoveTheCameraAsDocumented) {
+    const std::string scene = "builtin:plant?layers=3";
+    const json info = [&] {
+        const RunResult r = run({"info", scene, "--json", path("info.json")});
+        EXPECT_EQ(r.code, 0) << r;
+        return json::parse(readFile(path("info.json")));
+    }();
+    const auto corner = [&](const char* key) {
+        const json& c = info["bounds"][key];
+        return Vec3{c[0].get<double>(), c[1].get<double>(), c[2].get<double>()};
+    };
+    const Vec3 centre = (corner("min") + corner("max")) * 0.5;
+    const double radius = length(corner("max") - corner("min")) * 0.5;
+    const auto scripted = [&](const std::string& name, const std::string& script) {
+        std::ofstream(path(name + ".txt")) << script;
+        const RunResult r = view({scene, "--size", "200x160", "--script", path(name + ".txt")}, 1,
+                                 path(name + ".png"));
+        EXPECT_EQ(r.code, 0) << r;
+        return reportedCamera(r);
+    };
+    const Reported start = scripted("start", "");
+    const double d = start.distance(), tolerance = 1e-6 * d;
+    // Two wheel steps: 0.9 x 0.9 of the distance, the target kept.
+    const Reported zoomed = scripted("zoom", "0 wheel 2\n");
+    EXPECT_NEAR(zoomed.distance(), 0.81 * d, tolerance);
+    expectNear(zoomed.target, start.target, tolerance);
+    // W: eye and target 5% of the scene's radius along the view.
+    const Reported flown = scripted("fly", "0 key W\n");
+    expectNear(flown.target, start.target + start.direction() * (0.05 * radius), tolerance);
+    expectNear(flown.eye - flown.target, start.eye - start.target, tolerance);
+    // A right drag of 40 pixels: across the view by 40 pixels' worth at the target's distance
+    // (45 degrees over 160 pixels).
+    const Reported panned = scripted("pan", "0 drag right 0 0 40 0\n");
+    const Vec3 moved = panned.target - start.target;
+    EXPECT_NEAR(length(moved), 40 * 2 * d * std::tan(22.5 * M_PI / 180) / 160, tolerance);
+    EXPECT_NEAR(dot(moved, start.direction()), 0, tolerance);
+    expectNear(panned.eye - panned.target, start.eye - start.target, tolerance);
+    // R after several moves: the start camera again.
+    const Reported reset = scripted("reset", "0 wheel 3\n0 key D\n0 drag left 0 0 25 9\n0 key R\n");
+    expectNear(reset.eye, start.eye, tolerance);
+    expectNear(reset.target, start.target, tolerance);
+    // F after an orbit: the scene's centre, its sphere filling the 45-degree view.
+    const Reported framed = scripted("frame", "0 drag left 0 0 30 0\n0 key F\n");
+    expectNear(framed.target, centre, tolerance);
+    EXPECT_NEAR(framed.distance(), radius / std::sin(22.5 * M_PI / 180), tolerance);
+
+    // Space at the start: three frames of the moving bunnies all show frame 0.
+    const std::string bunnies = "builtin:bunnies?n=6";
+    std::ofstream(path("pause.txt")) << "0 key SPACE\n";
+    const RunResult paused =
+        view({bunnies, "--size", "160x120", "--script", path("pause.txt")}, 3, path("paused.png"));
+    ASSERT_EQ(paused.code, 0) << paused;
+    EXPECT_EQ(maxDifference(readPng(path("paused.png")), render({bunnies, "--size", "160x120"}, 1)),
+              0);
+    // P before the second frame: the window as shown, the same picture as --screenshot's.
+    std::ofstream(path("p.txt")) << "1 key P\n";
+    const RunResult shot =
+        view({bunnies, "--size", "160x120", "--script", path("p.txt")}, 2, path("last.png"));
+    ASSERT_EQ(shot.code, 0) << shot;
+    EXPECT_NE(shot.out.find("vissort-view-1.png: screenshot"), std::string::npos) << shot;
+    EXPECT_EQ(maxDifference(readPng(path("vissort-view-1.png")), readPng(path("last.png"))), 0);
 }
 
 TEST_F(View, MethodAndLevelSwitchesChangeThePicture) {

@@ -558,9 +558,13 @@ TEST(FastCpuOracle, RebindReusesTheSetUpsOfTheBindWithTheReferenceAnswers) {
             reference.bind(p, view, objects);
             interleave(reference, fast, 1, 300);
             // Groups of the bound triangles, one after another, and a group of two objects.
+            // The whole group also with empty ranges, one where the positions end.
+            std::vector<PrimitiveRange> with_empty = shuffledTriangles(0, 290);
+            with_empty.insert(with_empty.begin() + 20, PrimitiveRange{300, 0});
+            with_empty.push_back({7, 0});
             const std::vector<std::vector<PrimitiveRange>> groups{shuffledTriangles(0, 40),
                                                                   shuffledTriangles(120, 150),
-                                                                  shuffledTriangles(0, 290),
+                                                                  with_empty,
                                                                   {{40, 10}, {10, 10}}};
             for (std::size_t g = 0; g < groups.size(); ++g) {
                 SCOPED_TRACE("group " + std::to_string(g));

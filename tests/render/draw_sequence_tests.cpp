@@ -38,7 +38,7 @@ bool anyMarkedIn(const std::vector<uint8_t>& stencil, uint32_t width, uint32_t h
 TEST(MarkedPixels, CountBoundsAndTilesMatchBruteForce) {
     std::mt19937 random(7);
     const uint32_t side = MarkedPixels::kTileSide;
-    for (const auto [width, height, density] :
+    for (const auto& [width, height, density] :
          {std::tuple{37u, 21u, 0.0}, std::tuple{37u, 21u, 0.002}, std::tuple{64u, 40u, 0.01},
           std::tuple{100u, 3u, 0.05}, std::tuple{1u, 1u, 1.0}, std::tuple{9u, 17u, 0.3}}) {
         SCOPED_TRACE(testing::Message() << width << "x" << height << " density " << density);
