@@ -81,6 +81,10 @@ struct RenderSettings {
     /// vertex, as in the paper). Flat: each object's colour and alpha, unlit, so that a ray-cast
     /// reference can reproduce every pixel.
     bool flat_shading = false;
+    /// vissort: the primitives of each of the order's cycles drawn in a colour of their own (a
+    /// palette of 8, cycle g in colour g modulo 8) at their object's alpha, to see where the
+    /// order needed per-pixel compositing. Highlighted triangles stay highlighted.
+    bool colour_cycles = false;
     /// Memory for fragment lists (linked-list, vissort's per-pixel groups), in bytes, 28 per
     /// fragment; 0: 3 GiB. Never exceeded: more fragments are drawn in bands of rows, one band
     /// at a time (each band draws the geometry again).
@@ -139,7 +143,7 @@ public:
 
     /// Draws these triangles (scene triangle ids, e.g. collidingTriangles() of a collision
     /// result) in a strong magenta, nearly opaque, in every method, from the next render on;
-    /// empty: none. Ids beyond the scene are ignored.
+    /// empty: none. Ids beyond the scene are ignored. Drawn over colour_cycles' colours.
     void setHighlightedTriangles(std::span<const uint32_t> triangles);
 
 private:

@@ -78,9 +78,10 @@ struct RendererOptions {
     std::string shading = "lit";
     std::string check = "auto";
     double list_memory_mib = 3072;
+    bool colour_cycles = false;
 };
 /// Adds --method (its help: method_help) --level --oracle --all-transparent --alpha --shading
-/// --check --list-memory.
+/// --check --list-memory --colour-cycles.
 void addRendererOptions(CLI::App& command, RendererOptions& options,
                         const std::string& method_help);
 /// Empty on success, else a one-line message naming the bad option. The method is left to the
@@ -108,6 +109,8 @@ struct ViewerOptions {
     std::string screenshot;
     std::string script;
     bool hide_ui = false;
+    bool highlight_collisions = false;
+    bool show_errors = false;
     bool frames_given = false; // --frames on the command line (else: until the window closes)
 };
 CLI::App* addViewCommand(CLI::App& app, ViewerOptions& options);

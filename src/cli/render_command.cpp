@@ -159,6 +159,8 @@ int runRender(const RenderOptions& options) {
     if (std::string error = resolveRendererOptions(options.renderer, true, settings);
         !error.empty())
         return fail(kExitUsage, error);
+    if (options.renderer.colour_cycles && !options.reference.empty())
+        return fail(kExitUsage, "--colour-cycles changes the picture: not with --reference");
     if (all_methods && options.highlight_collisions)
         return fail(kExitUsage, "--highlight-collisions renders one method: not with --method all");
     if (all_methods && (options.view.frames > 1 || !options.reference.empty()))

@@ -35,6 +35,9 @@ void addRendererOptions(CLI::App& command, RendererOptions& options,
                     "MiB for per-pixel fragment lists (linked-list, vissort's cycles); more "
                     "fragments are drawn in bands")
         ->capture_default_str();
+    command.add_flag("--colour-cycles", options.colour_cycles,
+                     "vissort: draw the primitives of each cycle of the order in a colour of "
+                     "their own (at their alpha)");
 }
 
 #if VISSORT_WITH_GL
@@ -69,6 +72,9 @@ std::string resolveRendererOptions(const RendererOptions& options, bool allow_al
         return "--list-memory must be between 0.001 and 1e9 MiB, got " +
                std::to_string(options.list_memory_mib);
     settings.list_bytes = uint64_t(options.list_memory_mib * 1024 * 1024);
+    if (options.colour_cycles && options.method != "vissort")
+        return "--colour-cycles colours vissort's cycles: not with --method " + options.method;
+    settings.colour_cycles = options.colour_cycles;
     settings.all_transparent = options.all_transparent;
     settings.alpha = float(options.alpha);
     return "";

@@ -24,6 +24,11 @@ CLI::App* addViewCommand(CLI::App& app, ViewerOptions& options) {
     command->add_option("--screenshot", options.screenshot,
                         "With --frames N: save the window after the last frame (PNG) and exit");
     command->add_flag("--hide-ui", options.hide_ui, "No panel or overlay (nor in screenshots)");
+    command->add_flag("--highlight-collisions", options.highlight_collisions,
+                      "Draw the triangles that intersect another object's in magenta (K)");
+    command->add_flag("--show-errors", options.show_errors,
+                      "Show where the picture differs from linked-list's, yellow to red, "
+                      "instead of the picture (X; the map of render --error-map)");
     command->add_option("--script", options.script,
                         "Replay input from a file: key presses, drags, wheel steps and resizes "
                         "at given frames (docs/viewer.md)");
@@ -37,6 +42,8 @@ CLI::App* addViewCommand(CLI::App& app, ViewerOptions& options) {
         "  F                frame the scene            R    reset the camera\n"
         "  Space            play/pause                 P    screenshot (vissort-view-N.png)\n"
         "  1-7              vissort, unsorted, centroid, peel, dual-peel, linked-list, weighted\n"
+        "  C                colour cycles              K    highlight collisions\n"
+        "  X                error map against linked-list\n"
         "  H                help overlay               Escape  quit\n"
         "Needs a display: on a machine without one, run it under xvfb-run.");
     return command;
@@ -85,6 +92,8 @@ int runView(const ViewerOptions& options) {
     settings.frames = options.frames_given ? view.frames : 0;
     settings.screenshot = options.screenshot;
     settings.hide_ui = options.hide_ui;
+    settings.overlays.highlight_collisions = options.highlight_collisions;
+    settings.overlays.error_map = options.show_errors;
     Result<viewer::ViewerSummary> summary = viewer::runViewer(*scene, settings);
     if (!summary)
         return fail(kExitFailure, summary.error);
@@ -98,6 +107,11 @@ int runView(const ViewerOptions& options) {
     printVec("target", s.camera.target);
     printVec("up", s.camera.up);
     std::cout << " fov " << s.camera.fov_degrees << '\n';
+    if (s.overlays.highlight_collisions)
+        std::cout << "collisions: " << s.colliding_pairs << " intersecting triangle pairs\n";
+    if (s.difference)
+        std::cout << "against linked-list: max abs " << s.difference->max_abs << "/255, "
+                  << s.difference->pixels_over_one << " pixels off by more than 1\n";
     for (const std::string& path : s.screenshots)
         std::cout << path << ": screenshot\n";
     return kExitOk;

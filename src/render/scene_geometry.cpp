@@ -4,6 +4,8 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat4x4.hpp>
 
+#include "render/shading.h"
+
 namespace vissort::detail {
 namespace {
 
@@ -25,11 +27,11 @@ SceneGeometry::SceneGeometry(const Scene& scene, std::span<const float> object_c
     colours_ = createBuffer();
     elements_ = createBuffer();
     subset_elements_ = createBuffer();
-    highlighted_ = createBuffer();
-    highlight_flags_.assign(scene.triangleCount(), 0);
-    glNamedBufferStorage(highlighted_.get(),
-                         GLsizeiptr(highlight_flags_.size() * sizeof(uint32_t) + 4), nullptr,
-                         GL_DYNAMIC_STORAGE_BIT);
+    tints_ = createBuffer();
+    highlighted_.assign(scene.triangleCount(), 0);
+    cycle_tints_.assign(scene.triangleCount(), kNoTint);
+    glNamedBufferStorage(tints_.get(), GLsizeiptr(scene.triangleCount() * sizeof(uint32_t) + 4),
+                         nullptr, GL_DYNAMIC_STORAGE_BIT);
     // Zero-size storage is an error in OpenGL: every buffer gets a few spare bytes.
     const std::vector<uint32_t>& corner_objects = mesh_.cornerObjects();
     glNamedBufferStorage(objects_.get(), GLsizeiptr(corner_objects.size() * sizeof(uint32_t) + 4),
@@ -117,14 +119,38 @@ void SceneGeometry::drawSubset(std::size_t first, std::size_t count) const {
 }
 
 void SceneGeometry::setHighlighted(std::span<const uint32_t> triangles) {
-    std::fill(highlight_flags_.begin(), highlight_flags_.end(), 0u);
+    std::fill(highlighted_.begin(), highlighted_.end(), uint8_t(0));
     for (uint32_t t : triangles)
-        if (t < highlight_flags_.size())
-            highlight_flags_[t] = 1;
-    glNamedBufferSubData(highlighted_.get(), 0,
-                         GLsizeiptr(highlight_flags_.size() * sizeof(uint32_t)),
-                         highlight_flags_.data());
-    highlighting_ = !triangles.empty();
+        if (t < highlighted_.size())
+            highlighted_[t] = 1;
+    uploadTints();
+}
+
+void SceneGeometry::setCycleColours(std::span<const std::vector<uint32_t>> groups) {
+    if (groups.empty() && cycle_triangles_.empty())
+        return; // the common frame: no cycles then, none now
+    for (uint32_t t : cycle_triangles_)
+        cycle_tints_[t] = kNoTint;
+    cycle_triangles_.clear();
+    for (std::size_t g = 0; g < groups.size(); ++g)
+        for (uint32_t t : groups[g])
+            if (t < cycle_tints_.size()) {
+                cycle_tints_[t] = kCycleTint + uint32_t(g);
+                cycle_triangles_.push_back(t);
+            }
+    uploadTints();
+}
+
+void SceneGeometry::uploadTints() {
+    tint_data_.resize(cycle_tints_.size());
+    bool any = false;
+    for (std::size_t t = 0; t < tint_data_.size(); ++t) {
+        tint_data_[t] = highlighted_[t] ? kHighlightTint : cycle_tints_[t];
+        any |= tint_data_[t] != kNoTint;
+    }
+    glNamedBufferSubData(tints_.get(), 0, GLsizeiptr(tint_data_.size() * sizeof(uint32_t)),
+                         tint_data_.data());
+    tinting_ = any;
 }
 
 void SceneGeometry::setView(GLuint program, const ViewProjection& view) const {
@@ -141,8 +167,7 @@ void SceneGeometry::setView(GLuint program, const ViewProjection& view) const {
     glProgramUniform1i(program, glGetUniformLocation(program, "orthographic"),
                        view.projection == Projection::orthographic ? 1 : 0);
     glProgramUniform1i(program, glGetUniformLocation(program, "unlit"), flat_ ? 1 : 0);
-    glProgramUniform1i(program, glGetUniformLocation(program, "highlighting"),
-                       highlighting_ ? 1 : 0);
+    glProgramUniform1i(program, glGetUniformLocation(program, "tinting"), tinting_ ? 1 : 0);
 }
 
 void SceneGeometry::use(GLuint program, const ViewProjection& view) const {
@@ -154,7 +179,7 @@ void SceneGeometry::use(GLuint program, const ViewProjection& view) const {
 void SceneGeometry::bind() const {
     glBindVertexArray(vertex_array_.get());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, colours_.get());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, highlighted_.get());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, tints_.get());
 }
 
 void SceneGeometry::drawOpaque() const {

@@ -31,10 +31,13 @@ public:
     /// Flat shading (each object's colour, unlit) instead of the lit default.
     void setFlat(bool flat) { flat_ = flat; }
     /// Draws these triangles (scene triangle ids) in the highlight colour (shading.h); empty:
-    /// none.
+    /// none. Highlights are drawn over cycle colours.
     void setHighlighted(std::span<const uint32_t> triangles);
-    /// Binds the vertex stream, the colours (SSBO binding 0) and the highlight flags (binding 5)
-    /// for the draws below.
+    /// Draws the triangles of each group (scene triangle ids) in a colour of the cycle palette
+    /// (shading.h), group g in colour g modulo the palette; empty: none. Replaces the last call's.
+    void setCycleColours(std::span<const std::vector<uint32_t>> groups);
+    /// Binds the vertex stream, the colours (SSBO binding 0) and the tints (binding 5) for the
+    /// draws below.
     void bind() const;
     /// Sets program's view (setView), makes it current and binds the geometry (bind): what
     /// every draw below needs first.
@@ -57,19 +60,24 @@ public:
 private:
     /// Draws subset triangles [first, first + count) through the subset's element buffer.
     void drawSubset(std::size_t first, std::size_t count) const;
+    /// Uploads the tints: a highlight where one is set, else the triangle's cycle colour.
+    void uploadTints();
 
     RenderMesh mesh_;
     GlVertexArray vertex_array_;
-    GlBuffer vertices_, objects_, colours_, elements_, subset_elements_, highlighted_;
+    GlBuffer vertices_, objects_, colours_, elements_, subset_elements_, tints_;
     TrianglePositions uploaded_; // what the vertex buffer holds
     std::vector<float> vertex_data_;
     std::vector<uint32_t> element_data_;
     std::size_t opaque_count_ = 0, transparent_count_ = 0;
     std::vector<uint32_t> subset_data_;
     std::size_t subset_opaque_count_ = 0, subset_transparent_count_ = 0;
-    std::vector<uint32_t> highlight_flags_; // one per triangle
+    std::vector<uint8_t> highlighted_;      // one per triangle
+    std::vector<uint32_t> cycle_tints_;     // one per triangle: kNoTint or kCycleTint + group
+    std::vector<uint32_t> cycle_triangles_; // those with a cycle tint, to clear it cheaply
+    std::vector<uint32_t> tint_data_;       // what the tint buffer holds
     bool flat_ = false;
-    bool highlighting_ = false;
+    bool tinting_ = false;
 };
 
 } // namespace vissort::detail

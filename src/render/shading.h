@@ -3,6 +3,8 @@
 // vertex shader computing each corner's colour (like the paper's vertex shader), and the GLSL
 // pieces the methods' own shaders share.
 
+#include <cstdint>
+
 namespace vissort::detail {
 
 // Per-vertex shading: a headlight, two-sided so that the inner surfaces of transparent objects
@@ -11,30 +13,39 @@ namespace vissort::detail {
 // Inputs: SceneGeometry's vertex stream (position, unit normal, object) and per-object colours
 // (SSBO binding 0). Output: `shaded`, straight (not premultiplied) colour and alpha. With `unlit`,
 // each object's colour and alpha as they are, unlit: what a ray-cast reference can reproduce.
-// With `highlighting`, triangles flagged in SSBO binding 5 (one uint per triangle; corners are
-// unindexed, so a corner's index / 3 is its triangle) take kHighlightColour instead: colliding
-// triangles, in every method alike.
+// With `tinting`, each triangle's tint in SSBO binding 5 (one uint per triangle; corners are
+// unindexed, so a corner's index / 3 is its triangle) replaces its object's colour: kHighlightTint
+// a strong magenta, nearly opaque (colliding triangles); kCycleTint + g the colour g (modulo 8) of
+// a palette without magenta, at the object's alpha (the primitives of the order's cycle g). In
+// every method alike: the methods stay comparable.
+inline constexpr uint32_t kNoTint = 0, kHighlightTint = 1, kCycleTint = 2;
 inline constexpr const char* kShadeVertexShader = R"(#version 450 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in uint object;
 layout(std430, binding = 0) readonly buffer Colours { vec4 colours[]; };
-layout(std430, binding = 5) readonly buffer Highlighted { uint highlighted[]; };
+layout(std430, binding = 5) readonly buffer Tints { uint tints[]; };
 uniform mat4 view_projection;
 uniform vec3 eye;             // perspective: the eye
 uniform vec3 view_direction;  // orthographic: the direction of view
 uniform bool orthographic;
 uniform bool unlit;
-uniform bool highlighting;
+uniform bool tinting;
 out vec4 shaded;
+const vec3 kCyclePalette[8] = vec3[8](
+    vec3(1.0, 0.55, 0.0), vec3(0.1, 0.75, 0.2), vec3(0.15, 0.4, 1.0), vec3(1.0, 0.9, 0.0),
+    vec3(0.0, 0.85, 0.9), vec3(0.9, 0.1, 0.1), vec3(0.5, 0.25, 0.85), vec3(0.55, 0.35, 0.1));
 flat out uint triangle;  // the scene's triangle id: the tie rule of the fragment lists
 invariant gl_Position;  // the same depths in every program: vissort's repair tests equality
 void main() {
     gl_Position = view_projection * vec4(position, 1.0);
     triangle = uint(gl_VertexID) / 3u;  // elements are 3 t + k (SceneGeometry)
     vec4 base = colours[object];
-    if (highlighting && highlighted[gl_VertexID / 3] != 0u)
-        base = vec4(1.0, 0.1, 0.55, max(base.a, 0.85));  // a strong magenta, nearly opaque
+    uint tint = tinting ? tints[gl_VertexID / 3] : 0u;
+    if (tint == 1u)
+        base = vec4(1.0, 0.1, 0.55, max(base.a, 0.85));  // kHighlightTint
+    else if (tint >= 2u)
+        base = vec4(kCyclePalette[(tint - 2u) % 8u], base.a);  // kCycleTint + group
     if (unlit) {
         shaded = base;
         return;

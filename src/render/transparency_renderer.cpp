@@ -83,6 +83,7 @@ struct TransparencyRenderer::Impl {
     std::vector<uint32_t> group_of;   // per primitive: its per-pixel group, or kNoGroup
     detail::DrawSequence sequence;    // transparent triangles back to front, scene ids
     std::vector<uint32_t> repair_opaque, repair_transparent; // triangles a repair draws again
+    std::vector<std::vector<uint32_t>> cycle_triangles; // colour_cycles: each cycle's, scene ids
     bool triangles_uploaded = false;
 
     std::unique_ptr<detail::SceneGeometry> geometry;
@@ -174,6 +175,21 @@ struct TransparencyRenderer::Impl {
                 group_of[p] = uint32_t(primitives.size()) + p; // distinct from every cycle
         }
         oracle->setDepthTolerance(orderTolerance());
+    }
+
+    // colour_cycles: this frame's cycles as scene triangles, coloured by the shading.
+    void colourCycles() {
+        cycle_triangles.resize(frame_order.cycles.size());
+        for (std::size_t g = 0; g < frame_order.cycles.size(); ++g) {
+            cycle_triangles[g].clear();
+            for (uint32_t p : frame_order.cycles[g]) {
+                const PrimitiveRange range = primitives[p];
+                for (uint32_t t = range.first_triangle;
+                     t < range.first_triangle + range.triangle_count; ++t)
+                    cycle_triangles[g].push_back(part.scene_triangle[t]);
+            }
+        }
+        geometry->setCycleColours(cycle_triangles);
     }
 
     // Whether every pixel of the order's blend is checked and repaired (verified_blending.h).
@@ -393,6 +409,8 @@ Image TransparencyRenderer::render(PositionsView positions, const ViewProjection
     d.geometry->upload(positions);
     if (ordersPerFrame(d.settings.method)) {
         d.geometry->setTriangles(d.opaque_triangles, d.sequence.triangles);
+        if (d.settings.colour_cycles && d.settings.method == BlendMethod::vissort)
+            d.colourCycles();
     } else if (!d.triangles_uploaded) { // submission order, every frame the same
         d.geometry->setTriangles(d.opaque_triangles, d.part.scene_triangle);
         d.triangles_uploaded = true;

@@ -62,8 +62,9 @@ Events parseInputScript(const std::string& text) {
             if (std::find_if(std::begin(kScriptKeys), std::end(kScriptKeys), [&](const char* k) {
                     return event.key == k;
                 }) == std::end(kScriptKeys))
-                return failure(number, "unknown key '" + key +
-                                           "' (expected W A S D Q E F R P H SPACE ESCAPE 1-7)");
+                return failure(number,
+                               "unknown key '" + key +
+                                   "' (expected W A S D Q E F R P H C K X SPACE ESCAPE 1-7)");
         } else if (kind == "drag") {
             event.kind = ScriptEvent::Kind::drag;
             std::string button;

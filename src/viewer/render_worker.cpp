@@ -4,6 +4,7 @@
 
 #include <cassert>
 #include <exception>
+#include <stdexcept>
 
 #include "vissort/gl_context.h"
 
@@ -73,32 +74,66 @@ void RenderWorker::run() {
         }
         changed_.notify_all();
     }
-    renderer_.reset(); // its GL objects go with the context current on this thread
+    // Their GL objects go with the context current on this thread.
+    picture_ = {};
+    reference_ = {};
+}
+
+TransparencyRenderer& RenderWorker::prepare(Slot& slot, const RenderSettings& settings) {
+    if (!slot.renderer || slot.settings != settings) {
+        slot.renderer.reset();
+        Result<std::shared_ptr<GlContext>> context = GlContext::shared();
+        if (!context)
+            throw std::runtime_error(context.error);
+        slot.renderer = std::make_unique<TransparencyRenderer>(*context.value, scene_, settings);
+        slot.settings = settings;
+        slot.highlighting = false;
+    }
+    if (!highlighted_.empty() || slot.highlighting) {
+        slot.renderer->setHighlightedTriangles(highlighted_);
+        slot.highlighting = !highlighted_.empty();
+    }
+    return *slot.renderer;
 }
 
 RenderedFrame RenderWorker::render(const RenderRequest& request) {
     RenderedFrame frame;
     frame.request = request;
     try {
-        if (!renderer_ || renderer_settings_ != request.settings) {
-            renderer_.reset();
-            Result<std::shared_ptr<GlContext>> context = GlContext::shared();
-            if (!context) {
-                frame.error = context.error;
-                return frame;
-            }
-            renderer_ =
-                std::make_unique<TransparencyRenderer>(*context.value, scene_, request.settings);
-            renderer_settings_ = request.settings;
-        }
         // The frame's positions as `vissort render` takes them; the view framed to its bounds.
         frames_.seek(request.frame);
         const PositionsView positions = frames_.positions();
         const ViewProjection view =
             frameCamera(request.camera, positions.bounds(), request.width, request.height);
-        frame.rgba = renderer_->render(positions, view, frame.stats).toRgba8();
+        highlighted_.clear();
+        if (request.overlays.highlight_collisions) {
+            if (!collisions_) {
+                CollisionSettings settings;
+                settings.threads = 0; // every core
+                collisions_ =
+                    std::make_unique<CollisionDetector>(scene_.objectPrimitives(), settings);
+            }
+            collisions_->collide(positions, collided_);
+            highlighted_ = collidingTriangles(collided_.pairs);
+            frame.colliding_pairs = collided_.pairs.size();
+            frame.colliding_triangles = highlighted_.size();
+            frame.collision_ms = collided_.stats.total_ms;
+        }
+        RenderSettings settings = request.settings;
+        if (request.overlays.error_map)
+            settings.colour_cycles = false;
+        frame.rgba = prepare(picture_, settings).render(positions, view, frame.stats).toRgba8();
+        if (request.overlays.error_map) {
+            settings.method = BlendMethod::linked_list;
+            RenderStats reference_stats;
+            const std::vector<uint8_t> reference =
+                prepare(reference_, settings).render(positions, view, reference_stats).toRgba8();
+            frame.difference = compareImages(frame.rgba, reference);
+            frame.rgba = errorMap(frame.rgba, reference);
+        }
     } catch (const std::exception& error) {
-        renderer_.reset();
+        picture_ = {};
+        reference_ = {};
         frame.error = error.what();
     }
     return frame;

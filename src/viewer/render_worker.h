@@ -15,26 +15,46 @@
 #include <vector>
 
 #include "vissort/camera.h"
+#include "vissort/collision.h"
 #include "vissort/frame_driver.h"
+#include "vissort/image.h"
 #include "vissort/scene.h"
 #include "vissort/transparency_renderer.h"
 
 namespace vissort::viewer {
 
+/// What the viewer shows beside the method's picture.
+struct Overlays {
+    /// The triangles that intersect another object's (the collision detector's pairs, vissort's
+    /// method) in the renderer's highlight colour, as `render --highlight-collisions` draws them.
+    bool highlight_collisions = false;
+    /// Instead of the picture, where it differs from linked-list's (rendered with the same
+    /// settings and highlights): errorMap (image.h), as `render --error-map` writes it. The
+    /// picture is then rendered without colour_cycles, whose colours would all be errors.
+    bool error_map = false;
+};
+
 /// What to render: the scene at a frame (time frame * kFrameInterval) through a camera.
 struct RenderRequest {
     RenderSettings settings;
+    Overlays overlays;
     CameraSpec camera;
     int frame = 0;
     uint32_t width = 0, height = 0;
 };
 
-/// A finished request: 8-bit RGBA rows from the top, or the one-line error that stopped it.
+/// A finished request: 8-bit RGBA rows from the top (the picture or its error map), or the
+/// one-line error that stopped it.
 struct RenderedFrame {
     RenderRequest request;
     std::vector<uint8_t> rgba;
     RenderStats stats;
     std::string error;
+    // With highlight_collisions: the intersecting triangle pairs and the detector's time.
+    uint64_t colliding_pairs = 0;
+    uint64_t colliding_triangles = 0;
+    double collision_ms = 0;
+    std::optional<ImageError> difference; // with error_map: the picture against linked-list's
 };
 
 class RenderWorker {
@@ -58,6 +78,13 @@ public:
 private:
     void run();
     RenderedFrame render(const RenderRequest& request);
+    // A renderer with these settings, remade when they change; its highlights follow the frame's.
+    struct Slot {
+        std::unique_ptr<TransparencyRenderer> renderer;
+        RenderSettings settings;
+        bool highlighting = false;
+    };
+    TransparencyRenderer& prepare(Slot& slot, const RenderSettings& settings);
 
     const Scene& scene_;
     mutable std::mutex mutex_;
@@ -66,10 +93,12 @@ private:
     std::optional<RenderedFrame> done_;
     bool busy_ = false, stopping_ = false;
     // The worker thread's own: made on the first request, remade when the settings change.
-    std::unique_ptr<TransparencyRenderer> renderer_;
-    RenderSettings renderer_settings_;
-    FrameDriver frames_; // positions only: the camera comes with each request
-    std::thread thread_; // last: started once everything above exists
+    Slot picture_, reference_; // the method's, and linked-list's for the error map
+    std::unique_ptr<CollisionDetector> collisions_; // made when first asked for
+    CollisionResult collided_;
+    std::vector<uint32_t> highlighted_; // this frame's colliding triangles
+    FrameDriver frames_;                // positions only: the camera comes with each request
+    std::thread thread_;                // last: started once everything above exists
 };
 
 } // namespace vissort::viewer

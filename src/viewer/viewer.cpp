@@ -89,6 +89,7 @@ private:
     const Scene& scene_;
     ViewerSettings settings_;
     RenderSettings render_;
+    Overlays overlays_;
     GLFWwindow* window_ = nullptr;
     bool imgui_ = false;
     std::unique_ptr<RenderWorker> worker_;
@@ -125,7 +126,8 @@ private:
 };
 
 Viewer::Viewer(const Scene& scene, const ViewerSettings& settings)
-    : scene_(scene), settings_(settings), render_(settings.render), camera_(settings.camera) {
+    : scene_(scene), settings_(settings), render_(settings.render), overlays_(settings.overlays),
+      camera_(settings.camera) {
     FrameDriver driver(scene_);
     driver.seek(0);
     first_bounds_ = driver.positions().bounds();
@@ -276,6 +278,15 @@ void Viewer::onKey(const std::string& name) {
         screenshot_asked_ = true;
     } else if (name == "H") {
         help_ = !help_;
+    } else if (name == "C") {
+        render_.colour_cycles = !render_.colour_cycles;
+        dirty_ = true;
+    } else if (name == "K") {
+        overlays_.highlight_collisions = !overlays_.highlight_collisions;
+        dirty_ = true;
+    } else if (name == "X") {
+        overlays_.error_map = !overlays_.error_map;
+        dirty_ = true;
     } else if (name.size() == 1 && name[0] >= '1' && name[0] <= '7') {
         render_.method = kBlendMethodNames[name[0] - '1'].value;
         dirty_ = true;
@@ -340,6 +351,7 @@ void Viewer::applyScript(int frame) {
 RenderRequest Viewer::request() const {
     RenderRequest request;
     request.settings = render_;
+    request.overlays = overlays_;
     request.camera = currentCamera();
     request.frame = frame_;
     int width = 0, height = 0;
@@ -372,6 +384,9 @@ void Viewer::show(RenderedFrame frame) {
     summary_.render = frame.request.settings;
     summary_.width = frame.request.width;
     summary_.height = frame.request.height;
+    summary_.overlays = frame.request.overlays;
+    summary_.colliding_pairs = frame.colliding_pairs;
+    summary_.difference = frame.difference;
     shown_ = std::move(frame);
     if (playing_ && animated_)
         ++frame_;
@@ -412,7 +427,7 @@ void Viewer::drawWindow() {
                 std::chrono::duration<double>(frame_times_.back() - frame_times_.front()).count();
             state.fps = seconds > 0 ? double(frame_times_.size() - 1) / seconds : 0;
         }
-        const PanelActions actions = drawPanel(state, render_);
+        const PanelActions actions = drawPanel(state, render_, overlays_);
         if (actions.settings_changed)
             dirty_ = true;
         if (actions.toggle_play)

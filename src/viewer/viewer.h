@@ -9,13 +9,16 @@
 //   left drag: orbit about the target      right or middle drag: pan       wheel: zoom
 //   W/S: fly forward/back   A/D: left/right   Q/E: down/up   F: frame the scene   R: reset camera
 //   Space: play/pause       1-7: method (vissort, unsorted, centroid, peel, dual-peel,
-//   linked-list, weighted)  P: screenshot     H: help overlay      Escape: quit
+//   linked-list, weighted)  C: colour cycles  K: highlight collisions  X: error map against
+//   linked-list             P: screenshot     H: help overlay      Escape: quit
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "viewer/input_script.h"
+#include "viewer/render_worker.h"
 #include "vissort/camera.h"
 #include "vissort/camera_path.h"
 #include "vissort/result.h"
@@ -27,6 +30,7 @@ namespace vissort::viewer {
 struct ViewerSettings {
     std::string title = "vissort";
     RenderSettings render;
+    Overlays overlays; // collisions and the error map at the start (K and X toggle them)
     CameraSpec camera; // the start camera, as `render` resolves it; R comes back to it
     CameraPath path = CameraPath::fixed;
     uint32_t width = 1024, height = 768; // the window's size
@@ -44,6 +48,9 @@ struct ViewerSummary {
     CameraSpec camera;              // the camera of the last frame
     RenderSettings render;          // the settings of the last frame
     uint32_t width = 0, height = 0; // the last frame's size
+    Overlays overlays;              // those of the last frame
+    uint64_t colliding_pairs = 0;   // the last frame's, with highlight_collisions
+    std::optional<ImageError> difference; // the last frame's, with error_map
     std::vector<std::string> screenshots; // files written (the final one and P presses)
 };
 

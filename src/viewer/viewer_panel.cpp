@@ -30,10 +30,10 @@ bool enumCombo(const char* label, const EnumName<Enum> (&names)[N], Enum& value)
 
 } // namespace
 
-PanelActions drawPanel(const PanelState& state, RenderSettings& settings) {
+PanelActions drawPanel(const PanelState& state, RenderSettings& settings, Overlays& overlays) {
     PanelActions actions;
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(310, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(345, 0), ImGuiCond_FirstUseEver);
     ImGui::Begin("vissort");
     const Scene& scene = *state.scene;
     if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) {
@@ -68,6 +68,19 @@ PanelActions drawPanel(const PanelState& state, RenderSettings& settings) {
         actions.settings_changed |= ImGui::Checkbox("flat shading", &settings.flat_shading);
         actions.settings_changed |= enumCombo("check", kOrderCheckNames, settings.check);
     }
+    if (ImGui::CollapsingHeader("Show", ImGuiTreeNodeFlags_DefaultOpen)) {
+        actions.settings_changed |= ImGui::Checkbox("colour cycles (C)", &settings.colour_cycles);
+        if (settings.colour_cycles && settings.method != BlendMethod::vissort) {
+            ImGui::SameLine();
+            ImGui::TextDisabled("(vissort only)");
+        }
+        actions.settings_changed |=
+            ImGui::Checkbox("colliding triangles (K)", &overlays.highlight_collisions);
+        actions.settings_changed |=
+            ImGui::Checkbox("error map vs linked-list (X)", &overlays.error_map);
+        if (overlays.error_map)
+            ImGui::TextDisabled("grey: within 1/255; yellow 2/255 to red 64/255");
+    }
     if (ImGui::CollapsingHeader("Camera and time", ImGuiTreeNodeFlags_DefaultOpen)) {
         if (ImGui::Button(state.playing ? "Pause (Space)" : "Play (Space)"))
             actions.toggle_play = true;
@@ -94,6 +107,16 @@ PanelActions drawPanel(const PanelState& state, RenderSettings& settings) {
             ImGui::Text("%u passes, %u groups per pixel (cycles)", stats.passes, stats.groups);
             ImGui::Text("%llu pixels repaired",
                         static_cast<unsigned long long>(stats.repaired_pixels));
+            const RenderedFrame& last = *state.last;
+            if (last.request.overlays.highlight_collisions)
+                ImGui::Text("collisions: %llu pairs, %llu triangles, %.1f ms",
+                            static_cast<unsigned long long>(last.colliding_pairs),
+                            static_cast<unsigned long long>(last.colliding_triangles),
+                            last.collision_ms);
+            if (last.difference)
+                ImGui::Text("vs linked-list: max %d/255, %llu pixels over 1/255",
+                            last.difference->max_abs,
+                            static_cast<unsigned long long>(last.difference->pixels_over_one));
         }
         if (!state.frame_ms.empty()) {
             const float top = *std::max_element(state.frame_ms.begin(), state.frame_ms.end());
@@ -123,6 +146,9 @@ void drawHelpOverlay() {
         {"R", "reset the camera"},
         {"Space", "play / pause"},
         {"1 to 7", "vissort, unsorted, centroid, peel, dual-peel, linked-list, weighted"},
+        {"C", "colour the cycles of vissort's order"},
+        {"K", "highlight colliding triangles"},
+        {"X", "error map against linked-list"},
         {"P", "screenshot (vissort-view-N.png)"},
         {"H", "this help"},
         {"Escape", "quit"},

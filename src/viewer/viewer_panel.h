@@ -32,8 +32,8 @@ struct PanelActions {
     bool screenshot = false;
 };
 
-/// The panel at the window's top-left; settings are edited in place.
-PanelActions drawPanel(const PanelState& state, RenderSettings& settings);
+/// The panel at the window's top-left; settings and overlays are edited in place.
+PanelActions drawPanel(const PanelState& state, RenderSettings& settings, Overlays& overlays);
 
 /// The controls, centred.
 void drawHelpOverlay();

@@ -227,5 +227,45 @@ TEST_F(Cli, RenderHighlightsCollidingTriangles) {
                 kUsage, {"--highlight-collisions"});
 }
 
+// --colour-cycles: the three sticks are one cycle, painted (orange, the palette's first colour);
+// the box beside them is in none and keeps its colour. Only vissort has cycles to colour, and a
+// painted picture cannot be compared with a reference.
+TEST_F(Cli, RenderColoursTheCycles) {
+    const std::string scene = dataPath("scenes/three_sticks_and_box.json");
+    const std::vector<std::string> common = {
+        "render", scene, "--size", "200x150", "--all-transparent", "--shading", "flat"};
+    auto with = [&](std::vector<std::string> more) {
+        std::vector<std::string> args = common;
+        args.insert(args.end(), more.begin(), more.end());
+        return args;
+    };
+    ASSERT_EQ(run(with({"-o", path("plain.png")})).code, 0);
+    const RunResult painted = run(with({"--colour-cycles", "-o", path("painted.png")}));
+    ASSERT_EQ(painted.code, 0) << painted;
+    const Png plain = readPng(path("plain.png")), cycles = readPng(path("painted.png"));
+    ASSERT_EQ(plain.rgba.size(), cycles.rgba.size());
+    // A stick's two faces in orange over white at alpha 0.5: (255, 169, 64); the sticks' own
+    // colours never are.
+    auto orange = [](const Png& png) {
+        int count = 0;
+        for (std::size_t i = 0; i < png.rgba.size(); i += 4)
+            count += png.rgba[i] == 255 && std::abs(png.rgba[i + 1] - 169) <= 1 &&
+                     std::abs(png.rgba[i + 2] - 64) <= 1;
+        return count;
+    };
+    EXPECT_EQ(orange(plain), 0);
+    EXPECT_GT(orange(cycles), 1000);
+    // The box (right of the sticks, at 72% of the width) is the same in both.
+    const int box_column = plain.width * 72 / 100, row = plain.height / 2;
+    const std::size_t box = (std::size_t(row) * plain.width + box_column) * 4;
+    EXPECT_NE(plain.rgba[box], 255); // the box is there
+    EXPECT_EQ(std::vector<uint8_t>(plain.rgba.begin() + box, plain.rgba.begin() + box + 4),
+              std::vector<uint8_t>(cycles.rgba.begin() + box, cycles.rgba.begin() + box + 4));
+    expectError(with({"--colour-cycles", "--method", "unsorted", "-o", path("x.png")}), kUsage,
+                {"--colour-cycles", "unsorted"});
+    expectError(with({"--colour-cycles", "--reference", "linked-list", "-o", path("x.png")}),
+                kUsage, {"--colour-cycles", "--reference"});
+}
+
 } // namespace
 } // namespace vissort

@@ -1,7 +1,8 @@
 // `vissort view` end to end, in a real window under Xvfb (xvfb-run, Debian's xvfb): the
 // screenshot equals `vissort render` with the same camera and size; a scripted orbit moves the
 // camera as documented (checked by rendering the camera it reports); method switches change the
-// picture to that method's; a resized window renders the new size correctly; no display and a
+// picture to that method's; cycles, collisions and the error map are render's pictures with the
+// same options; a resized window renders the new size correctly; no display and a
 // bad script are one-line errors.
 
 #include <cmath>
@@ -217,6 +218,58 @@ TEST_F(View, MethodAndLevelSwitchesChangeThePicture) {
             readPng(path("centroid.png")),
             render({scene, "--size", "160x120", "--method", "centroid", "--level", "triangle"}, 1)),
         0);
+}
+
+// The panel's "Show" items from the command line and from their keys: cycles coloured,
+// colliding triangles highlighted and the error map against linked-list, each the picture
+// `render` draws with the same option (--colour-cycles, --highlight-collisions, --reference
+// linked-list --error-map).
+TEST_F(View, CyclesCollisionsAndErrorMapAreRendersPictures) {
+    const std::string sticks = dataPath("scenes/three_sticks_and_box.json");
+    const RunResult cycles =
+        view({sticks, "--size", "200x150", "--all-transparent", "--colour-cycles"}, 1,
+             path("cycles.png"));
+    ASSERT_EQ(cycles.code, 0) << cycles;
+    const Png plain = render({sticks, "--size", "200x150", "--all-transparent"}, 1);
+    const Png painted =
+        render({sticks, "--size", "200x150", "--all-transparent", "--colour-cycles"}, 1);
+    EXPECT_EQ(maxDifference(readPng(path("cycles.png")), painted), 0);
+    EXPECT_GT(maxDifference(painted, plain), 8);
+
+    const std::string crossing = dataPath("scenes/interpenetrating.json");
+    std::ofstream(path("k.txt")) << "0 key K\n";
+    const RunResult collisions =
+        view({crossing, "--size", "200x150", "--script", path("k.txt")}, 1, path("k.png"));
+    ASSERT_EQ(collisions.code, 0) << collisions;
+    EXPECT_NE(collisions.out.find("collisions: "), std::string::npos) << collisions;
+    EXPECT_EQ(collisions.out.find("collisions: 0 "), std::string::npos) << collisions;
+    EXPECT_EQ(maxDifference(readPng(path("k.png")),
+                            render({crossing, "--size", "200x150", "--highlight-collisions"}, 1)),
+              0);
+
+    // Unsorted bunnies differ from linked-list's: the map shows it, as render's does.
+    const std::string bunnies = "builtin:bunnies?n=6";
+    const RunResult errors =
+        view({bunnies, "--size", "160x120", "--method", "unsorted", "--show-errors"}, 1,
+             path("errors.png"));
+    ASSERT_EQ(errors.code, 0) << errors;
+    EXPECT_NE(errors.out.find("against linked-list: max abs "), std::string::npos) << errors;
+    render({bunnies, "--size", "160x120", "--method", "unsorted", "--reference", "linked-list",
+            "--error-map", path("map.png")},
+           1);
+    const Png map = readPng(path("map.png"));
+    EXPECT_EQ(maxDifference(readPng(path("errors.png")), map), 0);
+    // vissort, X pressed: the map of an exact picture (nothing over 1/255).
+    std::ofstream(path("x.txt")) << "0 key X\n";
+    const RunResult exact =
+        view({bunnies, "--size", "160x120", "--script", path("x.txt")}, 1, path("exact.png"));
+    ASSERT_EQ(exact.code, 0) << exact;
+    EXPECT_NE(exact.out.find("0 pixels off by more than 1"), std::string::npos) << exact;
+    EXPECT_GT(maxDifference(readPng(path("exact.png")), map), 8);
+    render({bunnies, "--size", "160x120", "--reference", "linked-list", "--error-map",
+            path("exact_map.png")},
+           1);
+    EXPECT_EQ(maxDifference(readPng(path("exact.png")), readPng(path("exact_map.png"))), 0);
 }
 
 TEST_F(View, AResizedWindowRendersTheNewSize) {
