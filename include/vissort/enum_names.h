@@ -5,7 +5,9 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
+#include "vissort/closest_name.h"
 #include "vissort/result.h"
 
 namespace vissort {
@@ -15,7 +17,8 @@ template <class E> struct EnumName {
     const char* name;
 };
 
-/// The value named `text` in table, or "unknown WHAT 'TEXT' (expected A, B or C)".
+/// The value named `text` in table, or "unknown WHAT 'TEXT' (expected A, B or C)", with "did
+/// you mean" when one name is near.
 template <class E>
 Result<E> parseEnum(std::span<const EnumName<E>> table, std::string_view text,
                     std::string_view what);
@@ -46,13 +49,17 @@ Result<E> parseEnum(std::span<const EnumName<E>> table, std::string_view text,
         if (text == entry.name)
             return {entry.value, {}};
     std::string expected;
+    std::vector<std::string_view> names;
     for (std::size_t i = 0; i < table.size(); ++i) {
         if (i > 0)
             expected += i + 1 == table.size() ? " or " : ", ";
         expected += table[i].name;
+        names.push_back(table[i].name);
     }
-    return Result<E>::failure("unknown " + std::string(what) + " '" + std::string(text) +
-                              "' (expected " + expected + ")");
+    const std::string suggestion = closestName(text, names);
+    return Result<E>::failure("unknown " + std::string(what) + " '" + std::string(text) + "' (" +
+                              (suggestion.empty() ? "" : "did you mean '" + suggestion + "'? ") +
+                              "expected " + expected + ")");
 }
 
 } // namespace vissort

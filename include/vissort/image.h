@@ -38,4 +38,13 @@ std::vector<uint8_t> errorMap(const std::vector<uint8_t>& image,
 Status writePng(const std::string& path, uint32_t width, uint32_t height,
                 const std::vector<uint8_t>& rgba8);
 
+enum class ImageFormat { png, jpeg };
+/// The format a file name asks for by its extension: .png, or .jpg / .jpeg (any case); else a
+/// one-line error naming the file and the extensions known (a PNG under a .jpg name misleads).
+Result<ImageFormat> imageFormatOf(const std::string& path);
+/// Writes 8-bit RGBA in the format of path's extension (imageFormatOf): PNG, or JPEG at quality
+/// 95 without alpha (the renderer's images are opaque).
+Status writeImage(const std::string& path, uint32_t width, uint32_t height,
+                  const std::vector<uint8_t>& rgba8);
+
 } // namespace vissort

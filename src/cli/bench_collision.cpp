@@ -67,13 +67,13 @@ int runCollisionBench(const BenchOptions& options) {
             line.x.push_back(m.bunnies);
             line.y.push_back(m.median_ms);
         });
-    if (!options.json_path.empty()) {
+    if (!options.json.path.empty()) {
         const nlohmann::json document = {{"benchmark", "collision"},
                                          {"machine", bench::machineName()},
                                          {"cores", bench::hardwareThreads()},
                                          {"frames", frames},
                                          {"rows", rows}};
-        if (const int code = writeJsonFile(options.json_path, document); code != kExitOk)
+        if (const int code = writeJsonFile(options.json, document); code != kExitOk)
             return code;
     }
     if (!options.plot_path.empty()) {
@@ -84,7 +84,8 @@ int runCollisionBench(const BenchOptions& options) {
         const Strip plot = plotLines(
             series, "collision: ms per frame, deforming bunnies (" + bench::machineName() + ")",
             "bunnies N (builtin:bunnies?n=N)", "ms per frame", 900, 560);
-        if (Status error = writePng(options.plot_path, plot.width, plot.height, plot.rgba); !error)
+        if (Status error = writeImage(options.plot_path, plot.width, plot.height, plot.rgba);
+            !error)
             return fail(kExitFailure, error.error);
 #endif
     }

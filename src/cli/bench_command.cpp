@@ -40,7 +40,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options) {
                      "collision: numbers of bunnies to measure, comma-separated")
         ->capture_default_str();
     command->add_option("--plot", options.plot_path, "collision: write ms against N as a PNG");
-    command->add_option("--json", options.json_path, "Write the figures as JSON");
+    addJsonOptions(*command, options.json, "Write the figures as JSON");
     command
         ->add_option("--out", options.out_dir,
                      "paper: the folder for paper.json, paper.csv, figure6.csv and the plots")

@@ -39,7 +39,7 @@ int runOracleBench(const BenchOptions& options) {
                   << ' ' << std::left << row.unit
                   << (row.detail.empty() ? "" : "  (" + row.detail + ")") << '\n';
     }
-    if (!options.json_path.empty()) {
+    if (!options.json.path.empty()) {
         nlohmann::json doc = {{"machine", bench::machineName()}, {"rows", nlohmann::json::array()}};
         for (const bench::OracleBenchRow& row : result.value->rows)
             doc["rows"].push_back({{"workload", row.workload},
@@ -47,7 +47,7 @@ int runOracleBench(const BenchOptions& options) {
                                    {"value", row.value},
                                    {"unit", row.unit},
                                    {"detail", row.detail}});
-        if (const int code = writeJsonFile(options.json_path, doc); code != kExitOk)
+        if (const int code = writeJsonFile(options.json, doc); code != kExitOk)
             return code;
     }
     return kExitOk;

@@ -365,7 +365,8 @@ int runPaperBench(const BenchOptions& options) {
             return fail(kExitFailure, s.error);
     }
 #endif
-    if (const int code = writeJsonFile((out / "paper.json").string(), document); code != kExitOk)
+    if (const int code = writeJsonFile(JsonOutput{(out / "paper.json").string(), true}, document);
+        code != kExitOk)
         return code;
     if (Status s = writeText(out / "paper.csv", pathsCsv(measured.paths)); !s)
         return fail(kExitFailure, s.error);

@@ -85,14 +85,14 @@ int runTransparencyBench(const BenchOptions& options) {
         return fail(kExitFailure, measured.error);
     std::cout << "\n(x): a method's time over vissort's; seen: the most transparent layers at a "
                  "pixel, from depth peeling's passes\n";
-    if (!options.json_path.empty()) {
+    if (!options.json.path.empty()) {
         const nlohmann::json document = {{"machine", bench::machineName()},
                                          {"gl_renderer", gl.renderer},
                                          {"size", {width, height}},
                                          {"level", orderLevelName(level)},
                                          {"frames", frames},
                                          {"rows", rows}};
-        if (const int code = writeJsonFile(options.json_path, document); code != kExitOk)
+        if (const int code = writeJsonFile(options.json, document); code != kExitOk)
             return code;
     }
     return kExitOk;

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli/cli_common.h"
+#include "cli/text_output.h"
 
 namespace vissort::cli {
 namespace {
@@ -57,7 +58,10 @@ std::string parseSize(const std::string& text, uint32_t& width, uint32_t& height
 }
 
 int fail(int code, const std::string& message) {
-    std::cerr << "vissort: error: " << message << '\n';
+    if (colourOnStandardError())
+        std::cerr << "vissort: \033[31merror:\033[0m " << message << '\n';
+    else
+        std::cerr << "vissort: error: " << message << '\n';
     return code;
 }
 
@@ -66,14 +70,20 @@ int failWithoutGl(const std::string& what) {
                                   what + " is not available");
 }
 
-void addViewOptions(CLI::App& command, ViewOptions& options) {
-    command.add_option("--eye", options.eye, "Perspective eye position X,Y,Z");
-    command.add_option("--target", options.target, "Point looked at X,Y,Z");
+void addViewOptions(CLI::App& command, ViewOptions& options, bool with_frames) {
+    command.add_option("--eye", options.eye,
+                       "Perspective eye position X,Y,Z; the settings not given are the scene's "
+                       "camera's, or target the scene's centre, up 0,1,0, fov 45");
+    command.add_option("--target", options.target,
+                       "Point looked at X,Y,Z (default: the scene camera's, or the scene's "
+                       "centre)");
     command.add_option("--up", options.up, "Up vector X,Y,Z (default 0,1,0)");
     command.add_option("--fov", options.fov, "Vertical field of view in degrees (default 45)");
     command.add_option("--ortho-dir", options.ortho_dir,
                        "Orthographic view along X,Y,Z framing the scene's bounding sphere");
     command.add_option("--size", options.size, "Image size WxH")->capture_default_str();
+    if (!with_frames)
+        return;
     command.add_option("--frames", options.frames, "Number of frames")->capture_default_str();
     command
         .add_option("--path", options.path,

@@ -35,8 +35,9 @@ struct ViewOptions {
 /// Parses --size's WxH; empty on success, else a one-line message naming the option.
 std::string parseSize(const std::string& text, uint32_t& width, uint32_t& height);
 
-/// Adds --eye --target --up --fov --ortho-dir --size --frames --path.
-void addViewOptions(CLI::App& command, ViewOptions& options);
+/// Adds --eye --target --up --fov --ortho-dir --size, and with_frames --frames --path (a command
+/// about one view, like info, takes no frames).
+void addViewOptions(CLI::App& command, ViewOptions& options, bool with_frames = true);
 
 /// A camera, image size and path resolved from the options and the scene.
 struct ResolvedView {

@@ -70,7 +70,7 @@ CLI::App* addCollideCommand(CLI::App& app, CollideOptions& options) {
                      "vissort: threads, 0 = one per core (the pairs never depend on it)")
         ->check(CLI::Range(0, 256))
         ->capture_default_str();
-    command->add_option("--json", options.json_path, "Write per-frame statistics as JSON");
+    addJsonOptions(*command, options.json, "Write per-frame statistics as JSON");
     command->add_option("--pairs-out", options.pairs_path,
                         "Write 'FRAME A B' per intersecting pair (triangle ids, A < B, sorted)");
     command->add_option("--dump-primitives", options.dump_path,
@@ -114,7 +114,7 @@ int runCollide(const CollideOptions& options) {
         detector.collide(driver.positions(), result);
         total_ms.push_back(result.stats.total_ms);
         pair_sum += result.pairs.size();
-        if (!options.json_path.empty())
+        if (!options.json.path.empty())
             frames.push_back(frameRecord(f, result.stats));
         if (pairs_out.is_open())
             for (const TrianglePair& p : result.pairs)
@@ -139,12 +139,12 @@ int runCollide(const CollideOptions& options) {
               << result.stats.triangle_pairs << " candidate triangle pairs, " << result.pairs.size()
               << " intersecting\n";
 
-    if (!options.json_path.empty()) {
+    if (!options.json.path.empty()) {
         nlohmann::json document = {{"method", options.method},
                                    {"scene", options.scene},
                                    {"size", {settings.width, settings.height}},
                                    {"frames", std::move(frames)}};
-        if (const int code = writeJsonFile(options.json_path, document); code != kExitOk)
+        if (const int code = writeJsonFile(options.json, document); code != kExitOk)
             return code;
     }
     if (!options.dump_path.empty() &&

@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/cli_common.h"
+#include "cli/json_output.h"
 
 namespace vissort {
 struct RenderSettings; // transparency_renderer.h: builds with OpenGL only
@@ -17,7 +18,7 @@ struct OrderOptions {
     std::string level = "object";
     std::string oracle = "cpu";
     bool back_to_front = false;
-    std::string json_path;
+    JsonOutput json;
     std::string dump_path;
 };
 CLI::App* addOrderCommand(CLI::App& app, OrderOptions& options);
@@ -27,7 +28,7 @@ struct InfoOptions {
     std::string scene;
     ViewOptions view;
     bool gl = false;
-    std::string json_path; // the facts as JSON, besides the printed ones
+    JsonOutput json; // the facts as JSON, besides the printed ones
 };
 CLI::App* addInfoCommand(CLI::App& app, InfoOptions& options);
 int runInfo(const InfoOptions& options);
@@ -42,7 +43,7 @@ struct BenchOptions {
     std::string depths = "2,4,8,16,32,64";
     std::string counts = "18,36,72,144";
     std::string plot_path;
-    std::string json_path;
+    JsonOutput json;
     std::string out_dir = "paper-bench"; // paper: where its files go
     bool quick = false;                  // paper: small scenes, few frames
 };
@@ -61,7 +62,7 @@ struct CollideOptions {
     int directions = 7;
     double min_cull = 0.25;
     int threads = 0;
-    std::string json_path;
+    JsonOutput json;
     std::string pairs_path;
     std::string dump_path;
 };
@@ -88,13 +89,17 @@ void addRendererOptions(CLI::App& command, RendererOptions& options,
 /// caller when it is "all" and allow_all.
 std::string resolveRendererOptions(const RendererOptions& options, bool allow_all,
                                    RenderSettings& settings);
+/// The line before a render: the scene, its transparent objects, the method and the view; a
+/// note when nothing is transparent, a warning when transparent objects have alpha 0 (unseen).
+void printRenderHeader(const std::string& specification, const Scene& scene,
+                       const RenderSettings& settings, const ResolvedView& view);
 
 struct RenderOptions {
     std::string scene;
     ViewOptions view;
     RendererOptions renderer;
     std::string output;
-    std::string json_path;
+    JsonOutput json;
     std::string reference;
     std::string error_map;
     bool highlight_collisions = false;

@@ -19,10 +19,10 @@ CLI::App* addInfoCommand(CLI::App& app, InfoOptions& options) {
     command->add_flag("--gl", options.gl,
                       "Print the OpenGL context's EGL platform, vendor, renderer and version "
                       "(VISSORT_GL_PLATFORM=auto|device|surfaceless picks the platform)");
-    addViewOptions(*command, options.view);
-    command->add_option("--json", options.json_path,
-                        "Write the facts as JSON: objects, transparent_objects, triangles, "
-                        "transparent_triangles, bounds, depth_complexity (docs/cli.md)");
+    addViewOptions(*command, options.view, false);
+    addJsonOptions(*command, options.json,
+                   "Write the facts as JSON: objects, transparent_objects, triangles, "
+                   "transparent_triangles, bounds, depth_complexity (docs/cli.md)");
     return command;
 }
 
@@ -88,7 +88,7 @@ int runInfo(const InfoOptions& options) {
                                                                     : "orthographic")
               << "): max " << depth.max << ", mean " << depth.mean << " over "
               << depth.covered_pixels << " covered pixels\n";
-    if (options.json_path.empty())
+    if (options.json.path.empty())
         return kExitOk;
     uint64_t transparent_triangles = 0;
     for (const SceneObject& o : scene->objects)
@@ -111,7 +111,7 @@ int runInfo(const InfoOptions& options) {
           {"projection",
            view.camera.projection == Projection::perspective ? "perspective" : "orthographic"},
           {"histogram", depth.histogram}}}};
-    return writeJsonFile(options.json_path, document);
+    return writeJsonFile(options.json, document);
 }
 
 } // namespace vissort::cli

@@ -4,6 +4,7 @@
 #include <cassert>
 #include <charconv>
 #include <fstream>
+#include <iostream>
 #include <vector>
 
 #include "cli/cli_common.h"
@@ -14,46 +15,71 @@ namespace {
 // A control character that the dump escapes: no value a command writes starts with it.
 constexpr char kPlaceholderMark = '\x01';
 
-// Writes ids as nlohmann's dump(1) lays out an array of numbers whose key or bracket is on a line
-// indented by `indent` spaces: one element a line, one space deeper.
-void writeIds(std::ostream& out, const JsonIdList& list, std::size_t indent) {
+// Standard output as it was before reserveStandardOutputFor sent the commands' text elsewhere.
+std::streambuf* g_standard_output = nullptr;
+
+// Writes ids as nlohmann's dump lays out an array of numbers: on one line (compact), or (pretty,
+// dump(1)) with its key or bracket on a line indented by `indent` spaces, one element a line,
+// one space deeper.
+void writeIds(std::ostream& out, const JsonIdList& list, bool pretty, std::size_t indent) {
     if (list.ids.empty()) {
         out << "[]";
         return;
     }
-    const std::string element_indent(indent + 1, ' ');
-    std::string text = "[\n";
+    const std::string element_indent(pretty ? indent + 1 : 0, ' ');
+    std::string text = pretty ? "[\n" : "[";
     const std::size_t n = list.ids.size();
     for (std::size_t i = 0; i < n; ++i) {
         text += element_indent;
         char digits[16];
         const uint32_t id = list.ids[list.reversed ? n - 1 - i : i];
         text.append(digits, std::to_chars(digits, digits + sizeof(digits), id).ptr);
-        text += i + 1 < n ? ",\n" : "\n";
+        if (pretty)
+            text += i + 1 < n ? ",\n" : "\n";
+        else if (i + 1 < n)
+            text += ',';
         if (text.size() >= (1u << 16)) { // written in pieces: the text of a list is never held
             out << text;
             text.clear();
         }
     }
-    text.append(indent, ' ');
+    if (pretty)
+        text.append(indent, ' ');
     text += ']';
     out << text;
 }
 
 } // namespace
 
-int writeJsonFile(const std::string& path, const nlohmann::json& document) {
-    return writeJsonFile(path, document, {});
+void addJsonOptions(CLI::App& command, JsonOutput& output, const std::string& what) {
+    command.add_option("--json", output.path, what + " (FILE, or - for standard output)");
+    command.add_flag("--pretty", output.pretty, "Indent the JSON (default: one compact line)");
+}
+
+void reserveStandardOutputFor(const JsonOutput& output) {
+    if (output.path != "-" || g_standard_output != nullptr)
+        return;
+    g_standard_output = std::cout.rdbuf(std::cerr.rdbuf());
+}
+
+int writeJsonFile(const JsonOutput& output, const nlohmann::json& document) {
+    return writeJsonFile(output, document, {});
 }
 
 std::string jsonIdListPlaceholder(std::size_t index) {
     return kPlaceholderMark + std::string("ids:") + std::to_string(index);
 }
 
-int writeJsonFile(const std::string& path, const nlohmann::json& document,
+int writeJsonFile(const JsonOutput& output, const nlohmann::json& document,
                   std::span<const JsonIdList> lists) {
-    std::ofstream out(path);
-    const std::string text = document.dump(1);
+    const bool to_standard_output = output.path == "-";
+    std::ofstream file;
+    if (!to_standard_output)
+        file.open(output.path);
+    std::ostream out(to_standard_output
+                         ? (g_standard_output ? g_standard_output : std::cout.rdbuf())
+                         : file.rdbuf());
+    const std::string text = output.pretty ? document.dump(1) : document.dump();
     // Where each placeholder is, as dumped (the mark escaped, in quotes), in the text's order.
     struct Found {
         std::size_t at, length, list;
@@ -75,13 +101,16 @@ int writeJsonFile(const std::string& path, const nlohmann::json& document,
         while (text[line + indent] == ' ')
             ++indent;
         out.write(text.data() + written, std::streamsize(f.at - written));
-        writeIds(out, lists[f.list], indent);
+        writeIds(out, lists[f.list], output.pretty, indent);
         written = f.at + f.length;
     }
     out.write(text.data() + written, std::streamsize(text.size() - written));
     out << '\n';
-    if (!out)
-        return fail(kExitFailure, "cannot write " + path);
+    out.flush();
+    if (!out || (!to_standard_output && !file))
+        return fail(kExitFailure,
+                    "cannot write " +
+                        (to_standard_output ? std::string("standard output") : output.path));
     return kExitOk;
 }
 

@@ -5,13 +5,28 @@
 #include <span>
 #include <string>
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 namespace vissort::cli {
 
-/// Writes document to path, indented one space a level, ending with a newline. Returns
+/// Where a command's JSON goes: a file, or standard output for "-"; compact (one line) unless
+/// pretty (indented one space a level).
+struct JsonOutput {
+    std::string path;
+    bool pretty = false;
+};
+
+/// Adds --json PATH (its help: what) and --pretty.
+void addJsonOptions(CLI::App& command, JsonOutput& output, const std::string& what);
+
+/// With `--json -`: the document goes to standard output, and from this call on everything the
+/// command prints for people goes to standard error, so that a pipe receives the JSON alone.
+void reserveStandardOutputFor(const JsonOutput& output);
+
+/// Writes document to output's path ("-": standard output), ending with a newline. Returns
 /// kExitOk, or prints "cannot write PATH" and returns kExitFailure.
-int writeJsonFile(const std::string& path, const nlohmann::json& document);
+int writeJsonFile(const JsonOutput& output, const nlohmann::json& document);
 
 /// A list of ids written into a document where it holds jsonIdListPlaceholder(index): straight
 /// from the caller's array, not as a json array (16 bytes an element, then its text again: more
@@ -25,8 +40,8 @@ struct JsonIdList {
 std::string jsonIdListPlaceholder(std::size_t index);
 
 /// writeJsonFile, with each list's placeholder replaced by the list, laid out as the document's
-/// own arrays are. Every placeholder must occur once.
-int writeJsonFile(const std::string& path, const nlohmann::json& document,
+/// own arrays are (one line, or one element a line when pretty). Every placeholder must occur once.
+int writeJsonFile(const JsonOutput& output, const nlohmann::json& document,
                   std::span<const JsonIdList> lists);
 
 } // namespace vissort::cli

@@ -2,16 +2,18 @@
 
 #include <iostream>
 
+#include "cli/command_line_errors.h"
 #include "cli/commands.h"
 #include "cli/environment.h"
 
 int main(int argc, char** argv) {
     using namespace vissort::cli;
-    CLI::App app{"vissort: visibility ordering of 3D geometry with occlusion queries (Vis-sort)"};
+    // Each line as it is printed, also into a pipe: long runs report as they go.
+    std::cout << std::unitbuf;
+    CLI::App app{"vissort: visibility ordering of 3D geometry with occlusion queries (Vis-sort)",
+                 "vissort"};
     app.require_subcommand(1);
-    app.footer(
-        "Run 'vissort order --help' for the camera, --size, --level, --oracle, --frames and\n"
-        "output options; docs/ and README.md explain the algorithm and the scene formats.");
+    app.set_version_flag("--version", std::string("vissort ") + VISSORT_VERSION);
     OrderOptions order;
     InfoOptions info;
     CLI::App* order_command = addOrderCommand(app, order);
@@ -24,16 +26,41 @@ int main(int argc, char** argv) {
     CLI::App* collide_command = addCollideCommand(app, collide);
     ViewerOptions view;
     CLI::App* view_command = addViewCommand(app, view);
+    // After the commands: each would inherit it, and it speaks of them all.
+    app.footer("Run 'vissort COMMAND --help' for a command's options. docs/cli.md documents\n"
+               "every command, option, output and exit code; README.md and docs/ explain the\n"
+               "algorithm and the scene formats.");
+    // `vissort help [COMMAND]`: what people type after git and cargo.
+    if (argc >= 2 && std::string(argv[1]) == "help") {
+        if (argc == 2) {
+            std::cout << app.help();
+            return kExitOk;
+        }
+        try {
+            std::cout << app.get_subcommand(argv[2])->help();
+            return kExitOk;
+        } catch (const CLI::OptionNotFound&) {
+            // Reported below, as any unknown command.
+            argv[1] = argv[2];
+        }
+    }
+    if (const std::string error = checkCommandLine(app, argc, argv); !error.empty())
+        return fail(kExitUsage, error);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
     } catch (const CLI::CallForAllHelp& e) {
         return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
     } catch (const CLI::ParseError& e) {
         // One line, not CLI11's multi-line report.
-        return fail(kExitUsage, std::string(e.what()) + " (run 'vissort --help')");
+        return fail(kExitUsage, explainParseError(app, e));
     }
+    for (const JsonOutput* json :
+         {&order.json, &info.json, &bench.json, &render.json, &collide.json})
+        reserveStandardOutputFor(*json);
     if (vissort::Status environment = applyEnvironment(); !environment)
         return fail(kExitFailure, environment.error);
     try {

@@ -8,6 +8,7 @@
 #include "cli/environment.h"
 #include "cli/json_output.h"
 #include "cli/obj_output.h"
+#include "cli/text_output.h"
 #include "vissort/frame_driver.h"
 #include "vissort/oracles.h"
 #include "vissort/scene_orderer.h"
@@ -32,10 +33,33 @@ nlohmann::json frameRecord(const FrameOrder& frame, std::size_t order_list) {
 }
 
 void printFrame(int index, const FrameOrder& frame) {
-    std::cout << "frame " << index << ": " << frame.order.size() << " primitives, "
-              << frame.cycles.size() << " cycles, " << frame.stats.iterations << " iterations, "
-              << frame.stats.queries << " queries, " << frame.stats.draws << " draws, "
-              << frame.milliseconds << " ms\n";
+    std::cout << "frame " << index << ": " << counted(frame.order.size(), "primitive") << ", "
+              << counted(frame.cycles.size(), "cycle") << ", "
+              << counted(frame.stats.iterations, "iteration") << ", "
+              << counted(frame.stats.queries, "query", "queries") << ", "
+              << counted(frame.stats.draws, "draw") << ", " << milliseconds(frame.milliseconds)
+              << '\n';
+}
+
+// "cycles: 2" then each cycle's ids (at object level with the objects' names), the first
+// kShownCycles cycles and kShownIds ids of each; --json has them all.
+void printCycles(const FrameOrder& frame, const std::vector<std::string>& object_names) {
+    constexpr std::size_t kShownCycles = 5, kShownIds = 12;
+    std::cout << "cycles: " << frame.cycles.size() << '\n';
+    const bool named = frame.level == OrderLevel::object && !object_names.empty();
+    for (std::size_t c = 0; c < std::min(frame.cycles.size(), kShownCycles); ++c) {
+        const std::vector<uint32_t>& cycle = frame.cycles[c];
+        std::cout << "  cycle " << c << " ("
+                  << counted(cycle.size(), named ? "object" : "primitive") << "):";
+        for (std::size_t i = 0; i < std::min(cycle.size(), kShownIds); ++i) {
+            std::cout << ' ' << cycle[i];
+            if (named && !object_names[cycle[i]].empty())
+                std::cout << " '" << object_names[cycle[i]] << "'";
+        }
+        std::cout << (cycle.size() > kShownIds ? " ...\n" : "\n");
+    }
+    if (frame.cycles.size() > kShownCycles)
+        std::cout << "  ... (--json lists every cycle)\n";
 }
 
 } // namespace
@@ -55,7 +79,7 @@ CLI::App* addOrderCommand(CLI::App& app, OrderOptions& options) {
         ->capture_default_str();
     command->add_flag("--back-to-front", options.back_to_front,
                       "Output back to front (default front to back)");
-    command->add_option("--json", options.json_path, "Write the order and statistics as JSON");
+    addJsonOptions(*command, options.json, "Write the order and statistics as JSON");
     command->add_option("--dump-primitives", options.dump_path,
                         "Write the last frame's primitives as OBJ, one group per id");
     return command;
@@ -84,11 +108,18 @@ int runOrder(const OrderOptions& options) {
     SceneOrderer orderer(scene->objectPrimitives(), uint32_t(scene->triangleCount()), level,
                          *oracle);
     const std::size_t object_count = scene->objects.size();
+    std::vector<std::string> object_names;
+    for (const SceneObject& object : scene->objects)
+        object_names.push_back(object.name);
     // The orderer keeps the objects' triangle ranges, and only --dump-primitives reads the
     // objects again: a scene of many small objects (builtin:soup, one a triangle) holds far more
     // in them (names, materials) than the ranges.
     if (options.dump_path.empty())
         std::vector<SceneObject>().swap(scene->objects);
+    std::cout << options.scene << ": " << counted(object_count, "object") << ", "
+              << counted(scene->triangleCount(), "triangle") << "; " << orderLevelName(level)
+              << " level, " << oracleName(oracle_kind) << " oracle, " << view.width << 'x'
+              << view.height << ", " << counted(view.frames, "frame") << '\n';
     FrameDriver driver(*scene, view.camera, view.path, view.width, view.height);
     nlohmann::json frames = nlohmann::json::array();
     std::vector<std::vector<uint32_t>> frame_orders; // for --json, when there are several frames
@@ -100,37 +131,30 @@ int runOrder(const OrderOptions& options) {
         total_ms += last.milliseconds;
         if (view.frames > 1) {
             printFrame(f, last);
-            if (!options.json_path.empty()) {
+            if (!options.json.path.empty()) {
                 frames.push_back(frameRecord(last, frame_orders.size()));
                 frame_orders.push_back(last.order);
             }
         }
     }
 
-    const char* unit = level == OrderLevel::object ? "objects" : "triangles";
-    std::cout << options.scene << ": " << object_count << " objects, " << scene->triangleCount()
-              << " triangles; " << orderLevelName(level) << " level, " << oracleName(oracle_kind)
-              << " oracle, " << view.width << 'x' << view.height << ", " << view.frames
-              << (view.frames == 1 ? " frame\n" : " frames\n");
+    const std::string unit = level == OrderLevel::object ? "object" : "triangle";
     std::cout << "order (" << (options.back_to_front ? "back to front" : "front to back") << ") of "
-              << last.order.size() << ' ' << unit << ':';
+              << counted(last.order.size(), unit) << ':';
     const std::size_t n = last.order.size();
     for (std::size_t i = 0; i < std::min<std::size_t>(n, 20); ++i)
         std::cout << ' ' << last.order[options.back_to_front ? n - 1 - i : i];
     std::cout << (n > 20 ? " ...\n" : "\n");
-    std::cout << "cycles: " << last.cycles.size();
-    for (std::size_t c = 0; c < std::min<std::size_t>(last.cycles.size(), 5); ++c) {
-        std::cout << (c ? "; " : " (") << last.cycles[c].size() << " primitives";
-        if (c + 1 == std::min<std::size_t>(last.cycles.size(), 5))
-            std::cout << ')';
-    }
-    std::cout << "\nlast frame: " << last.stats.iterations << " iterations, " << last.stats.queries
-              << " queries, " << last.stats.draws << " draws, " << last.milliseconds << " ms";
+    printCycles(last, object_names);
+    std::cout << (view.frames > 1 ? "last frame: " : "")
+              << counted(last.stats.iterations, "iteration") << ", "
+              << counted(last.stats.queries, "query", "queries") << ", "
+              << counted(last.stats.draws, "draw") << ", " << milliseconds(last.milliseconds);
     if (view.frames > 1)
-        std::cout << "; mean " << total_ms / view.frames << " ms per frame";
+        std::cout << "; mean " << milliseconds(total_ms / view.frames) << " a frame";
     std::cout << '\n';
 
-    if (!options.json_path.empty()) {
+    if (!options.json.path.empty()) {
         std::vector<JsonIdList> lists;
         for (const std::vector<uint32_t>& order : frame_orders)
             lists.push_back({order, options.back_to_front});
@@ -142,7 +166,7 @@ int runOrder(const OrderOptions& options) {
         document["size"] = {view.width, view.height};
         if (view.frames > 1)
             document["frames"] = std::move(frames);
-        if (const int code = writeJsonFile(options.json_path, document, lists); code != kExitOk)
+        if (const int code = writeJsonFile(options.json, document, lists); code != kExitOk)
             return code;
     }
     if (!options.dump_path.empty()) {

@@ -1,6 +1,7 @@
 // `vissort render`: transparency through the headless OpenGL renderer, one method per run, with
 // an optional reference method and its error.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
@@ -14,6 +15,7 @@
 #include "cli/comparison_strip.h"
 #include "cli/environment.h"
 #include "cli/json_output.h"
+#include "cli/text_output.h"
 #include "vissort/collision.h"
 #include "vissort/frame_driver.h"
 #include "vissort/transparency_renderer.h"
@@ -98,18 +100,18 @@ int renderEveryMethod(const RenderOptions& options, RenderSettings settings, con
     }
     tiles.insert(tiles.end(), maps.begin(), maps.end());
     const Strip strip = composeStrip(tiles, view.width, view.height, uint32_t(std::size(kShown)));
-    if (Status error = writePng(options.output, strip.width, strip.height, strip.rgba); !error)
+    if (Status error = writeImage(options.output, strip.width, strip.height, strip.rgba); !error)
         return fail(kExitFailure, error.error);
     std::cout << options.output << ": every method (top) and its error against linked-list "
               << "(below: grey within 1/255, yellow to red beyond)\n";
-    if (options.json_path.empty())
+    if (options.json.path.empty())
         return kExitOk;
     const nlohmann::json document = {{"scene", options.scene},
                                      {"level", orderLevelName(settings.level)},
                                      {"oracle", oracleName(settings.oracle)},
                                      {"size", {view.width, view.height}},
                                      {"methods", methods}};
-    return writeJsonFile(options.json_path, document);
+    return writeJsonFile(options.json, document);
 }
 
 } // namespace
@@ -133,9 +135,10 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
                                             "error maps against linked-list");
     command
         ->add_option("-o,--output", options.output,
-                     "PNG to write; with --frames N, a pattern such as frame_%04d.png")
+                     "Image to write (.png or .jpg); with --frames N, a pattern such as "
+                     "frame_%04d.png (a pattern with one frame names frame 0)")
         ->required(kWithGl);
-    command->add_option("--json", options.json_path, "Write the statistics (and error) as JSON");
+    addJsonOptions(*command, options.json, "Write the statistics (and error) as JSON");
     command->add_option("--reference", options.reference,
                         "Also render this method and print RMSE, PSNR and the largest channel "
                         "error against it");
@@ -175,6 +178,11 @@ int runRender(const RenderOptions& options) {
     }
     if (!options.error_map.empty() && options.reference.empty())
         return fail(kExitUsage, "--error-map needs --reference METHOD");
+    for (const std::string* image : {&options.output, &options.error_map})
+        if (!image->empty())
+            if (const Result<ImageFormat> format = imageFormatOf(*image); !format)
+                return fail(kExitUsage,
+                            (image == &options.output ? "-o: " : "--error-map: ") + format.error);
     if (options.view.frames > 1 && !isFramePattern(options.output))
         return fail(kExitUsage, "with --frames, -o needs one %d (such as frame_%04d.png), got '" +
                                     options.output + "'");
@@ -209,8 +217,10 @@ int runRender(const RenderOptions& options) {
         collisions =
             std::make_unique<CollisionDetector>(scene->objectPrimitives(), collision_settings);
     }
+    printRenderHeader(options.scene, *scene, settings, view);
     FrameDriver driver(*scene, view.camera, view.path, view.width, view.height);
     nlohmann::json frames = nlohmann::json::array();
+    std::vector<double> total_ms;
     for (int f = 0; f < view.frames; ++f) {
         driver.seek(f);
         const PositionsView positions = driver.positions();
@@ -226,21 +236,24 @@ int runRender(const RenderOptions& options) {
         }
         RenderStats stats;
         const std::vector<uint8_t> pixels = renderer.render(positions, vp, stats).toRgba8();
-        const std::string path = view.frames > 1 ? framePath(options.output, f) : options.output;
-        if (Status error = writePng(path, view.width, view.height, pixels); !error)
+        // A pattern names every frame, the first too when it is the only one.
+        const std::string path =
+            isFramePattern(options.output) ? framePath(options.output, f) : options.output;
+        if (Status error = writeImage(path, view.width, view.height, pixels); !error)
             return fail(kExitFailure, error.error);
         nlohmann::json record = statsJson(settings.method, stats);
-        std::cout << path << ": " << blendMethodName(settings.method) << ", " << stats.total_ms
-                  << " ms (order " << stats.order_ms << ", render " << stats.render_ms << "), "
-                  << stats.passes << " passes";
+        std::cout << path << ": " << milliseconds(stats.total_ms) << " (order "
+                  << milliseconds(stats.order_ms) << ", render " << milliseconds(stats.render_ms)
+                  << "), " << counted(stats.passes, "pass", "passes");
         if (stats.fragments > 0)
-            std::cout << ", " << stats.fragments << " fragments listed";
+            std::cout << ", " << counted(stats.fragments, "fragment") << " listed";
         if (settings.method == BlendMethod::vissort)
-            std::cout << ", " << stats.groups << " groups composited per pixel";
+            std::cout << ", " << counted(stats.groups, "group") << " composited per pixel";
         if (stats.repaired_pixels > 0)
-            std::cout << ", " << stats.repaired_pixels << " pixels repaired";
+            std::cout << ", " << counted(stats.repaired_pixels, "pixel") << " repaired";
+        total_ms.push_back(stats.total_ms);
         if (collisions) {
-            std::cout << ", " << highlighted << " colliding triangles highlighted";
+            std::cout << ", " << counted(highlighted, "colliding triangle") << " highlighted";
             record["colliding_triangles"] = highlighted;
         }
         std::cout << '\n';
@@ -250,21 +263,28 @@ int runRender(const RenderOptions& options) {
                 reference->render(positions, vp, reference_stats).toRgba8();
             const ImageError error = compareImages(pixels, reference_pixels);
             if (!options.error_map.empty()) {
-                const std::string map_path =
-                    view.frames > 1 ? framePath(options.error_map, f) : options.error_map;
-                if (Status e = writePng(map_path, view.width, view.height,
-                                        errorMap(pixels, reference_pixels));
+                const std::string map_path = isFramePattern(options.error_map)
+                                                 ? framePath(options.error_map, f)
+                                                 : options.error_map;
+                if (Status e = writeImage(map_path, view.width, view.height,
+                                          errorMap(pixels, reference_pixels));
                     !e)
                     return fail(kExitFailure, e.error);
             }
             std::cout << "  against " << options.reference << ": RMSE " << error.rmse << ", PSNR "
                       << error.psnr << " dB, max abs " << error.max_abs << "/255, "
-                      << error.pixels_over_one << " pixels off by more than 1\n";
+                      << counted(error.pixels_over_one, "pixel") << " off by more than 1\n";
             record["error"] = errorJson(error, options.reference);
         }
         frames.push_back(std::move(record));
     }
-    if (!options.json_path.empty()) {
+    if (view.frames > 1) {
+        std::nth_element(total_ms.begin(), total_ms.begin() + total_ms.size() / 2, total_ms.end());
+        std::cout << counted(view.frames, "frame") << " written, " << framePath(options.output, 0)
+                  << " to " << framePath(options.output, view.frames - 1) << ": median "
+                  << milliseconds(total_ms[total_ms.size() / 2]) << " a frame\n";
+    }
+    if (!options.json.path.empty()) {
         nlohmann::json document = frames.back();
         document["scene"] = options.scene;
         document["level"] = orderLevelName(settings.level);
@@ -272,7 +292,7 @@ int runRender(const RenderOptions& options) {
         document["size"] = {view.width, view.height};
         if (view.frames > 1)
             document["frames"] = std::move(frames);
-        if (const int code = writeJsonFile(options.json_path, document); code != kExitOk)
+        if (const int code = writeJsonFile(options.json, document); code != kExitOk)
             return code;
     }
     return kExitOk;

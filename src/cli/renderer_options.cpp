@@ -1,7 +1,11 @@
 // The transparency renderer's options, shared by `render` and `view` (commands.h).
 
+#include <iostream>
+
+#include "cli/command_line_errors.h"
 #include "cli/commands.h"
 #include "cli/environment.h"
+#include "cli/text_output.h"
 #include "vissort/transparency_renderer.h" // names and settings only: header-only without GL
 
 namespace vissort::cli {
@@ -41,12 +45,40 @@ void addRendererOptions(CLI::App& command, RendererOptions& options,
 }
 
 #if VISSORT_WITH_GL
+void printRenderHeader(const std::string& specification, const Scene& scene,
+                       const RenderSettings& settings, const ResolvedView& view) {
+    std::size_t transparent = 0, invisible = 0;
+    for (const SceneObject& object : scene.objects) {
+        if (!settings.all_transparent && !(object.transparent && object.colour.a < 1.0f))
+            continue;
+        ++transparent;
+        // Below half a level of 8 bits: nothing of it reaches the image.
+        const float alpha = settings.all_transparent ? settings.alpha : object.colour.a;
+        invisible += alpha < 0.5f / 255 ? 1 : 0;
+    }
+    std::cout << specification << ": " << counted(scene.objects.size(), "object") << " ("
+              << transparent << " transparent), " << counted(scene.triangleCount(), "triangle")
+              << "; " << blendMethodName(settings.method) << ", " << orderLevelName(settings.level)
+              << " level, " << view.width << 'x' << view.height << ", "
+              << counted(view.frames, "frame") << '\n';
+    if (transparent == 0) // a hint, not a problem: the picture is right
+        std::cout << "note: no transparent objects, so every method draws the same opaque "
+                     "picture; --all-transparent [--alpha A] makes every object transparent\n";
+    else if (invisible > 0)
+        warn("transparent objects with alpha 0 do not show: " + std::to_string(invisible) + " of " +
+             std::to_string(transparent) +
+             " (the file's opacity, or a transparency read as opacity); --all-transparent "
+             "--alpha A draws every object at alpha A");
+}
+
 std::string resolveRendererOptions(const RendererOptions& options, bool allow_all,
                                    RenderSettings& settings) {
     if (!(allow_all && options.method == "all")) {
         const Result<BlendMethod> method = parseBlendMethod(options.method);
         if (!method)
-            return "--method: " + method.error + (allow_all ? " or all" : "");
+            return "--method: " +
+                   (allow_all ? method.error.substr(0, method.error.size() - 1) + "; or all)"
+                              : method.error);
         settings.method = *method.value;
     }
     const Result<OrderLevel> level = parseOrderLevel(options.level);
@@ -59,7 +91,7 @@ std::string resolveRendererOptions(const RendererOptions& options, bool allow_al
     settings.oracle = *oracle.value;
     settings.oracle_options = environmentOracleOptions();
     if (!(options.alpha > 0.0 && options.alpha <= 1.0))
-        return "--alpha must be in (0, 1], got " + std::to_string(options.alpha);
+        return "--alpha must be in (0, 1], got " + formatNumber(options.alpha);
     if (options.shading != "lit" && options.shading != "flat")
         return "--shading must be lit or flat, got '" + options.shading + "'";
     settings.flat_shading = options.shading == "flat";
@@ -70,7 +102,7 @@ std::string resolveRendererOptions(const RendererOptions& options, bool allow_al
     // At least one fragment (28 bytes); at most a petabyte, far beyond any driver.
     if (!(options.list_memory_mib >= 1.0 / 1024 && options.list_memory_mib <= 1e9))
         return "--list-memory must be between 0.001 and 1e9 MiB, got " +
-               std::to_string(options.list_memory_mib);
+               formatNumber(options.list_memory_mib);
     settings.list_bytes = uint64_t(options.list_memory_mib * 1024 * 1024);
     if (options.colour_cycles && options.method != "vissort")
         return "--colour-cycles colours vissort's cycles: not with --method " + options.method;

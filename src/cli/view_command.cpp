@@ -8,6 +8,7 @@
 #if VISSORT_WITH_VIEWER
 #include "viewer/input_script.h"
 #include "viewer/viewer.h"
+#include "vissort/image.h"
 #include "vissort/transparency_renderer.h"
 #endif
 
@@ -71,6 +72,9 @@ int runView(const ViewerOptions& options) {
         return fail(kExitUsage, error);
     if (!options.screenshot.empty() && !options.frames_given)
         return fail(kExitUsage, "--screenshot needs --frames N");
+    if (!options.screenshot.empty())
+        if (const Result<ImageFormat> format = imageFormatOf(options.screenshot); !format)
+            return fail(kExitUsage, "--screenshot: " + format.error);
     if (!options.script.empty()) {
         Result<std::vector<viewer::ScriptEvent>> script = viewer::loadInputScript(options.script);
         if (!script)
@@ -84,6 +88,7 @@ int runView(const ViewerOptions& options) {
     if (const int code = loadSceneAndView(options.scene, options.view, scene, view);
         code != kExitOk)
         return code;
+    printRenderHeader(options.scene, *scene, settings.render, view);
     settings.title = "vissort view " + options.scene;
     settings.camera = view.camera;
     settings.path = view.path;

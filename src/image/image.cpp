@@ -1,6 +1,7 @@
 // Image conversion, comparison and PNG output (image.h).
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 
@@ -84,6 +85,33 @@ Status writePng(const std::string& path, uint32_t width, uint32_t height,
     if (rgba8.size() != std::size_t(width) * height * 4 || width == 0 || height == 0)
         return Status::failure("no image to write to " + path);
     if (!stbi_write_png(path.c_str(), int(width), int(height), 4, rgba8.data(), int(width) * 4))
+        return Status::failure("cannot write " + path);
+    return Status::ok();
+}
+
+Result<ImageFormat> imageFormatOf(const std::string& path) {
+    const std::size_t dot = path.find_last_of("./");
+    std::string extension = dot == std::string::npos || path[dot] == '/' ? "" : path.substr(dot);
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    if (extension == ".png")
+        return {ImageFormat::png, ""};
+    if (extension == ".jpg" || extension == ".jpeg")
+        return {ImageFormat::jpeg, ""};
+    return Result<ImageFormat>::failure("cannot tell the image format of '" + path +
+                                        "' from its extension: use .png or .jpg");
+}
+
+Status writeImage(const std::string& path, uint32_t width, uint32_t height,
+                  const std::vector<uint8_t>& rgba8) {
+    const Result<ImageFormat> format = imageFormatOf(path);
+    if (!format)
+        return Status::failure(format.error);
+    if (*format.value == ImageFormat::png)
+        return writePng(path, width, height, rgba8);
+    if (rgba8.size() != std::size_t(width) * height * 4 || width == 0 || height == 0)
+        return Status::failure("no image to write to " + path);
+    if (!stbi_write_jpg(path.c_str(), int(width), int(height), 4, rgba8.data(), 95))
         return Status::failure("cannot write " + path);
     return Status::ok();
 }

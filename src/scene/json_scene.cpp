@@ -15,10 +15,12 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 #include "scene/mesh_loader.h"
+#include "vissort/closest_name.h"
 
 namespace vissort::detail {
 namespace {
@@ -48,7 +50,11 @@ void expectKeys(const Json& value, const std::string& where,
         std::string list;
         for (const char* k : allowed)
             list += std::string(list.empty() ? "" : ", ") + k;
-        fail(where, "unknown key '" + item.key() + "' (allowed: " + list + ")");
+        std::vector<std::string_view> names(allowed.begin(), allowed.end());
+        const std::string suggestion = closestName(item.key(), names);
+        fail(where, "unknown key '" + item.key() + "' (" +
+                        (suggestion.empty() ? "" : "did you mean '" + suggestion + "'? ") +
+                        "allowed: " + list + ")");
     }
 }
 

@@ -470,7 +470,7 @@ Status Viewer::saveScreenshot(const std::string& path) {
                     image.data() + std::size_t(y) * stride);
     for (std::size_t i = 3; i < image.size(); i += 4)
         image[i] = 255; // the window is opaque, whatever its visual keeps of alpha
-    if (Status written = writePng(path, uint32_t(width), uint32_t(height), image); !written)
+    if (Status written = writeImage(path, uint32_t(width), uint32_t(height), image); !written)
         return written;
     summary_.screenshots.push_back(path);
     return Status::ok();

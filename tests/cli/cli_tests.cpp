@@ -498,11 +498,21 @@ TEST_F(Cli, ErrorBenchGlFrames) {
     EXPECT_NE(r.err.find("--gl-frames"), std::string::npos) << r;
 }
 
-TEST_F(Cli, TopLevelHelpMentionsLevel) {
+// The top-level help lists the commands and points to each one's help; a command's help does
+// not end with another command's pointer (it said "Run 'vissort order --help' for the camera"
+// under every command).
+TEST_F(Cli, TopLevelHelpPointsToEachCommandsHelp) {
     const RunResult r = run({"--help"});
     EXPECT_EQ(r.code, 0) << r;
-    EXPECT_NE(r.out.find("order"), std::string::npos) << r;
-    EXPECT_NE(r.out.find("--level"), std::string::npos) << "help should mention --level" << r;
+    for (const char* command : {"order", "info", "render", "collide", "bench", "view"})
+        EXPECT_NE(r.out.find(command), std::string::npos) << command << r;
+    EXPECT_NE(r.out.find("vissort COMMAND --help"), std::string::npos) << r;
+    EXPECT_NE(r.out.find("Usage: vissort"), std::string::npos) << r;
+    for (const char* command : {"info", "render", "collide", "bench"}) {
+        const RunResult help = run({command, "--help"});
+        EXPECT_EQ(help.code, 0) << help;
+        EXPECT_EQ(help.out.find("vissort order --help"), std::string::npos) << help;
+    }
 }
 
 TEST_F(Cli, OrderHelpMentionsLevel) {
@@ -627,7 +637,7 @@ TEST_F(Cli, ErrorUnknownOption) {
 }
 
 TEST_F(Cli, ErrorNoSubcommand) {
-    expectError({}, kUsage, {"subcommand"});
+    expectError({}, kUsage, {"a command is required", "order", "render"});
 }
 
 TEST_F(Cli, ErrorJsonIntoMissingFolder) {

@@ -3,7 +3,9 @@
 // A-buffer of tests/support), the statistics JSON, frame sequences, and one-line errors.
 
 #include <cstring>
+#include <fstream>
 #include <map>
+#include <regex>
 #include <set>
 #include <string>
 #include <vector>
@@ -265,6 +267,72 @@ TEST_F(Cli, RenderColoursTheCycles) {
                 {"--colour-cycles", "unsorted"});
     expectError(with({"--colour-cycles", "--reference", "linked-list", "-o", path("x.png")}),
                 kUsage, {"--colour-cycles", "--reference"});
+}
+
+// Images are written in the format their name asks for, or refused before any work; a frame
+// pattern with one frame names frame 0 (it wrote a file with '%04d' in its name).
+TEST_F(Cli, RenderWritesTheFormatItsNameAsksFor) {
+    ASSERT_EQ(run({"render", kSticks, "--size", "32x24", "-o", path("out.jpg")}).code, 0);
+    const std::string jpeg = readFile(path("out.jpg"));
+    ASSERT_GE(jpeg.size(), 3u);
+    EXPECT_EQ(uint8_t(jpeg[0]), 0xFF); // JPEG's start of image, not PNG's signature
+    EXPECT_EQ(uint8_t(jpeg[1]), 0xD8);
+    expectError({"render", kSticks, "--size", "32x24", "-o", path("out.bmp")}, kUsage,
+                {"-o", "out.bmp", ".png or .jpg"});
+    EXPECT_FALSE(fs::exists(path("out.bmp")));
+    const RunResult one = run({"render", kSticks, "--size", "32x24", "-o", path("f_%04d.png")});
+    ASSERT_EQ(one.code, 0) << one;
+    EXPECT_TRUE(fs::exists(path("f_0000.png"))) << one;
+    EXPECT_FALSE(fs::exists(path("f_%04d.png"))) << one;
+}
+
+// Units on every time, words that agree with their counts, a note on opaque-only scenes, a
+// summary after --frames, and a warning for transparent materials with alpha 0 (teapots.DAE
+// rendered all white without one).
+TEST_F(Cli, RenderOutputSaysWhatItMeasuredAndWhy) {
+    const RunResult opaque = run({"render", kSticks, "--size", "32x24", "--frames", "3", "--path",
+                                  "orbit", "-o", path("s_%d.png")});
+    ASSERT_EQ(opaque.code, 0) << opaque;
+    EXPECT_TRUE(std::regex_search(
+        opaque.out, std::regex(R"(s_0\.png: [0-9.]+ ms \(order [0-9.]+ ms, render [0-9.]+ ms\))")))
+        << opaque;
+    EXPECT_NE(opaque.out.find("note: no transparent objects"), std::string::npos) << opaque;
+    EXPECT_NE(opaque.out.find("--all-transparent"), std::string::npos) << opaque;
+    EXPECT_NE(opaque.out.find("3 frames written"), std::string::npos) << opaque;
+    EXPECT_EQ(opaque.out.find("1 passes"), std::string::npos) << opaque;
+    EXPECT_TRUE(opaque.err.empty()) << opaque;
+
+    std::ofstream(path("glass.mtl")) << "newmtl glass\nKd 0.2 0.4 0.9\nd 0\n";
+    std::ofstream(path("glass.obj")) << "mtllib glass.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+                                        "usemtl glass\nf 1 2 3\nf 1 2 4\nf 1 3 4\nf 2 3 4\n";
+    const RunResult unseen =
+        run({"render", path("glass.obj"), "--size", "32x24", "-o", path("glass.png")});
+    ASSERT_EQ(unseen.code, 0) << unseen;
+    EXPECT_NE(unseen.err.find("vissort: warning: transparent objects with alpha 0"),
+              std::string::npos)
+        << unseen;
+    EXPECT_NE(unseen.err.find("--all-transparent --alpha"), std::string::npos) << unseen;
+    const RunResult overridden = run({"render", path("glass.obj"), "--size", "32x24",
+                                      "--all-transparent", "-o", path("glass.png")});
+    EXPECT_TRUE(overridden.err.empty()) << overridden;
+}
+
+// Standard output reaches a pipe line by line: the header arrives while the frame still renders
+// (it came only at the end).
+TEST_F(Cli, RenderReportsBeforeItFinishes) {
+    const std::string command =
+        "cd " + shellQuote(dir_.string()) + " && " + shellQuote(kTool) +
+        " render 'builtin:powerplant?scale=0.2' --size 400x300 --level triangle -o late.png";
+    FILE* pipe = popen(command.c_str(), "r");
+    ASSERT_NE(pipe, nullptr);
+    char line[4096] = {};
+    ASSERT_NE(std::fgets(line, sizeof(line), pipe), nullptr);
+    EXPECT_NE(std::string(line).find("builtin:powerplant"), std::string::npos) << line;
+    EXPECT_FALSE(fs::exists(path("late.png"))) << "the header came after the frame was written";
+    while (std::fgets(line, sizeof(line), pipe) != nullptr) {
+    } // the rest, so that the tool never writes into a closed pipe
+    EXPECT_EQ(pclose(pipe), 0);
+    EXPECT_TRUE(fs::exists(path("late.png")));
 }
 
 } // namespace
