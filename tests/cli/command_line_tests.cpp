@@ -6,6 +6,8 @@
 
 #include <filesystem>
 #include <regex>
+#include <set>
+#include <sstream>
 
 #include "cli_fixture.h"
 
@@ -110,6 +112,51 @@ TEST_F(Cli, OrderOutputCountsInWordsWithUnitsAndNamesTheCycles) {
     ASSERT_NE(header, std::string::npos) << one;
     ASSERT_NE(frame, std::string::npos) << one;
     EXPECT_LT(header, frame) << one;
+}
+
+// The long names of the options a command's --help lists ("  -o,--output TEXT ..." -> --output).
+std::set<std::string> helpOptions(const std::string& help) {
+    std::set<std::string> names;
+    static const std::regex option(R"(^  (?:-[a-zA-Z],)?(--[a-z][a-z0-9-]*))");
+    std::istringstream lines(help);
+    for (std::string line; std::getline(lines, line);) {
+        std::smatch match;
+        if (std::regex_search(line, match, option) && match[1] != "--help")
+            names.insert(match[1]);
+    }
+    return names;
+}
+
+// The options docs/cli.md's table lists under "## `vissort COMMAND`" ("| `--size WxH` |").
+std::set<std::string> documentedOptions(const std::string& doc, const std::string& command) {
+    std::set<std::string> names;
+    const std::string heading = "## `vissort " + command + "`";
+    const std::size_t start = doc.find(heading);
+    if (start == std::string::npos)
+        return names;
+    const std::size_t end = doc.find("\n## ", start + heading.size());
+    std::istringstream lines(doc.substr(start, end - start));
+    static const std::regex row(R"(^\| `(?:-[a-zA-Z], )?(--[a-z][a-z0-9-]*))");
+    for (std::string line; std::getline(lines, line);) {
+        std::smatch match;
+        if (std::regex_search(line, match, row))
+            names.insert(match[1]);
+    }
+    return names;
+}
+
+// docs/cli.md documents every option of every command, and no option a command lacks.
+TEST_F(Cli, EveryCommandsHelpAgreesWithDocsCli) {
+    const std::string doc = readFile(std::string(VISSORT_SOURCE_DIR) + "/docs/cli.md");
+    ASSERT_FALSE(doc.empty());
+    for (const char* command : {"order", "info", "render", "collide", "bench", "view"}) {
+        SCOPED_TRACE(command);
+        const RunResult help = run({command, "--help"});
+        ASSERT_EQ(help.code, 0) << help;
+        const std::set<std::string> listed = helpOptions(help.out);
+        EXPECT_GT(listed.size(), 3u) << help;
+        EXPECT_EQ(documentedOptions(doc, command), listed);
+    }
 }
 
 } // namespace

@@ -428,6 +428,10 @@ TEST(JsonScene, RejectsStructuralMistakes) {
         {R"({"objects": {"shape": "box"}})", "expected an array"},
         {R"({"objets": []})", "unknown key 'objets'"},
         {R"({"objects": [{"shape": "box", "translte": [1, 2, 3]}]})", "unknown key 'translte'"},
+        // The spelling of another English: the key the scene format has.
+        {R"({"objects": [{"shape": "box", "color": [1, 0, 0]}]})",
+         "unknown key 'color' (did you mean 'colour'?"},
+        {R"({"objects": [{"shape": "box", "translte": [1, 2, 3]}]})", "did you mean 'translate'?"},
         {R"({"objects": [{"shape": "box", "scale": 2, "scale": 3}]})", "duplicate key 'scale'"},
         {R"({"objects": [{"shape": "box", "rotate": {"axis": [0, 0, 1], "degree": 3}}]})",
          "unknown key 'degree'"},

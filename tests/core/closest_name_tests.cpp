@@ -1,0 +1,47 @@
+// "Did you mean": edit distances computed by hand, and the suggestions the errors make.
+
+#include "vissort/closest_name.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "vissort/transparency_renderer.h" // the method names (header-only without GL)
+
+namespace vissort {
+namespace {
+
+TEST(ClosestName, EditDistanceCountsInsertionsDeletionsSubstitutionsAndSwaps) {
+    EXPECT_EQ(editDistance("", ""), 0u);
+    EXPECT_EQ(editDistance("order", "order"), 0u);
+    EXPECT_EQ(editDistance("ordr", "order"), 1u);      // one insertion
+    EXPECT_EQ(editDistance("color", "colour"), 1u);    // one insertion
+    EXPECT_EQ(editDistance("--levle", "--level"), 1u); // one swap
+    EXPECT_EQ(editDistance("kitten", "sitting"), 3u);
+    EXPECT_EQ(editDistance("abc", ""), 3u);
+}
+
+TEST(ClosestName, SuggestsOnlyNamesNearEnough) {
+    const std::vector<std::string> commands = {"order", "info", "render", "collide", "bench"};
+    EXPECT_EQ(closestName("ordr", commands), "order");
+    EXPECT_EQ(closestName("rendr", commands), "render");
+    EXPECT_EQ(closestName("xyzzy", commands), "");
+    EXPECT_EQ(closestName("order", commands), ""); // not a mistake
+    EXPECT_EQ(didYouMean("infp", commands), " (did you mean 'info'?)");
+    EXPECT_EQ(didYouMean("zzzz", commands), "");
+}
+
+TEST(ClosestName, EnumErrorsSuggestTheNearestName) {
+    const Result<BlendMethod> typo = parseBlendMethod("vissrot");
+    ASSERT_FALSE(typo);
+    EXPECT_NE(typo.error.find("unknown method 'vissrot' (did you mean 'vissort'? expected "),
+              std::string::npos)
+        << typo.error;
+    const Result<BlendMethod> far = parseBlendMethod("quantum");
+    ASSERT_FALSE(far);
+    EXPECT_EQ(far.error.find("did you mean"), std::string::npos) << far.error;
+}
+
+} // namespace
+} // namespace vissort
