@@ -114,6 +114,22 @@ TEST_F(Cli, OrderOutputCountsInWordsWithUnitsAndNamesTheCycles) {
     EXPECT_LT(header, frame) << one;
 }
 
+// The scenes examples/scenes/ ships (README, docs/scene-format.md) load and order from a clean
+// clone: their mesh paths resolve inside the repository.
+TEST_F(Cli, EveryExampleSceneLoadsAndOrders) {
+    std::size_t scenes = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(VISSORT_SOURCE_DIR) +
+                                                                 "/examples/scenes")) {
+        if (entry.path().extension() != ".json")
+            continue;
+        ++scenes;
+        const RunResult r = run({"order", entry.path().string(), "--size", "96x72"});
+        EXPECT_EQ(r.code, 0) << r;
+        EXPECT_TRUE(r.err.empty()) << r;
+    }
+    EXPECT_GE(scenes, 3u);
+}
+
 // The long names of the options a command's --help lists ("  -o,--output TEXT ..." -> --output).
 std::set<std::string> helpOptions(const std::string& help) {
     std::set<std::string> names;

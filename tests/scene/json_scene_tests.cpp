@@ -4,6 +4,7 @@
 #include "scene/json_scene.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <array>
@@ -389,11 +390,13 @@ TEST(JsonScene, TheDocumentedExampleLoads) {
             example += line + "\n";
     }
     ASSERT_FALSE(example.empty());
-    // The example sits in docs/; its mesh paths are relative to that folder.
-    for (std::size_t at; (at = example.find("../assets/")) != std::string::npos;)
-        example.replace(at, 3, kSource + "/");
-    TempDir dir;
-    const Scene scene = loadOrFail(dir.write("example.json", example));
+    // The documented example ships as examples/scenes/cow_on_slab.json, as written there.
+    const std::string shipped = kSource + "/examples/scenes/cow_on_slab.json";
+    std::ifstream file(shipped);
+    const nlohmann::json documented = nlohmann::json::parse(example),
+                         copy = nlohmann::json::parse(file);
+    EXPECT_EQ(documented, copy);
+    const Scene scene = loadOrFail(shipped);
     ASSERT_EQ(scene.objects.size(), 4u);
     EXPECT_EQ(scene.objects[2].name, "box_2");
     EXPECT_EQ(scene.objects[3].name, "suzanne");
