@@ -498,7 +498,7 @@ TEST(DeclaredSizes, PlyHeaderLinesTheFormatDoesNotHaveAreRefused) {
         {start + "property float x\n" + vertex + "end_header\n", "property before any element"},
         {start + vertex + "property list uchar quad i\nend_header\n", "list of a type"},
         {start + vertex + "property \xff\xff float y\nend_header\n", "0xff0xff"},
-        {start + "element vertex\n" + vertex + "end_header\n", "element NAME COUNT"},
+        {start + vertex + "element face\nend_header\n", "element NAME COUNT"},
     };
     for (const auto& [header, needle] : cases)
         EXPECT_NE(declaredSizeProblem(header, header.size() + 100, "ply").find(needle),
