@@ -283,8 +283,11 @@ std::string plyProblem(std::string_view head, uint64_t file_size) {
             if (line.empty())
                 continue; // line ends before the magic
             first = false;
+            // assimp takes any file starting with "ply" for PLY: a first line with more than
+            // the magic ("ply`", found by the fuzzer) would reach it with the header unchecked.
             if (line.size() != 1 || lowercase(line[0]) != "ply")
-                return {};
+                return "the PLY file starts with " + quotedLine(text) +
+                       ", where the format has the line 'ply' alone";
             continue;
         }
         if (line.empty())

@@ -499,6 +499,7 @@ TEST(DeclaredSizes, PlyHeaderLinesTheFormatDoesNotHaveAreRefused) {
         {start + vertex + "property list uchar quad i\nend_header\n", "list of a type"},
         {start + vertex + "property \xff\xff float y\nend_header\n", "0xff0xff"},
         {start + vertex + "element face\nend_header\n", "element NAME COUNT"},
+        {"ply`\nformat ascii 1.0\n" + vertex + "end_header\n", "starts with 'ply`'"},
     };
     for (const auto& [header, needle] : cases)
         EXPECT_NE(declaredSizeProblem(header, header.size() + 100, "ply").find(needle),
