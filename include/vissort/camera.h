@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <string>
 
 #include "vissort/geometry.h"
@@ -53,6 +54,33 @@ struct ViewProjection {
 /// sphere's centre from the direction (0.6, 0.5, 1), far enough that the whole sphere fits in an
 /// image of the given aspect ratio (width / height) with a 5% margin.
 CameraSpec defaultCamera(const Bounds& scene_bounds, double aspect = 1.0);
+
+/// The orientation of every default view: perspective, 45 degrees, up 0,1,0, eye in the
+/// direction (0.6, 0.5, 1) from the target at the origin.
+CameraSpec defaultOrientation();
+
+/// The default view of the geometry itself, framed as mesh viewers frame it: `orientation`'s
+/// view direction (target - eye), up and field of view (by default perspective, 45 degrees
+/// vertically, up 0,1,0, looking from the direction (0.6, 0.5, 1)), and as close as the points
+/// allow: every point inside an image of the given aspect ratio with a 5% margin on each side,
+/// the extent that binds touching the margin on both sides, the other centred. The eye stays at
+/// least 1.1 radii of the bounding sphere from its centre, so an object seen end-on keeps a
+/// usable near plane. Deterministic. No points: the default camera of a unit sphere at the
+/// origin. An unusable orientation (validateCamera) is replaced by the default one.
+CameraSpec framingCamera(std::span<const Vec3> points, double aspect = 1.0,
+                         const CameraSpec& orientation = defaultOrientation());
+CameraSpec framingCamera(PositionsView positions, double aspect = 1.0,
+                         const CameraSpec& orientation = defaultOrientation());
+
+/// The orientation of a view from azimuth and elevation in degrees about the y axis: eye
+/// direction (sin az cos el, sin el, cos az cos el) from the target (azimuth 0 looks along -z,
+/// 90 along -x; elevation 90 looks straight down), up the direction of rising elevation (0,1,0
+/// at elevation 0: never parallel to the view), 45 degrees field of view. Eye at that direction,
+/// target at the origin: move both, or frame it with framingCamera.
+CameraSpec orbitOrientation(double azimuth_degrees, double elevation_degrees);
+
+/// The eight corners of a box: what a dynamic scene frames (the box its motion stays in).
+std::array<Vec3, 8> boxCorners(const Bounds& box);
 
 /// Builds the view and projection for a camera over a scene.
 /// Perspective: near = max(distance to the sphere - r, r * 1e-3) * 0.99; far = infinity.

@@ -31,11 +31,24 @@ public:
     virtual void positionsAt(double t, TrianglePositions& out) const = 0;
 };
 
+/// A camera stored in a mesh file (Collada, glTF, FBX, 3DS, ...): its name there and the view it
+/// gives (orthographic ones keep their direction only: vissort frames the scene along it).
+/// `problem` says in one line why it cannot be used (a zero field of view, up along the view
+/// direction), else it is empty.
+struct StoredCamera {
+    std::string name;
+    CameraSpec camera;
+    std::string problem;
+};
+
 struct Scene {
     std::string name;
     std::vector<SceneObject> objects;
-    TrianglePositions positions; // at t = 0
-    std::optional<CameraSpec> camera;
+    TrianglePositions positions;      // at t = 0
+    std::optional<CameraSpec> camera; // a mesh file's: its first usable stored camera
+    /// A mesh file's own cameras, in file order (`--camera NAME|INDEX` picks one); empty for
+    /// other scenes.
+    std::vector<StoredCamera> cameras;
     /// Key frames for `--path scene` (camera_path.h), times increasing; empty when the scene
     /// has none.
     std::vector<CameraKey> camera_path;
@@ -61,6 +74,20 @@ struct Scene {
 ///                                 each mesh of the file is one object, in file order.
 /// Rejects missing or unreadable files, empty geometry and non-finite coordinates.
 Result<Scene> loadScene(const std::string& specification);
+
+/// The index in scene.cameras of the stored camera `name_or_index` picks: the camera of that
+/// name, else the one of that index (0 is the first). Otherwise a one-line error: the scene
+/// stores no camera, no camera has that name or index (naming the nearest name), or the camera
+/// cannot be used and why.
+Result<std::size_t> findStoredCamera(const Scene& scene, const std::string& name_or_index);
+
+/// The camera that frames a scene without one of its own: framingCamera (camera.h) over its
+/// geometry; for a dynamic scene over the geometry of frames 0 to max(frames, 300) - 1 (frames
+/// kFrameInterval apart, up to 32 of them sampled evenly, fewer when they would hold more than
+/// 4M corners), so that the motion stays in the picture. Deterministic.
+/// `orientation` as in framingCamera.
+CameraSpec framingCameraOf(const Scene& scene, double aspect, int frames = 1,
+                           const CameraSpec& orientation = defaultOrientation());
 
 /// Checks a scene's invariants: finite coordinates, object ranges that tile the triangles in
 /// order, at least one triangle. A one-line message when one does not hold.

@@ -5,6 +5,7 @@
 // ranges with Scene::objectPrimitives()).
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -81,6 +82,10 @@ public:
     void orderFrame(PositionsView positions, const ViewProjection& view, FrameOrder& out);
     /// The same, returning a new FrameOrder (allocates it every frame).
     FrameOrder orderFrame(PositionsView positions, const ViewProjection& view);
+    /// Reports the share of the frame's primitives ordered so far (0 to 1), after each Vis-sort
+    /// iteration, on the thread that orders; for a progress display of a long frame. Multistage
+    /// reports its triangle stage. An empty function stops the reports.
+    void setProgress(std::function<void(double fraction)> report);
 
 private:
     void orderMultistage(PositionsView positions, const ViewProjection& view, FrameOrder& frame);
@@ -108,6 +113,8 @@ private:
     uint32_t triangle_count_;
     OrderLevel level_;
     GeometryOracle& oracle_;
+    std::function<void(double)> progress_;
+    std::size_t progress_base_ = 0, progress_total_ = 0; // what sortFrom's share is out of
     std::vector<uint32_t> previous_order_; // last frame, at level_ (objects for multistage)
     std::vector<uint32_t> previous_triangle_order_; // multistage: last frame's order
     // Reused every frame, so that a steady-state frame without cycles allocates nothing

@@ -22,6 +22,7 @@
 //   weighted     weighted blended OIT (McGuire and Bavoil 2013): one pass, approximate.
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -145,6 +146,10 @@ public:
     /// result) in a strong magenta, nearly opaque, in every method, from the next render on;
     /// empty: none. Ids beyond the scene are ignored. Drawn over colour_cycles' colours.
     void setHighlightedTriangles(std::span<const uint32_t> triangles);
+
+    /// Reports the share of a frame's order done (SceneOrderer::setProgress) while vissort
+    /// orders; other methods order nothing and never call it.
+    void setOrderProgress(std::function<void(double fraction)> report);
 
 private:
     struct Impl;

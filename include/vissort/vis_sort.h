@@ -4,6 +4,7 @@
 // a strict order impossible. Depends on nothing but the standard library.
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -43,6 +44,9 @@ struct VisSortWorkspace {
     // iteration of the same visSort call (src/core/source_cycle.h).
     std::vector<std::vector<uint32_t>> pending_path;
     std::vector<uint8_t> seen; // the precondition check's, in builds with assertions
+    /// Called after each iteration with the primitives output so far and their total, when set:
+    /// what a progress display of a long order reads. Not scratch: visSort leaves it as it is.
+    std::function<void(std::size_t sorted, std::size_t total)> on_iteration;
 };
 
 /// Orders the oracle's primitives front to back.

@@ -17,6 +17,7 @@
 #include "cli/commands.h"
 #include "cli/json_output.h"
 #include "cli/line_plot.h"
+#include "cli/progress.h"
 #include "paper_bench.h"
 #include "support/measurement.h"
 #include "vissort/image.h"
@@ -30,33 +31,6 @@ namespace {
 
 using bench::PaperFrame;
 using bench::PaperPath;
-
-// A bar redrawn in place on a terminal; a plain line a step otherwise (logs, pipes).
-class ProgressBar {
-public:
-    ProgressBar() : terminal_(::isatty(STDERR_FILENO) == 1) {}
-    ~ProgressBar() {
-        if (terminal_ && drawn_)
-            std::cerr << '\n';
-    }
-    void operator()(const std::string& what, int done, int total) {
-        if (!terminal_) {
-            std::cerr << "bench paper: " << done << '/' << total << ' ' << what << std::endl;
-            return;
-        }
-        constexpr int kWidth = 30;
-        const int filled = total > 0 ? done * kWidth / total : kWidth;
-        std::cerr << "\r[" << std::string(std::size_t(filled), '#')
-                  << std::string(std::size_t(kWidth - filled), '.') << "] " << done << '/' << total
-                  << ' ' << std::left << std::setw(40) << what.substr(0, 40) << std::right
-                  << std::flush;
-        drawn_ = true;
-    }
-
-private:
-    bool terminal_;
-    bool drawn_ = false;
-};
 
 using bench::PaperMetric;
 
@@ -340,8 +314,12 @@ int runPaperBench(const BenchOptions& options) {
               << "  OpenGL: " << gl_line << "\n  medians over the coherent frames (all but the "
               << "first); cpu oracle on one thread\n";
     Result<bench::PaperBenchResult> result = [&] {
-        ProgressBar progress;
-        return bench::runPaperBench(settings, std::ref(progress));
+        std::optional<Progress> progress;
+        return bench::runPaperBench(settings, [&](const std::string& what, int done, int total) {
+            if (!progress)
+                progress.emplace("bench paper", uint64_t(total), "step");
+            progress->update(done, what);
+        });
     }();
     if (!result)
         return fail(kExitInput, result.error);

@@ -1,6 +1,7 @@
 #include <charconv>
 #include <cmath>
 #include <iostream>
+#include <numbers>
 
 #include "cli/cli_common.h"
 #include "cli/text_output.h"
@@ -81,6 +82,17 @@ void addViewOptions(CLI::App& command, ViewOptions& options, bool with_frames) {
     command.add_option("--fov", options.fov, "Vertical field of view in degrees (default 45)");
     command.add_option("--ortho-dir", options.ortho_dir,
                        "Orthographic view along X,Y,Z framing the scene's bounding sphere");
+    command.add_option("--camera", options.camera,
+                       "A camera the mesh file stores, by name or index (default: its first; "
+                       "'vissort info SCENE' lists them)");
+    command.add_option("--azimuth", options.azimuth,
+                       "Degrees about the vertical (y) axis the eye sits at around the scene's "
+                       "centre: 0 looks along -z, 90 along -x (default 31, the default view's)");
+    command.add_option("--elevation", options.elevation,
+                       "Degrees above the horizontal plane, -90 to 90 (default 24)");
+    command.add_option("--distance", options.distance,
+                       "Eye distance from the scene's centre (default: framed, as close as the "
+                       "geometry fits)");
     command.add_option("--size", options.size, "Image size WxH")->capture_default_str();
     if (!with_frames)
         return;
@@ -105,13 +117,27 @@ std::string resolveView(const ViewOptions& options, const Scene& scene, Resolved
 
     const bool perspective_given =
         !options.eye.empty() || !options.target.empty() || !options.up.empty() || options.fov;
+    const bool orbit_given = options.azimuth || options.elevation || options.distance;
+    if (orbit_given) {
+        if (!options.eye.empty() || !options.target.empty() || !options.up.empty() ||
+            !options.ortho_dir.empty() || !options.camera.empty())
+            return "--azimuth, --elevation and --distance place the eye around the scene's centre: "
+                   "they cannot be combined with --eye, --target, --up, --ortho-dir or --camera";
+        if (options.azimuth && !std::isfinite(*options.azimuth))
+            return "--azimuth must be a finite number of degrees";
+        if (options.elevation && !(std::abs(*options.elevation) <= 90))
+            return "--elevation must be between -90 and 90 degrees";
+        if (options.distance && !(*options.distance > 0 && *options.distance < 1e30))
+            return "--distance must be positive and below 1e30";
+    }
     if (view.path == CameraPath::scene) {
         if (scene.camera_path.empty())
             return "--path scene: the scene has no camera path (a JSON scene's \"camera_path\": "
                    "docs/scene-format.md)";
-        if (perspective_given || !options.ortho_dir.empty())
+        if (perspective_given || orbit_given || !options.ortho_dir.empty() ||
+            !options.camera.empty())
             return "--path scene takes every frame's camera from the scene: it cannot be combined "
-                   "with --eye, --target, --up, --fov or --ortho-dir";
+                   "with the camera options (--eye, --azimuth, --ortho-dir, --camera, ...)";
         // Between two valid key frames the mix can still be unusable (eye on target, up along
         // the view): say which frame.
         for (int frame = 0; frame < view.frames; ++frame) {
@@ -124,6 +150,34 @@ std::string resolveView(const ViewOptions& options, const Scene& scene, Resolved
             }
         }
     }
+    // The scene's own camera: the one --camera picks, else its default one (a file's first).
+    std::optional<CameraSpec> scene_camera = scene.camera;
+    std::string scene_camera_source = "the scene's camera";
+    const auto fileCamera = [&](std::size_t index) {
+        return "the file's camera " + std::to_string(index) + " '" + scene.cameras[index].name +
+               "'";
+    };
+    for (std::size_t i = 0; i < scene.cameras.size(); ++i)
+        if (scene.cameras[i].problem.empty()) { // the default: the first usable one
+            scene_camera_source = fileCamera(i);
+            break;
+        }
+    if (!options.camera.empty()) {
+        if (!options.ortho_dir.empty())
+            return "--camera cannot be combined with --ortho-dir";
+        Result<std::size_t> picked = findStoredCamera(scene, options.camera);
+        if (!picked)
+            return "--camera: " + picked.error;
+        scene_camera = scene.cameras[*picked.value].camera;
+        scene_camera_source = fileCamera(*picked.value);
+        if (perspective_given && scene_camera->projection == Projection::orthographic)
+            return "--camera " + options.camera +
+                   " is orthographic: --eye, --target, --up and --fov do not apply to it";
+    }
+    if (view.path == CameraPath::scene)
+        view.camera_source = "the scene's camera path";
+    else if (!options.ortho_dir.empty())
+        view.camera_source = "--ortho-dir";
     if (!options.ortho_dir.empty()) {
         if (perspective_given)
             return "--ortho-dir cannot be combined with --eye, --target, --up or --fov";
@@ -134,9 +188,38 @@ std::string resolveView(const ViewOptions& options, const Scene& scene, Resolved
     } else {
         const Bounds bounds = scene.positions.bounds();
         const double aspect = double(view.width) / view.height;
-        view.camera = scene.camera.value_or(defaultCamera(bounds, aspect));
-        if (perspective_given && view.camera.projection == Projection::orthographic)
-            view.camera = defaultCamera(bounds, aspect);
+        // Without a camera of the scene's own, the geometry framed as mesh viewers frame it; an
+        // eye given alone still looks at the scene's centre, as documented.
+        const bool framed =
+            !scene_camera || orbit_given ||
+            (perspective_given && scene_camera->projection == Projection::orthographic);
+        CameraSpec orientation = defaultOrientation();
+        if (orbit_given) {
+            // Unset angles stay the default view's (0.6, 0.5, 1): azimuth 31, elevation 24.
+            const Vec3 d = normalized(orientation.eye);
+            orientation = orbitOrientation(
+                options.azimuth.value_or(std::atan2(d.x, d.z) * 180 / std::numbers::pi),
+                options.elevation.value_or(std::asin(d.y) * 180 / std::numbers::pi));
+        }
+        // A field of view for a framed view is framed with, so the framing stays tight.
+        if (options.fov && options.eye.empty() && options.target.empty())
+            orientation.fov_degrees = *options.fov;
+        view.camera =
+            framed ? framingCameraOf(scene, aspect, view.frames, orientation) : *scene_camera;
+        if (view.path != CameraPath::scene)
+            view.camera_source = orbit_given
+                                     ? (options.distance ? "--azimuth/--elevation/--distance"
+                                                         : "--azimuth/--elevation, framed")
+                                 : framed ? "framed to the geometry"
+                                          : scene_camera_source;
+        if (perspective_given && !orbit_given)
+            view.camera_source += ", changed by the options";
+        if (framed && !options.eye.empty())
+            view.camera.target = bounds.centre();
+        if (options.distance) {
+            view.camera.target = bounds.centre();
+            view.camera.eye = bounds.centre() + normalized(orientation.eye) * *options.distance;
+        }
         if (!options.eye.empty())
             if (auto e = parseVec3("--eye", options.eye, view.camera.eye); !e.empty())
                 return e;
@@ -153,11 +236,22 @@ std::string resolveView(const ViewOptions& options, const Scene& scene, Resolved
         // Name where the bad camera came from: the user's options, or the scene file.
         if (!options.ortho_dir.empty())
             return "--ortho-dir: " + e;
+        if (orbit_given)
+            return "--azimuth/--elevation/--distance/--fov: " + e;
         if (perspective_given)
             return "--eye/--target/--up/--fov: " + e;
+        if (!options.camera.empty())
+            return "--camera " + options.camera + ": " + e;
         return "the scene's camera: " + e;
     }
     return {};
+}
+
+std::string cameraLine(const ResolvedView& view) {
+    std::string line = "camera: " + describeCamera(view.camera) + " (" + view.camera_source + ")";
+    if (view.frames > 1 && view.path != CameraPath::fixed)
+        line += std::string("; --path ") + cameraPathName(view.path) + " moves it every frame";
+    return line;
 }
 
 std::optional<Scene> loadSceneOrReport(const std::string& specification) {

@@ -27,15 +27,16 @@ int fail(int code, const std::string& message);
 int failWithoutGl(const std::string& what);
 
 struct ViewOptions {
-    std::string eye, target, up, ortho_dir, size = "1024x1024", path = "static";
-    std::optional<double> fov;
+    std::string eye, target, up, ortho_dir, camera, size = "1024x1024", path = "static";
+    std::optional<double> fov, azimuth, elevation, distance;
     int frames = 1;
 };
 
 /// Parses --size's WxH; empty on success, else a one-line message naming the option.
 std::string parseSize(const std::string& text, uint32_t& width, uint32_t& height);
 
-/// Adds --eye --target --up --fov --ortho-dir --size, and with_frames --frames --path (a command
+/// Adds --eye --target --up --fov --ortho-dir --camera --azimuth --elevation --distance --size,
+/// and with_frames --frames --path (a command
 /// about one view, like info, takes no frames).
 void addViewOptions(CLI::App& command, ViewOptions& options, bool with_frames = true);
 
@@ -45,7 +46,13 @@ struct ResolvedView {
     uint32_t width = 0, height = 0;
     CameraPath path = CameraPath::fixed;
     int frames = 1;
+    /// Where the camera came from, for people: "framed to the geometry", "the scene's camera",
+    /// "the file's camera 1 'Camera.002'", "the options".
+    std::string camera_source;
 };
+
+/// "camera: perspective from ... (framed to the geometry)", plus what --path does to it.
+std::string cameraLine(const ResolvedView& view);
 
 /// Empty on success, else a one-line message naming the bad option.
 std::string resolveView(const ViewOptions& options, const Scene& scene, ResolvedView& view);

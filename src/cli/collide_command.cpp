@@ -7,8 +7,11 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
+#include "cli/csv_output.h"
 #include "cli/json_output.h"
 #include "cli/obj_output.h"
+#include "cli/progress.h"
+#include "cli/text_output.h"
 #include "support/measurement.h"
 #include "vissort/collision.h"
 #include "vissort/frame_driver.h"
@@ -71,6 +74,9 @@ CLI::App* addCollideCommand(CLI::App& app, CollideOptions& options) {
         ->check(CLI::Range(0, 256))
         ->capture_default_str();
     addJsonOptions(*command, options.json, "Write per-frame statistics as JSON");
+    addCsvOption(*command, options.csv,
+                 "frame, time_s, intersecting, object_pairs, triangle_pairs, colliding_objects, "
+                 "directions, queries, update_ms, cull_ms, exact_ms, ms");
     command->add_option("--pairs-out", options.pairs_path,
                         "Write 'FRAME A B' per intersecting pair (triangle ids, A < B, sorted)");
     command->add_option("--dump-primitives", options.dump_path,
@@ -109,9 +115,21 @@ int runCollide(const CollideOptions& options) {
     nlohmann::json frames = nlohmann::json::array();
     std::vector<double> total_ms;
     uint64_t pair_sum = 0;
+    CsvTable csv({"frame", "time_s", "intersecting", "object_pairs", "triangle_pairs",
+                  "colliding_objects", "directions", "queries", "update_ms", "cull_ms", "exact_ms",
+                  "ms"});
+    std::cout << options.scene << ": " << counted(scene->objects.size(), "object") << ", "
+              << counted(scene->triangleCount(), "triangle") << "; method " << options.method
+              << ", " << counted(options.frames, "frame") << '\n';
+    Progress progress("collide", uint64_t(options.frames), "frame");
     for (int f = 0; f < options.frames; ++f) {
         driver.seek(f);
         detector.collide(driver.positions(), result);
+        progress.clear();
+        const CollisionStats& s = result.stats;
+        csv.addRow({double(f), driver.time(), double(result.pairs.size()), double(s.object_pairs),
+                    double(s.triangle_pairs), double(s.colliding_objects), double(s.directions),
+                    double(s.queries), s.update_ms, s.cull_ms, s.exact_ms, s.total_ms});
         total_ms.push_back(result.stats.total_ms);
         pair_sum += result.pairs.size();
         if (!options.json.path.empty())
@@ -120,25 +138,29 @@ int runCollide(const CollideOptions& options) {
             for (const TrianglePair& p : result.pairs)
                 pairs_out << f << ' ' << p.first << ' ' << p.second << '\n';
         if (options.frames > 1)
-            std::cout << "frame " << f << ": " << result.pairs.size() << " intersecting pairs, "
-                      << result.stats.triangle_pairs << " candidate triangle pairs, "
-                      << result.stats.total_ms << " ms" << std::endl;
+            std::cout << "frame " << f << ": " << counted(result.pairs.size(), "intersecting pair")
+                      << ", " << counted(result.stats.triangle_pairs, "candidate triangle pair")
+                      << ", " << milliseconds(result.stats.total_ms) << '\n';
+        progress.update(f + 1);
     }
+    progress.clear();
     if (pairs_out.is_open() && !pairs_out.flush())
         return fail(kExitFailure, "cannot write " + options.pairs_path);
 
     double mean = 0;
     for (double ms : total_ms)
         mean += ms / double(total_ms.size());
-    std::cout << options.scene << ": " << scene->objects.size() << " objects, "
-              << scene->triangleCount() << " triangles; method " << options.method << "\n"
-              << options.frames << (options.frames == 1 ? " frame" : " frames") << ": mean " << mean
-              << " ms, median " << bench::median(total_ms) << " ms per frame, "
-              << double(pair_sum) / options.frames << " intersecting pairs per frame\n"
-              << "last frame: " << result.stats.object_pairs << " candidate object pairs, "
-              << result.stats.triangle_pairs << " candidate triangle pairs, " << result.pairs.size()
-              << " intersecting\n";
+    std::cout << counted(options.frames, "frame") << ": mean " << milliseconds(mean) << ", median "
+              << milliseconds(bench::median(total_ms)) << " a frame, "
+              << double(pair_sum) / options.frames << " intersecting pairs a frame\n"
+              << (options.frames > 1 ? "last frame: " : "")
+              << counted(result.stats.object_pairs, "candidate object pair") << ", "
+              << counted(result.stats.triangle_pairs, "candidate triangle pair") << ", "
+              << result.pairs.size() << " intersecting\n";
 
+    if (!options.csv.empty())
+        if (const int code = csv.write(options.csv); code != kExitOk)
+            return code;
     if (!options.json.path.empty()) {
         nlohmann::json document = {{"method", options.method},
                                    {"scene", options.scene},

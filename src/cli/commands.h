@@ -19,6 +19,7 @@ struct OrderOptions {
     std::string oracle = "cpu";
     bool back_to_front = false;
     JsonOutput json;
+    std::string csv;
     std::string dump_path;
 };
 CLI::App* addOrderCommand(CLI::App& app, OrderOptions& options);
@@ -28,7 +29,8 @@ struct InfoOptions {
     std::string scene;
     ViewOptions view;
     bool gl = false;
-    JsonOutput json; // the facts as JSON, besides the printed ones
+    bool all_objects = false; // list every object, not the first kListedObjects
+    JsonOutput json;          // the facts as JSON, besides the printed ones
 };
 CLI::App* addInfoCommand(CLI::App& app, InfoOptions& options);
 int runInfo(const InfoOptions& options);
@@ -63,6 +65,7 @@ struct CollideOptions {
     double min_cull = 0.25;
     int threads = 0;
     JsonOutput json;
+    std::string csv;
     std::string pairs_path;
     std::string dump_path;
 };
@@ -100,6 +103,7 @@ struct RenderOptions {
     RendererOptions renderer;
     std::string output;
     JsonOutput json;
+    std::string csv;
     std::string reference;
     std::string error_map;
     bool highlight_collisions = false;

@@ -4,6 +4,7 @@
 
 #include "cli/commands.h"
 #include "cli/json_output.h"
+#include "cli/text_output.h"
 #include "vissort/depth_complexity.h"
 #if VISSORT_WITH_GL
 #include "vissort/gl_context.h"
@@ -19,10 +20,13 @@ CLI::App* addInfoCommand(CLI::App& app, InfoOptions& options) {
     command->add_flag("--gl", options.gl,
                       "Print the OpenGL context's EGL platform, vendor, renderer and version "
                       "(VISSORT_GL_PLATFORM=auto|device|surfaceless picks the platform)");
+    command->add_flag("--all-objects", options.all_objects,
+                      "List every object (default: the first 10; --json always has them all)");
     addViewOptions(*command, options.view, false);
     addJsonOptions(*command, options.json,
                    "Write the facts as JSON: objects, transparent_objects, triangles, "
-                   "transparent_triangles, bounds, depth_complexity (docs/cli.md)");
+                   "transparent_triangles, bounds, object_list, cameras, camera, "
+                   "depth_complexity (docs/cli.md)");
     return command;
 }
 
@@ -43,6 +47,29 @@ int printGlInfo() {
               << (info.device.empty() ? "" : " (" + info.device + ")") << '\n';
     return kExitOk;
 #endif
+}
+
+nlohmann::json objectList(const Scene& scene) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const SceneObject& o : scene.objects)
+        list.push_back({{"name", o.name},
+                        {"first_triangle", o.first_triangle},
+                        {"triangles", o.triangle_count},
+                        {"transparent", o.transparent},
+                        {"colour", {o.colour.r, o.colour.g, o.colour.b, o.colour.a}}});
+    return list;
+}
+
+nlohmann::json storedCameras(const Scene& scene) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const StoredCamera& c : scene.cameras) {
+        nlohmann::json record = cameraJson(c.camera);
+        record["name"] = c.name;
+        if (!c.problem.empty())
+            record["problem"] = c.problem;
+        list.push_back(std::move(record));
+    }
+    return list;
 }
 
 } // namespace
@@ -73,13 +100,32 @@ int runInfo(const InfoOptions& options) {
               << "bounds: [" << bounds.min.x << ", " << bounds.min.y << ", " << bounds.min.z
               << "] to [" << bounds.max.x << ", " << bounds.max.y << ", " << bounds.max.z
               << "], radius " << bounds.radius() << '\n';
-    for (std::size_t i = 0; i < std::min<std::size_t>(scene->objects.size(), 10); ++i) {
+    constexpr std::size_t kListedObjects = 10;
+    const std::size_t listed = options.all_objects
+                                   ? scene->objects.size()
+                                   : std::min(scene->objects.size(), kListedObjects);
+    for (std::size_t i = 0; i < listed; ++i) {
         const SceneObject& o = scene->objects[i];
-        std::cout << "  object " << i << " '" << o.name << "': " << o.triangle_count << " triangles"
+        std::cout << "  object " << i << " '" << o.name
+                  << "': " << counted(o.triangle_count, "triangle")
                   << (o.transparent ? ", transparent" : "") << '\n';
     }
-    if (scene->objects.size() > 10)
-        std::cout << "  ...\n";
+    if (listed < scene->objects.size())
+        std::cout << "  ... and " << scene->objects.size() - listed
+                  << " more (--all-objects lists every one; --json has them all)\n";
+    if (!scene->cameras.empty()) {
+        std::cout << counted(scene->cameras.size(), "camera")
+                  << " in the file (--camera NAME|INDEX picks one; the first usable is the "
+                     "default):\n";
+        for (std::size_t i = 0; i < scene->cameras.size(); ++i) {
+            const StoredCamera& c = scene->cameras[i];
+            std::cout << "  camera " << i << " '" << c.name << "': "
+                      << (c.problem.empty() ? describeCamera(c.camera)
+                                            : "cannot be used: " + c.problem)
+                      << '\n';
+        }
+    }
+    std::cout << cameraLine(view) << '\n';
 
     const DepthComplexity depth =
         estimateDepthComplexity(scene->positions, view.camera, bounds, view.width, view.height);
@@ -103,6 +149,9 @@ int runInfo(const InfoOptions& options) {
         {"dynamic", scene->isDynamic()},
         {"bounds",
          {{"min", point(bounds.min)}, {"max", point(bounds.max)}, {"radius", bounds.radius()}}},
+        {"object_list", objectList(*scene)},
+        {"cameras", storedCameras(*scene)},
+        {"camera", cameraJson(view.camera)},
         {"depth_complexity",
          {{"max", depth.max},
           {"mean", depth.mean},

@@ -51,15 +51,34 @@ void writeIds(std::ostream& out, const JsonIdList& list, bool pretty, std::size_
 
 } // namespace
 
+nlohmann::json cameraJson(const CameraSpec& camera) {
+    const auto point = [](const Vec3& p) { return nlohmann::json::array({p.x, p.y, p.z}); };
+    if (camera.projection == Projection::orthographic)
+        return {{"projection", "orthographic"}, {"direction", point(camera.ortho_direction)}};
+    return {{"projection", "perspective"},
+            {"eye", point(camera.eye)},
+            {"target", point(camera.target)},
+            {"up", point(camera.up)},
+            {"fov_degrees", camera.fov_degrees}};
+}
+
 void addJsonOptions(CLI::App& command, JsonOutput& output, const std::string& what) {
     command.add_option("--json", output.path, what + " (FILE, or - for standard output)");
     command.add_flag("--pretty", output.pretty, "Indent the JSON (default: one compact line)");
 }
 
 void reserveStandardOutputFor(const JsonOutput& output) {
-    if (output.path != "-" || g_standard_output != nullptr)
+    reserveStandardOutputFor(output.path);
+}
+
+void reserveStandardOutputFor(const std::string& path) {
+    if (path != "-" || g_standard_output != nullptr)
         return;
     g_standard_output = std::cout.rdbuf(std::cerr.rdbuf());
+}
+
+std::streambuf* standardOutputBuffer() {
+    return g_standard_output ? g_standard_output : std::cout.rdbuf();
 }
 
 int writeJsonFile(const JsonOutput& output, const nlohmann::json& document) {
@@ -76,9 +95,7 @@ int writeJsonFile(const JsonOutput& output, const nlohmann::json& document,
     std::ofstream file;
     if (!to_standard_output)
         file.open(output.path);
-    std::ostream out(to_standard_output
-                         ? (g_standard_output ? g_standard_output : std::cout.rdbuf())
-                         : file.rdbuf());
+    std::ostream out(to_standard_output ? standardOutputBuffer() : file.rdbuf());
     const std::string text = output.pretty ? document.dump(1) : document.dump();
     // Where each placeholder is, as dumped (the mark escaped, in quotes), in the text's order.
     struct Found {

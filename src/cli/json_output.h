@@ -8,6 +8,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "vissort/camera.h"
+
 namespace vissort::cli {
 
 /// Where a command's JSON goes: a file, or standard output for "-"; compact (one line) unless
@@ -17,12 +19,21 @@ struct JsonOutput {
     bool pretty = false;
 };
 
+/// A camera as JSON: {"projection": "perspective", "eye": [x, y, z], "target": [...], "up": [...],
+/// "fov_degrees": f} or {"projection": "orthographic", "direction": [x, y, z]}.
+nlohmann::json cameraJson(const CameraSpec& camera);
+
 /// Adds --json PATH (its help: what) and --pretty.
 void addJsonOptions(CLI::App& command, JsonOutput& output, const std::string& what);
 
 /// With `--json -`: the document goes to standard output, and from this call on everything the
 /// command prints for people goes to standard error, so that a pipe receives the JSON alone.
 void reserveStandardOutputFor(const JsonOutput& output);
+/// The same for any output path ("-": standard output), such as --csv's.
+void reserveStandardOutputFor(const std::string& path);
+
+/// Where "-" writes: standard output, whichever stream the people's text was moved to.
+std::streambuf* standardOutputBuffer();
 
 /// Writes document to output's path ("-": standard output), ending with a newline. Returns
 /// kExitOk, or prints "cannot write PATH" and returns kExitFailure.

@@ -5,6 +5,8 @@
 #include "cli/command_line_errors.h"
 #include "cli/commands.h"
 #include "cli/environment.h"
+#include "cli/json_output.h"
+#include "cli/progress.h"
 
 int main(int argc, char** argv) {
     using namespace vissort::cli;
@@ -26,6 +28,9 @@ int main(int argc, char** argv) {
     CLI::App* collide_command = addCollideCommand(app, collide);
     ViewerOptions view;
     CLI::App* view_command = addViewCommand(app, view);
+    for (CLI::App* command :
+         {order_command, info_command, bench_command, render_command, collide_command})
+        addQuietOption(*command);
     // After the commands: each would inherit it, and it speaks of them all.
     app.footer("Run 'vissort COMMAND --help' for a command's options. docs/cli.md documents\n"
                "every command, option, output and exit code; README.md and docs/ explain the\n"
@@ -58,9 +63,19 @@ int main(int argc, char** argv) {
         // One line, not CLI11's multi-line report.
         return fail(kExitUsage, explainParseError(app, e));
     }
+    // One document on standard output: the people's text then goes to standard error.
+    for (const auto& [json, csv] : {std::pair{&order.json, &order.csv},
+                                    {&render.json, &render.csv},
+                                    {&collide.json, &collide.csv}})
+        if (json->path == "-" && *csv == "-")
+            return fail(kExitUsage, "--json - and --csv - both want standard output: send one of "
+                                    "them to a file");
     for (const JsonOutput* json :
          {&order.json, &info.json, &bench.json, &render.json, &collide.json})
         reserveStandardOutputFor(*json);
+    for (const std::string* csv : {&order.csv, &render.csv, &collide.csv})
+        reserveStandardOutputFor(*csv);
+    applyQuiet();
     if (vissort::Status environment = applyEnvironment(); !environment)
         return fail(kExitFailure, environment.error);
     try {

@@ -5,9 +5,11 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
+#include "cli/csv_output.h"
 #include "cli/environment.h"
 #include "cli/json_output.h"
 #include "cli/obj_output.h"
+#include "cli/progress.h"
 #include "cli/text_output.h"
 #include "vissort/frame_driver.h"
 #include "vissort/oracles.h"
@@ -17,8 +19,10 @@ namespace vissort::cli {
 namespace {
 
 // A frame's JSON record; its order is lists' placeholder `order_list` (writeJsonFile).
-nlohmann::json frameRecord(const FrameOrder& frame, std::size_t order_list) {
+nlohmann::json frameRecord(const FrameOrder& frame, std::size_t order_list,
+                           const CameraSpec& camera) {
     return {{"order", jsonIdListPlaceholder(order_list)},
+            {"camera", cameraJson(camera)},
             {"level", orderLevelName(frame.level)},
             {"cycles", frame.cycles},
             {"stats",
@@ -80,6 +84,9 @@ CLI::App* addOrderCommand(CLI::App& app, OrderOptions& options) {
     command->add_flag("--back-to-front", options.back_to_front,
                       "Output back to front (default front to back)");
     addJsonOptions(*command, options.json, "Write the order and statistics as JSON");
+    addCsvOption(*command, options.csv,
+                 "frame, time_s, primitives, cycles, iterations, stuck_iterations, queries, "
+                 "draws, ms");
     command->add_option("--dump-primitives", options.dump_path,
                         "Write the last frame's primitives as OBJ, one group per id");
     return command;
@@ -119,25 +126,38 @@ int runOrder(const OrderOptions& options) {
     std::cout << options.scene << ": " << counted(object_count, "object") << ", "
               << counted(scene->triangleCount(), "triangle") << "; " << orderLevelName(level)
               << " level, " << oracleName(oracle_kind) << " oracle, " << view.width << 'x'
-              << view.height << ", " << counted(view.frames, "frame") << '\n';
+              << view.height << ", " << counted(view.frames, "frame") << '\n'
+              << cameraLine(view) << '\n';
     FrameDriver driver(*scene, view.camera, view.path, view.width, view.height);
     nlohmann::json frames = nlohmann::json::array();
     std::vector<std::vector<uint32_t>> frame_orders; // for --json, when there are several frames
     FrameOrder last;
     double total_ms = 0;
+    CsvTable csv({"frame", "time_s", "primitives", "cycles", "iterations", "stuck_iterations",
+                  "queries", "draws", "ms"});
+    Progress progress("order", uint64_t(view.frames), "frame");
+    int frame = 0;
+    orderer.setProgress([&](double share) { progress.update(frame + share); });
     for (int f = 0; f < view.frames; ++f) {
+        frame = f;
         driver.seek(f);
         orderer.orderFrame(driver.positions(), driver.view(), last);
+        progress.update(f + 1);
         total_ms += last.milliseconds;
+        csv.addRow({double(f), driver.time(), double(last.order.size()), double(last.cycles.size()),
+                    double(last.stats.iterations), double(last.stats.stuck_iterations),
+                    double(last.stats.queries), double(last.stats.draws), last.milliseconds});
         if (view.frames > 1) {
+            progress.clear();
             printFrame(f, last);
             if (!options.json.path.empty()) {
-                frames.push_back(frameRecord(last, frame_orders.size()));
+                frames.push_back(frameRecord(last, frame_orders.size(), driver.camera()));
                 frame_orders.push_back(last.order);
             }
         }
     }
 
+    progress.clear();
     const std::string unit = level == OrderLevel::object ? "object" : "triangle";
     std::cout << "order (" << (options.back_to_front ? "back to front" : "front to back") << ") of "
               << counted(last.order.size(), unit) << ':';
@@ -158,7 +178,7 @@ int runOrder(const OrderOptions& options) {
         std::vector<JsonIdList> lists;
         for (const std::vector<uint32_t>& order : frame_orders)
             lists.push_back({order, options.back_to_front});
-        nlohmann::json document = frameRecord(last, lists.size());
+        nlohmann::json document = frameRecord(last, lists.size(), driver.camera());
         lists.push_back({last.order, options.back_to_front});
         document["scene"] = options.scene;
         document["oracle"] = oracleName(oracle_kind);
@@ -169,6 +189,9 @@ int runOrder(const OrderOptions& options) {
         if (const int code = writeJsonFile(options.json, document, lists); code != kExitOk)
             return code;
     }
+    if (!options.csv.empty())
+        if (const int code = csv.write(options.csv); code != kExitOk)
+            return code;
     if (!options.dump_path.empty()) {
         const auto primitives = primitivesOf(*scene, level);
         if (!writePrimitivesObj(options.dump_path,

@@ -13,8 +13,10 @@
 
 #include "cli/commands.h"
 #include "cli/comparison_strip.h"
+#include "cli/csv_output.h"
 #include "cli/environment.h"
 #include "cli/json_output.h"
+#include "cli/progress.h"
 #include "cli/text_output.h"
 #include "vissort/collision.h"
 #include "vissort/frame_driver.h"
@@ -139,6 +141,9 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
                      "frame_%04d.png (a pattern with one frame names frame 0)")
         ->required(kWithGl);
     addJsonOptions(*command, options.json, "Write the statistics (and error) as JSON");
+    addCsvOption(*command, options.csv,
+                 "frame, time_s, ms, order_ms, render_ms, passes, fragments, groups, "
+                 "repaired_pixels, and with --reference max_abs, rmse, pixels_over_one");
     command->add_option("--reference", options.reference,
                         "Also render this method and print RMSE, PSNR and the largest channel "
                         "error against it");
@@ -178,6 +183,9 @@ int runRender(const RenderOptions& options) {
     }
     if (!options.error_map.empty() && options.reference.empty())
         return fail(kExitUsage, "--error-map needs --reference METHOD");
+    if (all_methods && !options.csv.empty())
+        return fail(kExitUsage, "--csv writes one method's frames: --method all writes its "
+                                "comparison with --json");
     for (const std::string* image : {&options.output, &options.error_map})
         if (!image->empty())
             if (const Result<ImageFormat> format = imageFormatOf(*image); !format)
@@ -221,7 +229,17 @@ int runRender(const RenderOptions& options) {
     FrameDriver driver(*scene, view.camera, view.path, view.width, view.height);
     nlohmann::json frames = nlohmann::json::array();
     std::vector<double> total_ms;
+    std::vector<std::string> columns = {"frame",     "time_s",    "ms",
+                                        "order_ms",  "render_ms", "passes",
+                                        "fragments", "groups",    "repaired_pixels"};
+    if (reference)
+        columns.insert(columns.end(), {"max_abs", "rmse", "pixels_over_one"});
+    CsvTable csv(columns);
+    Progress progress("render", uint64_t(view.frames), "frame");
+    int frame = 0;
+    renderer.setOrderProgress([&](double share) { progress.update(frame + share); });
     for (int f = 0; f < view.frames; ++f) {
+        frame = f;
         driver.seek(f);
         const PositionsView positions = driver.positions();
         const ViewProjection& vp = driver.view();
@@ -242,6 +260,7 @@ int runRender(const RenderOptions& options) {
         if (Status error = writeImage(path, view.width, view.height, pixels); !error)
             return fail(kExitFailure, error.error);
         nlohmann::json record = statsJson(settings.method, stats);
+        progress.clear();
         std::cout << path << ": " << milliseconds(stats.total_ms) << " (order "
                   << milliseconds(stats.order_ms) << ", render " << milliseconds(stats.render_ms)
                   << "), " << counted(stats.passes, "pass", "passes");
@@ -257,6 +276,15 @@ int runRender(const RenderOptions& options) {
             record["colliding_triangles"] = highlighted;
         }
         std::cout << '\n';
+        std::vector<double> row = {double(f),
+                                   driver.time(),
+                                   stats.total_ms,
+                                   stats.order_ms,
+                                   stats.render_ms,
+                                   double(stats.passes),
+                                   double(stats.fragments),
+                                   double(stats.groups),
+                                   double(stats.repaired_pixels)};
         if (reference) {
             RenderStats reference_stats;
             const std::vector<uint8_t> reference_pixels =
@@ -275,15 +303,24 @@ int runRender(const RenderOptions& options) {
                       << error.psnr << " dB, max abs " << error.max_abs << "/255, "
                       << counted(error.pixels_over_one, "pixel") << " off by more than 1\n";
             record["error"] = errorJson(error, options.reference);
+            row.insert(row.end(),
+                       {double(error.max_abs), error.rmse, double(error.pixels_over_one)});
         }
+        csv.addRow(row);
+        progress.update(f + 1);
+        record["camera"] = cameraJson(driver.camera());
         frames.push_back(std::move(record));
     }
+    progress.clear();
     if (view.frames > 1) {
         std::nth_element(total_ms.begin(), total_ms.begin() + total_ms.size() / 2, total_ms.end());
         std::cout << counted(view.frames, "frame") << " written, " << framePath(options.output, 0)
                   << " to " << framePath(options.output, view.frames - 1) << ": median "
                   << milliseconds(total_ms[total_ms.size() / 2]) << " a frame\n";
     }
+    if (!options.csv.empty())
+        if (const int code = csv.write(options.csv); code != kExitOk)
+            return code;
     if (!options.json.path.empty()) {
         nlohmann::json document = frames.back();
         document["scene"] = options.scene;

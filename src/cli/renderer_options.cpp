@@ -60,7 +60,8 @@ void printRenderHeader(const std::string& specification, const Scene& scene,
               << transparent << " transparent), " << counted(scene.triangleCount(), "triangle")
               << "; " << blendMethodName(settings.method) << ", " << orderLevelName(settings.level)
               << " level, " << view.width << 'x' << view.height << ", "
-              << counted(view.frames, "frame") << '\n';
+              << counted(view.frames, "frame") << '\n'
+              << cameraLine(view) << '\n';
     if (transparent == 0) // a hint, not a problem: the picture is right
         std::cout << "note: no transparent objects, so every method draws the same opaque "
                      "picture; --all-transparent [--alpha A] makes every object transparent\n";

@@ -40,6 +40,7 @@ public:
           behind_(workspace.behind), in_cycle_(workspace.in_cycle), workspace_(workspace),
           result_(result) {
         unsorted_.assign(initial_order.begin(), initial_order.end());
+        total_ = unsorted_.size();
         in_monotone_run_.assign(unsorted_.size(), 0);
         // The cycle search's per-primitive arrays are filled when a cycle is first met (a large
         // input without cycles then never holds them): emptied here, so that they are filled
@@ -62,6 +63,8 @@ public:
                 ++result_.stats.stuck_iterations;
                 outputSourceCycles();
             }
+            if (workspace_.on_iteration)
+                workspace_.on_iteration(result_.order.size(), total_);
         }
     }
 
@@ -181,6 +184,7 @@ private:
     std::vector<uint8_t>& in_cycle_; // per primitive, zero between cycles
     VisSortWorkspace& workspace_;
     VisibilityOrder& result_;
+    std::size_t total_ = 0; // primitives to order, for on_iteration
 };
 
 } // namespace

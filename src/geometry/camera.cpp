@@ -36,6 +36,11 @@ bool isFinite(const Vec3& v) {
            std::abs(v.z) <= kMaxCoordinate;
 }
 
+// The default view direction, from the target towards the eye.
+glm::dvec3 defaultViewDirection() {
+    return glm::normalize(glm::dvec3(0.6, 0.5, 1.0));
+}
+
 // A sphere of radius 0 (one point) still gets a usable frame.
 double framingRadius(const Bounds& b) {
     return b.radius() > 0 ? b.radius() : 1.0;
@@ -76,10 +81,116 @@ CameraSpec defaultCamera(const Bounds& scene_bounds, double aspect) {
     const double half_vertical = glm::radians(camera.fov_degrees) / 2;
     const double half_horizontal = std::atan(std::tan(half_vertical) * (aspect > 0 ? aspect : 1.0));
     const double distance = r / std::sin(std::min(half_vertical, half_horizontal)) * 1.05;
-    camera.eye = fromGlm(centre + glm::normalize(glm::dvec3(0.6, 0.5, 1.0)) * distance);
+    camera.eye = fromGlm(centre + defaultViewDirection() * distance);
     camera.target = fromGlm(centre);
     camera.up = {0, 1, 0};
     return camera;
+}
+
+namespace {
+
+// framingCamera over corner(0..count-1). In the camera's frame (right, up, and d towards the
+// eye), a point (x, y, z) relative to the box centre is inside the margin when
+// |x - sx| <= tx (D - z) and |y - sy| <= ty (D - z), for an eye D along d and a target shifted
+// by (sx, sy). Per axis the two sides give D >= A - sx / tx and D >= B + sx / tx with
+// A = max(x / tx + z), B = max(-x / tx + z): the least D is (A + B) / 2, at sx = tx (A - B) / 2,
+// where both sides touch the margin. The axis that does not bind is then centred: its shift
+// makes the largest and the smallest x / (D - z) opposite (monotone in the shift: bisection).
+template <typename Corner>
+CameraSpec framePoints(std::size_t count, Corner corner, double aspect,
+                       const CameraSpec& orientation) {
+    Bounds bounds;
+    for (std::size_t i = 0; i < count; ++i)
+        bounds.add(corner(i));
+    if (bounds.isEmpty())
+        return defaultCamera(Bounds{{-1, -1, -1}, {1, 1, 1}}, aspect);
+    const bool usable = orientation.projection == Projection::perspective &&
+                        validateCamera(orientation).error.empty();
+    CameraSpec camera = usable ? orientation : defaultOrientation();
+    const glm::dvec3 centre = toGlm(bounds.centre());
+    const glm::dvec3 towards_eye = glm::normalize(toGlm(camera.eye) - toGlm(camera.target));
+    const glm::dvec3 right = glm::normalize(glm::cross(-towards_eye, toGlm(camera.up)));
+    const glm::dvec3 up = glm::cross(right, -towards_eye);
+    const auto local = [&](std::size_t i) {
+        const glm::dvec3 p = toGlm(corner(i)) - centre;
+        return glm::dvec3(glm::dot(p, right), glm::dot(p, up), glm::dot(p, towards_eye));
+    };
+    constexpr double kMargin = 0.05;
+    const double ty = std::tan(glm::radians(camera.fov_degrees) / 2) * (1 - kMargin);
+    const double t[2] = {ty * (aspect > 0 ? aspect : 1.0), ty};
+    double a[2] = {-INFINITY, -INFINITY}, b[2] = {-INFINITY, -INFINITY};
+    for (std::size_t i = 0; i < count; ++i) {
+        const glm::dvec3 p = local(i);
+        for (int axis = 0; axis < 2; ++axis) {
+            a[axis] = std::max(a[axis], p[axis] / t[axis] + p.z);
+            b[axis] = std::max(b[axis], -p[axis] / t[axis] + p.z);
+        }
+    }
+    const double distance =
+        std::max({(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, 1.1 * framingRadius(bounds)});
+    double shift[2];
+    for (int axis = 0; axis < 2; ++axis) {
+        shift[axis] = t[axis] * (a[axis] - b[axis]) / 2;
+        if ((a[axis] + b[axis]) / 2 == distance)
+            continue; // this axis binds: both sides already on the margin
+        double lo = t[axis] * (a[axis] - distance), hi = t[axis] * (distance - b[axis]);
+        for (int step = 0; step < 60 && lo < hi; ++step) {
+            const double mid = (lo + hi) / 2;
+            double most = -INFINITY, least = INFINITY;
+            for (std::size_t i = 0; i < count; ++i) {
+                const glm::dvec3 p = local(i);
+                const double slope = (p[axis] - mid) / (distance - p.z);
+                most = std::max(most, slope);
+                least = std::min(least, slope);
+            }
+            (most + least > 0 ? lo : hi) = mid;
+        }
+        shift[axis] = (lo + hi) / 2;
+    }
+    const glm::dvec3 target = centre + right * shift[0] + up * shift[1];
+    camera.target = fromGlm(target);
+    camera.eye = fromGlm(target + towards_eye * distance);
+    return camera;
+}
+
+} // namespace
+
+CameraSpec defaultOrientation() {
+    CameraSpec camera;
+    camera.projection = Projection::perspective;
+    camera.fov_degrees = 45.0;
+    camera.target = {0, 0, 0};
+    camera.eye = fromGlm(defaultViewDirection());
+    camera.up = {0, 1, 0};
+    return camera;
+}
+
+CameraSpec orbitOrientation(double azimuth_degrees, double elevation_degrees) {
+    const double az = glm::radians(azimuth_degrees), el = glm::radians(elevation_degrees);
+    CameraSpec camera = defaultOrientation();
+    camera.eye = {std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el)};
+    camera.up = {-std::sin(el) * std::sin(az), std::cos(el), -std::sin(el) * std::cos(az)};
+    return camera;
+}
+
+CameraSpec framingCamera(std::span<const Vec3> points, double aspect,
+                         const CameraSpec& orientation) {
+    return framePoints(
+        points.size(), [&](std::size_t i) { return points[i]; }, aspect, orientation);
+}
+
+CameraSpec framingCamera(PositionsView positions, double aspect, const CameraSpec& orientation) {
+    return framePoints(
+        positions.x.size(), [&](std::size_t i) { return positions.corner(i); }, aspect,
+        orientation);
+}
+
+std::array<Vec3, 8> boxCorners(const Bounds& box) {
+    std::array<Vec3, 8> corners;
+    for (int i = 0; i < 8; ++i)
+        corners[i] = {(i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
+                      (i & 4) ? box.max.z : box.min.z};
+    return corners;
 }
 
 ViewProjection frameCamera(const CameraSpec& camera, const Bounds& scene_bounds, uint32_t width,

@@ -58,6 +58,8 @@ void SceneOrderer::sortStage1(PositionsView positions, const ViewProjection& vie
     // would cost 8 bytes a triangle), else the objects.
     const bool triangles = level_ == OrderLevel::triangle;
     const std::size_t n = triangles ? triangle_count_ : objects_.size();
+    progress_base_ = 0;
+    progress_total_ = level_ == OrderLevel::multistage ? 0 : n; // multistage: its triangle stage
     const auto primitive = [&](uint32_t i) {
         return triangles ? PrimitiveRange{i, 1} : objects_[i];
     };
@@ -97,6 +99,12 @@ void SceneOrderer::sortFrom(PositionsView positions, const ViewProjection& view,
         oracle_.rebind(positions, view, bound_);
     else
         oracle_.bind(positions, view, bound_);
+    if (progress_ && progress_total_ > 0)
+        workspace_.on_iteration = [this](std::size_t sorted, std::size_t) {
+            progress_(double(progress_base_ + sorted) / double(progress_total_));
+        };
+    else
+        workspace_.on_iteration = nullptr;
     visSort(oracle_, identity_, into, workspace_);
     for (uint32_t& p : into.order)
         p = start[p];
@@ -171,6 +179,8 @@ void SceneOrderer::orderMultistage(PositionsView positions, const ViewProjection
             start = group_start;
         }
         VisibilityOrder& triangles = group_sorted_;
+        progress_base_ = frame.order.size();
+        progress_total_ = triangle_count_;
         // The objects' bind set up every triangle of this frame: a group reuses its set-ups.
         sortFrom(
             positions, view, group.size(), [&](uint32_t i) { return group[i]; }, start, triangles,
@@ -187,6 +197,10 @@ void SceneOrderer::orderMultistage(PositionsView positions, const ViewProjection
         first = end;
     }
     previous_triangle_order_.assign(frame.order.begin(), frame.order.end());
+}
+
+void SceneOrderer::setProgress(std::function<void(double fraction)> report) {
+    progress_ = std::move(report);
 }
 
 std::size_t SceneOrderer::groupEnd(std::span<const uint32_t> object_order,

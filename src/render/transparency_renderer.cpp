@@ -381,6 +381,11 @@ TransparencyRenderer::TransparencyRenderer(std::shared_ptr<GlContext> context, c
     d.shade_program = detail::linkProgram(detail::kShadeVertexShader, detail::kShadeFragmentShader);
 }
 
+void TransparencyRenderer::setOrderProgress(std::function<void(double fraction)> report) {
+    if (impl_->orderer)
+        impl_->orderer->setProgress(std::move(report));
+}
+
 void TransparencyRenderer::setHighlightedTriangles(std::span<const uint32_t> triangles) {
     impl_->context->makeCurrent();
     impl_->geometry->setHighlighted(triangles);

@@ -224,12 +224,9 @@ Result<Scene> makeBunniesScene(const SceneParameters& parameters) {
                                                         std::move(bunnies), half_range);
     animation->positionsAt(0, scene.positions);
     scene.animation = std::move(animation);
-
-    Bounds cube; // the whole box the bunnies may reach, deformation included
-    const double reach = cube_side / 2 + kBunnyWobble;
-    cube.add({-reach, -reach, -reach});
-    cube.add({reach, reach, reach});
-    scene.camera = defaultCamera(cube);
+    // Framed over the motion (the first 10 s), as tightly as the bunnies allow: the bounce keeps
+    // them in the cube, which they fill by then.
+    scene.camera = framingCameraOf(scene, 1.0);
     return Result<Scene>{std::move(scene), {}};
 }
 

@@ -6,6 +6,7 @@
 #include "scene/mesh_loader.h"
 
 #include "scene/declared_sizes.h"
+#include "scene/file_cameras.h"
 #include "scene/off_faces.h"
 
 #include <assimp/Importer.hpp>
@@ -38,6 +39,12 @@ struct MeshInstance {
 // allocate for counts their file declares, and declaredSizeProblem checks only some formats.
 constexpr const char* kOutOfMemory =
     "not enough memory to read the file (a declared size out of proportion to the file?)";
+
+std::string lowerCase(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    return text;
+}
 
 /// The file's extension without the dot ("" when it has none).
 std::string extensionOf(const std::string& path) {
@@ -132,7 +139,7 @@ std::string objectName(const aiMesh& mesh, const MeshInstance& instance, unsigne
 }
 
 Result<Scene> convertScene(const aiScene& ai_scene, const std::string& label,
-                           const std::string& scene_name) {
+                           const std::string& scene_name, const std::string& extension) {
     const std::vector<MeshInstance> instances = meshInstances(ai_scene);
     uint64_t total = 0;
     for (const MeshInstance& instance : instances)
@@ -194,6 +201,10 @@ Result<Scene> convertScene(const aiScene& ai_scene, const std::string& label,
         if (!std::isfinite(p.x[i]) || !std::isfinite(p.y[i]) || !std::isfinite(p.z[i]))
             return Result<Scene>::failure(label + ": triangle " + std::to_string(i / 3) +
                                           " has a non-finite coordinate");
+    scene.cameras = fileCameras(ai_scene, extension, scene.positions.bounds());
+    for (const StoredCamera& stored : scene.cameras)
+        if (stored.problem.empty() && !scene.camera)
+            scene.camera = stored.camera;
     return {std::move(scene), {}};
 }
 
@@ -202,7 +213,8 @@ Result<Scene> convertScene(const aiScene& ai_scene, const std::string& label,
 constexpr unsigned kImportFlags = aiProcess_ValidateDataStructure;
 
 Result<Scene> finishImport(Assimp::Importer& importer, const aiScene* ai_scene,
-                           const std::string& label, const std::string& scene_name) {
+                           const std::string& label, const std::string& scene_name,
+                           const std::string& extension) {
     if (!ai_scene) {
         std::string reason = oneLine(importer.GetErrorString());
         if (reason.empty())
@@ -211,7 +223,7 @@ Result<Scene> finishImport(Assimp::Importer& importer, const aiScene* ai_scene,
             reason = kOutOfMemory;
         return Result<Scene>::failure(label + ": " + reason);
     }
-    return convertScene(*ai_scene, label, scene_name);
+    return convertScene(*ai_scene, label, scene_name, extension);
 }
 
 // An OFF file's scene, checked against its own face list (off_faces.h): assimp's reader drops
@@ -235,10 +247,7 @@ Result<Scene> checkedOff(Result<Scene> scene, std::istream& in, const std::strin
 }
 
 bool isOff(const std::string& extension) {
-    std::string lower = extension;
-    std::transform(lower.begin(), lower.end(), lower.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    return lower == "off";
+    return lowerCase(extension) == "off";
 }
 
 } // namespace
@@ -276,7 +285,8 @@ Result<Scene> loadMeshFile(const std::string& path) {
             return Result<Scene>::failure(path + ": " + problem);
         Assimp::Importer importer;
         const aiScene* ai_scene = importer.ReadFile(path, kImportFlags);
-        Result<Scene> scene = finishImport(importer, ai_scene, path, file.stem().string());
+        Result<Scene> scene =
+            finishImport(importer, ai_scene, path, file.stem().string(), lowerCase(extension));
         if (!isOff(extension))
             return scene;
         std::ifstream again(file, std::ios::binary);
@@ -306,7 +316,8 @@ Result<Scene> loadMeshMemory(const void* data, std::size_t size, const std::stri
         const aiScene* ai_scene =
             importer.ReadFileFromMemory(data, size, kImportFlags, format_hint.c_str());
         Result<Scene> scene =
-            finishImport(importer, ai_scene, label, std::filesystem::path(label).stem().string());
+            finishImport(importer, ai_scene, label, std::filesystem::path(label).stem().string(),
+                         lowerCase(format_hint));
         if (!isOff(format_hint))
             return scene;
         std::istringstream again{std::string(bytes)};

@@ -4,8 +4,11 @@
 
 #include <algorithm>
 #include <cassert>
+#include <charconv>
 #include <cmath>
 #include <limits>
+
+#include "vissort/closest_name.h"
 
 namespace vissort {
 
@@ -102,6 +105,66 @@ std::string sceneProblem(const Scene& scene) {
 
 Status validateScene(const Scene& scene) {
     return Status{sceneProblem(scene)};
+}
+
+Result<std::size_t> findStoredCamera(const Scene& scene, const std::string& name_or_index) {
+    using Picked = Result<std::size_t>;
+    if (scene.cameras.empty())
+        return Picked::failure("the scene stores no camera (mesh files such as Collada, glTF or "
+                               "FBX can; 'vissort info SCENE' lists them)");
+    const auto found = std::find_if(scene.cameras.begin(), scene.cameras.end(),
+                                    [&](const StoredCamera& c) { return c.name == name_or_index; });
+    std::size_t index = scene.cameras.size();
+    if (found != scene.cameras.end()) {
+        index = std::size_t(found - scene.cameras.begin());
+    } else {
+        std::size_t number = 0;
+        const char* end = name_or_index.data() + name_or_index.size();
+        auto [ptr, ec] = std::from_chars(name_or_index.data(), end, number);
+        if (!name_or_index.empty() && ec == std::errc() && ptr == end)
+            index = number;
+    }
+    if (index >= scene.cameras.size()) {
+        std::vector<std::string> names;
+        for (const StoredCamera& c : scene.cameras)
+            names.push_back(c.name);
+        const std::string nearest = closestName(name_or_index, names);
+        return Picked::failure(
+            "no camera '" + name_or_index + "': the scene stores " +
+            std::to_string(scene.cameras.size()) +
+            (scene.cameras.size() == 1 ? " camera (index 0"
+             : scene.cameras.size() == 2
+                 ? " cameras (indices 0 and 1"
+                 : " cameras (indices 0 to " + std::to_string(scene.cameras.size() - 1)) +
+            ", or a name 'vissort info SCENE' lists)" +
+            (nearest.empty() ? "" : "; did you mean '" + nearest + "'?"));
+    }
+    const StoredCamera& picked = scene.cameras[index];
+    if (!picked.problem.empty())
+        return Picked::failure("camera " + std::to_string(index) + " '" + picked.name +
+                               "' cannot be used: " + picked.problem);
+    return Picked{index, {}};
+}
+
+CameraSpec framingCameraOf(const Scene& scene, double aspect, int frames,
+                           const CameraSpec& orientation) {
+    if (!scene.isDynamic())
+        return framingCamera(scene.positions, aspect, orientation);
+    // Enough time for the motion to show (10 s at 30 frames/s), a bounded number of samples.
+    constexpr int kMinFrames = 300, kMaxSamples = 32;
+    constexpr std::size_t kMaxCorners = std::size_t(4) << 20;
+    const std::size_t corners = std::max<std::size_t>(scene.positions.x.size(), 1);
+    const int samples = int(std::clamp<std::size_t>(kMaxCorners / corners, 1, kMaxSamples));
+    const int span = std::max(frames, kMinFrames);
+    TrianglePositions all, one;
+    for (int s = 0; s < samples; ++s) {
+        const int frame = samples == 1 ? 0 : int(std::lround(double(span - 1) * s / (samples - 1)));
+        scene.frame(frame * kFrameInterval, one);
+        all.x.insert(all.x.end(), one.x.begin(), one.x.end());
+        all.y.insert(all.y.end(), one.y.begin(), one.y.end());
+        all.z.insert(all.z.end(), one.z.begin(), one.z.end());
+    }
+    return framingCamera(all, aspect, orientation);
 }
 
 } // namespace vissort

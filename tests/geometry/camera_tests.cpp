@@ -33,14 +33,6 @@ Bounds boxBounds(const Vec3& lo, const Vec3& hi) {
     return b;
 }
 
-std::vector<Vec3> boxCorners(const Bounds& b) {
-    std::vector<Vec3> corners;
-    for (int i = 0; i < 8; ++i)
-        corners.push_back({(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
-                           (i & 4) ? b.max.z : b.min.z});
-    return corners;
-}
-
 // Points spread over a sphere (a Fibonacci lattice), plus its six axis extremes.
 std::vector<Vec3> spherePoints(const Vec3& centre, double r, int count = 200) {
     std::vector<Vec3> points;
@@ -586,7 +578,8 @@ TEST(CameraDefault, FramesTheWholeBoundingSphere) {
 
         for (auto [w, h] : {std::pair<uint32_t, uint32_t>{1024, 1024}, {640, 480}, {64, 64}}) {
             const ViewProjection vp = frameCamera(camera, bounds, w, h);
-            std::vector<Vec3> points = boxCorners(bounds);
+            const std::array<Vec3, 8> corners = boxCorners(bounds);
+            std::vector<Vec3> points(corners.begin(), corners.end());
             if (bounds.radius() > 0) {
                 const auto sphere = spherePoints(bounds.centre(), bounds.radius());
                 points.insert(points.end(), sphere.begin(), sphere.end());
@@ -637,6 +630,144 @@ TEST(CameraDefault, PortraitImageStillFitsTheSphere) {
         EXPECT_LE(std::abs(clip[0] / clip[3]), 1.0) << "corner " << i;
         EXPECT_LE(std::abs(clip[1] / clip[3]), 1.0) << "corner " << i;
     }
+}
+
+} // namespace
+} // namespace vissort
+
+// ---------------------------------------------------------------------------------------------
+// framingCamera
+
+namespace vissort {
+namespace {
+
+// The largest |NDC x| and |NDC y| over the points, checking each is in front of the eye.
+std::pair<double, double> ndcExtent(const CameraSpec& camera, std::span<const Vec3> points,
+                                    uint32_t width, uint32_t height) {
+    Bounds bounds;
+    for (const Vec3& p : points)
+        bounds.add(p);
+    const ViewProjection vp = frameCamera(camera, bounds, width, height);
+    double max_x = 0, max_y = 0;
+    for (const Vec3& p : points) {
+        const Ndc ndc = toNdc(vp, p);
+        EXPECT_GT(vp.toClip(p)[3], 0.0);
+        EXPECT_GE(ndc.d, 0.0);
+        EXPECT_LT(ndc.d, 1.0);
+        max_x = std::max(max_x, std::abs(ndc.x));
+        max_y = std::max(max_y, std::abs(ndc.y));
+    }
+    return {max_x, max_y};
+}
+
+// Every point inside the 5% margin, and the binding extent on it: tighter than the sphere.
+TEST(CameraFraming, FitsThePointsWithAFivePercentMargin) {
+    const std::vector<std::vector<Vec3>> shapes = {
+        spherePoints({0, 0, 0}, 1.0),
+        spherePoints({10, -3, 100}, 0.5),
+        {{0, 0, 0}, {4, 0, 0}, {0, 1, 0}, {4, 1, 0.5}}, // a flat wide quad
+        {{-1, -1, -1}, {1, -1, -1}, {0, 2, 1}},         // one triangle
+    };
+    for (std::size_t s = 0; s < shapes.size(); ++s)
+        for (auto [w, h] : {std::pair<uint32_t, uint32_t>{1024, 1024}, {640, 480}, {480, 640}}) {
+            const CameraSpec camera = framingCamera(shapes[s], double(w) / h);
+            EXPECT_EQ(validateCamera(camera).error, "");
+            EXPECT_EQ(camera.fov_degrees, 45.0);
+            const auto [x, y] = ndcExtent(camera, shapes[s], w, h);
+            EXPECT_LE(x, 0.95 + 1e-9) << "shape " << s << ' ' << w << 'x' << h;
+            EXPECT_LE(y, 0.95 + 1e-9) << "shape " << s << ' ' << w << 'x' << h;
+            EXPECT_NEAR(std::max(x, y), 0.95, 1e-9) << "shape " << s << ' ' << w << 'x' << h;
+            // The eye looks from (0.6, 0.5, 1).
+            const glm::dvec3 view = toGlm(camera.eye) - toGlm(camera.target);
+            EXPECT_NEAR(glm::length(glm::normalize(view) - glm::normalize(glm::dvec3(0.6, 0.5, 1))),
+                        0, 1e-12);
+        }
+}
+
+// The box of the points' projections in NDC, through camera over their bounds.
+struct NdcBox {
+    double lo_x = 1, hi_x = -1, lo_y = 1, hi_y = -1;
+};
+NdcBox ndcBox(const CameraSpec& camera, std::span<const Vec3> points, uint32_t size) {
+    Bounds bounds;
+    for (const Vec3& p : points)
+        bounds.add(p);
+    const ViewProjection vp = frameCamera(camera, bounds, size, size);
+    NdcBox box;
+    for (const Vec3& p : points) {
+        const Ndc ndc = toNdc(vp, p);
+        box.lo_x = std::min(box.lo_x, ndc.x);
+        box.hi_x = std::max(box.hi_x, ndc.x);
+        box.lo_y = std::min(box.lo_y, ndc.y);
+        box.hi_y = std::max(box.hi_y, ndc.y);
+    }
+    return box;
+}
+
+// The share of the picture the points' projections span: (max - min) of x times that of y / 4.
+double filledFraction(const CameraSpec& camera, std::span<const Vec3> points) {
+    const NdcBox box = ndcBox(camera, points, 512);
+    return (box.hi_x - box.lo_x) * (box.hi_y - box.lo_y) / 4;
+}
+
+// The bounding sphere's framing leaves a round model (a sphere of points) and a long flat one
+// small in the picture; the points' framing fills more of it.
+TEST(CameraFraming, IsTighterThanTheBoundingSphere) {
+    const std::vector<Vec3> quad = {{0, 0, 0}, {4, 0, 0}, {0, 1, 0}, {4, 1, 0}};
+    const std::vector<Vec3> ball = spherePoints({1, 2, 3}, 2.0);
+    for (const std::vector<Vec3>& points : {quad, ball}) {
+        Bounds bounds;
+        for (const Vec3& p : points)
+            bounds.add(p);
+        const double sphere = filledFraction(defaultCamera(bounds), points);
+        const double tight = filledFraction(framingCamera(points), points);
+        EXPECT_GT(tight, sphere * 1.2) << sphere << " " << tight;
+    }
+}
+
+// The extent that does not bind is centred: the same margin on both sides.
+TEST(CameraFraming, CentresThePicture) {
+    const std::vector<Vec3> points = {{0, 0, 0}, {3, 0, 0}, {3, 0.2, 0}, {0, 0.2, 0}};
+    const NdcBox box = ndcBox(framingCamera(points, 1.0), points, 256);
+    EXPECT_NEAR(box.lo_x + box.hi_x, 0.0, 1e-9);
+    EXPECT_NEAR(box.lo_y + box.hi_y, 0.0, 1e-9);
+}
+
+// A needle seen end-on, a single point, no points: the eye stays outside the bounding sphere
+// and the camera is usable.
+TEST(CameraFraming, DegenerateShapesKeepTheEyeOutside) {
+    const glm::dvec3 d = glm::normalize(glm::dvec3(0.6, 0.5, 1));
+    const std::vector<Vec3> needle = {{0, 0, 0}, fromGlm(d * 10.0)};
+    const std::vector<Vec3> point = {{2, 3, 4}};
+    for (const std::vector<Vec3>& points : {needle, point, std::vector<Vec3>{}}) {
+        const CameraSpec camera = framingCamera(points, 1.0);
+        EXPECT_EQ(validateCamera(camera).error, "");
+        Bounds bounds;
+        for (const Vec3& p : points)
+            bounds.add(p);
+        const double r = bounds.isEmpty() || bounds.radius() == 0 ? 1.0 : bounds.radius();
+        const glm::dvec3 centre = bounds.isEmpty() ? glm::dvec3(0) : toGlm(bounds.centre());
+        EXPECT_GE(glm::length(toGlm(camera.eye) - centre), 1.1 * r - 1e-9);
+        if (!points.empty())
+            ndcExtent(camera, points, 64, 64);
+    }
+}
+
+// The same points give the same camera, bit for bit, whichever container holds them.
+TEST(CameraFraming, PositionsAndPointsAgree) {
+    TrianglePositions positions;
+    positions.x = {0, 1, 0, 2, 3, 2};
+    positions.y = {0, 0, 1, 5, 5, 6};
+    positions.z = {0, 0, 0, -1, -1, -2};
+    std::vector<Vec3> points;
+    for (std::size_t i = 0; i < positions.x.size(); ++i)
+        points.push_back(positions.view().corner(i));
+    const CameraSpec a = framingCamera(positions, 1.5), b = framingCamera(points, 1.5);
+    EXPECT_EQ(a.eye.x, b.eye.x);
+    EXPECT_EQ(a.eye.y, b.eye.y);
+    EXPECT_EQ(a.eye.z, b.eye.z);
+    EXPECT_EQ(a.target.x, b.target.x);
+    EXPECT_EQ(a.target.z, b.target.z);
 }
 
 } // namespace
