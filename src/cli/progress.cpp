@@ -64,9 +64,10 @@ bool quiet() {
 void applyQuiet() {
     if (!g_quiet)
         return;
-    static NullBuffer nowhere;
+    // Never destroyed: std::cout is flushed at exit, after function-local statics are gone.
+    static NullBuffer* const nowhere = new NullBuffer;
     reserveStandardOutputFor("-"); // keeps standard output for `-` outputs
-    std::cout.rdbuf(&nowhere);
+    std::cout.rdbuf(nowhere);
 }
 
 Progress::Progress(std::string what, uint64_t total, std::string unit)

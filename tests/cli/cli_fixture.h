@@ -67,6 +67,9 @@ inline std::ostream& operator<<(std::ostream& os, const RunResult& r) {
 class Cli : public testing::Test {
 protected:
     void SetUp() override {
+        // Progress lines depend on timing (a slow sanitizer build crosses the first second):
+        // off unless a test asks for them (VISSORT_PROGRESS_SECONDS=0 in its wrapper).
+        setenv("VISSORT_PROGRESS_SECONDS", "100000", 1);
         std::string pattern = (fs::temp_directory_path() / "vissort_cli_XXXXXX").string();
         ASSERT_NE(mkdtemp(pattern.data()), nullptr);
         dir_ = pattern;
