@@ -254,10 +254,10 @@ TEST(BunniesScene, SomeBunniesComeIntoContact) {
     EXPECT_LT(nearest_corners, 0.2);
 }
 
-// The default camera frames the bunnies over their first 10 s (framingCameraOf, from frames
-// sampled through them): every corner of every frame then is in the picture (the sampled frames
-// inside the 5% margin, those between them may reach into it), and the picture is filled: some
-// corner reaches the margin. The camera is not aimed at the t = 0 pose alone.
+// The default camera frames the bunnies over their first 10 s (their bounding spheres at
+// sampled times, inside the 5% margin): every corner of every frame is in the picture, and the
+// picture is filled (some corner beyond 80% of the half-width; the spheres are a little larger
+// than the bunnies). The camera is not aimed at the t = 0 pose alone.
 TEST(BunniesScene, DefaultCameraSeesEveryBunnyForTenSeconds) {
     const Scene scene = makeBunnies("18");
     ASSERT_TRUE(scene.camera.has_value());
@@ -276,7 +276,7 @@ TEST(BunniesScene, DefaultCameraSeesEveryBunnyForTenSeconds) {
                 widest_at_start = std::max(widest_at_start, extent);
         }
     }
-    EXPECT_GT(widest, 0.9);
+    EXPECT_GT(widest, 0.8);
     EXPECT_LT(widest_at_start, widest);
 }
 
