@@ -79,9 +79,6 @@ CameraSpec framingCamera(PositionsView positions, double aspect = 1.0,
 /// target at the origin: move both, or frame it with framingCamera.
 CameraSpec orbitOrientation(double azimuth_degrees, double elevation_degrees);
 
-/// The eight corners of a box: what a dynamic scene frames (the box its motion stays in).
-std::array<Vec3, 8> boxCorners(const Bounds& box);
-
 /// Builds the view and projection for a camera over a scene.
 /// Perspective: near = max(distance to the sphere - r, r * 1e-3) * 0.99; far = infinity.
 /// Orthographic: frames the sphere (half-height r, half-width r * aspect); near/far enclose it.

@@ -45,7 +45,7 @@ struct Scene {
     std::string name;
     std::vector<SceneObject> objects;
     TrianglePositions positions;      // at t = 0
-    std::optional<CameraSpec> camera; // a mesh file's: its first usable stored camera
+    std::optional<CameraSpec> camera; // for a mesh file, its defaultStoredCamera
     /// A mesh file's own cameras, in file order (`--camera NAME|INDEX` picks one); empty for
     /// other scenes.
     std::vector<StoredCamera> cameras;
@@ -74,6 +74,10 @@ struct Scene {
 ///                                 each mesh of the file is one object, in file order.
 /// Rejects missing or unreadable files, empty geometry and non-finite coordinates.
 Result<Scene> loadScene(const std::string& specification);
+
+/// The index in scene.cameras of the camera a mesh file's scene uses by default: the first that
+/// can be used; none when no stored camera can.
+std::optional<std::size_t> defaultStoredCamera(const Scene& scene);
 
 /// The index in scene.cameras of the stored camera `name_or_index` picks: the camera of that
 /// name, else the one of that index (0 is the first). Otherwise a one-line error: the scene

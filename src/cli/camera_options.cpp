@@ -157,11 +157,8 @@ std::string resolveView(const ViewOptions& options, const Scene& scene, Resolved
         return "the file's camera " + std::to_string(index) + " '" + scene.cameras[index].name +
                "'";
     };
-    for (std::size_t i = 0; i < scene.cameras.size(); ++i)
-        if (scene.cameras[i].problem.empty()) { // the default: the first usable one
-            scene_camera_source = fileCamera(i);
-            break;
-        }
+    if (const std::optional<std::size_t> first = defaultStoredCamera(scene))
+        scene_camera_source = fileCamera(*first);
     if (!options.camera.empty()) {
         if (!options.ortho_dir.empty())
             return "--camera cannot be combined with --ortho-dir";

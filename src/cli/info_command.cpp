@@ -139,7 +139,6 @@ int runInfo(const InfoOptions& options) {
     uint64_t transparent_triangles = 0;
     for (const SceneObject& o : scene->objects)
         transparent_triangles += o.transparent ? o.triangle_count : 0;
-    const auto point = [](const Vec3& p) { return nlohmann::json::array({p.x, p.y, p.z}); };
     const nlohmann::json document = {
         {"scene", scene->name.empty() ? options.scene : scene->name},
         {"objects", scene->objects.size()},
@@ -148,7 +147,9 @@ int runInfo(const InfoOptions& options) {
         {"transparent_triangles", transparent_triangles},
         {"dynamic", scene->isDynamic()},
         {"bounds",
-         {{"min", point(bounds.min)}, {"max", point(bounds.max)}, {"radius", bounds.radius()}}},
+         {{"min", vec3Json(bounds.min)},
+          {"max", vec3Json(bounds.max)},
+          {"radius", bounds.radius()}}},
         {"object_list", objectList(*scene)},
         {"cameras", storedCameras(*scene)},
         {"camera", cameraJson(view.camera)},

@@ -51,14 +51,17 @@ void writeIds(std::ostream& out, const JsonIdList& list, bool pretty, std::size_
 
 } // namespace
 
+nlohmann::json vec3Json(const Vec3& v) {
+    return nlohmann::json::array({v.x, v.y, v.z});
+}
+
 nlohmann::json cameraJson(const CameraSpec& camera) {
-    const auto point = [](const Vec3& p) { return nlohmann::json::array({p.x, p.y, p.z}); };
     if (camera.projection == Projection::orthographic)
-        return {{"projection", "orthographic"}, {"direction", point(camera.ortho_direction)}};
+        return {{"projection", "orthographic"}, {"direction", vec3Json(camera.ortho_direction)}};
     return {{"projection", "perspective"},
-            {"eye", point(camera.eye)},
-            {"target", point(camera.target)},
-            {"up", point(camera.up)},
+            {"eye", vec3Json(camera.eye)},
+            {"target", vec3Json(camera.target)},
+            {"up", vec3Json(camera.up)},
             {"fov_degrees", camera.fov_degrees}};
 }
 

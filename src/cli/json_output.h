@@ -19,6 +19,9 @@ struct JsonOutput {
     bool pretty = false;
 };
 
+/// A point or vector as the JSON array [x, y, z].
+nlohmann::json vec3Json(const Vec3& v);
+
 /// A camera as JSON: {"projection": "perspective", "eye": [x, y, z], "target": [...], "up": [...],
 /// "fov_degrees": f} or {"projection": "orthographic", "direction": [x, y, z]}.
 nlohmann::json cameraJson(const CameraSpec& camera);

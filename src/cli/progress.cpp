@@ -57,10 +57,6 @@ void addQuietOption(CLI::App& command) {
         "error)");
 }
 
-bool quiet() {
-    return g_quiet;
-}
-
 void applyQuiet() {
     if (!g_quiet)
         return;

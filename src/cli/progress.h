@@ -15,9 +15,6 @@ namespace vissort::cli {
 /// and warnings still go to standard error; `--json -` and `--csv -` still write).
 void addQuietOption(CLI::App& command);
 
-/// Whether --quiet was given.
-bool quiet();
-
 /// With --quiet: what the command prints for people goes nowhere from this call on, while
 /// `-` outputs still reach standard output (json_output.h's standardOutputBuffer).
 void applyQuiet();

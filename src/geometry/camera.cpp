@@ -94,8 +94,48 @@ namespace {
 // |x - sx| <= tx (D - z) and |y - sy| <= ty (D - z), for an eye D along d and a target shifted
 // by (sx, sy). Per axis the two sides give D >= A - sx / tx and D >= B + sx / tx with
 // A = max(x / tx + z), B = max(-x / tx + z): the least D is (A + B) / 2, at sx = tx (A - B) / 2,
-// where both sides touch the margin. The axis that does not bind is then centred: its shift
-// makes the largest and the smallest x / (D - z) opposite (monotone in the shift: bisection).
+// where both sides touch the margin. The axis that does not bind is then centred (centredShift).
+
+// The shift s in [lo, hi] of a non-binding axis that centres the picture: the largest and the
+// smallest slope (x - s) / (D - z) over the points are opposite. Each slope is a line in s, so
+// g(s) = largest + smallest decreases, piecewise linear: Newton's step on the two lines active
+// at s lands on the root as soon as they are the ones active there (a few passes over the
+// points), with a bisection of the bracket whenever the step leaves it.
+template <typename Local>
+double centredShift(std::size_t count, const Local& local, int axis, double distance, double lo,
+                    double hi) {
+    double s = (lo + hi) / 2;
+    for (int pass = 0; pass < 200 && lo < hi; ++pass) {
+        double most = -INFINITY, least = INFINITY;
+        double most_x = 0, most_depth = 1, least_x = 0, least_depth = 1;
+        for (std::size_t i = 0; i < count; ++i) {
+            const glm::dvec3 p = local(i);
+            const double depth = distance - p.z, slope = (p[axis] - s) / depth;
+            if (slope > most) {
+                most = slope;
+                most_x = p[axis];
+                most_depth = depth;
+            }
+            if (slope < least) {
+                least = slope;
+                least_x = p[axis];
+                least_depth = depth;
+            }
+        }
+        const double g = most + least;
+        if (g == 0)
+            return s;
+        (g > 0 ? lo : hi) = s;
+        // Where (most_x - s) / most_depth + (least_x - s) / least_depth = 0.
+        const double next =
+            (most_x / most_depth + least_x / least_depth) / (1 / most_depth + 1 / least_depth);
+        if (next == s)
+            return s;
+        s = next > lo && next < hi ? next : (lo + hi) / 2;
+    }
+    return s;
+}
+
 template <typename Corner>
 CameraSpec framePoints(std::size_t count, Corner corner, double aspect,
                        const CameraSpec& orientation) {
@@ -133,19 +173,8 @@ CameraSpec framePoints(std::size_t count, Corner corner, double aspect,
         shift[axis] = t[axis] * (a[axis] - b[axis]) / 2;
         if ((a[axis] + b[axis]) / 2 == distance)
             continue; // this axis binds: both sides already on the margin
-        double lo = t[axis] * (a[axis] - distance), hi = t[axis] * (distance - b[axis]);
-        for (int step = 0; step < 60 && lo < hi; ++step) {
-            const double mid = (lo + hi) / 2;
-            double most = -INFINITY, least = INFINITY;
-            for (std::size_t i = 0; i < count; ++i) {
-                const glm::dvec3 p = local(i);
-                const double slope = (p[axis] - mid) / (distance - p.z);
-                most = std::max(most, slope);
-                least = std::min(least, slope);
-            }
-            (most + least > 0 ? lo : hi) = mid;
-        }
-        shift[axis] = (lo + hi) / 2;
+        shift[axis] = centredShift(count, local, axis, distance, t[axis] * (a[axis] - distance),
+                                   t[axis] * (distance - b[axis]));
     }
     const glm::dvec3 target = centre + right * shift[0] + up * shift[1];
     camera.target = fromGlm(target);
@@ -183,14 +212,6 @@ CameraSpec framingCamera(PositionsView positions, double aspect, const CameraSpe
     return framePoints(
         positions.x.size(), [&](std::size_t i) { return positions.corner(i); }, aspect,
         orientation);
-}
-
-std::array<Vec3, 8> boxCorners(const Bounds& box) {
-    std::array<Vec3, 8> corners;
-    for (int i = 0; i < 8; ++i)
-        corners[i] = {(i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
-                      (i & 4) ? box.max.z : box.min.z};
-    return corners;
 }
 
 ViewProjection frameCamera(const CameraSpec& camera, const Bounds& scene_bounds, uint32_t width,

@@ -202,9 +202,8 @@ Result<Scene> convertScene(const aiScene& ai_scene, const std::string& label,
             return Result<Scene>::failure(label + ": triangle " + std::to_string(i / 3) +
                                           " has a non-finite coordinate");
     scene.cameras = fileCameras(ai_scene, extension, scene.positions.bounds());
-    for (const StoredCamera& stored : scene.cameras)
-        if (stored.problem.empty() && !scene.camera)
-            scene.camera = stored.camera;
+    if (const std::optional<std::size_t> first = defaultStoredCamera(scene))
+        scene.camera = scene.cameras[*first].camera;
     return {std::move(scene), {}};
 }
 

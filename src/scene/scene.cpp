@@ -107,6 +107,13 @@ Status validateScene(const Scene& scene) {
     return Status{sceneProblem(scene)};
 }
 
+std::optional<std::size_t> defaultStoredCamera(const Scene& scene) {
+    for (std::size_t i = 0; i < scene.cameras.size(); ++i)
+        if (scene.cameras[i].problem.empty())
+            return i;
+    return std::nullopt;
+}
+
 Result<std::size_t> findStoredCamera(const Scene& scene, const std::string& name_or_index) {
     using Picked = Result<std::size_t>;
     if (scene.cameras.empty())
