@@ -9,7 +9,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 build_dir=build
-flags=(-DCMAKE_BUILD_TYPE=Release)
+# The Python module and its tests: built for Debian's interpreter, whose numpy and pytest
+# install-deps.sh installs (a python3 earlier on PATH, such as pyenv's, may lack them).
+flags=(-DCMAKE_BUILD_TYPE=Release -DVISSORT_WITH_PYTHON=ON -DPython3_EXECUTABLE=/usr/bin/python3)
 benchmarks=ON
 targets=()
 tests=()

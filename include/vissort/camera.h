@@ -87,6 +87,13 @@ CameraSpec orbitOrientation(double azimuth_degrees, double elevation_degrees);
 ViewProjection frameCamera(const CameraSpec& camera, const Bounds& scene_bounds, uint32_t width,
                            uint32_t height);
 
+/// The largest image side and pixel count a view may ask for: beyond them a depth buffer stops
+/// being a sensible request on one machine (16384^2 floats = 1 GiB).
+inline constexpr uint32_t kMaxImageSide = 16384;
+inline constexpr uint64_t kMaxImagePixels = uint64_t(kMaxImageSide) * kMaxImageSide / 4;
+/// Whether width x height is within those limits, each side at least 1; the error reads
+/// "WxH is out of range: each side 1..16384, at most 67108864 pixels".
+Status validateImageSize(uint64_t width, uint64_t height);
 /// Whether the camera is usable; the error says in one line what is wrong.
 Status validateCamera(const CameraSpec& camera);
 

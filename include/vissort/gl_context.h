@@ -68,6 +68,10 @@ public:
     const GlContextInfo& info() const;
     /// Makes the context current on the calling thread: GL calls go to the current context.
     void makeCurrent() const;
+    /// Makes no context current on the calling thread, if this one is: another thread may then
+    /// make it current (EGL allows a context current on one thread at a time). For applications
+    /// that render from several threads in turn (the Python module, under its own lock).
+    void releaseCurrent() const;
 
 private:
     struct Impl;

@@ -9,10 +9,6 @@
 namespace vissort::cli {
 namespace {
 
-// Largest image side and pixel count accepted: beyond them a depth buffer stops being a
-// sensible request on one machine (16384^2 floats = 1 GiB).
-constexpr uint32_t kMaxSide = 16384;
-constexpr uint64_t kMaxPixels = uint64_t(kMaxSide) * kMaxSide / 4;
 constexpr int kMaxFrames = 100000;
 
 bool parseDouble(std::string_view text, double& value) {
@@ -50,9 +46,8 @@ std::string parseSize(const std::string& text, uint32_t& width, uint32_t& height
     if (x == std::string::npos || std::from_chars(b, b + x, w).ptr != b + x ||
         std::from_chars(b + x + 1, e, h).ptr != e || x == 0 || x + 1 == text.size())
         return "--size expects WxH (two positive integers), got '" + text + "'";
-    if (w == 0 || h == 0 || w > kMaxSide || h > kMaxSide || uint64_t(w) * h > kMaxPixels)
-        return "--size " + text + " is out of range: each side 1.." + std::to_string(kMaxSide) +
-               ", at most " + std::to_string(kMaxPixels) + " pixels";
+    if (Status valid = validateImageSize(w, h); !valid)
+        return "--size " + valid.error;
     width = uint32_t(w);
     height = uint32_t(h);
     return {};

@@ -296,4 +296,13 @@ Status validateCamera(const CameraSpec& camera) {
     return Status{cameraProblem(camera)};
 }
 
+Status validateImageSize(uint64_t width, uint64_t height) {
+    if (width == 0 || height == 0 || width > kMaxImageSide || height > kMaxImageSide ||
+        width * height > kMaxImagePixels)
+        return Status::failure(std::to_string(width) + "x" + std::to_string(height) +
+                               " is out of range: each side 1.." + std::to_string(kMaxImageSide) +
+                               ", at most " + std::to_string(kMaxImagePixels) + " pixels");
+    return Status::ok();
+}
+
 } // namespace vissort

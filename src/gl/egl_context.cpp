@@ -175,6 +175,11 @@ void GlContext::makeCurrent() const {
         eglMakeCurrent(impl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, impl_->context);
 }
 
+void GlContext::releaseCurrent() const {
+    if (eglGetCurrentContext() == impl_->context)
+        eglMakeCurrent(impl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+}
+
 Result<std::shared_ptr<GlContext>> GlContext::create(GlPlatform platform) {
     using Made = Result<std::shared_ptr<GlContext>>;
     Result<Display> chosen = chooseDisplay(platform);

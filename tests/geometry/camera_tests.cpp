@@ -776,3 +776,21 @@ TEST(CameraFraming, PositionsAndPointsAgree) {
 
 } // namespace
 } // namespace vissort
+
+namespace vissort {
+namespace {
+
+TEST(ImageSize, LimitsEachSideAndThePixelCount) {
+    EXPECT_TRUE(validateImageSize(1, 1));
+    EXPECT_TRUE(validateImageSize(kMaxImageSide, kMaxImagePixels / kMaxImageSide));
+    EXPECT_FALSE(validateImageSize(0, 10));
+    EXPECT_FALSE(validateImageSize(10, 0));
+    EXPECT_FALSE(validateImageSize(kMaxImageSide + 1, 1));
+    const Status too_many = validateImageSize(kMaxImageSide, kMaxImageSide);
+    ASSERT_FALSE(too_many);
+    EXPECT_EQ(too_many.error,
+              "16384x16384 is out of range: each side 1..16384, at most 67108864 pixels");
+}
+
+} // namespace
+} // namespace vissort

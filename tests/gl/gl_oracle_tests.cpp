@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "ground_truth.h"
@@ -58,6 +59,32 @@ TEST(GlContext, BothEglPlatformsGiveOpenGl45) {
         ASSERT_EQ(std::sscanf(info.version.c_str(), "%d.%d", &major, &minor), 2) << info.version;
         EXPECT_GE(major * 10 + minor, 45) << info.version;
     }
+}
+
+// EGL lets a context be current on one thread at a time: after releaseCurrent, another thread
+// makes it current and draws (the Python module renders from whichever thread calls it).
+TEST(GlContext, ReleasedContextWorksOnAnotherThread) {
+    const Result<std::shared_ptr<GlContext>> created = GlContext::create();
+    ASSERT_TRUE(created) << created.error;
+    const std::shared_ptr<GlContext> gl = *created.value;
+    const Scene scene = test::loadTestScene("builtin:slabs?layers=3");
+    const ViewProjection view = viewOf(scene, Projection::perspective, 32, 32);
+    const std::vector<PrimitiveRange> objects = scene.objectPrimitives();
+    const auto orderOn = [&](const std::shared_ptr<GlContext>& context) {
+        GlOracle oracle(context);
+        SceneOrderer orderer(objects, uint32_t(scene.triangleCount()), OrderLevel::object, oracle);
+        return orderer.orderFrame(scene.positions, view).order;
+    };
+    const std::vector<uint32_t> here = orderOn(gl);
+    gl->releaseCurrent();
+    std::vector<uint32_t> there;
+    std::thread other([&] {
+        there = orderOn(gl);
+        gl->releaseCurrent();
+    });
+    other.join();
+    EXPECT_EQ(there, here);
+    EXPECT_EQ(here.size(), 3u);
 }
 
 TEST(GlContext, PlatformNamesAndARefusedSharedContext) {

@@ -1,0 +1,229 @@
+#include "arrays.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+namespace vissort::python {
+namespace {
+
+// Corner indices are 32-bit throughout the library.
+constexpr uint64_t kMaxTriangles = (uint64_t(1) << 32) / 3 - 1;
+
+std::string shapeText(const py::array& a) {
+    std::ostringstream text;
+    text << '(';
+    for (py::ssize_t d = 0; d < a.ndim(); ++d)
+        text << (d ? ", " : "") << a.shape(d);
+    text << (a.ndim() == 1 ? ",)" : ")");
+    return text.str();
+}
+
+std::string dtypeText(const py::array& a) {
+    return py::str(a.dtype()).cast<std::string>();
+}
+
+py::array asArray(const py::handle& value, const std::string& what) {
+    py::array a = py::array::ensure(value);
+    if (!a)
+        throw py::value_error(what + ": not an array of numbers");
+    return a;
+}
+
+[[noreturn]] void notFinite(const std::string& what, std::size_t triangle, int corner, float x,
+                            float y, float z) {
+    std::ostringstream text;
+    text << what << ": triangle " << triangle << ", corner " << corner << " is not finite (" << x
+         << ", " << y << ", " << z << ")";
+    throw py::value_error(text.str());
+}
+
+// Corners (T, 3, 3) of element type T into out, read where they are (any strides).
+template <class T>
+void readCorners(const py::array& a, TrianglePositions& out, const std::string& what) {
+    const auto corners = py::array_t<T>::ensure(a);
+    const auto c = corners.template unchecked<3>();
+    for (py::ssize_t t = 0; t < c.shape(0); ++t)
+        for (int k = 0; k < 3; ++k) {
+            const float x = float(c(t, k, 0)), y = float(c(t, k, 1)), z = float(c(t, k, 2));
+            if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
+                notFinite(what, std::size_t(t), k, x, y, z);
+            out.x[3 * t + k] = x;
+            out.y[3 * t + k] = y;
+            out.z[3 * t + k] = z;
+        }
+}
+
+// Vertices (V, 3) of element type T, picked by (T, 3) indices, into out.
+template <class T>
+void readIndexed(const py::array& a, const py::detail::unchecked_reference<int64_t, 2>& ix,
+                 TrianglePositions& out, const std::string& what) {
+    const auto vertices = py::array_t<T>::ensure(a);
+    const auto v = vertices.template unchecked<2>();
+    const int64_t count = v.shape(0);
+    for (py::ssize_t t = 0; t < ix.shape(0); ++t)
+        for (int k = 0; k < 3; ++k) {
+            const int64_t i = ix(t, k);
+            if (i < 0 || i >= count)
+                throw py::value_error("triangles: triangle " + std::to_string(t) +
+                                      " names vertex " + std::to_string(i) + ", outside 0.." +
+                                      std::to_string(count - 1) + " of " + what);
+            const float x = float(v(i, 0)), y = float(v(i, 1)), z = float(v(i, 2));
+            if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
+                notFinite(what, std::size_t(t), k, x, y, z);
+            out.x[3 * t + k] = x;
+            out.y[3 * t + k] = y;
+            out.z[3 * t + k] = z;
+        }
+}
+
+} // namespace
+
+void readPositions(const py::handle& positions, const py::handle& triangles, TrianglePositions& out,
+                   const std::string& what) {
+    const py::array a = asArray(positions, what);
+    const bool indexed = !triangles.is_none();
+    if (!indexed && !(a.ndim() == 3 && a.shape(1) == 3 && a.shape(2) == 3))
+        throw py::value_error(
+            what +
+            " must have shape (T, 3, 3) (triangles, corners, xyz), or (V, 3) with "
+            "triangles=(T, 3) indices; got shape " +
+            shapeText(a));
+    if (indexed && !(a.ndim() == 2 && a.shape(1) == 3))
+        throw py::value_error("with triangles given, " + what +
+                              " must have shape (V, 3) (vertices, xyz); got shape " + shapeText(a));
+    // float32 and float64 are read where they are; other float types (half, long double) are
+    // converted to float32 once.
+    if (a.dtype().kind() != 'f')
+        throw py::value_error(what +
+                              " must hold floating-point coordinates (float32, or another "
+                              "float type), got dtype " +
+                              dtypeText(a));
+    const bool doubles = a.dtype().is(py::dtype::of<double>());
+    const uint64_t count = uint64_t(indexed ? 0 : a.shape(0));
+    if (!indexed) {
+        if (count == 0)
+            throw py::value_error(what + ": no triangles (an empty array)");
+        if (count > kMaxTriangles)
+            throw py::value_error(what + ": " + std::to_string(count) +
+                                  " triangles, more than the " + std::to_string(kMaxTriangles) +
+                                  " that 32-bit corner indices address");
+        out.resize(count);
+        doubles ? readCorners<double>(a, out, what) : readCorners<float>(a, out, what);
+        return;
+    }
+
+    const py::array index_array = asArray(triangles, "triangles");
+    if (!(index_array.ndim() == 2 && index_array.shape(1) == 3))
+        throw py::value_error("triangles must have shape (T, 3) (vertex indices); got shape " +
+                              shapeText(index_array));
+    const char kind = index_array.dtype().kind();
+    if (kind != 'i' && kind != 'u')
+        throw py::value_error("triangles must hold integer vertex indices, got dtype " +
+                              dtypeText(index_array));
+    const auto indices = py::array_t<int64_t>::ensure(index_array);
+    if (!indices)
+        throw py::value_error("triangles: indices do not fit 64 bits");
+    const uint64_t indexed_count = uint64_t(indices.shape(0));
+    if (indexed_count == 0)
+        throw py::value_error("triangles: no triangles (an empty array)");
+    if (indexed_count > kMaxTriangles)
+        throw py::value_error("triangles: " + std::to_string(indexed_count) +
+                              " triangles, more than the " + std::to_string(kMaxTriangles) +
+                              " that 32-bit corner indices address");
+    out.resize(indexed_count);
+    const auto ix = indices.unchecked<2>();
+    doubles ? readIndexed<double>(a, ix, out, what) : readIndexed<float>(a, ix, out, what);
+}
+
+std::vector<PrimitiveRange> readObjects(const py::handle& objects, uint32_t triangle_count) {
+    const py::array a = asArray(objects, "objects");
+    const char kind = a.dtype().kind();
+    const bool ranges = a.ndim() == 2 && a.shape(1) == 2;
+    if (!(ranges || a.ndim() == 1) || (kind != 'i' && kind != 'u'))
+        throw py::value_error("objects must be integer (first triangle, triangle count) pairs of "
+                              "shape (K, 2), or triangle counts of shape (K,); got shape " +
+                              shapeText(a) + ", dtype " + dtypeText(a));
+    const auto values = py::array_t<int64_t>::ensure(a);
+    const std::size_t count = std::size_t(a.shape(0));
+    if (count == 0)
+        throw py::value_error("objects: no objects (an empty array)");
+    std::vector<PrimitiveRange> result(count);
+    int64_t next = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const int64_t first = ranges ? values.at(i, 0) : next;
+        const int64_t size = ranges ? values.at(i, 1) : values.at(i);
+        if (size < 1 || first < 0 || first + size > int64_t(triangle_count))
+            throw py::value_error("objects: object " + std::to_string(i) + " (triangles " +
+                                  std::to_string(first) + ", " + std::to_string(size) +
+                                  " of them) is empty or outside the " +
+                                  std::to_string(triangle_count) + " triangles given");
+        result[i] = {uint32_t(first), uint32_t(size)};
+        next = first + size;
+    }
+    // Objects are disjoint (a triangle in two objects would collide with itself).
+    std::vector<std::size_t> by_first(count);
+    std::iota(by_first.begin(), by_first.end(), 0);
+    std::sort(by_first.begin(), by_first.end(), [&](std::size_t a, std::size_t b) {
+        return result[a].first_triangle < result[b].first_triangle;
+    });
+    for (std::size_t k = 1; k < count; ++k) {
+        const PrimitiveRange& before = result[by_first[k - 1]];
+        if (before.first_triangle + before.triangle_count > result[by_first[k]].first_triangle)
+            throw py::value_error("objects: objects " + std::to_string(by_first[k - 1]) + " and " +
+                                  std::to_string(by_first[k]) +
+                                  " share triangles (each triangle belongs to one object)");
+    }
+    return result;
+}
+
+py::array_t<float> cornersArray(PositionsView positions) {
+    const py::ssize_t count = py::ssize_t(positions.triangleCount());
+    py::array_t<float> corners({count, py::ssize_t(3), py::ssize_t(3)});
+    auto c = corners.mutable_unchecked<3>();
+    for (py::ssize_t t = 0; t < count; ++t)
+        for (py::ssize_t k = 0; k < 3; ++k) {
+            c(t, k, 0) = positions.x[3 * t + k];
+            c(t, k, 1) = positions.y[3 * t + k];
+            c(t, k, 2) = positions.z[3 * t + k];
+        }
+    return corners;
+}
+
+Vec3 readVec3(const py::handle& value, const std::string& what) {
+    const py::array a = asArray(value, what);
+    if (!(a.ndim() == 1 && a.shape(0) == 3) ||
+        (a.dtype().kind() != 'f' && a.dtype().kind() != 'i' && a.dtype().kind() != 'u'))
+        throw py::value_error(what + " must be three numbers (x, y, z)");
+    const auto v = py::array_t<double>::ensure(a).unchecked<1>();
+    const Vec3 result{v(0), v(1), v(2)};
+    if (!std::isfinite(result.x) || !std::isfinite(result.y) || !std::isfinite(result.z))
+        throw py::value_error(what + " must be finite");
+    return result;
+}
+
+py::tuple vec3Tuple(const Vec3& v) {
+    return py::make_tuple(v.x, v.y, v.z);
+}
+
+std::pair<uint32_t, uint32_t> readSize(const py::handle& size) {
+    const std::string expected = "size must be (width, height), two positive integers";
+    if (!py::isinstance<py::sequence>(size) || py::isinstance<py::str>(size) || py::len(size) != 2)
+        throw py::value_error(expected);
+    const py::sequence pair = py::reinterpret_borrow<py::sequence>(size);
+    long long sides[2];
+    for (int i = 0; i < 2; ++i) {
+        const py::object side = pair[i];
+        if (py::isinstance<py::bool_>(side) || !py::hasattr(side, "__index__"))
+            throw py::value_error(expected);
+        sides[i] = py::int_(side).cast<long long>();
+        if (sides[i] < 0)
+            throw py::value_error(expected);
+    }
+    if (Status valid = validateImageSize(uint64_t(sides[0]), uint64_t(sides[1])); !valid)
+        throw py::value_error("size " + valid.error);
+    return {uint32_t(sides[0]), uint32_t(sides[1])};
+}
+
+} // namespace vissort::python

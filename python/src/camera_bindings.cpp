@@ -1,0 +1,158 @@
+// vissort.Camera: perspective and orthographic cameras with the command line's conventions
+// (--eye/--target/--up/--fov and --ortho-dir).
+
+#include <sstream>
+
+#include <pybind11/stl.h>
+
+#include "arrays.h"
+#include "bindings.h"
+#include "python_camera.h"
+
+namespace vissort::python {
+
+PythonCamera defaultCameraOf(const Scene& scene, double aspect, int frames) {
+    return {scene.camera ? *scene.camera : framingCameraOf(scene, aspect, frames), std::nullopt};
+}
+
+ViewProjection viewOf(const PythonCamera& camera, PositionsView positions, uint32_t width,
+                      uint32_t height) {
+    return frameCamera(camera.spec, camera.framed_bounds.value_or(positions.bounds()), width,
+                       height);
+}
+
+PythonCamera CameraChoice::choose(const py::handle& camera, const std::shared_ptr<Scene>& scene,
+                                  PositionsView positions, uint32_t width, uint32_t height) {
+    if (!camera.is_none()) {
+        if (!py::isinstance<PythonCamera>(camera))
+            throw py::value_error("camera must be a vissort.Camera (Camera.perspective, "
+                                  "Camera.orthographic or Camera.default), or None");
+        return camera.cast<PythonCamera>();
+    }
+    if (!scene)
+        return {framingCamera(positions, double(width) / height), std::nullopt};
+    if (scene != scene_ || std::pair(width, height) != size_) {
+        camera_ = defaultCameraOf(*scene, double(width) / height);
+        scene_ = scene;
+        size_ = {width, height};
+    }
+    return camera_;
+}
+
+namespace {
+
+PythonCamera checked(PythonCamera camera, const char* what) {
+    if (Status valid = validateCamera(camera.spec); !valid)
+        throw py::value_error(std::string(what) + ": " + valid.error);
+    return camera;
+}
+
+py::object perspectiveOnly(const PythonCamera& camera, py::object value) {
+    return camera.spec.projection == Projection::perspective ? value : py::none();
+}
+
+std::string describe(const PythonCamera& camera) {
+    std::ostringstream text;
+    const auto vec = [&](const Vec3& v) {
+        text << '(' << v.x << ", " << v.y << ", " << v.z << ')';
+    };
+    const CameraSpec& c = camera.spec;
+    if (c.projection == Projection::orthographic) {
+        text << "Camera.orthographic(direction=";
+        vec(c.ortho_direction);
+        text << (camera.framed_bounds ? ", framing a scene's bounds)" : ")");
+    } else {
+        text << "Camera.perspective(eye=";
+        vec(c.eye);
+        text << ", target=";
+        vec(c.target);
+        text << ", up=";
+        vec(c.up);
+        text << ", fov_deg=" << c.fov_degrees << ')';
+    }
+    return text.str();
+}
+
+} // namespace
+
+void bindCamera(py::module_& m) {
+    py::class_<PythonCamera>(m, "Camera",
+                             "A camera: perspective (eye, target, up, vertical field of view) or "
+                             "orthographic along a direction, framing the geometry's bounding "
+                             "sphere; the command line's --eye/--target/--up/--fov and --ortho-dir")
+        .def_static(
+            "perspective",
+            [](const py::handle& eye, const py::handle& target, const py::handle& up,
+               double fov_deg) {
+                PythonCamera camera;
+                camera.spec.projection = Projection::perspective;
+                camera.spec.eye = readVec3(eye, "eye");
+                camera.spec.target = readVec3(target, "target");
+                camera.spec.up = readVec3(up, "up");
+                camera.spec.fov_degrees = fov_deg;
+                return checked(camera, "Camera.perspective");
+            },
+            py::arg("eye"), py::arg("target"), py::arg("up") = py::make_tuple(0, 1, 0),
+            py::arg("fov_deg") = 45.0,
+            "Looks from eye at target; fov_deg is the vertical field of view in (0, 180)")
+        .def_static(
+            "orthographic",
+            [](const py::handle& direction, const py::object& scene) {
+                PythonCamera camera;
+                camera.spec.projection = Projection::orthographic;
+                camera.spec.ortho_direction = readVec3(direction, "direction");
+                if (!scene.is_none()) {
+                    if (!py::isinstance<Scene>(scene))
+                        throw py::value_error("scene must be a vissort.Scene or None");
+                    camera.framed_bounds = scene.cast<const Scene&>().positions.bounds();
+                }
+                return checked(camera, "Camera.orthographic");
+            },
+            py::arg("direction"), py::arg("scene") = py::none(),
+            "Looks along direction, framing the bounding sphere of the geometry each call is "
+            "given (as the command line does, frame by frame), or of scene at time 0 if given")
+        .def_static(
+            "default",
+            [](const Scene& scene, const py::handle& size, int frames) {
+                const auto [width, height] = readSize(size);
+                if (frames < 1)
+                    throw py::value_error("frames must be at least 1");
+                return defaultCameraOf(scene, double(width) / height, frames);
+            },
+            py::arg("scene"), py::arg("size") = py::make_tuple(1024, 1024), py::arg("frames") = 1,
+            "The command line's camera when none is given: the scene's own, else its geometry "
+            "framed for an image of that size (a dynamic scene over max(frames, 300) frames)")
+        .def_property_readonly("projection",
+                               [](const PythonCamera& c) {
+                                   return c.spec.projection == Projection::perspective
+                                              ? "perspective"
+                                              : "orthographic";
+                               })
+        .def_property_readonly(
+            "eye", [](const PythonCamera& c) { return perspectiveOnly(c, vec3Tuple(c.spec.eye)); },
+            "None for an orthographic camera")
+        .def_property_readonly(
+            "target",
+            [](const PythonCamera& c) { return perspectiveOnly(c, vec3Tuple(c.spec.target)); },
+            "None for an orthographic camera")
+        .def_property_readonly(
+            "up", [](const PythonCamera& c) { return perspectiveOnly(c, vec3Tuple(c.spec.up)); },
+            "None for an orthographic camera")
+        .def_property_readonly(
+            "fov_deg",
+            [](const PythonCamera& c) {
+                return perspectiveOnly(c, py::float_(c.spec.fov_degrees));
+            },
+            "None for an orthographic camera")
+        .def_property_readonly(
+            "direction",
+            [](const PythonCamera& c) {
+                return vec3Tuple(c.spec.projection == Projection::orthographic
+                                     ? c.spec.ortho_direction
+                                     : normalized(c.spec.target - c.spec.eye));
+            },
+            "The view direction")
+        .def("__repr__", &describe);
+}
+
+} // namespace vissort::python

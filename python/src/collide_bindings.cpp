@@ -1,0 +1,155 @@
+// vissort.collide and vissort.CollisionDetector: every intersecting pair of triangles of
+// different objects, as a (K, 2) uint32 array, with the command line's methods.
+
+#include <memory>
+#include <mutex>
+
+#include <pybind11/stl.h>
+
+#include "arrays.h"
+#include "bindings.h"
+#include "frame_input.h"
+#include "vissort/collision.h"
+
+namespace vissort::python {
+namespace {
+
+py::dict statsDict(const CollisionStats& s) {
+    py::dict d;
+    d["box_object_pairs"] = s.box_object_pairs;
+    d["object_pairs"] = s.object_pairs;
+    d["box_triangle_pairs"] = s.box_triangle_pairs;
+    d["triangle_pairs"] = s.triangle_pairs;
+    d["intersecting"] = s.intersecting;
+    d["colliding_objects"] = s.colliding_objects;
+    d["directions"] = s.directions;
+    d["queries"] = s.queries;
+    d["update_ms"] = s.update_ms;
+    d["cull_ms"] = s.cull_ms;
+    d["exact_ms"] = s.exact_ms;
+    d["total_ms"] = s.total_ms;
+    return d;
+}
+
+// A CollisionDetector of one set of objects: successive frames reuse what the last one learnt.
+class Detector {
+public:
+    Detector(const py::object& objects, const std::string& method, uint32_t threads,
+             const py::object& size, double min_cull) {
+        const Result<CollisionMethod> parsed = parseCollisionMethod(method);
+        if (!parsed)
+            throw py::value_error(parsed.error);
+        settings_.method = *parsed.value;
+        settings_.threads = threads;
+        const auto [width, height] = readSize(size);
+        settings_.width = width;
+        settings_.height = height;
+        settings_.min_cull_fraction = float(min_cull);
+        if (Status valid = validateCollisionSettings(settings_); !valid)
+            throw py::value_error(valid.error);
+        if (py::isinstance<Scene>(objects)) {
+            scene_ = objects.cast<std::shared_ptr<Scene>>();
+            objects_ = scene_->objectPrimitives();
+            detector_ = std::make_unique<CollisionDetector>(objects_, settings_);
+        } else if (objects.is_none()) {
+            throw py::value_error("collide needs objects: a Scene, or integer (first, count) "
+                                  "ranges (K, 2) or counts (K,) of the triangles (pairs within "
+                                  "one object are not collisions)");
+        } else {
+            objects_arg_ = objects; // read against the first frame's triangle count
+        }
+    }
+
+    py::array_t<uint32_t> collide(const py::object& positions, const py::object& triangles,
+                                  const py::object& time) {
+        const std::unique_lock<std::mutex> lock = lockWithoutGil(mutex_);
+        std::shared_ptr<Scene> used_scene;
+        const PositionsView frame =
+            readFrame(positions, triangles, time, scene_, buffer_, used_scene);
+        if (!detector_) {
+            objects_ = readObjects(objects_arg_, uint32_t(frame.triangleCount()));
+            detector_ = std::make_unique<CollisionDetector>(objects_, settings_);
+        }
+        uint64_t needed = 0;
+        for (const PrimitiveRange& object : objects_)
+            needed =
+                std::max<uint64_t>(needed, uint64_t(object.first_triangle) + object.triangle_count);
+        if (frame.triangleCount() < needed)
+            throw py::value_error("the objects name " + std::to_string(needed) +
+                                  " triangles; got " + std::to_string(frame.triangleCount()));
+        {
+            py::gil_scoped_release unlocked;
+            detector_->collide(frame, result_);
+        }
+        stats_ = statsDict(result_.stats);
+        std::vector<uint32_t> pairs(2 * result_.pairs.size());
+        for (std::size_t i = 0; i < result_.pairs.size(); ++i) {
+            pairs[2 * i] = result_.pairs[i].first;
+            pairs[2 * i + 1] = result_.pairs[i].second;
+        }
+        return toArray(std::move(pairs))
+            .reshape(std::vector<py::ssize_t>{py::ssize_t(result_.pairs.size()), 2});
+    }
+
+    py::dict stats() const { return stats_; }
+
+private:
+    std::shared_ptr<Scene> scene_; // kept alive while the detector is
+    py::object objects_arg_ = py::none();
+    std::vector<PrimitiveRange> objects_;
+    CollisionSettings settings_;
+    std::unique_ptr<CollisionDetector> detector_;
+    CollisionResult result_;
+    TrianglePositions buffer_;
+    py::dict stats_;
+    std::mutex mutex_;
+};
+
+constexpr const char* kDetectorDoc =
+    "objects: a Scene (kept alive by the detector), or integer (first, count) ranges (K, 2) or "
+    "counts (K,). method: vissort, brute, bullet or fcl. vissort's settings, as the command "
+    "line's collide options: threads (the calling one included; 0: one per core), size (each "
+    "object-stage view, pixels) and min_cull (the next direction only while the last culled at "
+    "least this fraction of its object pairs). The pairs never depend on them.";
+
+constexpr const char* kCollideDoc =
+    "Every pair of intersecting triangles of different objects (touching counts), as a (K, 2) "
+    "uint32 array of triangle ids, first < second, ascending. positions: a Scene (at time, "
+    "default 0) or corners (T, 3, 3), or (V, 3) with triangles=(T, 3). Releases the GIL.";
+
+} // namespace
+
+void bindCollide(py::module_& m) {
+    py::class_<Detector>(m, "CollisionDetector",
+                         "Finds the intersecting triangle pairs of the same objects frame after "
+                         "frame, reusing what each frame learnt")
+        .def(py::init<const py::object&, const std::string&, uint32_t, const py::object&, double>(),
+             py::arg("objects"), py::kw_only(), py::arg("method") = "vissort",
+             py::arg("threads") = 1, py::arg("size") = py::make_tuple(64, 64),
+             py::arg("min_cull") = 0.25, kDetectorDoc)
+        .def("collide", &Detector::collide, py::arg("positions") = py::none(),
+             py::arg("triangles") = py::none(), py::kw_only(), py::arg("time") = py::none(),
+             kCollideDoc)
+        .def_property_readonly("stats", &Detector::stats, "The last frame's costs and culling");
+    m.def(
+        "collide",
+        [](const py::object& positions, const py::object& objects, const std::string& method,
+           const py::object& triangles, const py::object& time, uint32_t threads,
+           const py::object& size, double min_cull) {
+            const bool scene = py::isinstance<Scene>(positions);
+            if (scene && !objects.is_none())
+                throw py::value_error("a Scene brings its own objects: objects must be None");
+            Detector detector(scene ? positions : objects, method, threads, size, min_cull);
+            return detector.collide(positions, triangles, time);
+        },
+        py::arg("positions"), py::arg("objects") = py::none(), py::arg("method") = "vissort",
+        py::kw_only(), py::arg("triangles") = py::none(), py::arg("time") = py::none(),
+        py::arg("threads") = 1, py::arg("size") = py::make_tuple(64, 64),
+        py::arg("min_cull") = 0.25,
+        ("One frame's pairs (CollisionDetector follows frames). objects as "
+         "CollisionDetector's. " +
+         std::string(kCollideDoc))
+            .c_str());
+}
+
+} // namespace vissort::python

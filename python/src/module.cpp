@@ -1,0 +1,23 @@
+// The module vissort._vissort, re-exported by the package vissort (python/vissort/__init__.py).
+
+#include <cstdlib>
+
+#include <pybind11/pybind11.h>
+
+#include "bindings.h"
+
+PYBIND11_MODULE(_vissort, m) {
+    m.doc() = "Visibility orderings of triangles from occlusion queries, exact order-independent "
+              "transparency and collision detection (docs/python.md)";
+    m.attr("__version__") = VISSORT_VERSION;
+    m.attr("has_gl") = bool(VISSORT_WITH_GL);
+    // As the vissort command does: Mesa's llvmpipe, read when the first context opens, then
+    // rasterizes on the calling thread, 4 times faster for the oracle's many small draws
+    // (docs/benchmarks.md). A value the user set stays.
+    setenv("LP_NUM_THREADS", "0", 0);
+    vissort::python::bindScene(m);
+    vissort::python::bindCamera(m);
+    vissort::python::bindOrder(m);
+    vissort::python::bindRender(m);
+    vissort::python::bindCollide(m);
+}

@@ -1,0 +1,208 @@
+// vissort.render and vissort.Renderer: exact order-independent transparency (and its peer
+// methods) as (H, W, 4) uint8 images, through the process's shared OpenGL context.
+
+#include <memory>
+#include <mutex>
+
+#include <pybind11/stl.h>
+
+#include "arrays.h"
+#include "bindings.h"
+#include "frame_input.h"
+#include "gl_turn.h"
+#include "python_camera.h"
+
+#if VISSORT_WITH_GL
+#include "vissort/transparency_renderer.h"
+#endif
+
+namespace vissort::python {
+namespace {
+
+#if VISSORT_WITH_GL
+RenderSettings settingsOf(const std::string& method, const std::string& level,
+                          const std::string& oracle, bool all_transparent, double alpha,
+                          const std::string& shading, const std::string& check,
+                          const py::handle& background) {
+    RenderSettings settings;
+    const Result<BlendMethod> parsed_method = parseBlendMethod(method);
+    if (!parsed_method)
+        throw py::value_error(parsed_method.error);
+    settings.method = *parsed_method.value;
+    const Result<OrderLevel> parsed_level = parseOrderLevel(level);
+    if (!parsed_level)
+        throw py::value_error(parsed_level.error);
+    settings.level = *parsed_level.value;
+    const Result<OracleKind> parsed_oracle = parseOracleKind(oracle);
+    if (!parsed_oracle)
+        throw py::value_error(parsed_oracle.error);
+    settings.oracle = *parsed_oracle.value;
+    if (!(alpha > 0.0 && alpha <= 1.0))
+        throw py::value_error("alpha must be in (0, 1], got " + std::to_string(alpha));
+    settings.all_transparent = all_transparent;
+    settings.alpha = float(alpha);
+    if (shading != "lit" && shading != "flat")
+        throw py::value_error("shading must be lit or flat, got '" + shading + "'");
+    settings.flat_shading = shading == "flat";
+    const Result<RenderSettings::OrderCheck> parsed_check = parseOrderCheck(check);
+    if (!parsed_check)
+        throw py::value_error(parsed_check.error);
+    settings.check = *parsed_check.value;
+    const py::array colour = py::array::ensure(background);
+    if (!colour || colour.ndim() != 1 || (colour.shape(0) != 3 && colour.shape(0) != 4))
+        throw py::value_error("background must be (r, g, b) or (r, g, b, a), each in [0, 1]");
+    const auto c = py::array_t<double>::ensure(colour).unchecked<1>();
+    for (py::ssize_t i = 0; i < colour.shape(0); ++i)
+        if (!(c(i) >= 0.0 && c(i) <= 1.0))
+            throw py::value_error("background must be (r, g, b) or (r, g, b, a), each in [0, 1]");
+    settings.background = {float(c(0)), float(c(1)), float(c(2)),
+                           colour.shape(0) == 4 ? float(c(3)) : 1.0f};
+    return settings;
+}
+
+py::dict statsDict(const RenderStats& stats) {
+    py::dict d;
+    d["order_ms"] = stats.order_ms;
+    d["render_ms"] = stats.render_ms;
+    d["total_ms"] = stats.total_ms;
+    d["passes"] = stats.passes;
+    d["fragments"] = stats.fragments;
+    d["groups"] = stats.groups;
+    d["repaired_pixels"] = stats.repaired_pixels;
+    d["queries"] = stats.order.queries;
+    d["draws"] = stats.order.draws;
+    d["iterations"] = stats.order.iterations;
+    return d;
+}
+
+// A TransparencyRenderer of one scene: successive frames reuse the last order (coherence).
+class Renderer {
+public:
+    Renderer(std::shared_ptr<Scene> scene, const RenderSettings& settings)
+        : scene_(std::move(scene)) {
+        Result<std::shared_ptr<GlContext>> context;
+        {
+            py::gil_scoped_release unlocked;
+            context = sharedGlContext();
+            if (context) {
+                GlTurn turn(*context.value);
+                renderer_ =
+                    std::make_unique<TransparencyRenderer>(*context.value, *scene_, settings);
+            }
+        }
+        if (!context)
+            throw std::runtime_error(context.error);
+        context_ = *context.value;
+    }
+
+    ~Renderer() {
+        GlTurn turn(context_); // its GL objects are deleted in the context
+        renderer_.reset();
+    }
+
+    py::array_t<uint8_t> render(const py::object& camera, const py::object& size,
+                                const py::object& time, const py::object& positions,
+                                const py::object& triangles) {
+        const auto [width, height] = readSize(size);
+        const std::unique_lock<std::mutex> lock = lockWithoutGil(mutex_);
+        std::shared_ptr<Scene> used_scene;
+        const PositionsView frame =
+            readFrame(positions, triangles, time, scene_, buffer_, used_scene);
+        if (frame.triangleCount() != scene_->triangleCount())
+            throw py::value_error("this renderer draws the scene's " +
+                                  std::to_string(scene_->triangleCount()) + " triangles; got " +
+                                  std::to_string(frame.triangleCount()));
+        const PythonCamera used_camera = cameras_.choose(camera, scene_, frame, width, height);
+        std::vector<uint8_t> pixels;
+        RenderStats stats;
+        {
+            py::gil_scoped_release unlocked;
+            GlTurn turn(context_);
+            pixels = renderer_->render(frame, viewOf(used_camera, frame, width, height), stats)
+                         .toRgba8();
+        }
+        stats_ = statsDict(stats);
+        return toArray(std::move(pixels))
+            .reshape(std::vector<py::ssize_t>{py::ssize_t(height), py::ssize_t(width), 4});
+    }
+
+    py::dict stats() const { return stats_; }
+
+private:
+    std::shared_ptr<Scene> scene_; // kept alive while the renderer is
+    std::shared_ptr<GlContext> context_;
+    std::unique_ptr<TransparencyRenderer> renderer_;
+    TrianglePositions buffer_;
+    CameraChoice cameras_;
+    py::dict stats_;
+    std::mutex mutex_;
+};
+#endif
+
+[[maybe_unused]] [[noreturn]] void withoutGl() {
+    throw std::runtime_error("this vissort was built without OpenGL (VISSORT_WITH_GL=OFF): "
+                             "render is not available");
+}
+
+constexpr const char* kSettingsDoc =
+    "method: vissort, unsorted, centroid, peel, dual-peel, linked-list or weighted. level and "
+    "oracle: vissort's ordering (centroid's unit). all_transparent with alpha: every object "
+    "transparent. shading: lit or flat. check: auto, on or off (vissort's per-pixel check "
+    "and repair). background: (r, g, b[, a]) in [0, 1]. As the command line's render options.";
+
+} // namespace
+
+void bindRender(py::module_& m) {
+#if VISSORT_WITH_GL
+    const auto make = [](const std::shared_ptr<Scene>& scene, const std::string& method,
+                         const std::string& level, const std::string& oracle, bool all_transparent,
+                         double alpha, const std::string& shading, const std::string& check,
+                         const py::object& background) {
+        if (!scene)
+            throw py::value_error("render needs a Scene (vissort.load or vissort.builtin)");
+        return std::make_unique<Renderer>(scene, settingsOf(method, level, oracle, all_transparent,
+                                                            alpha, shading, check, background));
+    };
+    py::class_<Renderer>(m, "Renderer",
+                         "Renders frames of one scene with transparency; each frame starts "
+                         "from the last one's order")
+        .def(py::init(make), py::arg("scene"), py::kw_only(), py::arg("method") = "vissort",
+             py::arg("level") = "object", py::arg("oracle") = "cpu",
+             py::arg("all_transparent") = false, py::arg("alpha") = 0.5, py::arg("shading") = "lit",
+             py::arg("check") = "auto", py::arg("background") = py::make_tuple(1.0, 1.0, 1.0, 1.0),
+             kSettingsDoc)
+        .def("render", &Renderer::render, py::arg("camera") = py::none(),
+             py::arg("size") = py::make_tuple(1024, 1024), py::kw_only(),
+             py::arg("time") = py::none(), py::arg("positions") = py::none(),
+             py::arg("triangles") = py::none(),
+             "An (H, W, 4) uint8 RGBA image, row 0 at the top: the scene at time (default 0), "
+             "or at positions ((T, 3, 3), or (V, 3) with triangles) of its triangle count. "
+             "camera: default the scene's default (Camera.default). Releases the GIL.")
+        .def_property_readonly("stats", &Renderer::stats, "The last frame's costs");
+    m.def(
+        "render",
+        [make](const std::shared_ptr<Scene>& scene, const py::object& camera,
+               const py::object& size, const std::string& method, const std::string& level,
+               const std::string& oracle, bool all_transparent, double alpha,
+               const std::string& shading, const std::string& check, const py::object& background,
+               const py::object& time, const py::object& positions, const py::object& triangles) {
+            auto renderer = make(scene, method, level, oracle, all_transparent, alpha, shading,
+                                 check, background);
+            return renderer->render(camera, size, time, positions, triangles);
+        },
+        py::arg("scene"), py::arg("camera") = py::none(),
+        py::arg("size") = py::make_tuple(1024, 1024), py::kw_only(), py::arg("method") = "vissort",
+        py::arg("level") = "object", py::arg("oracle") = "cpu", py::arg("all_transparent") = false,
+        py::arg("alpha") = 0.5, py::arg("shading") = "lit", py::arg("check") = "auto",
+        py::arg("background") = py::make_tuple(1.0, 1.0, 1.0, 1.0), py::arg("time") = py::none(),
+        py::arg("positions") = py::none(), py::arg("triangles") = py::none(),
+        ("One frame as an (H, W, 4) uint8 RGBA image (Renderer renders many). " +
+         std::string(kSettingsDoc))
+            .c_str());
+#else
+    m.def("Renderer", [](py::args, py::kwargs) { withoutGl(); });
+    m.def("render", [](py::args, py::kwargs) { withoutGl(); });
+#endif
+}
+
+} // namespace vissort::python

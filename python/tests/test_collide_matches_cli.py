@@ -1,0 +1,62 @@
+"""The module's intersecting pairs equal the command line's (--pairs-out) and brute force's,
+frame by frame."""
+
+import numpy as np
+import pytest
+
+import vissort
+
+
+def cli_pairs(cli, tmp_path, *args):
+    path = tmp_path / "pairs.txt"
+    cli("collide", *args, "--pairs-out", path)
+    frames = {}
+    for line in path.read_text().splitlines():
+        if line and not line.startswith("#"):
+            frame, a, b = map(int, line.split())
+            frames.setdefault(frame, []).append([a, b])
+    return frames
+
+
+def test_pairs_equal_the_cli_over_frames(cli, tmp_path):
+    scene = vissort.builtin("bunnies", n=10, seed=1)
+    frames = 40
+    expected = cli_pairs(cli, tmp_path, "builtin:bunnies?n=10&seed=1", "--frames", frames)
+    detector = vissort.CollisionDetector(scene)
+    found = 0
+    for f in range(frames):
+        pairs = detector.collide(time=f / 30)
+        assert pairs.dtype == np.uint32 and pairs.ndim == 2 and pairs.shape[1] == 2
+        assert pairs.tolist() == expected.get(f, []), f"frame {f}"
+        found += len(pairs)
+    assert found > 0, "the bunnies touch in these frames: the comparison is not of empty lists"
+    assert detector.stats["intersecting"] == len(pairs)
+
+
+@pytest.mark.parametrize("method", ["brute", "bullet"])
+def test_methods_agree_with_brute_force_on_arrays(method):
+    scene = vissort.builtin("bunnies", n=10, seed=1)
+    positions = scene.frame(1.0)
+    reference = vissort.collide(positions, scene.object_ranges, method="brute")
+    assert len(reference) > 0
+    np.testing.assert_array_equal(vissort.collide(positions, scene.object_ranges,
+                                                  method=method), reference)
+    np.testing.assert_array_equal(vissort.collide(scene, time=1.0), reference)
+
+
+def test_two_triangles_through_each_other():
+    # A vertical triangle pierces a horizontal one; a third, far away, touches nothing.
+    triangles = np.array([[[-1, 0, -1], [1, 0, -1], [0, 0, 1]],
+                          [[0, -1, 0], [0, 1, 0.2], [0, 1, -0.2]],
+                          [[5, 5, 5], [6, 5, 5], [5, 6, 5]]], dtype=np.float32)
+    pairs = vissort.collide(triangles, objects=[1, 1, 1])
+    assert pairs.tolist() == [[0, 1]]
+    # Within one object they are not a collision.
+    assert vissort.collide(triangles, objects=[[0, 2], [2, 1]]).shape == (0, 2)
+
+
+def test_collide_needs_objects_for_arrays():
+    with pytest.raises(ValueError, match="needs objects"):
+        vissort.collide(np.zeros((2, 3, 3), np.float32))
+    with pytest.raises(ValueError, match="unknown collision method"):
+        vissort.collide(vissort.builtin("slabs"), method="gjk")

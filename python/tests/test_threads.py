@@ -1,0 +1,93 @@
+"""The GIL is released while the library works: another Python thread runs during an order, a
+collision query and a render; OpenGL work from several threads takes turns and gives the same
+images."""
+
+import threading
+import time
+
+import numpy as np
+
+import vissort
+
+
+def ticks_during(work):
+    """Runs work() on a second thread while this one counts loop turns; returns the turns
+    counted in the middle half of the call (none if the call held the GIL throughout)."""
+    stamps, window = [], {}
+
+    def worker():
+        window["start"] = time.perf_counter()
+        work()
+        window["end"] = time.perf_counter()
+
+    thread = threading.Thread(target=worker)
+    thread.start()
+    while thread.is_alive():
+        stamps.append(time.perf_counter())
+    thread.join()
+    length = window["end"] - window["start"]
+    low, high = window["start"] + length / 4, window["end"] - length / 4
+    return sum(low <= s <= high for s in stamps), length
+
+
+def test_another_thread_runs_while_an_order_is_computed():
+    scene = vissort.builtin("bunnies", n=18, seed=2)
+    counted, seconds = ticks_during(
+        lambda: vissort.order(scene, level="triangle", size=(512, 512), oracle="cpu-reference"))
+    assert counted > 100, f"{counted} turns of the other thread in {seconds:.2f} s"
+
+
+def test_another_thread_runs_while_collisions_are_found():
+    scene = vissort.builtin("bunnies", n=30, seed=1)
+    counted, seconds = ticks_during(lambda: [vissort.collide(scene, time=t / 30, method="brute")
+                                             for t in range(3)])
+    assert counted > 100, f"{counted} turns of the other thread in {seconds:.2f} s"
+
+
+def test_another_thread_runs_while_rendering():
+    scene = vissort.builtin("bunnies", n=8)
+    counted, seconds = ticks_during(lambda: vissort.render(scene, size=(256, 256),
+                                                           method="linked-list"))
+    assert counted > 100, f"{counted} turns of the other thread in {seconds:.2f} s"
+
+
+def run_on_threads(work, threads, repeats):
+    """Runs work() `repeats` times on each of `threads` threads at once; returns the results,
+    and raises the first exception a thread met (an assertion in a thread is otherwise lost)."""
+    results, errors = [], []
+
+    def loop():
+        try:
+            for _ in range(repeats):
+                results.append(work())
+        except Exception as error:
+            errors.append(error)
+
+    started = [threading.Thread(target=loop) for _ in range(threads)]
+    for t in started:
+        t.start()
+    for t in started:
+        t.join()
+    if errors:
+        raise errors[0]
+    return results
+
+
+def test_opengl_from_several_threads_takes_turns():
+    scene = vissort.builtin("bunnies", n=3, seed=2)
+    expected = vissort.render(scene, size=(48, 48))
+    expected_order = vissort.order(scene, size=(48, 48), oracle="gl").order.tolist()
+    results = run_on_threads(lambda: (vissort.render(scene, size=(48, 48)),
+                                      vissort.order(scene, size=(48, 48), oracle="gl")), 3, 3)
+    assert len(results) == 9
+    for image, order in results:
+        np.testing.assert_array_equal(image, expected)
+        assert order.order.tolist() == expected_order
+
+
+def test_one_orderer_from_two_threads_is_serialised():
+    scene = vissort.builtin("bunnies", n=4)
+    orderer = vissort.Orderer(scene, level="triangle")
+    expected = vissort.order(scene, level="triangle", size=(64, 64), time=0.4).order.tolist()
+    results = run_on_threads(lambda: orderer.order(time=0.4, size=(64, 64)).order.tolist(), 2, 4)
+    assert len(results) == 8 and all(r == expected for r in results)

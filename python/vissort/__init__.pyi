@@ -1,0 +1,407 @@
+"""vissort: visibility orderings of triangles from occlusion queries, exact order-independent
+transparency and collision detection, on numpy arrays (docs/python.md).
+
+Type stubs for the compiled module vissort._vissort (python/src/*.cpp), which the package
+re-exports. Keep them in step with the bindings.
+"""
+
+import os
+from typing import (
+    Literal,
+    Optional,
+    Sequence,
+    SupportsFloat,
+    SupportsIndex,
+    TypedDict,
+    Union,
+)
+
+import numpy as np
+import numpy.typing as npt
+
+__all__ = [
+    "Camera",
+    "CollisionDetector",
+    "OrderResult",
+    "Orderer",
+    "Renderer",
+    "Scene",
+    "SceneObject",
+    "__version__",
+    "builtin",
+    "builtin_scenes",
+    "collide",
+    "has_gl",
+    "load",
+    "order",
+    "render",
+]
+
+# The library's version, as `vissort --version` prints it.
+__version__: str
+# Whether the module was built with OpenGL: without it, render(), Renderer and the "gl" oracle
+# raise RuntimeError.
+has_gl: bool
+
+# Names of the choices the bindings accept (anything else is a ValueError naming them).
+_Level = Literal["object", "triangle", "multistage"]
+_Oracle = Literal["cpu", "cpu-reference", "exact", "gl"]
+_RenderMethod = Literal[
+    "vissort", "unsorted", "centroid", "peel", "dual-peel", "linked-list", "weighted"
+]
+_Shading = Literal["lit", "flat"]
+_Check = Literal["auto", "on", "off"]
+_CollisionMethod = Literal["vissort", "brute", "bullet", "fcl"]
+
+# (width, height): any sequence of two integers (not bools), each side 1..16384, at most
+# 67108864 (16384 * 16384 / 4) pixels; anything else is a ValueError.
+_Size = Sequence[SupportsIndex]
+_Vec3 = tuple[float, float, float]
+# time=: seconds, any number (int, float, a numpy scalar); anything else is a ValueError.
+_Seconds = Union[SupportsFloat, SupportsIndex]
+
+# The stats dicts (plain dicts at run time). Written as assignments, not classes, so that every
+# class of this file is one of the module's.
+_OrderStats = TypedDict(
+    "_OrderStats",
+    {
+        "queries": int,
+        "draws": int,
+        "clears": int,
+        "iterations": int,
+        "stuck_iterations": int,
+        "cycle_queries": int,
+        "cycle_draws": int,
+        "ms": float,
+    },
+)
+# Empty until the first frame is rendered.
+_RenderStats = TypedDict(
+    "_RenderStats",
+    {
+        "order_ms": float,
+        "render_ms": float,
+        "total_ms": float,
+        "passes": int,
+        "fragments": int,
+        "groups": int,
+        "repaired_pixels": int,
+        "queries": int,
+        "draws": int,
+        "iterations": int,
+    },
+    total=False,
+)
+# Empty until the first frame is collided.
+_CollisionStats = TypedDict(
+    "_CollisionStats",
+    {
+        "box_object_pairs": int,
+        "object_pairs": int,
+        "box_triangle_pairs": int,
+        "triangle_pairs": int,
+        "intersecting": int,
+        "colliding_objects": int,
+        "directions": int,
+        "queries": int,
+        "update_ms": float,
+        "cull_ms": float,
+        "exact_ms": float,
+        "total_ms": float,
+    },
+    total=False,
+)
+
+class SceneObject:
+    """One object of a scene: a range of its triangles."""
+
+    @property
+    def name(self) -> str: ...
+    @property
+    def colour(self) -> tuple[float, float, float, float]:
+        """(r, g, b, a), each in [0, 1]."""
+    @property
+    def transparent(self) -> bool: ...
+    @property
+    def first_triangle(self) -> int: ...
+    @property
+    def triangle_count(self) -> int: ...
+    def __repr__(self) -> str: ...
+
+class Scene:
+    """Objects made of triangles, with colours, transparency, cameras and, for a dynamic scene,
+    motion; load() and builtin() make one (there is no constructor)."""
+
+    @property
+    def name(self) -> str: ...
+    @property
+    def triangle_count(self) -> int: ...
+    @property
+    def objects(self) -> list[SceneObject]:
+        """Every object, in object id order."""
+    @property
+    def object_ranges(self) -> npt.NDArray[np.uint32]:
+        """(K, 2) uint32: each object's first triangle and triangle count."""
+    @property
+    def positions(self) -> npt.NDArray[np.float32]:
+        """(T, 3, 3) float32: the corners of every triangle at time 0 (a copy)."""
+    @property
+    def triangles(self) -> npt.NDArray[np.uint32]:
+        """(T, 3) uint32: each triangle's vertices in positions.reshape(-1, 3) (scenes keep
+        every triangle's own corners)."""
+    @property
+    def is_dynamic(self) -> bool: ...
+    def frame(self, t: float) -> npt.NDArray[np.float32]:
+        """(T, 3, 3) float32: the corners at time t seconds (static scenes: t = 0)."""
+    @property
+    def bounds(self) -> tuple[_Vec3, _Vec3]:
+        """((min x, y, z), (max x, y, z)) at time 0."""
+    @property
+    def camera(self) -> Optional[Camera]:
+        """The scene's own camera (a mesh file's first usable one), or None."""
+    @property
+    def cameras(self) -> list[tuple[str, Optional[Camera], str]]:
+        """The cameras a mesh file stores: (name, Camera or None, problem) each."""
+    def __repr__(self) -> str: ...
+
+def load(path: Union[str, os.PathLike[str]]) -> Scene:
+    """A scene from a mesh file (OBJ, PLY, STL, glTF, Collada, ... through assimp), a JSON
+    scene, or a 'builtin:NAME?key=value' specification, as the command line reads it. path: a
+    str or an os.PathLike (a pathlib.Path). ValueError naming the problem when it cannot be
+    read."""
+
+def builtin(name: str, **parameters: Union[int, float, str]) -> Scene:
+    """A built-in scene by name with its parameters: builtin('bunnies', n=18, seed=1);
+    builtin_scenes() lists them. True and False are passed as 1 and 0."""
+
+def builtin_scenes() -> dict[str, str]:
+    """Every built-in scene's name and its one-line description."""
+
+class Camera:
+    """A camera: perspective (eye, target, up, vertical field of view) or orthographic along a
+    direction, framing the geometry's bounding sphere; the command line's
+    --eye/--target/--up/--fov and --ortho-dir. Made by perspective(), orthographic() and
+    default()."""
+
+    @staticmethod
+    def perspective(
+        eye: npt.ArrayLike,
+        target: npt.ArrayLike,
+        up: npt.ArrayLike = (0, 1, 0),
+        fov_deg: float = 45.0,
+    ) -> Camera:
+        """Looks from eye at target; fov_deg is the vertical field of view in (0, 180)."""
+    @staticmethod
+    def orthographic(direction: npt.ArrayLike, scene: Optional[Scene] = None) -> Camera:
+        """Looks along direction, framing the bounding sphere of the geometry each call is
+        given (as the command line does, frame by frame), or of scene at time 0 if given.
+        ValueError when scene is neither a Scene nor None."""
+    @staticmethod
+    def default(scene: Scene, size: _Size = (1024, 1024), frames: int = 1) -> Camera:
+        """The command line's camera when none is given: the scene's own, else its geometry
+        framed for an image of that size (a dynamic scene over max(frames, 300) frames)."""
+    @property
+    def projection(self) -> Literal["perspective", "orthographic"]: ...
+    @property
+    def eye(self) -> Optional[_Vec3]:
+        """None for an orthographic camera."""
+    @property
+    def target(self) -> Optional[_Vec3]:
+        """None for an orthographic camera."""
+    @property
+    def up(self) -> Optional[_Vec3]:
+        """None for an orthographic camera."""
+    @property
+    def fov_deg(self) -> Optional[float]:
+        """None for an orthographic camera."""
+    @property
+    def direction(self) -> _Vec3:
+        """The view direction."""
+    def __repr__(self) -> str: ...
+
+class OrderResult:
+    """A visibility order and what it cost."""
+
+    @property
+    def order(self) -> npt.NDArray[np.uint32]:
+        """uint32 ids front to back: objects at object level, else triangles (at multistage,
+        those of the objects)."""
+    @property
+    def cycles(self) -> list[npt.NDArray[np.uint32]]:
+        """Each cycle the order met: its ids, ascending (uint32 arrays)."""
+    @property
+    def stats(self) -> _OrderStats:
+        """queries, draws, clears, iterations, stuck_iterations, cycle_queries, cycle_draws,
+        ms: as the command line's --json."""
+    @property
+    def level(self) -> _Level: ...
+    @property
+    def camera(self) -> Camera:
+        """The camera the order was computed for."""
+    def __repr__(self) -> str: ...
+
+class Orderer:
+    """Orders successive frames of the same objects, each frame starting from the last one's
+    order: about linear work on coherent frames. One call at a time: a second thread waits."""
+
+    def __init__(
+        self,
+        objects: Union[Scene, npt.ArrayLike, None] = None,
+        *,
+        level: _Level = "object",
+        oracle: _Oracle = "cpu",
+    ) -> None:
+        """objects: a Scene (kept alive by the orderer), integer (first, count) ranges (K, 2)
+        or counts (K,) of disjoint objects, or None: the objects of the Scene the first frame
+        is, else every triangle its own object. level: object, triangle or multistage. oracle:
+        cpu, cpu-reference, exact or gl."""
+    def order(
+        self,
+        positions: Union[Scene, npt.ArrayLike, None] = None,
+        camera: Optional[Camera] = None,
+        size: _Size = (1024, 1024),
+        *,
+        triangles: Optional[npt.ArrayLike] = None,
+        time: Optional[_Seconds] = None,
+    ) -> OrderResult:
+        """Orders positions front to back. positions: a Scene (at time, default 0) or triangle
+        corners, float (T, 3, 3) or (V, 3) with triangles=(T, 3) indices; None: the orderer's
+        Scene. camera: a Camera (ValueError for anything else but None); default the command
+        line's (a scene's own, else the geometry framed), a scene's kept while the scene and
+        size stay the same. size: (width, height) of the oracle's image. Releases the GIL."""
+
+def order(
+    positions: Union[Scene, npt.ArrayLike],
+    objects: Optional[npt.ArrayLike] = None,
+    camera: Optional[Camera] = None,
+    size: _Size = (1024, 1024),
+    level: _Level = "object",
+    oracle: _Oracle = "cpu",
+    *,
+    triangles: Optional[npt.ArrayLike] = None,
+    time: Optional[_Seconds] = None,
+) -> OrderResult:
+    """One frame's order (Orderer keeps it for the next). objects as Orderer's (None with a
+    Scene, which brings its own). Orders positions front to back. positions: a Scene (at time,
+    default 0) or triangle corners, float (T, 3, 3) or (V, 3) with triangles=(T, 3) indices.
+    camera: a Camera (ValueError for anything else but None); default the command line's (a
+    scene's own, else the geometry framed). size: (width, height) of the oracle's image.
+    Releases the GIL."""
+
+class Renderer:
+    """Renders frames of one scene with transparency; each frame starts from the last one's
+    order. Needs OpenGL (has_gl); RuntimeError without it."""
+
+    def __init__(
+        self,
+        scene: Scene,
+        *,
+        method: _RenderMethod = "vissort",
+        level: _Level = "object",
+        oracle: _Oracle = "cpu",
+        all_transparent: bool = False,
+        alpha: float = 0.5,
+        shading: _Shading = "lit",
+        check: _Check = "auto",
+        background: npt.ArrayLike = (1.0, 1.0, 1.0, 1.0),
+    ) -> None:
+        """method: vissort, unsorted, centroid, peel, dual-peel, linked-list or weighted. level
+        and oracle: vissort's ordering (centroid's unit). all_transparent with alpha: every
+        object transparent. shading: lit or flat. check: auto, on or off (vissort's per-pixel
+        check and repair). background: (r, g, b[, a]) in [0, 1]. As the command line's render
+        options."""
+    def render(
+        self,
+        camera: Optional[Camera] = None,
+        size: _Size = (1024, 1024),
+        *,
+        time: Optional[_Seconds] = None,
+        positions: Optional[npt.ArrayLike] = None,
+        triangles: Optional[npt.ArrayLike] = None,
+    ) -> npt.NDArray[np.uint8]:
+        """An (H, W, 4) uint8 RGBA image, row 0 at the top: the scene at time (default 0), or
+        at positions ((T, 3, 3), or (V, 3) with triangles) of its triangle count. camera:
+        default the scene's default (Camera.default), kept while the size stays the same.
+        Releases the GIL."""
+    @property
+    def stats(self) -> _RenderStats:
+        """The last frame's costs (empty before the first frame)."""
+
+def render(
+    scene: Scene,
+    camera: Optional[Camera] = None,
+    size: _Size = (1024, 1024),
+    *,
+    method: _RenderMethod = "vissort",
+    level: _Level = "object",
+    oracle: _Oracle = "cpu",
+    all_transparent: bool = False,
+    alpha: float = 0.5,
+    shading: _Shading = "lit",
+    check: _Check = "auto",
+    background: npt.ArrayLike = (1.0, 1.0, 1.0, 1.0),
+    time: Optional[_Seconds] = None,
+    positions: Optional[npt.ArrayLike] = None,
+    triangles: Optional[npt.ArrayLike] = None,
+) -> npt.NDArray[np.uint8]:
+    """One frame as an (H, W, 4) uint8 RGBA image, row 0 at the top (Renderer renders many):
+    the scene at time (default 0), or at positions ((T, 3, 3), or (V, 3) with triangles) of
+    its triangle count.
+    method: vissort, unsorted, centroid, peel, dual-peel, linked-list or weighted. level and
+    oracle: vissort's ordering (centroid's unit). all_transparent with alpha: every object
+    transparent. shading: lit or flat. check: auto, on or off (vissort's per-pixel check and
+    repair). background: (r, g, b[, a]) in [0, 1]. As the command line's render options.
+    Needs OpenGL (has_gl); RuntimeError without it. Releases the GIL."""
+
+class CollisionDetector:
+    """Finds the intersecting triangle pairs of the same objects frame after frame, reusing
+    what each frame learnt. One call at a time: a second thread waits."""
+
+    def __init__(
+        self,
+        objects: Union[Scene, npt.ArrayLike],
+        *,
+        method: _CollisionMethod = "vissort",
+        threads: int = 1,
+        size: _Size = (64, 64),
+        min_cull: float = 0.25,
+    ) -> None:
+        """objects: a Scene (kept alive by the detector), or integer (first, count) ranges
+        (K, 2) or counts (K,) of disjoint objects (triangles in none never collide). method:
+        vissort, brute, bullet or fcl. vissort's settings, as the command line's collide
+        options: threads (the calling one included; 0: one per core), size (each object-stage
+        view, 1..4096 pixels a side) and min_cull (in [0, 1]: the next direction only while
+        the last culled at least this fraction of its object pairs). The pairs never depend on
+        them."""
+    def collide(
+        self,
+        positions: Union[Scene, npt.ArrayLike, None] = None,
+        triangles: Optional[npt.ArrayLike] = None,
+        *,
+        time: Optional[_Seconds] = None,
+    ) -> npt.NDArray[np.uint32]:
+        """Every pair of intersecting triangles of different objects (touching counts), as a
+        (K, 2) uint32 array of triangle ids, first < second, ascending. positions: a Scene (at
+        time, default 0) or corners (T, 3, 3), or (V, 3) with triangles=(T, 3); None: the
+        detector's Scene. Releases the GIL."""
+    @property
+    def stats(self) -> _CollisionStats:
+        """The last frame's costs and culling (empty before the first frame)."""
+
+def collide(
+    positions: Union[Scene, npt.ArrayLike],
+    objects: Optional[npt.ArrayLike] = None,
+    method: _CollisionMethod = "vissort",
+    *,
+    triangles: Optional[npt.ArrayLike] = None,
+    time: Optional[_Seconds] = None,
+    threads: int = 1,
+    size: _Size = (64, 64),
+    min_cull: float = 0.25,
+) -> npt.NDArray[np.uint32]:
+    """One frame's pairs (CollisionDetector follows frames). objects as CollisionDetector's
+    (None with a Scene, which brings its own). Every pair of intersecting triangles of
+    different objects (touching counts), as a (K, 2) uint32 array of triangle ids,
+    first < second, ascending. positions: a Scene (at time, default 0) or corners (T, 3, 3),
+    or (V, 3) with triangles=(T, 3). threads, size and min_cull as CollisionDetector's.
+    Releases the GIL."""
