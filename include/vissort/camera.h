@@ -94,6 +94,9 @@ inline constexpr uint64_t kMaxImagePixels = uint64_t(kMaxImageSide) * kMaxImageS
 /// Whether width x height is within those limits, each side at least 1; the error reads
 /// "WxH is out of range: each side 1..16384, at most 67108864 pixels".
 Status validateImageSize(uint64_t width, uint64_t height);
+/// A camera in one line: "perspective from 1.2,3,4 towards 0,0,0, up 0,1,0, fov 45 degrees" or
+/// "orthographic along 0,0,-1"; numbers with 4 significant digits.
+std::string describeCamera(const CameraSpec& camera);
 /// Whether the camera is usable; the error says in one line what is wrong.
 Status validateCamera(const CameraSpec& camera);
 

@@ -112,8 +112,9 @@ class Collider;
 class CollisionDetector {
 public:
     /// objects: each object's triangles, as ranges of global triangle ids (Scene::
-    /// objectPrimitives()); copied. Settings are checked (validateCollisionSettings):
-    /// std::invalid_argument on bad values.
+    /// objectPrimitives()), no triangle in two of them; copied. Settings are checked
+    /// (validateCollisionSettings): std::invalid_argument on bad values, and on objects that
+    /// share triangles.
     explicit CollisionDetector(std::span<const PrimitiveRange> objects,
                                const CollisionSettings& settings = {});
     ~CollisionDetector();

@@ -70,6 +70,22 @@ inline std::string blendMethodNames() {
 /// cycle.
 inline constexpr float kBlendingDepthTolerance = -1.0f / (1 << 16);
 
+/// How every method shades a triangle (the same shading in each, so that methods stay
+/// comparable): lit, a headlight and a membrane term that makes surfaces seen edge-on more
+/// opaque (per vertex, as in the paper); flat, each object's colour and alpha, unlit, so that a
+/// ray-cast reference can reproduce every pixel.
+enum class Shading { lit, flat };
+inline constexpr EnumName<Shading> kShadingNames[] = {
+    {Shading::lit, "lit"},
+    {Shading::flat, "flat"},
+};
+/// "lit" or "flat", or "unknown shading 'NAME' (expected lit or flat)".
+inline Result<Shading> parseShading(std::string_view name) {
+    return parseEnum<Shading>(kShadingNames, name, "shading");
+}
+inline const char* shadingName(Shading shading) {
+    return enumName<Shading>(kShadingNames, shading);
+}
 struct RenderSettings {
     BlendMethod method = BlendMethod::vissort;
     OrderLevel level = OrderLevel::object; // vissort's ordering level; centroid's unit
@@ -78,10 +94,7 @@ struct RenderSettings {
     bool all_transparent = false;          // every object transparent with alpha below
     float alpha = 0.5f;                    // with all_transparent, in (0, 1]
     Rgba background{1.0f, 1.0f, 1.0f, 1.0f};
-    /// Lit: a headlight and a membrane term that makes surfaces seen edge-on more opaque (per
-    /// vertex, as in the paper). Flat: each object's colour and alpha, unlit, so that a ray-cast
-    /// reference can reproduce every pixel.
-    bool flat_shading = false;
+    Shading shading = Shading::lit;
     /// vissort: the primitives of each of the order's cycles drawn in a colour of their own (a
     /// palette of 8, cycle g in colour g modulo 8) at their object's alpha, to see where the
     /// order needed per-pixel compositing. Highlighted triangles stay highlighted.

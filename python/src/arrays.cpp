@@ -1,8 +1,6 @@
 #include "arrays.h"
 
-#include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <sstream>
 
 namespace vissort::python {
@@ -31,12 +29,21 @@ py::array asArray(const py::handle& value, const std::string& what) {
     return a;
 }
 
-[[noreturn]] void notFinite(const std::string& what, std::size_t triangle, int corner, float x,
-                            float y, float z) {
-    std::ostringstream text;
-    text << what << ": triangle " << triangle << ", corner " << corner << " is not finite (" << x
-         << ", " << y << ", " << z << ")";
-    throw py::value_error(text.str());
+// Corner k of triangle t, as float32, into out's arrays; ValueError naming them when it is not
+// finite there.
+template <class T>
+void storeCorner(TrianglePositions& out, std::size_t t, int k, T x, T y, T z,
+                 const std::string& what) {
+    const float fx = float(x), fy = float(y), fz = float(z);
+    if (!std::isfinite(fx) || !std::isfinite(fy) || !std::isfinite(fz)) {
+        std::ostringstream text;
+        text << what << ": triangle " << t << ", corner " << k << " is not finite (" << fx << ", "
+             << fy << ", " << fz << ")";
+        throw py::value_error(text.str());
+    }
+    out.x[3 * t + k] = fx;
+    out.y[3 * t + k] = fy;
+    out.z[3 * t + k] = fz;
 }
 
 // Corners (T, 3, 3) of element type T into out, read where they are (any strides).
@@ -46,12 +53,7 @@ void readCorners(const py::array& a, TrianglePositions& out, const std::string& 
     const auto c = corners.template unchecked<3>();
     for (py::ssize_t t = 0; t < c.shape(0); ++t)
         for (int k = 0; k < 3; ++k) {
-            const float x = float(c(t, k, 0)), y = float(c(t, k, 1)), z = float(c(t, k, 2));
-            if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
-                notFinite(what, std::size_t(t), k, x, y, z);
-            out.x[3 * t + k] = x;
-            out.y[3 * t + k] = y;
-            out.z[3 * t + k] = z;
+            storeCorner(out, std::size_t(t), k, c(t, k, 0), c(t, k, 1), c(t, k, 2), what);
         }
 }
 
@@ -69,12 +71,7 @@ void readIndexed(const py::array& a, const py::detail::unchecked_reference<int64
                 throw py::value_error("triangles: triangle " + std::to_string(t) +
                                       " names vertex " + std::to_string(i) + ", outside 0.." +
                                       std::to_string(count - 1) + " of " + what);
-            const float x = float(v(i, 0)), y = float(v(i, 1)), z = float(v(i, 2));
-            if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
-                notFinite(what, std::size_t(t), k, x, y, z);
-            out.x[3 * t + k] = x;
-            out.y[3 * t + k] = y;
-            out.z[3 * t + k] = z;
+            storeCorner(out, std::size_t(t), k, v(i, 0), v(i, 1), v(i, 2), what);
         }
 }
 
@@ -101,38 +98,34 @@ void readPositions(const py::handle& positions, const py::handle& triangles, Tri
                               "float type), got dtype " +
                               dtypeText(a));
     const bool doubles = a.dtype().is(py::dtype::of<double>());
-    const uint64_t count = uint64_t(indexed ? 0 : a.shape(0));
+
+    py::array_t<int64_t> indices;
+    if (indexed) {
+        const py::array index_array = asArray(triangles, "triangles");
+        if (!(index_array.ndim() == 2 && index_array.shape(1) == 3))
+            throw py::value_error("triangles must have shape (T, 3) (vertex indices); got shape " +
+                                  shapeText(index_array));
+        const char kind = index_array.dtype().kind();
+        if (kind != 'i' && kind != 'u')
+            throw py::value_error("triangles must hold integer vertex indices, got dtype " +
+                                  dtypeText(index_array));
+        indices = py::array_t<int64_t>::ensure(index_array);
+        if (!indices)
+            throw py::value_error("triangles: indices do not fit 64 bits");
+    }
+    const std::string counted = indexed ? "triangles" : what;
+    const uint64_t count = uint64_t(indexed ? indices.shape(0) : a.shape(0));
+    if (count == 0)
+        throw py::value_error(counted + ": no triangles (an empty array)");
+    if (count > kMaxTriangles)
+        throw py::value_error(counted + ": " + std::to_string(count) +
+                              " triangles, more than the " + std::to_string(kMaxTriangles) +
+                              " that 32-bit corner indices address");
+    out.resize(count);
     if (!indexed) {
-        if (count == 0)
-            throw py::value_error(what + ": no triangles (an empty array)");
-        if (count > kMaxTriangles)
-            throw py::value_error(what + ": " + std::to_string(count) +
-                                  " triangles, more than the " + std::to_string(kMaxTriangles) +
-                                  " that 32-bit corner indices address");
-        out.resize(count);
         doubles ? readCorners<double>(a, out, what) : readCorners<float>(a, out, what);
         return;
     }
-
-    const py::array index_array = asArray(triangles, "triangles");
-    if (!(index_array.ndim() == 2 && index_array.shape(1) == 3))
-        throw py::value_error("triangles must have shape (T, 3) (vertex indices); got shape " +
-                              shapeText(index_array));
-    const char kind = index_array.dtype().kind();
-    if (kind != 'i' && kind != 'u')
-        throw py::value_error("triangles must hold integer vertex indices, got dtype " +
-                              dtypeText(index_array));
-    const auto indices = py::array_t<int64_t>::ensure(index_array);
-    if (!indices)
-        throw py::value_error("triangles: indices do not fit 64 bits");
-    const uint64_t indexed_count = uint64_t(indices.shape(0));
-    if (indexed_count == 0)
-        throw py::value_error("triangles: no triangles (an empty array)");
-    if (indexed_count > kMaxTriangles)
-        throw py::value_error("triangles: " + std::to_string(indexed_count) +
-                              " triangles, more than the " + std::to_string(kMaxTriangles) +
-                              " that 32-bit corner indices address");
-    out.resize(indexed_count);
     const auto ix = indices.unchecked<2>();
     doubles ? readIndexed<double>(a, ix, out, what) : readIndexed<float>(a, ix, out, what);
 }
@@ -161,19 +154,6 @@ std::vector<PrimitiveRange> readObjects(const py::handle& objects, uint32_t tria
                                   std::to_string(triangle_count) + " triangles given");
         result[i] = {uint32_t(first), uint32_t(size)};
         next = first + size;
-    }
-    // Objects are disjoint (a triangle in two objects would collide with itself).
-    std::vector<std::size_t> by_first(count);
-    std::iota(by_first.begin(), by_first.end(), 0);
-    std::sort(by_first.begin(), by_first.end(), [&](std::size_t a, std::size_t b) {
-        return result[a].first_triangle < result[b].first_triangle;
-    });
-    for (std::size_t k = 1; k < count; ++k) {
-        const PrimitiveRange& before = result[by_first[k - 1]];
-        if (before.first_triangle + before.triangle_count > result[by_first[k]].first_triangle)
-            throw py::value_error("objects: objects " + std::to_string(by_first[k - 1]) + " and " +
-                                  std::to_string(by_first[k]) +
-                                  " share triangles (each triangle belongs to one object)");
     }
     return result;
 }

@@ -30,7 +30,8 @@ void readPositions(const py::handle& positions, const py::handle& triangles, Tri
 /// Objects as triangle ranges over `triangle_count` triangles: an integer array of shape (K, 2)
 /// (first triangle, triangle count), or of shape (K,) (counts of consecutive ranges from
 /// triangle 0). Every range must hold at least one triangle, all within the triangles; else
-/// ValueError naming the object. Needs the GIL.
+/// ValueError naming the object. Ranges may share triangles where the library allows it (the
+/// orderer does; the collision detector refuses). Needs the GIL.
 std::vector<PrimitiveRange> readObjects(const py::handle& objects, uint32_t triangle_count);
 
 /// Corners as an array of shape (T, 3, 3), float32 (a copy: the library keeps x, y and z apart).

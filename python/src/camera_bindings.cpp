@@ -1,8 +1,6 @@
 // vissort.Camera: perspective and orthographic cameras with the command line's conventions
 // (--eye/--target/--up/--fov and --ortho-dir).
 
-#include <sstream>
-
 #include <pybind11/stl.h>
 
 #include "arrays.h"
@@ -52,25 +50,8 @@ py::object perspectiveOnly(const PythonCamera& camera, py::object value) {
 }
 
 std::string describe(const PythonCamera& camera) {
-    std::ostringstream text;
-    const auto vec = [&](const Vec3& v) {
-        text << '(' << v.x << ", " << v.y << ", " << v.z << ')';
-    };
-    const CameraSpec& c = camera.spec;
-    if (c.projection == Projection::orthographic) {
-        text << "Camera.orthographic(direction=";
-        vec(c.ortho_direction);
-        text << (camera.framed_bounds ? ", framing a scene's bounds)" : ")");
-    } else {
-        text << "Camera.perspective(eye=";
-        vec(c.eye);
-        text << ", target=";
-        vec(c.target);
-        text << ", up=";
-        vec(c.up);
-        text << ", fov_deg=" << c.fov_degrees << ')';
-    }
-    return text.str();
+    return "Camera(" + describeCamera(camera.spec) +
+           (camera.framed_bounds ? ", framing a scene's bounds at time 0)" : ")");
 }
 
 } // namespace

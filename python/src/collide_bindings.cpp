@@ -31,6 +31,17 @@ py::dict statsDict(const CollisionStats& s) {
     return d;
 }
 
+// The pairs as a (K, 2) uint32 array over their own memory (a TrianglePair is two uint32s).
+py::array_t<uint32_t> pairsArray(std::vector<TrianglePair>&& pairs) {
+    static_assert(sizeof(TrianglePair) == 2 * sizeof(uint32_t));
+    auto* owned = new std::vector<TrianglePair>(std::move(pairs));
+    py::capsule free_when_done(owned,
+                               [](void* p) { delete static_cast<std::vector<TrianglePair>*>(p); });
+    return py::array_t<uint32_t>({py::ssize_t(owned->size()), py::ssize_t(2)},
+                                 {py::ssize_t(sizeof(TrianglePair)), py::ssize_t(sizeof(uint32_t))},
+                                 reinterpret_cast<const uint32_t*>(owned->data()), free_when_done);
+}
+
 // A CollisionDetector of one set of objects: successive frames reuse what the last one learnt.
 class Detector {
 public:
@@ -70,25 +81,12 @@ public:
             objects_ = readObjects(objects_arg_, uint32_t(frame.triangleCount()));
             detector_ = std::make_unique<CollisionDetector>(objects_, settings_);
         }
-        uint64_t needed = 0;
-        for (const PrimitiveRange& object : objects_)
-            needed =
-                std::max<uint64_t>(needed, uint64_t(object.first_triangle) + object.triangle_count);
-        if (frame.triangleCount() < needed)
-            throw py::value_error("the objects name " + std::to_string(needed) +
-                                  " triangles; got " + std::to_string(frame.triangleCount()));
         {
             py::gil_scoped_release unlocked;
             detector_->collide(frame, result_);
         }
         stats_ = statsDict(result_.stats);
-        std::vector<uint32_t> pairs(2 * result_.pairs.size());
-        for (std::size_t i = 0; i < result_.pairs.size(); ++i) {
-            pairs[2 * i] = result_.pairs[i].first;
-            pairs[2 * i + 1] = result_.pairs[i].second;
-        }
-        return toArray(std::move(pairs))
-            .reshape(std::vector<py::ssize_t>{py::ssize_t(result_.pairs.size()), 2});
+        return pairsArray(std::move(result_.pairs));
     }
 
     py::dict stats() const { return stats_; }

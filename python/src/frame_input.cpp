@@ -21,8 +21,7 @@ PositionsView readFrame(const py::handle& source, const py::handle& triangles,
             throw py::value_error("no positions given, and no scene to take them from");
         if (!triangles.is_none())
             throw py::value_error("triangles index positions arrays: not with a Scene");
-        if (!time.is_none() && !py::isinstance<py::float_>(time) &&
-            !py::hasattr(time, "__index__") && !py::hasattr(time, "__float__"))
+        if (!time.is_none() && !py::hasattr(time, "__float__") && !py::hasattr(time, "__index__"))
             throw py::value_error("time must be a number of seconds");
         const double t = time.is_none()
                              ? 0.0

@@ -98,18 +98,13 @@ public:
             readFrame(positions, triangles, time, scene_, buffer_, used_scene);
         const uint32_t triangle_count = uint32_t(view_positions.triangleCount());
         if (!orderer_) {
-            if (objects_.empty()) {
-                if (objects_arg_.is_none() && used_scene) {
-                    objects_ = used_scene->objectPrimitives();
-                } else if (objects_arg_.is_none()) {
-                    objects_.resize(triangle_count);
-                    for (uint32_t t = 0; t < triangle_count; ++t)
-                        objects_[t] = {t, 1};
-                } else {
-                    objects_ = readObjects(objects_arg_, triangle_count);
-                }
+            // The objects given, else those of the scene ordered, else one a triangle.
+            if (objects_.empty())
+                objects_ = !objects_arg_.is_none() ? readObjects(objects_arg_, triangle_count)
+                           : used_scene            ? used_scene->objectPrimitives()
+                                        : levelPrimitives({}, triangle_count, OrderLevel::triangle);
+            if (!scene_)
                 triangle_count_ = triangle_count;
-            }
             orderer_ = std::make_unique<SceneOrderer>(objects_, triangle_count_, level_, *oracle_);
         }
         if (triangle_count != triangle_count_)

@@ -37,13 +37,12 @@ RenderSettings settingsOf(const std::string& method, const std::string& level,
     if (!parsed_oracle)
         throw py::value_error(parsed_oracle.error);
     settings.oracle = *parsed_oracle.value;
-    if (!(alpha > 0.0 && alpha <= 1.0))
-        throw py::value_error("alpha must be in (0, 1], got " + std::to_string(alpha));
     settings.all_transparent = all_transparent;
     settings.alpha = float(alpha);
-    if (shading != "lit" && shading != "flat")
-        throw py::value_error("shading must be lit or flat, got '" + shading + "'");
-    settings.flat_shading = shading == "flat";
+    const Result<Shading> parsed_shading = parseShading(shading);
+    if (!parsed_shading)
+        throw py::value_error(parsed_shading.error);
+    settings.shading = *parsed_shading.value;
     const Result<RenderSettings::OrderCheck> parsed_check = parseOrderCheck(check);
     if (!parsed_check)
         throw py::value_error(parsed_check.error);
@@ -108,10 +107,6 @@ public:
         std::shared_ptr<Scene> used_scene;
         const PositionsView frame =
             readFrame(positions, triangles, time, scene_, buffer_, used_scene);
-        if (frame.triangleCount() != scene_->triangleCount())
-            throw py::value_error("this renderer draws the scene's " +
-                                  std::to_string(scene_->triangleCount()) + " triangles; got " +
-                                  std::to_string(frame.triangleCount()));
         const PythonCamera used_camera = cameras_.choose(camera, scene_, frame, width, height);
         std::vector<uint8_t> pixels;
         RenderStats stats;

@@ -15,30 +15,27 @@
 namespace vissort::python {
 namespace {
 
-std::shared_ptr<Scene> loaded(const std::string& specification) {
+// A scene made by `make` with the GIL released (a large file takes seconds); ValueError with
+// the library's message when it fails.
+template <class Make> std::shared_ptr<Scene> madeScene(const Make& make) {
     Result<Scene> scene;
     {
-        py::gil_scoped_release unlocked; // a large file takes seconds
-        scene = loadScene(specification);
+        py::gil_scoped_release unlocked;
+        scene = make();
     }
     if (!scene)
         throw py::value_error(scene.error);
     return std::make_shared<Scene>(std::move(*scene.value));
 }
 
-// A keyword argument as a builtin: parameter value: integers and strings as written, True/False
-// as 1/0.
+// A keyword argument as a built-in scene's parameter value: numbers and strings as written,
+// True/False as 1/0 (the scene parses and checks the value).
 std::string parameterText(const std::string& key, const py::handle& value) {
     if (py::isinstance<py::bool_>(value))
         return value.cast<bool>() ? "1" : "0";
     if (py::isinstance<py::int_>(value) || py::isinstance<py::str>(value) ||
-        py::isinstance<py::float_>(value)) {
-        const std::string text = py::str(value).cast<std::string>();
-        if (text.find_first_of("&=?") != std::string::npos)
-            throw py::value_error("builtin scene parameter " + key + ": '" + text +
-                                  "' holds one of & = ?");
-        return text;
-    }
+        py::isinstance<py::float_>(value))
+        return py::str(value).cast<std::string>();
     throw py::value_error("builtin scene parameter " + key + " must be a number or a string, got " +
                           py::str(py::type::of(value).attr("__name__")).cast<std::string>());
 }
@@ -147,7 +144,8 @@ void bindScene(py::module_& m) {
             const py::object text = py::module_::import("os").attr("fspath")(path);
             if (!py::isinstance<py::str>(text))
                 throw py::value_error("path must be a str or an os.PathLike of one");
-            return loaded(text.cast<std::string>());
+            const std::string specification = text.cast<std::string>();
+            return madeScene([&] { return loadScene(specification); });
         },
         py::arg("path"),
         "A scene from a mesh file (OBJ, PLY, STL, glTF, Collada, ... through assimp), a JSON "
@@ -156,14 +154,19 @@ void bindScene(py::module_& m) {
     m.def(
         "builtin",
         [](const std::string& name, const py::kwargs& parameters) {
-            std::string specification = "builtin:" + name;
-            char separator = '?';
+            SceneParameters values;
             for (const auto& [key, value] : parameters) {
                 const std::string k = py::str(key).cast<std::string>();
-                specification += separator + k + "=" + parameterText(k, value);
-                separator = '&';
+                values[k] = parameterText(k, value);
             }
-            return loaded(specification);
+            // Checked as loadScene checks what it makes (a file is checked there).
+            return madeScene([&] {
+                Result<Scene> scene = makeBuiltinScene(name, values);
+                if (scene)
+                    if (Status valid = validateScene(*scene.value); !valid)
+                        return Result<Scene>::failure(scene.value->name + ": " + valid.error);
+                return scene;
+            });
         },
         py::arg("name"),
         "A built-in scene by name with its parameters: builtin('bunnies', n=18, seed=1); "

@@ -252,7 +252,7 @@ class Orderer:
         oracle: _Oracle = "cpu",
     ) -> None:
         """objects: a Scene (kept alive by the orderer), integer (first, count) ranges (K, 2)
-        or counts (K,) of disjoint objects, or None: the objects of the Scene the first frame
+        or counts (K,), or None: the objects of the Scene the first frame
         is, else every triangle its own object. level: object, triangle or multistage. oracle:
         cpu, cpu-reference, exact or gl."""
     def order(

@@ -93,9 +93,10 @@ std::string resolveRendererOptions(const RendererOptions& options, bool allow_al
     settings.oracle_options = environmentOracleOptions();
     if (!(options.alpha > 0.0 && options.alpha <= 1.0))
         return "--alpha must be in (0, 1], got " + formatNumber(options.alpha);
-    if (options.shading != "lit" && options.shading != "flat")
-        return "--shading must be lit or flat, got '" + options.shading + "'";
-    settings.flat_shading = options.shading == "flat";
+    const Result<Shading> shading = parseShading(options.shading);
+    if (!shading)
+        return "--shading: " + shading.error;
+    settings.shading = *shading.value;
     const Result<RenderSettings::OrderCheck> check = parseOrderCheck(options.check);
     if (!check)
         return "--check: " + check.error;

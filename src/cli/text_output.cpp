@@ -22,25 +22,6 @@ std::string milliseconds(double ms) {
     return text.str() + " ms";
 }
 
-namespace {
-
-std::string point(const Vec3& p) {
-    std::ostringstream text;
-    text << std::setprecision(4) << p.x << ',' << p.y << ',' << p.z;
-    return text.str();
-}
-
-} // namespace
-
-std::string describeCamera(const CameraSpec& camera) {
-    if (camera.projection == Projection::orthographic)
-        return "orthographic along " + point(camera.ortho_direction);
-    std::ostringstream fov;
-    fov << std::setprecision(4) << camera.fov_degrees;
-    return "perspective from " + point(camera.eye) + " towards " + point(camera.target) + ", up " +
-           point(camera.up) + ", fov " + fov.str() + " degrees";
-}
-
 bool colourOnStandardError() {
     const char* no_colour = std::getenv("NO_COLOR");
     return isatty(STDERR_FILENO) == 1 && (no_colour == nullptr || *no_colour == '\0');

@@ -5,8 +5,6 @@
 #include <cstdint>
 #include <string>
 
-#include "vissort/camera.h"
-
 namespace vissort::cli {
 
 /// "1 object", "2 objects", "0 passes": noun's plural is noun + "s", or plural when given.
@@ -15,10 +13,6 @@ std::string counted(uint64_t count, const std::string& noun, const std::string& 
 /// Milliseconds as people read them: "0.02 ms", "8.68 ms", "24.7 ms", "1593 ms" (two decimals
 /// below 10, one below 100, whole beyond).
 std::string milliseconds(double ms);
-
-/// A camera in one line: "perspective from 1.2,3,4 towards 0,0,0, up 0,1,0, fov 45 degrees" or
-/// "orthographic along 0,0,-1"; numbers with 4 significant digits.
-std::string describeCamera(const CameraSpec& camera);
 
 /// Prints "vissort: warning: MESSAGE" on one line to standard error (in yellow on a terminal,
 /// unless NO_COLOR is set).

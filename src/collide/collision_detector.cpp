@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
 
 #include "collide/collider.h"
@@ -44,6 +45,21 @@ CollisionDetector::CollisionDetector(std::span<const PrimitiveRange> objects,
     for (const PrimitiveRange& o : objects)
         triangles_needed_ =
             std::max<uint64_t>(triangles_needed_, uint64_t(o.first_triangle) + o.triangle_count);
+    // A triangle in two objects would be reported as colliding with itself.
+    std::vector<uint32_t> by_first(objects.size());
+    std::iota(by_first.begin(), by_first.end(), 0u);
+    std::sort(by_first.begin(), by_first.end(), [&](uint32_t a, uint32_t b) {
+        return objects[a].first_triangle < objects[b].first_triangle;
+    });
+    for (std::size_t k = 1; k < by_first.size(); ++k) {
+        const PrimitiveRange& before = objects[by_first[k - 1]];
+        if (uint64_t(before.first_triangle) + before.triangle_count >
+            objects[by_first[k]].first_triangle)
+            throw std::invalid_argument(
+                "collision objects " + std::to_string(std::min(by_first[k - 1], by_first[k])) +
+                " and " + std::to_string(std::max(by_first[k - 1], by_first[k])) +
+                " share triangles (each triangle belongs to one object)");
+    }
     switch (settings_.method) {
     case CollisionMethod::vissort:
         collider_ = detail::makeVisibilityCollider(objects, settings_);

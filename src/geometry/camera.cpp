@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -303,6 +305,25 @@ Status validateImageSize(uint64_t width, uint64_t height) {
                                " is out of range: each side 1.." + std::to_string(kMaxImageSide) +
                                ", at most " + std::to_string(kMaxImagePixels) + " pixels");
     return Status::ok();
+}
+
+namespace {
+
+std::string point(const Vec3& p) {
+    std::ostringstream text;
+    text << std::setprecision(4) << p.x << ',' << p.y << ',' << p.z;
+    return text.str();
+}
+
+} // namespace
+
+std::string describeCamera(const CameraSpec& camera) {
+    if (camera.projection == Projection::orthographic)
+        return "orthographic along " + point(camera.ortho_direction);
+    std::ostringstream fov;
+    fov << std::setprecision(4) << camera.fov_degrees;
+    return "perspective from " + point(camera.eye) + " towards " + point(camera.target) + ", up " +
+           point(camera.up) + ", fov " + fov.str() + " degrees";
 }
 
 } // namespace vissort

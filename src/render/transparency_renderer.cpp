@@ -377,7 +377,7 @@ TransparencyRenderer::TransparencyRenderer(std::shared_ptr<GlContext> context, c
         d.context->makeCurrent(); // a gl oracle made it current too; the same context
     }
     d.geometry = std::make_unique<detail::SceneGeometry>(scene, colours);
-    d.geometry->setFlat(settings.flat_shading);
+    d.geometry->setFlat(settings.shading == Shading::flat);
     d.shade_program = detail::linkProgram(detail::kShadeVertexShader, detail::kShadeFragmentShader);
 }
 

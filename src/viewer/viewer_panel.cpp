@@ -65,7 +65,7 @@ PanelActions drawPanel(const PanelState& state, RenderSettings& settings, Overla
                 actions.settings_changed = true;
             }
         }
-        actions.settings_changed |= ImGui::Checkbox("flat shading", &settings.flat_shading);
+        actions.settings_changed |= enumCombo("shading", kShadingNames, settings.shading);
         actions.settings_changed |= enumCombo("check", kOrderCheckNames, settings.check);
     }
     if (ImGui::CollapsingHeader("Show", ImGuiTreeNodeFlags_DefaultOpen)) {

@@ -294,6 +294,26 @@ TEST(CollisionDetector, RejectsPositionsThatDoNotFit) {
     }
 }
 
+// A triangle in two objects would collide with itself: refused, in any order of the ranges.
+TEST(CollisionDetector, RejectsObjectsThatShareTriangles) {
+    Objects two;
+    two.addBox({0, 0, 0}, {1, 1, 1});
+    two.addBox({3, 0, 0}, {4, 1, 1});
+    std::vector<PrimitiveRange> shared = {two.ranges[1], two.ranges[0]};
+    shared[0].first_triangle -= 1; // object 0 takes the last triangle of object 1
+    shared[0].triangle_count += 1;
+    for (CollisionMethod m : collisionMethods()) {
+        try {
+            CollisionDetector detector(shared, method(m));
+            ADD_FAILURE() << collisionMethodName(m) << ": accepted shared triangles";
+        } catch (const std::invalid_argument& e) {
+            EXPECT_STREQ(e.what(), "collision objects 0 and 1 share triangles (each triangle "
+                                   "belongs to one object)");
+        }
+        EXPECT_NO_THROW(CollisionDetector(two.ranges, method(m))) << "disjoint ranges";
+    }
+}
+
 TEST(CollisionDetector, MethodNamesRoundTrip) {
     for (CollisionMethod m : collisionMethods()) {
         const Result<CollisionMethod> parsed = parseCollisionMethod(collisionMethodName(m));

@@ -794,3 +794,21 @@ TEST(ImageSize, LimitsEachSideAndThePixelCount) {
 
 } // namespace
 } // namespace vissort
+
+namespace vissort {
+namespace {
+
+TEST(DescribeCamera, OneLineWithFourDigits) {
+    CameraSpec camera;
+    camera.eye = {1.23456, 2, -3};
+    camera.target = {0, 0.5, 0};
+    camera.fov_degrees = 47.51234;
+    EXPECT_EQ(describeCamera(camera),
+              "perspective from 1.235,2,-3 towards 0,0.5,0, up 0,1,0, fov 47.51 degrees");
+    camera.projection = Projection::orthographic;
+    camera.ortho_direction = {0, 0, -1};
+    EXPECT_EQ(describeCamera(camera), "orthographic along 0,0,-1");
+}
+
+} // namespace
+} // namespace vissort

@@ -154,7 +154,7 @@ TEST(TieRule, LinkedListAndVissortApplyTheRuleOfTheABuffer) {
             colours[object.first_triangle + t] = {object.colour.r, object.colour.g, object.colour.b,
                                                   0.4f};
     RenderSettings settings = settingsOf(BlendMethod::linked_list);
-    settings.flat_shading = true;
+    settings.shading = Shading::flat;
     const test::ABuffer reference =
         test::rayCastComposite(scene.positions, view, colours, settings.background);
     for (BlendMethod method : {BlendMethod::linked_list, BlendMethod::vissort}) {

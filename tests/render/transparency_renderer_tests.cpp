@@ -135,7 +135,7 @@ TEST_P(RenderScenes, ExactMethodsMatchTheRayCastABuffer) {
     const Scene scene = test::loadTestScene(c.scene);
     const ViewProjection view = viewOf(scene, c);
     RenderSettings flat = settingsOf(c, BlendMethod::linked_list);
-    flat.flat_shading = true;
+    flat.shading = Shading::flat;
     const test::ABuffer reference = test::rayCastComposite(
         scene.positions, view, triangleColours(scene, flat), flat.background);
     EXPECT_GE(reference.max_layers, c.min_layers);
@@ -449,7 +449,7 @@ TEST(TransparencyRenderer, ColourCyclesPaintsEachCycleOverTheABuffer) {
     const RenderCase c{"SticksAndBox", "", true, 0.5f, {}, true, 2};
     const ViewProjection view = viewOf(scene, c);
     RenderSettings settings = settingsOf(c, BlendMethod::vissort);
-    settings.flat_shading = true;
+    settings.shading = Shading::flat;
     settings.colour_cycles = true;
     std::vector<Rgba> colours = triangleColours(scene, settings);
     const SceneObject& box = scene.objects[3];
