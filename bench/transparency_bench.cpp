@@ -3,6 +3,7 @@
 #include "transparency_bench.h"
 
 #include <algorithm>
+#include <memory>
 
 #include "support/measurement.h"
 #include "vissort/frame_driver.h"
@@ -22,6 +23,61 @@ const TransparencyFamily kFamilies[] = {
      }},
 };
 
+// Every method on the scene at each count of samples a pixel, errors against linked-list's at as
+// many: result[k][method] at sample_counts[k]. A method's counts take turns frame by frame, so
+// that the machine's drift in a run weighs on each alike.
+std::vector<std::vector<TransparencyMeasured>>
+measureMethods(const TransparencyBenchSettings& settings, const Scene& scene,
+               const CameraSpec& base, std::span<const uint32_t> sample_counts) {
+    const std::size_t counts = sample_counts.size(), frames = std::size_t(settings.frames);
+    // reference[k][f]: linked-list's image of frame f at sample_counts[k]
+    std::vector<std::vector<std::vector<uint8_t>>> reference(
+        counts, std::vector<std::vector<uint8_t>>(frames));
+    std::vector<std::vector<TransparencyMeasured>> measured(
+        counts, std::vector<TransparencyMeasured>(std::size(kTransparencyMethods)));
+    for (std::size_t index : kRenderOrder) {
+        const BlendMethod method = kTransparencyMethods[index];
+        std::vector<std::unique_ptr<TransparencyRenderer>> renderers;
+        for (uint32_t samples : sample_counts) {
+            RenderSettings render_settings;
+            render_settings.method = method;
+            render_settings.level = settings.level;
+            render_settings.samples = samples;
+            renderers.push_back(
+                std::make_unique<TransparencyRenderer>(settings.context, scene, render_settings));
+        }
+        FrameDriver driver(scene, base, CameraPath::orbit, settings.width, settings.height);
+        std::vector<std::vector<double>> ms(counts), order_ms(counts);
+        for (std::size_t f = 0; f < frames; ++f) {
+            driver.seek(int(f));
+            for (std::size_t k = 0; k < counts; ++k) {
+                TransparencyMeasured& m = measured[k][index];
+                RenderStats stats;
+                std::vector<uint8_t> image =
+                    renderers[k]->render(driver.positions(), driver.view(), stats).toRgba8();
+                if (f > 0) {
+                    ms[k].push_back(stats.total_ms);
+                    order_ms[k].push_back(stats.order_ms);
+                }
+                m.passes = std::max(m.passes, stats.passes);
+                m.fragments = std::max(m.fragments, stats.fragments);
+                if (method == BlendMethod::linked_list) {
+                    reference[k][f] = std::move(image);
+                } else {
+                    const ImageError error = compareImages(image, reference[k][f]);
+                    m.max_abs = std::max(m.max_abs, error.max_abs);
+                    m.rmse = std::max(m.rmse, error.rmse);
+                }
+            }
+        }
+        for (std::size_t k = 0; k < counts; ++k) {
+            measured[k][index].ms = median(ms[k]);
+            measured[k][index].order_ms = median(order_ms[k]);
+        }
+    }
+    return measured;
+}
+
 } // namespace
 
 std::span<const TransparencyFamily> transparencyFamilies() {
@@ -33,7 +89,6 @@ runTransparencyBench(const TransparencyBenchSettings& settings,
                      const std::function<void(const TransparencyFamily&)>& on_family,
                      const std::function<void(const TransparencyBenchRow&)>& on_row) {
     using Rows = Result<std::vector<TransparencyBenchRow>>;
-    const int frames = settings.frames;
     const uint32_t width = settings.width, height = settings.height;
     std::vector<TransparencyBenchRow> rows;
     for (const TransparencyFamily& family : kFamilies) {
@@ -50,40 +105,13 @@ runTransparencyBench(const TransparencyBenchSettings& settings,
             const Scene& scene = *loaded.value;
             const CameraSpec base = scene.camera.value_or(
                 defaultCamera(scene.positions.bounds(), double(width) / height));
-            std::vector<std::vector<uint8_t>> reference(static_cast<std::size_t>(frames));
-            row.methods.resize(std::size(kTransparencyMethods));
-            for (std::size_t index : kRenderOrder) {
-                const BlendMethod method = kTransparencyMethods[index];
-                RenderSettings render_settings;
-                render_settings.method = method;
-                render_settings.level = settings.level;
-                TransparencyRenderer renderer(settings.context, scene, render_settings);
-                FrameDriver driver(scene, base, CameraPath::orbit, width, height);
-                TransparencyMeasured m;
-                std::vector<double> ms, order_ms;
-                for (int f = 0; f < frames; ++f) {
-                    driver.seek(f);
-                    RenderStats stats;
-                    std::vector<uint8_t> image =
-                        renderer.render(driver.positions(), driver.view(), stats).toRgba8();
-                    if (f > 0) {
-                        ms.push_back(stats.total_ms);
-                        order_ms.push_back(stats.order_ms);
-                    }
-                    m.passes = std::max(m.passes, stats.passes);
-                    m.fragments = std::max(m.fragments, stats.fragments);
-                    if (method == BlendMethod::linked_list) {
-                        reference[std::size_t(f)] = std::move(image);
-                    } else {
-                        const ImageError error = compareImages(image, reference[std::size_t(f)]);
-                        m.max_abs = std::max(m.max_abs, error.max_abs);
-                        m.rmse = std::max(m.rmse, error.rmse);
-                    }
-                }
-                m.ms = median(ms);
-                m.order_ms = median(order_ms);
-                row.methods[index] = m;
-            }
+            const uint32_t one = 1, both[] = {1, settings.samples};
+            std::vector<std::vector<TransparencyMeasured>> measured = measureMethods(
+                settings, scene, base,
+                settings.samples > 1 ? std::span<const uint32_t>(both) : std::span(&one, 1));
+            row.methods = std::move(measured[0]);
+            if (settings.samples > 1)
+                row.sampled = std::move(measured[1]);
             // Depth peeling takes one pass a layer and one more: the depth complexity the frames
             // really had, in front of the opaque surfaces.
             row.seen = row.methods[kTransparencyPeel].passes - 1;

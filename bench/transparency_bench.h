@@ -50,7 +50,10 @@ struct TransparencyBenchRow {
     std::string family, specification;
     uint32_t depth = 0;
     uint32_t seen = 0; // the most transparent layers at a pixel: depth peeling's passes - 1
-    std::vector<TransparencyMeasured> methods; // in kTransparencyMethods order
+    std::vector<TransparencyMeasured> methods; // in kTransparencyMethods order, 1 sample a pixel
+    /// With TransparencyBenchSettings::samples over 1: every method again at that many samples
+    /// a pixel (errors against linked-list sampled the same way), in the same order; else empty.
+    std::vector<TransparencyMeasured> sampled;
 };
 
 struct TransparencyBenchSettings {
@@ -59,6 +62,9 @@ struct TransparencyBenchSettings {
     OrderLevel level = OrderLevel::multistage; // vissort's, with the cpu oracle
     int frames = 3;                            // on an orbit, the first untimed: 2..100
     std::vector<uint32_t> depths = {2, 4, 8, 16, 32, 64};
+    /// Samples a pixel (RenderSettings::samples) to measure next to 1, in the same run: 1, 2, 4
+    /// or 8; 1 measures one sample only.
+    uint32_t samples = 1;
 };
 
 /// Renders every method on every family at every depth. on_family runs before a family's rows,

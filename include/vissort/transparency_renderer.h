@@ -70,22 +70,39 @@ inline std::string blendMethodNames() {
 /// cycle.
 inline constexpr float kBlendingDepthTolerance = -1.0f / (1 << 16);
 
-/// How every method shades a triangle (the same shading in each, so that methods stay
-/// comparable): lit, a headlight and a membrane term that makes surfaces seen edge-on more
-/// opaque (per vertex, as in the paper); flat, each object's colour and alpha, unlit, so that a
-/// ray-cast reference can reproduce every pixel.
-enum class Shading { lit, flat };
+/// How every method shades a triangle, per vertex (the same shading in each, so that methods
+/// stay comparable): lit, a two-sided headlight; flat, each object's colour and alpha, unlit, so
+/// that a ray-cast reference can reproduce every pixel; membrane, lit, with each transparent
+/// surface a thin layer of its alpha seen at an angle (the paper's membrane shading, section
+/// 5.2): alpha' = 1 - (1 - alpha)^(1 / max(|n . v|, 0.05)), opaque where seen edge-on.
+enum class Shading { lit, flat, membrane };
 inline constexpr EnumName<Shading> kShadingNames[] = {
     {Shading::lit, "lit"},
     {Shading::flat, "flat"},
+    {Shading::membrane, "membrane"},
 };
-/// "lit" or "flat", or "unknown shading 'NAME' (expected lit or flat)".
+/// A shading by name, or "unknown shading 'NAME' (expected lit, flat or membrane)".
 inline Result<Shading> parseShading(std::string_view name) {
     return parseEnum<Shading>(kShadingNames, name, "shading");
 }
 inline const char* shadingName(Shading shading) {
     return enumName<Shading>(kShadingNames, shading);
 }
+
+/// The samples a pixel RenderSettings::samples may ask for, and their grid: samples are laid
+/// out in a grid of columns x rows inside each pixel, at the centres of its cells.
+struct SampleGrid {
+    uint32_t samples, columns, rows;
+};
+inline constexpr SampleGrid kSampleGrids[] = {{1, 1, 1}, {2, 2, 1}, {4, 2, 2}, {8, 4, 2}};
+/// The grid of `samples` a pixel, or nullptr when it is not 1, 2, 4 or 8.
+inline const SampleGrid* sampleGridOf(uint32_t samples) {
+    for (const SampleGrid& grid : kSampleGrids)
+        if (grid.samples == samples)
+            return &grid;
+    return nullptr;
+}
+
 struct RenderSettings {
     BlendMethod method = BlendMethod::vissort;
     OrderLevel level = OrderLevel::object; // vissort's ordering level; centroid's unit
@@ -95,6 +112,12 @@ struct RenderSettings {
     float alpha = 0.5f;                    // with all_transparent, in (0, 1]
     Rgba background{1.0f, 1.0f, 1.0f, 1.0f};
     Shading shading = Shading::lit;
+    /// Samples a pixel, 1, 2, 4 or 8 (the paper's images: 4): every method renders, blends,
+    /// checks, repairs and composites its cycles on each sample as on a pixel of its own, and
+    /// the samples of a pixel are averaged once, at the end (supersampling, the grid of
+    /// kSampleGrids; docs/transparency.md). vissort orders once a frame, at pixel resolution:
+    /// the check finds what differs at the samples. Costs about samples times the pixels' work.
+    uint32_t samples = 1;
     /// vissort: the primitives of each of the order's cycles drawn in a colour of their own (a
     /// palette of 8, cycle g in colour g modulo 8) at their object's alpha, to see where the
     /// order needed per-pixel compositing. Highlighted triangles stay highlighted.
@@ -144,7 +167,8 @@ struct RenderStats {
 class TransparencyRenderer {
 public:
     /// A renderer of scene through context. Throws std::invalid_argument for bad settings (alpha
-    /// outside (0, 1]) and std::runtime_error when OpenGL lacks what a method needs.
+    /// outside (0, 1], samples not 1, 2, 4 or 8) and std::runtime_error when OpenGL lacks what a
+    /// method needs.
     TransparencyRenderer(std::shared_ptr<GlContext> context, const Scene& scene,
                          const RenderSettings& settings);
     ~TransparencyRenderer();

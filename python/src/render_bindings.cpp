@@ -1,6 +1,7 @@
 // vissort.render and vissort.Renderer: exact order-independent transparency (and its peer
 // methods) as (H, W, 4) uint8 images, through the process's shared OpenGL context.
 
+#include <algorithm>
 #include <memory>
 #include <mutex>
 
@@ -22,7 +23,7 @@ namespace {
 #if VISSORT_WITH_GL
 RenderSettings settingsOf(const std::string& method, const std::string& level,
                           const std::string& oracle, bool all_transparent, double alpha,
-                          const std::string& shading, const std::string& check,
+                          const std::string& shading, int samples, const std::string& check,
                           const py::handle& background) {
     RenderSettings settings;
     const Result<BlendMethod> parsed_method = parseBlendMethod(method);
@@ -43,6 +44,9 @@ RenderSettings settingsOf(const std::string& method, const std::string& level,
     if (!parsed_shading)
         throw py::value_error(parsed_shading.error);
     settings.shading = *parsed_shading.value;
+    if (sampleGridOf(uint32_t(std::max(samples, 0))) == nullptr)
+        throw py::value_error("samples must be 1, 2, 4 or 8, got " + std::to_string(samples));
+    settings.samples = uint32_t(samples);
     const Result<RenderSettings::OrderCheck> parsed_check = parseOrderCheck(check);
     if (!parsed_check)
         throw py::value_error(parsed_check.error);
@@ -142,8 +146,9 @@ private:
 constexpr const char* kSettingsDoc =
     "method: vissort, unsorted, centroid, peel, dual-peel, linked-list or weighted. level and "
     "oracle: vissort's ordering (centroid's unit). all_transparent with alpha: every object "
-    "transparent. shading: lit or flat. check: auto, on or off (vissort's per-pixel check "
-    "and repair). background: (r, g, b[, a]) in [0, 1]. As the command line's render options.";
+    "transparent. shading: lit, flat or membrane. samples: 1, 2, 4 or 8 a pixel, averaged "
+    "(anti-aliasing). check: auto, on or off (vissort's per-pixel check and repair). "
+    "background: (r, g, b[, a]) in [0, 1]. As the command line's render options.";
 
 } // namespace
 
@@ -151,12 +156,13 @@ void bindRender(py::module_& m) {
 #if VISSORT_WITH_GL
     const auto make = [](const std::shared_ptr<Scene>& scene, const std::string& method,
                          const std::string& level, const std::string& oracle, bool all_transparent,
-                         double alpha, const std::string& shading, const std::string& check,
-                         const py::object& background) {
+                         double alpha, const std::string& shading, int samples,
+                         const std::string& check, const py::object& background) {
         if (!scene)
             throw py::value_error("render needs a Scene (vissort.load or vissort.builtin)");
-        return std::make_unique<Renderer>(scene, settingsOf(method, level, oracle, all_transparent,
-                                                            alpha, shading, check, background));
+        return std::make_unique<Renderer>(scene,
+                                          settingsOf(method, level, oracle, all_transparent, alpha,
+                                                     shading, samples, check, background));
     };
     py::class_<Renderer>(m, "Renderer",
                          "Renders frames of one scene with transparency; each frame starts "
@@ -164,8 +170,8 @@ void bindRender(py::module_& m) {
         .def(py::init(make), py::arg("scene"), py::kw_only(), py::arg("method") = "vissort",
              py::arg("level") = "object", py::arg("oracle") = "cpu",
              py::arg("all_transparent") = false, py::arg("alpha") = 0.5, py::arg("shading") = "lit",
-             py::arg("check") = "auto", py::arg("background") = py::make_tuple(1.0, 1.0, 1.0, 1.0),
-             kSettingsDoc)
+             py::arg("samples") = 1, py::arg("check") = "auto",
+             py::arg("background") = py::make_tuple(1.0, 1.0, 1.0, 1.0), kSettingsDoc)
         .def("render", &Renderer::render, py::arg("camera") = py::none(),
              py::arg("size") = py::make_tuple(1024, 1024), py::kw_only(),
              py::arg("time") = py::none(), py::arg("positions") = py::none(),
@@ -179,18 +185,20 @@ void bindRender(py::module_& m) {
         [make](const std::shared_ptr<Scene>& scene, const py::object& camera,
                const py::object& size, const std::string& method, const std::string& level,
                const std::string& oracle, bool all_transparent, double alpha,
-               const std::string& shading, const std::string& check, const py::object& background,
-               const py::object& time, const py::object& positions, const py::object& triangles) {
+               const std::string& shading, int samples, const std::string& check,
+               const py::object& background, const py::object& time, const py::object& positions,
+               const py::object& triangles) {
             auto renderer = make(scene, method, level, oracle, all_transparent, alpha, shading,
-                                 check, background);
+                                 samples, check, background);
             return renderer->render(camera, size, time, positions, triangles);
         },
         py::arg("scene"), py::arg("camera") = py::none(),
         py::arg("size") = py::make_tuple(1024, 1024), py::kw_only(), py::arg("method") = "vissort",
         py::arg("level") = "object", py::arg("oracle") = "cpu", py::arg("all_transparent") = false,
-        py::arg("alpha") = 0.5, py::arg("shading") = "lit", py::arg("check") = "auto",
-        py::arg("background") = py::make_tuple(1.0, 1.0, 1.0, 1.0), py::arg("time") = py::none(),
-        py::arg("positions") = py::none(), py::arg("triangles") = py::none(),
+        py::arg("alpha") = 0.5, py::arg("shading") = "lit", py::arg("samples") = 1,
+        py::arg("check") = "auto", py::arg("background") = py::make_tuple(1.0, 1.0, 1.0, 1.0),
+        py::arg("time") = py::none(), py::arg("positions") = py::none(),
+        py::arg("triangles") = py::none(),
         ("One frame as an (H, W, 4) uint8 RGBA image (Renderer renders many). " +
          std::string(kSettingsDoc))
             .c_str());

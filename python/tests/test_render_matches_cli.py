@@ -36,6 +36,23 @@ def test_settings_and_camera_equal_the_cli(cli, tmp_path):
     np.testing.assert_array_equal(image, expected)
 
 
+def test_membrane_and_samples_equal_the_cli(cli, tmp_path):
+    scene = vissort.builtin("bunnies", n=4, seed=2)
+    image = vissort.render(scene, size=(64, 48), shading="membrane", samples=4)
+    expected = cli_image(cli, tmp_path, "builtin:bunnies?n=4&seed=2", "--size", "64x48",
+                         "--shading", "membrane", "--samples", "4")
+    np.testing.assert_array_equal(image, expected)
+    # The samples show: one sample a pixel is another picture.
+    one = vissort.render(scene, size=(64, 48), shading="membrane")
+    assert np.abs(image.astype(int) - one.astype(int)).max() > 1
+
+
+@pytest.mark.parametrize("samples", [0, 3, 16])
+def test_samples_other_than_1_2_4_8_are_refused(samples):
+    with pytest.raises(ValueError, match="samples must be 1, 2, 4 or 8"):
+        vissort.Renderer(vissort.builtin("bunnies", n=1), samples=samples)
+
+
 def test_exact_against_linked_list_over_coherent_frames():
     # The renderer keeps the order from frame to frame; every frame stays within 1/255 of the
     # per-pixel linked-list reference (an independent method).

@@ -49,7 +49,8 @@ _Oracle = Literal["cpu", "cpu-reference", "exact", "gl"]
 _RenderMethod = Literal[
     "vissort", "unsorted", "centroid", "peel", "dual-peel", "linked-list", "weighted"
 ]
-_Shading = Literal["lit", "flat"]
+_Shading = Literal["lit", "flat", "membrane"]
+_Samples = Literal[1, 2, 4, 8]
 _Check = Literal["auto", "on", "off"]
 _CollisionMethod = Literal["vissort", "brute", "bullet", "fcl"]
 
@@ -302,13 +303,14 @@ class Renderer:
         all_transparent: bool = False,
         alpha: float = 0.5,
         shading: _Shading = "lit",
+        samples: _Samples = 1,
         check: _Check = "auto",
         background: npt.ArrayLike = (1.0, 1.0, 1.0, 1.0),
     ) -> None:
         """method: vissort, unsorted, centroid, peel, dual-peel, linked-list or weighted. level
         and oracle: vissort's ordering (centroid's unit). all_transparent with alpha: every
-        object transparent. shading: lit or flat. check: auto, on or off (vissort's per-pixel
-        check and repair). background: (r, g, b[, a]) in [0, 1]. As the command line's render
+        object transparent. shading: lit, flat or membrane. samples: 1, 2, 4 or 8 a pixel,
+        averaged (anti-aliasing). check: auto, on or off (vissort's per-pixel check and repair). background: (r, g, b[, a]) in [0, 1]. As the command line's render
         options."""
     def render(
         self,
@@ -338,6 +340,7 @@ def render(
     all_transparent: bool = False,
     alpha: float = 0.5,
     shading: _Shading = "lit",
+    samples: _Samples = 1,
     check: _Check = "auto",
     background: npt.ArrayLike = (1.0, 1.0, 1.0, 1.0),
     time: Optional[_Seconds] = None,
@@ -349,8 +352,8 @@ def render(
     its triangle count.
     method: vissort, unsorted, centroid, peel, dual-peel, linked-list or weighted. level and
     oracle: vissort's ordering (centroid's unit). all_transparent with alpha: every object
-    transparent. shading: lit or flat. check: auto, on or off (vissort's per-pixel check and
-    repair). background: (r, g, b[, a]) in [0, 1]. As the command line's render options.
+    transparent. shading: lit, flat or membrane. samples: 1, 2, 4 or 8 a pixel, averaged
+    (anti-aliasing). check: auto, on or off (vissort's per-pixel check and repair). background: (r, g, b[, a]) in [0, 1]. As the command line's render options.
     Needs OpenGL (has_gl); RuntimeError without it. Releases the GIL."""
 
 class CollisionDetector:

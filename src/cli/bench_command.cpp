@@ -36,6 +36,11 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options) {
                      "transparency: depth complexities to measure, comma-separated")
         ->capture_default_str();
     command
+        ->add_option("--samples", options.samples,
+                     "transparency: also measure every method at 2, 4 or 8 samples a pixel, "
+                     "next to 1, in the same run")
+        ->capture_default_str();
+    command
         ->add_option("--counts", options.counts,
                      "collision: numbers of bunnies to measure, comma-separated")
         ->capture_default_str();

@@ -43,6 +43,7 @@ struct BenchOptions {
     std::optional<std::string> size; // each benchmark has its own default
     std::string level = "multistage";
     std::string depths = "2,4,8,16,32,64";
+    int samples = 1; // transparency: samples a pixel measured next to 1
     std::string counts = "18,36,72,144";
     std::string plot_path;
     JsonOutput json;
@@ -80,12 +81,13 @@ struct RendererOptions {
     bool all_transparent = false;
     double alpha = 0.5;
     std::string shading = "lit";
+    int samples = 1;
     std::string check = "auto";
     double list_memory_mib = 3072;
     bool colour_cycles = false;
 };
 /// Adds --method (its help: method_help) --level --oracle --all-transparent --alpha --shading
-/// --check --list-memory --colour-cycles.
+/// --samples --check --list-memory --colour-cycles.
 void addRendererOptions(CLI::App& command, RendererOptions& options,
                         const std::string& method_help);
 /// Empty on success, else a one-line message naming the bad option. The method is left to the

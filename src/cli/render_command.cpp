@@ -112,6 +112,8 @@ int renderEveryMethod(const RenderOptions& options, RenderSettings settings, con
                                      {"level", orderLevelName(settings.level)},
                                      {"oracle", oracleName(settings.oracle)},
                                      {"size", {view.width, view.height}},
+                                     {"shading", shadingName(settings.shading)},
+                                     {"samples", settings.samples},
                                      {"methods", methods}};
     return writeJsonFile(options.json, document);
 }
@@ -327,6 +329,8 @@ int runRender(const RenderOptions& options) {
         document["level"] = orderLevelName(settings.level);
         document["oracle"] = oracleName(settings.oracle);
         document["size"] = {view.width, view.height};
+        document["shading"] = shadingName(settings.shading);
+        document["samples"] = settings.samples;
         if (view.frames > 1)
             document["frames"] = std::move(frames);
         if (const int code = writeJsonFile(options.json, document); code != kExitOk)

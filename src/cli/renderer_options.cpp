@@ -1,5 +1,6 @@
 // The transparency renderer's options, shared by `render` and `view` (commands.h).
 
+#include <algorithm>
 #include <iostream>
 
 #include "cli/command_line_errors.h"
@@ -26,8 +27,13 @@ void addRendererOptions(CLI::App& command, RendererOptions& options,
         ->capture_default_str();
     command
         .add_option("--shading", options.shading,
-                    "lit (a headlight and a rim term, per vertex) or flat (each object's "
-                    "colour, unlit)")
+                    "lit (a headlight, per vertex), flat (each object's colour, unlit) or "
+                    "membrane (lit, transparent surfaces more opaque where seen edge-on)")
+        ->capture_default_str();
+    command
+        .add_option("--samples", options.samples,
+                    "Samples a pixel, 1, 2, 4 or 8: every method blends each sample, averaged "
+                    "at the end (anti-aliasing; costs about that many times the pixel work)")
         ->capture_default_str();
     command
         .add_option("--check", options.check,
@@ -59,8 +65,10 @@ void printRenderHeader(const std::string& specification, const Scene& scene,
     std::cout << specification << ": " << counted(scene.objects.size(), "object") << " ("
               << transparent << " transparent), " << counted(scene.triangleCount(), "triangle")
               << "; " << blendMethodName(settings.method) << ", " << orderLevelName(settings.level)
-              << " level, " << view.width << 'x' << view.height << ", "
-              << counted(view.frames, "frame") << '\n'
+              << " level, " << view.width << 'x' << view.height
+              << (settings.samples > 1 ? " at " + std::to_string(settings.samples) + " samples"
+                                       : std::string())
+              << ", " << counted(view.frames, "frame") << '\n'
               << cameraLine(view) << '\n';
     if (transparent == 0) // a hint, not a problem: the picture is right
         std::cout << "note: no transparent objects, so every method draws the same opaque "
@@ -97,6 +105,9 @@ std::string resolveRendererOptions(const RendererOptions& options, bool allow_al
     if (!shading)
         return "--shading: " + shading.error;
     settings.shading = *shading.value;
+    if (sampleGridOf(uint32_t(std::max(options.samples, 0))) == nullptr)
+        return "--samples must be 1, 2, 4 or 8, got " + std::to_string(options.samples);
+    settings.samples = uint32_t(options.samples);
     const Result<RenderSettings::OrderCheck> check = parseOrderCheck(options.check);
     if (!check)
         return "--check: " + check.error;

@@ -166,7 +166,7 @@ void SceneGeometry::setView(GLuint program, const ViewProjection& view) const {
                        float(view.forward.x), float(view.forward.y), float(view.forward.z));
     glProgramUniform1i(program, glGetUniformLocation(program, "orthographic"),
                        view.projection == Projection::orthographic ? 1 : 0);
-    glProgramUniform1i(program, glGetUniformLocation(program, "unlit"), flat_ ? 1 : 0);
+    glProgramUniform1i(program, glGetUniformLocation(program, "shading"), int(shading_));
     glProgramUniform1i(program, glGetUniformLocation(program, "tinting"), tinting_ ? 1 : 0);
 }
 

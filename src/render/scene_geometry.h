@@ -11,6 +11,7 @@
 #include "render/render_mesh.h"
 #include "vissort/camera.h"
 #include "vissort/scene.h"
+#include "vissort/transparency_renderer.h" // Shading
 
 namespace vissort::detail {
 
@@ -28,8 +29,8 @@ public:
 
     /// Sets a program's view and shading uniforms (those of kShadeVertexShader).
     void setView(GLuint program, const ViewProjection& view) const;
-    /// Flat shading (each object's colour, unlit) instead of the lit default.
-    void setFlat(bool flat) { flat_ = flat; }
+    /// How triangles are shaded (shading.h); lit unless set.
+    void setShading(Shading shading) { shading_ = shading; }
     /// Draws these triangles (scene triangle ids) in the highlight colour (shading.h); empty:
     /// none. Highlights are drawn over cycle colours.
     void setHighlighted(std::span<const uint32_t> triangles);
@@ -76,7 +77,7 @@ private:
     std::vector<uint32_t> cycle_tints_;     // one per triangle: kNoTint or kCycleTint + group
     std::vector<uint32_t> cycle_triangles_; // those with a cycle tint, to clear it cheaply
     std::vector<uint32_t> tint_data_;       // what the tint buffer holds
-    bool flat_ = false;
+    Shading shading_ = Shading::lit;
     bool tinting_ = false;
 };
 

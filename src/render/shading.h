@@ -7,12 +7,17 @@
 
 namespace vissort::detail {
 
-// Per-vertex shading: a headlight, two-sided so that the inner surfaces of transparent objects
-// are lit too, and for transparent objects a membrane term that makes surfaces seen edge-on
-// more opaque (the rim of a soap bubble), as in Govindaraju et al. (I3D 2005), figure 1.
+// Per-vertex shading (Shading, transparency_renderer.h), as the paper shades in a vertex shader:
+//  - lit: a headlight, two-sided so that the inner surfaces of transparent objects are lit too;
+//  - flat: each object's colour and alpha as they are, unlit: what a ray-cast reference can
+//    reproduce;
+//  - membrane: lit, and transparent surfaces as thin layers of their alpha seen at an angle
+//    (Govindaraju et al., I3D 2005, section 5.2): light crosses 1 / |n . v| times the layer's
+//    thickness, so alpha' = 1 - (1 - alpha)^(1 / max(|n . v|, kMembraneFacing)): surfaces seen
+//    edge-on grow opaque, the rim of a soap bubble. Opaque surfaces (alpha 1) stay opaque.
 // Inputs: SceneGeometry's vertex stream (position, unit normal, object) and per-object colours
-// (SSBO binding 0). Output: `shaded`, straight (not premultiplied) colour and alpha. With `unlit`,
-// each object's colour and alpha as they are, unlit: what a ray-cast reference can reproduce.
+// (SSBO binding 0); `shading` is the Shading's index. Output: `shaded`, straight (not
+// premultiplied) colour and alpha, interpolated across the triangle.
 // With `tinting`, each triangle's tint in SSBO binding 5 (one uint per triangle; corners are
 // unindexed, so a corner's index / 3 is its triangle) replaces its object's colour: kHighlightTint
 // a strong magenta, nearly opaque (colliding triangles); kCycleTint + g the colour g (modulo 8) of
@@ -29,9 +34,11 @@ uniform mat4 view_projection;
 uniform vec3 eye;             // perspective: the eye
 uniform vec3 view_direction;  // orthographic: the direction of view
 uniform bool orthographic;
-uniform bool unlit;
+uniform int shading;  // Shading: 0 lit, 1 flat, 2 membrane
 uniform bool tinting;
 out vec4 shaded;
+// The most a layer seen edge-on thickens: 20 times (alpha 0.25 becomes 0.997).
+const float kMembraneFacing = 0.05;
 const vec3 kCyclePalette[8] = vec3[8](
     vec3(1.0, 0.55, 0.0), vec3(0.1, 0.75, 0.2), vec3(0.15, 0.4, 1.0), vec3(1.0, 0.9, 0.0),
     vec3(0.0, 0.85, 0.9), vec3(0.9, 0.1, 0.1), vec3(0.5, 0.25, 0.85), vec3(0.55, 0.35, 0.1));
@@ -46,7 +53,7 @@ void main() {
         base = vec4(1.0, 0.1, 0.55, max(base.a, 0.85));  // kHighlightTint
     else if (tint >= 2u)
         base = vec4(kCyclePalette[(tint - 2u) % 8u], base.a);  // kCycleTint + group
-    if (unlit) {
+    if (shading == 1) {  // flat
         shaded = base;
         return;
     }
@@ -54,7 +61,8 @@ void main() {
     float facing = length(normal) > 0.0 ? abs(dot(normal, to_eye)) : 1.0;
     vec3 rgb = base.rgb * (0.3 + 0.7 * facing);
     float alpha = base.a;
-    if (alpha < 1.0) alpha = alpha + (1.0 - alpha) * 0.5 * pow(1.0 - facing, 3.0);
+    if (shading == 2 && alpha < 1.0)  // membrane
+        alpha = 1.0 - pow(1.0 - alpha, 1.0 / max(facing, kMembraneFacing));
     shaded = vec4(rgb, alpha);
 }
 )";

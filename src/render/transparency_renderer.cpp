@@ -15,6 +15,7 @@
 #include "render/dual_depth_peeling.h"
 #include "render/fragment_lists.h"
 #include "render/render_target.h"
+#include "render/sample_resolve.h"
 #include "render/scene_geometry.h"
 #include "render/shading.h"
 #include "render/verified_blending.h"
@@ -66,11 +67,21 @@ bool ordersPerFrame(BlendMethod method) {
     return method == BlendMethod::vissort || method == BlendMethod::centroid;
 }
 
+// The view of the samples: the same camera on a raster grid.columns x grid.rows times as fine,
+// each pixel's samples a block of its texels.
+ViewProjection sampledView(const ViewProjection& view, const SampleGrid& grid) {
+    ViewProjection sampled = view;
+    sampled.width = view.width * grid.columns;
+    sampled.height = view.height * grid.rows;
+    return sampled;
+}
+
 } // namespace
 
 struct TransparencyRenderer::Impl {
     std::shared_ptr<GlContext> context;
     RenderSettings settings;
+    SampleGrid grid{1, 1, 1}; // settings.samples' grid
     uint32_t triangle_count = 0;
     std::vector<uint32_t> opaque_triangles;
     TransparentPart part;
@@ -95,22 +106,29 @@ struct TransparencyRenderer::Impl {
     std::unique_ptr<detail::DualDepthPeeling> dual_peeling;
     std::unique_ptr<detail::WeightedBlended> weighted;
     std::unique_ptr<detail::VerifiedBlending> verified;
+    std::unique_ptr<detail::SampleResolve> resolve; // more than one sample a pixel
 
     // This frame's back-to-front sequence of transparent triangles (scene triangle ids), for the
-    // methods that order per frame.
-    void buildSequence(PositionsView positions, const ViewProjection& view, RenderStats& stats) {
+    // methods that order per frame: ordered through view, its pixels; its groups' rectangles in
+    // sampled's (the render target's).
+    void buildSequence(PositionsView positions, const ViewProjection& view,
+                       const ViewProjection& sampled, RenderStats& stats) {
         sequence.clear();
         if (part.scene_triangle.empty())
             return;
         if (!part.whole)
             copyCorners(positions, part.scene_triangle, part_positions);
         PositionsView ordered = part.whole ? positions : part_positions;
+        // Checked, the order is made at pixel resolution (the check finds what differs at the
+        // samples); unchecked, at the samples', so that its groups are found where they show.
+        const ViewProjection& order_view = checked() ? view : sampled;
         if (settings.method == BlendMethod::centroid) {
-            std::vector<uint32_t> order = detail::centroidBackToFront(ordered, primitives, view);
+            std::vector<uint32_t> order =
+                detail::centroidBackToFront(ordered, primitives, order_view);
             std::reverse(order.begin(), order.end());
             detail::sequenceFromOrder(order, primitives, {}, sequence);
         } else {
-            orderer->orderFrame(ordered, view, frame_order);
+            orderer->orderFrame(ordered, order_view, frame_order);
             stats.order = frame_order.stats;
             group_of.assign(primitives.size(), detail::kNoGroup);
             for (uint32_t g = 0; g < frame_order.cycles.size(); ++g)
@@ -120,7 +138,7 @@ struct TransparencyRenderer::Impl {
                 if (checked())
                     groupEveryObject(group_of);
                 else
-                    markSelfOverlapping(ordered, view, group_of);
+                    markSelfOverlapping(ordered, order_view, group_of);
             }
             detail::sequenceFromOrder(frame_order.order, primitives, group_of, sequence);
         }
@@ -130,7 +148,7 @@ struct TransparencyRenderer::Impl {
             return;
         if (checked()) {
             stats.groups = uint32_t(frame_order.cycles.size());
-            detail::blendGroupsInSequence(positions, view, sequence);
+            detail::blendGroupsInSequence(positions, sampled, sequence);
             return;
         }
         for (detail::DrawSegment& segment : sequence.segments) {
@@ -141,7 +159,7 @@ struct TransparencyRenderer::Impl {
                 detail::screenRectOf(positions,
                                      std::span(sequence.triangles)
                                          .subspan(segment.first_triangle, segment.triangle_count),
-                                     view);
+                                     sampled);
         }
     }
 
@@ -274,6 +292,28 @@ struct TransparencyRenderer::Impl {
         stats.repaired_pixels = repaired.repaired_pixels;
     }
 
+    // The render target at the samples' size, or why the driver cannot make it.
+    void resizeTarget(const ViewProjection& sampled) {
+        try {
+            target.resize(sampled.width, sampled.height);
+        } catch (const std::runtime_error& error) {
+            if (grid.samples == 1)
+                throw;
+            throw std::runtime_error(std::string(error.what()) + " (" +
+                                     std::to_string(grid.samples) + " samples a pixel)");
+        }
+    }
+
+    // The image: the target's colour, each pixel's samples averaged.
+    std::vector<float> readImage() {
+        if (grid.samples == 1)
+            return target.readColour();
+        if (!resolve)
+            resolve = std::make_unique<detail::SampleResolve>();
+        return resolve->resolve(target, grid);
+    }
+
+    // view: the samples' (the render target's).
     void compositeTransparent(PositionsView positions, const ViewProjection& view,
                               RenderStats& stats) {
         const std::size_t all = geometry->transparentCount();
@@ -331,6 +371,10 @@ TransparencyRenderer::TransparencyRenderer(std::shared_ptr<GlContext> context, c
     if (!(settings.alpha > 0.0f && settings.alpha <= 1.0f))
         throw std::invalid_argument("alpha must be in (0, 1], got " +
                                     std::to_string(settings.alpha));
+    const SampleGrid* grid = sampleGridOf(settings.samples);
+    if (grid == nullptr)
+        throw std::invalid_argument("samples must be 1, 2, 4 or 8, got " +
+                                    std::to_string(settings.samples));
     if (context == nullptr)
         throw std::invalid_argument("no OpenGL context");
     if (scene.triangleCount() > std::size_t(std::numeric_limits<GLint>::max()) / 3)
@@ -340,6 +384,7 @@ TransparencyRenderer::TransparencyRenderer(std::shared_ptr<GlContext> context, c
     Impl& d = *impl_;
     d.context = std::move(context);
     d.settings = settings;
+    d.grid = *grid;
     d.triangle_count = uint32_t(scene.triangleCount());
 
     std::vector<uint8_t> transparent(scene.objects.size());
@@ -377,7 +422,7 @@ TransparencyRenderer::TransparencyRenderer(std::shared_ptr<GlContext> context, c
         d.context->makeCurrent(); // a gl oracle made it current too; the same context
     }
     d.geometry = std::make_unique<detail::SceneGeometry>(scene, colours);
-    d.geometry->setFlat(settings.shading == Shading::flat);
+    d.geometry->setShading(settings.shading);
     d.shade_program = detail::linkProgram(detail::kShadeVertexShader, detail::kShadeFragmentShader);
 }
 
@@ -403,9 +448,11 @@ Image TransparencyRenderer::render(PositionsView positions, const ViewProjection
         throw std::invalid_argument("positions have " + std::to_string(positions.triangleCount()) +
                                     " triangles, the scene " + std::to_string(d.triangle_count));
     stats = {};
+    // Every method draws on the samples as on pixels; only the order is made through view.
+    const ViewProjection sampled = sampledView(view, d.grid);
     const auto start = std::chrono::steady_clock::now();
     if (ordersPerFrame(d.settings.method)) {
-        d.buildSequence(positions, view, stats);
+        d.buildSequence(positions, view, sampled, stats);
         stats.order_ms = millisecondsSince(start);
     }
 
@@ -421,7 +468,7 @@ Image TransparencyRenderer::render(PositionsView positions, const ViewProjection
         d.triangles_uploaded = true;
     }
 
-    d.target.resize(view.width, view.height);
+    d.resizeTarget(sampled);
     d.target.bind();
     glClipControl(GL_UPPER_LEFT, GL_ZERO_TO_ONE); // the oracles' conventions (gl_oracle.h)
     glDisable(GL_CULL_FACE);
@@ -435,17 +482,17 @@ Image TransparencyRenderer::render(PositionsView positions, const ViewProjection
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
-    d.geometry->use(d.shade_program.get(), view);
+    d.geometry->use(d.shade_program.get(), sampled);
     d.geometry->drawOpaque();
 
     // Transparent ones: tested against the opaque depth, never written.
     glDepthMask(GL_FALSE);
-    d.compositeTransparent(positions, view, stats);
+    d.compositeTransparent(positions, sampled, stats);
 
     Image image;
     image.width = view.width;
     image.height = view.height;
-    image.rgba = d.target.readColour(); // waits for the GPU
+    image.rgba = d.readImage(); // waits for the GPU
     stats.render_ms = millisecondsSince(render_start);
     stats.total_ms = millisecondsSince(start);
     return image;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <iterator>
 #include <numeric>
+#include <string>
 
 namespace vissort::viewer {
 namespace {
@@ -20,6 +21,22 @@ bool enumCombo(const char* label, const EnumName<Enum> (&names)[N], Enum& value)
             const bool selected = entry.value == value;
             if (ImGui::Selectable(entry.name, selected) && !selected) {
                 value = entry.value;
+                changed = true;
+            }
+        }
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
+// Samples a pixel, from kSampleGrids.
+bool samplesCombo(uint32_t& samples) {
+    bool changed = false;
+    if (ImGui::BeginCombo("samples", std::to_string(samples).c_str())) {
+        for (const SampleGrid& grid : kSampleGrids) {
+            const bool selected = grid.samples == samples;
+            if (ImGui::Selectable(std::to_string(grid.samples).c_str(), selected) && !selected) {
+                samples = grid.samples;
                 changed = true;
             }
         }
@@ -66,6 +83,7 @@ PanelActions drawPanel(const PanelState& state, RenderSettings& settings, Overla
             }
         }
         actions.settings_changed |= enumCombo("shading", kShadingNames, settings.shading);
+        actions.settings_changed |= samplesCombo(settings.samples);
         actions.settings_changed |= enumCombo("check", kOrderCheckNames, settings.check);
     }
     if (ImGui::CollapsingHeader("Show", ImGuiTreeNodeFlags_DefaultOpen)) {

@@ -49,6 +49,19 @@ TEST_F(Cli, RenderWritesThePngTheJsonAndTheErrorMap) {
     EXPECT_TRUE(stats["error"].contains("rmse"));
     EXPECT_TRUE(stats["error"].contains("psnr"));
     EXPECT_EQ(stats.value("size", json()), json({64, 48}));
+    EXPECT_EQ(stats.value("shading", ""), "lit");
+    EXPECT_EQ(stats.value("samples", 0), 1);
+}
+
+// Each triangle's flat colour under --all-transparent --alpha A --shading flat.
+std::vector<Rgba> coloursAtAlpha(const Scene& scene, float alpha) {
+    std::vector<Rgba> colours(scene.triangleCount());
+    for (const SceneObject& object : scene.objects)
+        for (uint32_t t = 0; t < object.triangle_count; ++t) {
+            colours[object.first_triangle + t] = object.colour;
+            colours[object.first_triangle + t].a = alpha;
+        }
+    return colours;
 }
 
 // The tool's flat-shaded output against the ray-cast A-buffer, for every exact method.
@@ -57,14 +70,8 @@ TEST_F(Cli, FlatRenderOfEveryExactMethodMatchesTheRayCastABuffer) {
     ASSERT_TRUE(loaded) << loaded.error;
     const Scene& scene = *loaded.value;
     const ViewProjection view = frameCamera(*scene.camera, scene.positions.bounds(), 96, 72);
-    std::vector<Rgba> colours(scene.triangleCount());
-    for (const SceneObject& object : scene.objects)
-        for (uint32_t t = 0; t < object.triangle_count; ++t) {
-            colours[object.first_triangle + t] = object.colour;
-            colours[object.first_triangle + t].a = 0.4f;
-        }
-    const test::ABuffer reference =
-        test::rayCastComposite(scene.positions, view, colours, Rgba{1, 1, 1, 1});
+    const test::ABuffer reference = test::rayCastComposite(
+        scene.positions, view, coloursAtAlpha(scene, 0.4f), Rgba{1, 1, 1, 1});
     for (const char* method : {"vissort", "peel", "dual-peel", "linked-list"}) {
         const RunResult r =
             run({"render", kSticks, "--size", "96x72", "--all-transparent", "--alpha", "0.4",
@@ -130,6 +137,36 @@ TEST_F(Cli, RenderFramesWriteASequence) {
     EXPECT_EQ(stats.value("level", ""), "triangle");
 }
 
+// --samples 4: each pixel the mean of a 2 x 2 grid of samples, against the A-buffer cast at the
+// samples and averaged the same way; the header says so.
+TEST_F(Cli, RenderAtFourSamplesMatchesTheSupersampledABuffer) {
+    Result<Scene> loaded = loadScene(kSticks);
+    ASSERT_TRUE(loaded) << loaded.error;
+    const Scene& scene = *loaded.value;
+    const ViewProjection samples = frameCamera(*scene.camera, scene.positions.bounds(), 192, 144);
+    const test::ABuffer reference =
+        test::resolveSamples(test::rayCastComposite(scene.positions, samples,
+                                                    coloursAtAlpha(scene, 0.4f), Rgba{1, 1, 1, 1}),
+                             2, 2);
+    for (const char* method : {"vissort", "linked-list"}) {
+        const RunResult r =
+            run({"render", kSticks, "--size", "96x72", "--all-transparent", "--alpha", "0.4",
+                 "--shading", "flat", "--samples", "4", "--method", method, "-o", path("out.png")});
+        ASSERT_EQ(r.code, 0) << r;
+        EXPECT_NE(r.out.find("96x72 at 4 samples"), std::string::npos) << r;
+        const Png png = readPng(path("out.png"));
+        ASSERT_EQ(png.width, 96);
+        const test::ABufferComparison compared = test::compareWithABuffer(png.rgba, reference);
+        EXPECT_GT(compared.compared, 96u * 72u / 2) << method;
+        EXPECT_LE(compared.max_abs, 1)
+            << method << " at (" << compared.worst_x << ", " << compared.worst_y << ")";
+    }
+    // And membrane shading is a shading the command takes.
+    const RunResult membrane = run({"render", kSticks, "--size", "32x24", "--shading", "membrane",
+                                    "--samples", "8", "-o", path("membrane.png")});
+    EXPECT_EQ(membrane.code, 0) << membrane;
+}
+
 TEST_F(Cli, RenderErrorsNameTheProblem) {
     const std::string out = path("out.png");
     expectError({"render", kSticks, "-o", out, "--method", "sorted"}, kUsage,
@@ -140,7 +177,11 @@ TEST_F(Cli, RenderErrorsNameTheProblem) {
                 {"--alpha"});
     expectError({"render", kSticks, "-o", out, "--level", "pixel"}, kUsage, {"--level", "pixel"});
     expectError({"render", kSticks, "-o", out, "--oracle", "magic"}, kUsage, {"--oracle"});
-    expectError({"render", kSticks, "-o", out, "--shading", "phong"}, kUsage, {"--shading"});
+    expectError({"render", kSticks, "-o", out, "--shading", "phong"}, kUsage,
+                {"--shading", "phong", "membrane"});
+    for (const char* samples : {"0", "3", "16", "-4"})
+        expectError({"render", kSticks, "-o", out, "--samples", samples}, kUsage,
+                    {"--samples must be 1, 2, 4 or 8", samples});
     expectError({"render", kSticks, "-o", out, "--check", "maybe"}, kUsage,
                 {"--check", "unknown order check", "maybe"});
     expectError({"render", kSticks, "-o", out, "--list-memory", "0"}, kUsage, {"--list-memory"});
@@ -186,7 +227,31 @@ TEST_F(Cli, BenchTransparencyMeasuresEveryMethodInOneRun) {
         EXPECT_EQ(found, all) << key;
 }
 
+// --samples 2: every method at 1 and 2 samples a pixel in the same run, each with its cost.
+TEST_F(Cli, BenchTransparencyMeasuresSamplesNextToOne) {
+    const RunResult r = run({"bench", "transparency", "--size", "32x24", "--depths", "2",
+                             "--frames", "2", "--samples", "2", "--json", path("bench.json")});
+    ASSERT_EQ(r.code, 0) << r;
+    EXPECT_NE(r.out.find("at 1 and 2 samples a pixel"), std::string::npos) << r;
+    EXPECT_NE(r.out.find("cost: a method's time at 2 samples"), std::string::npos) << r;
+    const json doc = json::parse(readFile(path("bench.json")));
+    EXPECT_EQ(doc.value("samples", 0), 2);
+    std::map<int, int> records; // samples -> records
+    for (const json& row : doc["rows"]) {
+        const int samples = row["samples"].get<int>();
+        ++records[samples];
+        EXPECT_EQ(row.contains("ms_over_one_sample"), samples == 2) << row.dump();
+        const std::string method = row["method"];
+        if (method == "vissort" || method == "peel")
+            EXPECT_LE(row["error"]["max_abs"].get<int>(), 1) << row.dump();
+    }
+    // Two families at one depth, six methods, at each count.
+    EXPECT_EQ(records, (std::map<int, int>{{1, 12}, {2, 12}}));
+}
+
 TEST_F(Cli, BenchTransparencyErrors) {
+    expectError({"bench", "transparency", "--samples", "3"}, kUsage,
+                {"--samples must be 1, 2, 4 or 8", "3"});
     expectError({"bench", "transparency", "--depths", "2,x"}, kUsage, {"--depths", "2,x"});
     expectError({"bench", "transparency", "--depths", "0"}, kUsage, {"--depths"});
     expectError({"bench", "transparency", "--frames", "1"}, kUsage, {"--frames"});

@@ -104,6 +104,17 @@ TEST_F(View, ScreenshotEqualsRenderOfTheSameFrame) {
     EXPECT_EQ(maxDifference(shown, render({"builtin:bunnies?n=6", "--size", "256x192"}, 2)), 0);
 }
 
+// The renderer's options reach the window: membrane shading at 4 samples a pixel.
+TEST_F(View, SamplesAndMembraneShadingReachTheWindow) {
+    const std::vector<std::string> options = {
+        "builtin:bunnies?n=6", "--size", "128x96", "--shading", "membrane", "--samples", "4"};
+    const RunResult r = view(options, 1, path("view.png"));
+    ASSERT_EQ(r.code, 0) << r;
+    const Png shown = readPng(path("view.png"));
+    EXPECT_EQ(maxDifference(shown, render(options, 1)), 0);
+    EXPECT_GT(maxDifference(shown, render({"builtin:bunnies?n=6", "--size", "128x96"}, 1)), 1);
+}
+
 TEST_F(View, ScriptedOrbitMovesTheCameraAsDocumented) {
     const std::string scene = "builtin:plant?layers=3";
     std::ofstream(path("orbit.txt")) << "0 drag left 100 80 150 80  # 50 px right: -0.5 rad\n"

@@ -86,6 +86,28 @@ ABuffer rayCastComposite(const TrianglePositions& positions, const ViewProjectio
     return out;
 }
 
+ABuffer resolveSamples(const ABuffer& samples, uint32_t columns, uint32_t rows) {
+    ABuffer out;
+    out.width = samples.width / columns;
+    out.height = samples.height / rows;
+    out.rgb.assign(std::size_t(out.width) * out.height * 3, 0.0);
+    out.decided.assign(std::size_t(out.width) * out.height, 1);
+    out.max_layers = samples.max_layers;
+    for (uint32_t y = 0; y < out.height; ++y)
+        for (uint32_t x = 0; x < out.width; ++x) {
+            const std::size_t pixel = std::size_t(y) * out.width + x;
+            for (uint32_t row = 0; row < rows; ++row)
+                for (uint32_t column = 0; column < columns; ++column) {
+                    const std::size_t sample =
+                        std::size_t(y * rows + row) * samples.width + x * columns + column;
+                    out.decided[pixel] &= samples.decided[sample];
+                    for (int k = 0; k < 3; ++k)
+                        out.rgb[pixel * 3 + k] += samples.rgb[sample * 3 + k] / (columns * rows);
+                }
+        }
+    return out;
+}
+
 ABufferComparison compareWithABuffer(const std::vector<uint8_t>& rgba8, const ABuffer& reference) {
     ABufferComparison result;
     if (rgba8.size() != std::size_t(reference.width) * reference.height * 4) {

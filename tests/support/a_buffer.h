@@ -33,6 +33,11 @@ struct ABuffer {
 ABuffer rayCastComposite(const TrianglePositions& positions, const ViewProjection& view,
                          std::span<const Rgba> triangle_colours, Rgba background);
 
+/// The A-buffer of a supersampled image (RenderSettings::samples): `samples` cast through a view
+/// columns x rows times as fine as the image, each pixel the mean of its block of samples (the
+/// renderer's sample grid), decided when every sample of it is; max_layers is the samples'.
+ABuffer resolveSamples(const ABuffer& samples, uint32_t columns, uint32_t rows);
+
 /// Compares an 8-bit RGBA image with the A-buffer at its decided pixels: the largest channel
 /// difference from the A-buffer rounded to 8 bits, and how many pixels were compared.
 struct ABufferComparison {
