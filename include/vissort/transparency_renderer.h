@@ -175,8 +175,11 @@ public:
     TransparencyRenderer(const TransparencyRenderer&) = delete;
     TransparencyRenderer& operator=(const TransparencyRenderer&) = delete;
 
-    /// Renders the scene at `positions` (scene.frame(t)) through view. Successive frames reuse
-    /// the previous order (coherence), as SceneOrderer does.
+    /// Renders the scene at `positions` (scene.frame(t)) through view: a view.width x
+    /// view.height image, each pixel the mean of its samples (settings.samples). Successive
+    /// frames reuse the previous order (coherence), as SceneOrderer does. Throws
+    /// std::invalid_argument beyond kMaxImagePixels samples (pixels times samples) and
+    /// std::runtime_error when the driver cannot hold the samples' framebuffer.
     Image render(PositionsView positions, const ViewProjection& view, RenderStats& stats);
 
     /// Draws these triangles (scene triangle ids, e.g. collidingTriangles() of a collision

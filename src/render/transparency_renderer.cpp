@@ -447,6 +447,12 @@ Image TransparencyRenderer::render(PositionsView positions, const ViewProjection
     if (positions.triangleCount() != d.triangle_count)
         throw std::invalid_argument("positions have " + std::to_string(positions.triangleCount()) +
                                     " triangles, the scene " + std::to_string(d.triangle_count));
+    // The samples' buffers take what the largest image's pixels may (about 40 bytes each).
+    if (uint64_t(view.width) * view.height * d.grid.samples > kMaxImagePixels)
+        throw std::invalid_argument(
+            std::to_string(view.width) + "x" + std::to_string(view.height) + " at " +
+            std::to_string(d.grid.samples) + " samples a pixel is more than the " +
+            std::to_string(kMaxImagePixels) + " samples the renderer draws");
     stats = {};
     // Every method draws on the samples as on pixels; only the order is made through view.
     const ViewProjection sampled = sampledView(view, d.grid);

@@ -179,6 +179,8 @@ TEST_F(Cli, RenderErrorsNameTheProblem) {
     expectError({"render", kSticks, "-o", out, "--oracle", "magic"}, kUsage, {"--oracle"});
     expectError({"render", kSticks, "-o", out, "--shading", "phong"}, kUsage,
                 {"--shading", "phong", "membrane"});
+    expectError({"render", kSticks, "-o", out, "--size", "8192x8192", "--samples", "2"}, kFailure,
+                {"8192x8192 at 2 samples a pixel"});
     for (const char* samples : {"0", "3", "16", "-4"})
         expectError({"render", kSticks, "-o", out, "--samples", samples}, kUsage,
                     {"--samples must be 1, 2, 4 or 8", samples});

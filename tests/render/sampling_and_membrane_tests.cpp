@@ -243,6 +243,15 @@ TEST(Sampling, OnlyOneTwoFourOrEightSamples) {
         EXPECT_THROW(TransparencyRenderer(context(), scene, settings), std::invalid_argument)
             << samples;
     }
+    // Pixels times samples are bounded as pixels alone are (kMaxImagePixels): 8192 x 8192 at
+    // 2 samples is refused before anything is allocated.
+    RenderSettings two;
+    two.samples = 2;
+    TransparencyRenderer renderer(context(), scene, two);
+    RenderStats stats;
+    const ViewProjection large =
+        frameCamera(*scene.camera, scene.positions.bounds(), kMaxImageSide / 2, kMaxImageSide / 2);
+    EXPECT_THROW(renderer.render(scene.positions, large, stats), std::invalid_argument);
     for (const SampleGrid& grid : kSampleGrids)
         EXPECT_EQ(grid.columns * grid.rows, grid.samples);
     EXPECT_EQ(sampleGridOf(3), nullptr);
