@@ -105,13 +105,16 @@ runTransparencyBench(const TransparencyBenchSettings& settings,
             const Scene& scene = *loaded.value;
             const CameraSpec base = scene.camera.value_or(
                 defaultCamera(scene.positions.bounds(), double(width) / height));
-            const uint32_t one = 1, both[] = {1, settings.samples};
-            std::vector<std::vector<TransparencyMeasured>> measured = measureMethods(
-                settings, scene, base,
-                settings.samples > 1 ? std::span<const uint32_t>(both) : std::span(&one, 1));
-            row.methods = std::move(measured[0]);
+            std::vector<uint32_t> sample_counts{1};
             if (settings.samples > 1)
+                sample_counts.push_back(settings.samples);
+            std::vector<std::vector<TransparencyMeasured>> measured =
+                measureMethods(settings, scene, base, sample_counts);
+            row.methods = std::move(measured[0]);
+            if (settings.samples > 1) {
                 row.sampled = std::move(measured[1]);
+                row.samples = settings.samples;
+            }
             // Depth peeling takes one pass a layer and one more: the depth complexity the frames
             // really had, in front of the opaque surfaces.
             row.seen = row.methods[kTransparencyPeel].passes - 1;

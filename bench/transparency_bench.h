@@ -51,9 +51,10 @@ struct TransparencyBenchRow {
     uint32_t depth = 0;
     uint32_t seen = 0; // the most transparent layers at a pixel: depth peeling's passes - 1
     std::vector<TransparencyMeasured> methods; // in kTransparencyMethods order, 1 sample a pixel
-    /// With TransparencyBenchSettings::samples over 1: every method again at that many samples
-    /// a pixel (errors against linked-list sampled the same way), in the same order; else empty.
+    /// With TransparencyBenchSettings::samples over 1: every method again at `samples` a pixel
+    /// (errors against linked-list sampled the same way), in the same order; else empty.
     std::vector<TransparencyMeasured> sampled;
+    uint32_t samples = 1;
 };
 
 struct TransparencyBenchSettings {

@@ -17,10 +17,10 @@ mkdir -p docs/images
   -o docs/images/bunnies-membrane.png
 "$tool" render builtin:bunnies --size 320x320 --fov 24 --level multistage --method all \
   --shading membrane --samples 4 \
-  -o docs/images/comparison-bunnies.png --json docs/images/comparison-bunnies.json
+  -o docs/images/comparison-bunnies.png --json docs/images/comparison-bunnies.json --pretty
 # The CAD-like plant: opaque steel, transparent pipes and tanks, depth complexity up to 16.
 "$tool" render 'builtin:plant?layers=8' --size 384x256 --fov 20 --level multistage --method all \
-  -o docs/images/comparison-plant.png --json docs/images/comparison-plant.json
+  -o docs/images/comparison-plant.png --json docs/images/comparison-plant.json --pretty
 # Nested boxes around Suzanne, with an opaque core: one cycle at object level.
 "$tool" render tests/data/scenes/nested.json --size 320x320 --level object --method all \
-  -o docs/images/comparison-nested.png --json docs/images/comparison-nested.json
+  -o docs/images/comparison-nested.png --json docs/images/comparison-nested.json --pretty

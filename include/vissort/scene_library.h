@@ -21,8 +21,9 @@ struct BuiltinSceneInfo {
 /// The names and one-line descriptions of every built-in scene.
 std::vector<BuiltinSceneInfo> builtinScenes();
 
-/// Makes a built-in scene. Unknown names, unknown keys, malformed or absurd values (negative
-/// counts, more than 10 million triangles) give an error naming the problem.
+/// Makes a built-in scene, checked as loadScene checks every scene (validateScene). Unknown
+/// names, unknown keys, malformed or absurd values (negative counts, more than 10 million
+/// triangles) give an error naming the problem.
 ///   bunnies: n (18), seed (1): the paper's dynamic scene of deforming, bouncing bunnies.
 ///   slabs:   layers (8), seed (1): a stack of large, slightly tilted quads; acyclic.
 ///   soup:    n (1000), seed (1): random non-intersecting triangles.

@@ -89,18 +89,21 @@ inline const char* shadingName(Shading shading) {
     return enumName<Shading>(kShadingNames, shading);
 }
 
-/// The samples a pixel RenderSettings::samples may ask for, and their grid: samples are laid
-/// out in a grid of columns x rows inside each pixel, at the centres of its cells.
+/// How the samples of a pixel (RenderSettings::samples) are laid out: a grid of columns x rows
+/// inside the pixel, each sample at the centre of its cell.
 struct SampleGrid {
-    uint32_t samples, columns, rows;
+    uint32_t columns, rows;
+    constexpr uint32_t samples() const { return columns * rows; }
 };
-inline constexpr SampleGrid kSampleGrids[] = {{1, 1, 1}, {2, 2, 1}, {4, 2, 2}, {8, 4, 2}};
-/// The grid of `samples` a pixel, or nullptr when it is not 1, 2, 4 or 8.
-inline const SampleGrid* sampleGridOf(uint32_t samples) {
+/// The grids of 1, 2, 4 and 8 samples: the counts RenderSettings::samples may ask for.
+inline constexpr SampleGrid kSampleGrids[] = {{1, 1}, {2, 1}, {2, 2}, {4, 2}};
+/// The grid of `samples` a pixel, or "samples must be 1, 2, 4 or 8, got N".
+inline Result<SampleGrid> sampleGridOf(int64_t samples) {
     for (const SampleGrid& grid : kSampleGrids)
-        if (grid.samples == samples)
-            return &grid;
-    return nullptr;
+        if (grid.samples() == samples)
+            return {grid, {}};
+    return Result<SampleGrid>::failure("samples must be 1, 2, 4 or 8, got " +
+                                       std::to_string(samples));
 }
 
 struct RenderSettings {
@@ -114,8 +117,8 @@ struct RenderSettings {
     Shading shading = Shading::lit;
     /// Samples a pixel, 1, 2, 4 or 8 (the paper's images: 4): every method renders, blends,
     /// checks, repairs and composites its cycles on each sample as on a pixel of its own, and
-    /// the samples of a pixel are averaged once, at the end (supersampling, the grid of
-    /// kSampleGrids; docs/transparency.md). vissort orders once a frame, at pixel resolution:
+    /// the samples of a pixel are averaged once, at the end (supersampling on the grid
+    /// sampleGridOf gives; docs/transparency.md). vissort orders once a frame, at pixel resolution:
     /// the check finds what differs at the samples. Costs about samples times the pixels' work.
     uint32_t samples = 1;
     /// vissort: the primitives of each of the order's cycles drawn in a colour of their own (a

@@ -147,7 +147,8 @@ std::vector<PrimitiveRange> readObjects(const py::handle& objects, uint32_t tria
     for (std::size_t i = 0; i < count; ++i) {
         const int64_t first = ranges ? values.at(i, 0) : next;
         const int64_t size = ranges ? values.at(i, 1) : values.at(i);
-        if (size < 1 || first < 0 || first + size > int64_t(triangle_count))
+        if (size < 1 || first < 0 || size > int64_t(triangle_count) ||
+            first > int64_t(triangle_count) - size)
             throw py::value_error("objects: object " + std::to_string(i) + " (triangles " +
                                   std::to_string(first) + ", " + std::to_string(size) +
                                   " of them) is empty or outside the " +

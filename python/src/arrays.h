@@ -37,12 +37,21 @@ std::vector<PrimitiveRange> readObjects(const py::handle& objects, uint32_t tria
 /// Corners as an array of shape (T, 3, 3), float32 (a copy: the library keeps x, y and z apart).
 py::array_t<float> cornersArray(PositionsView positions);
 
-/// A vector handed to numpy without a copy: the array owns it from then on.
-template <class T> py::array_t<T> toArray(std::vector<T>&& values) {
+/// A vector handed to numpy without a copy, seen as Element of that shape and those strides
+/// (bytes) over its memory: the array owns it from then on.
+template <class Element, class T>
+py::array_t<Element> ownedArray(std::vector<T>&& values, std::vector<py::ssize_t> shape,
+                                std::vector<py::ssize_t> strides) {
     auto* owned = new std::vector<T>(std::move(values));
     py::capsule free_when_done(owned, [](void* p) { delete static_cast<std::vector<T>*>(p); });
-    return py::array_t<T>({py::ssize_t(owned->size())}, {py::ssize_t(sizeof(T))}, owned->data(),
-                          free_when_done);
+    return py::array_t<Element>(std::move(shape), std::move(strides),
+                                reinterpret_cast<const Element*>(owned->data()), free_when_done);
+}
+
+/// A vector handed to numpy as a 1-D array, without a copy.
+template <class T> py::array_t<T> toArray(std::vector<T>&& values) {
+    const py::ssize_t size = py::ssize_t(values.size());
+    return ownedArray<T>(std::move(values), {size}, {py::ssize_t(sizeof(T))});
 }
 
 /// A 3-vector from any sequence of three finite numbers; ValueError naming `what` otherwise.

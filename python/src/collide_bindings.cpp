@@ -34,12 +34,9 @@ py::dict statsDict(const CollisionStats& s) {
 // The pairs as a (K, 2) uint32 array over their own memory (a TrianglePair is two uint32s).
 py::array_t<uint32_t> pairsArray(std::vector<TrianglePair>&& pairs) {
     static_assert(sizeof(TrianglePair) == 2 * sizeof(uint32_t));
-    auto* owned = new std::vector<TrianglePair>(std::move(pairs));
-    py::capsule free_when_done(owned,
-                               [](void* p) { delete static_cast<std::vector<TrianglePair>*>(p); });
-    return py::array_t<uint32_t>({py::ssize_t(owned->size()), py::ssize_t(2)},
-                                 {py::ssize_t(sizeof(TrianglePair)), py::ssize_t(sizeof(uint32_t))},
-                                 reinterpret_cast<const uint32_t*>(owned->data()), free_when_done);
+    const py::ssize_t count = py::ssize_t(pairs.size());
+    return ownedArray<uint32_t>(std::move(pairs), {count, 2},
+                                {py::ssize_t(sizeof(TrianglePair)), py::ssize_t(sizeof(uint32_t))});
 }
 
 // A CollisionDetector of one set of objects: successive frames reuse what the last one learnt.

@@ -1,7 +1,6 @@
 // vissort.render and vissort.Renderer: exact order-independent transparency (and its peer
 // methods) as (H, W, 4) uint8 images, through the process's shared OpenGL context.
 
-#include <algorithm>
 #include <memory>
 #include <mutex>
 
@@ -44,8 +43,8 @@ RenderSettings settingsOf(const std::string& method, const std::string& level,
     if (!parsed_shading)
         throw py::value_error(parsed_shading.error);
     settings.shading = *parsed_shading.value;
-    if (sampleGridOf(uint32_t(std::max(samples, 0))) == nullptr)
-        throw py::value_error("samples must be 1, 2, 4 or 8, got " + std::to_string(samples));
+    if (const Result<SampleGrid> grid = sampleGridOf(samples); !grid)
+        throw py::value_error(grid.error);
     settings.samples = uint32_t(samples);
     const Result<RenderSettings::OrderCheck> parsed_check = parseOrderCheck(check);
     if (!parsed_check)

@@ -92,7 +92,9 @@ def test_bad_objects_raise_value_error():
     corners = overlapping_triangles()
     for objects, message in [([[0, 5], [5, 8]], "object 1"), ([0, 12], "object 0"),
                              ([[0, 2, 3]], "shape"), (np.zeros((0, 2), int), "no objects"),
-                             ([1.5, 2], "integer"), ([[-1, 2]], "object 0")]:
+                             ([1.5, 2], "integer"), ([[-1, 2]], "object 0"),
+                             # first + count beyond 64 bits: refused, not wrapped around
+                             ([[2**62, 2**62]], "object 0"), ([[1, 2**63 - 1]], "object 0")]:
         with pytest.raises(ValueError, match=message):
             vissort.order(corners, objects, camera=CAMERA)
     with pytest.raises(ValueError, match="brings its own objects"):

@@ -1,7 +1,6 @@
 // `vissort bench transparency`: options, then bench/transparency_bench.h's figures as a table
 // (a row at a time) and JSON.
 
-#include <algorithm>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -40,9 +39,8 @@ int runTransparencyBench(const BenchOptions& options) {
         return fail(kExitUsage, "--depths expects depth complexities of 1 to 1000 separated by "
                                 "commas, got '" +
                                     options.depths + "'");
-    if (sampleGridOf(uint32_t(std::max(options.samples, 0))) == nullptr)
-        return fail(kExitUsage,
-                    "--samples must be 1, 2, 4 or 8, got " + std::to_string(options.samples));
+    if (const Result<SampleGrid> grid = sampleGridOf(options.samples); !grid)
+        return fail(kExitUsage, "--" + grid.error);
     settings.samples = uint32_t(options.samples);
     Result<std::shared_ptr<GlContext>> context = GlContext::shared();
     if (!context)
@@ -105,7 +103,7 @@ int runTransparencyBench(const BenchOptions& options) {
             std::cout << '\n';
         }
         std::cout << std::flush; // a row at a time: a long run shows its progress
-        for (nlohmann::json& record : transparencyRecords(row, settings.samples))
+        for (nlohmann::json& record : transparencyRecords(row))
             rows.push_back(std::move(record));
     };
     const Result<std::vector<bench::TransparencyBenchRow>> measured =

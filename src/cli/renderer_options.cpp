@@ -1,6 +1,5 @@
 // The transparency renderer's options, shared by `render` and `view` (commands.h).
 
-#include <algorithm>
 #include <iostream>
 
 #include "cli/command_line_errors.h"
@@ -105,8 +104,8 @@ std::string resolveRendererOptions(const RendererOptions& options, bool allow_al
     if (!shading)
         return "--shading: " + shading.error;
     settings.shading = *shading.value;
-    if (sampleGridOf(uint32_t(std::max(options.samples, 0))) == nullptr)
-        return "--samples must be 1, 2, 4 or 8, got " + std::to_string(options.samples);
+    if (const Result<SampleGrid> grid = sampleGridOf(options.samples); !grid)
+        return "--" + grid.error;
     settings.samples = uint32_t(options.samples);
     const Result<RenderSettings::OrderCheck> check = parseOrderCheck(options.check);
     if (!check)

@@ -34,11 +34,11 @@ void addRecords(const bench::TransparencyBenchRow& row,
 
 } // namespace
 
-nlohmann::json transparencyRecords(const bench::TransparencyBenchRow& row, uint32_t samples) {
+nlohmann::json transparencyRecords(const bench::TransparencyBenchRow& row) {
     nlohmann::json records = nlohmann::json::array();
     addRecords(row, row.methods, 1, records);
     if (!row.sampled.empty())
-        addRecords(row, row.sampled, samples, records);
+        addRecords(row, row.sampled, row.samples, records);
     return records;
 }
 

@@ -81,7 +81,7 @@ ViewProjection sampledView(const ViewProjection& view, const SampleGrid& grid) {
 struct TransparencyRenderer::Impl {
     std::shared_ptr<GlContext> context;
     RenderSettings settings;
-    SampleGrid grid{1, 1, 1}; // settings.samples' grid
+    SampleGrid grid{1, 1}; // settings.samples' grid
     uint32_t triangle_count = 0;
     std::vector<uint32_t> opaque_triangles;
     TransparentPart part;
@@ -297,16 +297,16 @@ struct TransparencyRenderer::Impl {
         try {
             target.resize(sampled.width, sampled.height);
         } catch (const std::runtime_error& error) {
-            if (grid.samples == 1)
+            if (grid.samples() == 1)
                 throw;
             throw std::runtime_error(std::string(error.what()) + " (" +
-                                     std::to_string(grid.samples) + " samples a pixel)");
+                                     std::to_string(grid.samples()) + " samples a pixel)");
         }
     }
 
     // The image: the target's colour, each pixel's samples averaged.
     std::vector<float> readImage() {
-        if (grid.samples == 1)
+        if (grid.samples() == 1)
             return target.readColour();
         if (!resolve)
             resolve = std::make_unique<detail::SampleResolve>();
@@ -371,10 +371,9 @@ TransparencyRenderer::TransparencyRenderer(std::shared_ptr<GlContext> context, c
     if (!(settings.alpha > 0.0f && settings.alpha <= 1.0f))
         throw std::invalid_argument("alpha must be in (0, 1], got " +
                                     std::to_string(settings.alpha));
-    const SampleGrid* grid = sampleGridOf(settings.samples);
-    if (grid == nullptr)
-        throw std::invalid_argument("samples must be 1, 2, 4 or 8, got " +
-                                    std::to_string(settings.samples));
+    const Result<SampleGrid> grid = sampleGridOf(settings.samples);
+    if (!grid)
+        throw std::invalid_argument(grid.error);
     if (context == nullptr)
         throw std::invalid_argument("no OpenGL context");
     if (scene.triangleCount() > std::size_t(std::numeric_limits<GLint>::max()) / 3)
@@ -384,7 +383,7 @@ TransparencyRenderer::TransparencyRenderer(std::shared_ptr<GlContext> context, c
     Impl& d = *impl_;
     d.context = std::move(context);
     d.settings = settings;
-    d.grid = *grid;
+    d.grid = *grid.value;
     d.triangle_count = uint32_t(scene.triangleCount());
 
     std::vector<uint8_t> transparent(scene.objects.size());
@@ -448,10 +447,10 @@ Image TransparencyRenderer::render(PositionsView positions, const ViewProjection
         throw std::invalid_argument("positions have " + std::to_string(positions.triangleCount()) +
                                     " triangles, the scene " + std::to_string(d.triangle_count));
     // The samples' buffers take what the largest image's pixels may (about 40 bytes each).
-    if (uint64_t(view.width) * view.height * d.grid.samples > kMaxImagePixels)
+    if (uint64_t(view.width) * view.height * d.grid.samples() > kMaxImagePixels)
         throw std::invalid_argument(
             std::to_string(view.width) + "x" + std::to_string(view.height) + " at " +
-            std::to_string(d.grid.samples) + " samples a pixel is more than the " +
+            std::to_string(d.grid.samples()) + " samples a pixel is more than the " +
             std::to_string(kMaxImagePixels) + " samples the renderer draws");
     stats = {};
     // Every method draws on the samples as on pixels; only the order is made through view.

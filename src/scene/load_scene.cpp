@@ -84,10 +84,8 @@ Result<Scene> loadBuiltin(const std::string& specification) {
         question == std::string::npos ? std::string() : rest.substr(question + 1), specification);
     if (!parameters)
         return Result<Scene>::failure(parameters.error);
-    Result<Scene> scene = makeBuiltinScene(name, *parameters.value);
-    if (!scene)
-        return scene; // its message already names the scene and the parameter
-    return scene;
+    // Its messages name the scene and the parameter.
+    return makeBuiltinScene(name, *parameters.value);
 }
 
 Result<Scene> loadSpecification(const std::string& specification) {

@@ -49,8 +49,15 @@ std::vector<BuiltinSceneInfo> builtinScenes() {
 Result<Scene> makeBuiltinScene(const std::string& name, const SceneParameters& parameters) {
     std::string known;
     for (const BuiltinScene& scene : kBuiltinScenes) {
-        if (name == scene.name)
-            return scene.make(parameters);
+        if (name == scene.name) {
+            // Checked as loadScene checks what a file holds, for the callers that make a scene
+            // without loadScene (the Python module).
+            Result<Scene> made = scene.make(parameters);
+            if (made)
+                if (Status valid = validateScene(*made.value); !valid)
+                    return Result<Scene>::failure(made.value->name + ": " + valid.error);
+            return made;
+        }
         known += (known.empty() ? "" : ", ") + std::string(scene.name);
     }
     return Result<Scene>::failure("unknown built-in scene 'builtin:" + name + "' (known: " + known +

@@ -34,9 +34,9 @@ bool samplesCombo(uint32_t& samples) {
     bool changed = false;
     if (ImGui::BeginCombo("samples", std::to_string(samples).c_str())) {
         for (const SampleGrid& grid : kSampleGrids) {
-            const bool selected = grid.samples == samples;
-            if (ImGui::Selectable(std::to_string(grid.samples).c_str(), selected) && !selected) {
-                samples = grid.samples;
+            const bool selected = grid.samples() == samples;
+            if (ImGui::Selectable(std::to_string(grid.samples()).c_str(), selected) && !selected) {
+                samples = grid.samples();
                 changed = true;
             }
         }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "a_buffer.h"
+#include "render_cases.h"
 #include "touching_models.h"
 #include "vissort/image.h"
 #include "vissort/oracles.h"
@@ -20,12 +21,7 @@
 namespace vissort {
 namespace {
 
-std::shared_ptr<GlContext> context() {
-    static const Result<std::shared_ptr<GlContext>> shared = GlContext::shared();
-    if (!shared)
-        ADD_FAILURE() << shared.error;
-    return shared ? *shared.value : nullptr;
-}
+using test::context; // render_cases.h
 
 // The model as a scene, each object its own colour.
 Scene sceneOf(const test::Model& m) {
