@@ -2,20 +2,19 @@
 // The reference occlusion oracle: answers from ray casting rather than rasterization, so that
 // every other backend can be checked against it.
 //
-// bind() casts one ray through the centre of every pixel and keeps ALL its hits (Embree finds
-// them; depth and barycentrics are recomputed in double precision), then regroups them by
-// primitive as fragments (pixel, nearest depth, farthest depth) over the primitive's triangles
-// hit at that pixel. Hits on triangle edges count, so shared edges never leave holes.
-// The depth buffer holds doubles, cleared to +infinity:
-//   draw(p):      buffer[pixel] = min(buffer[pixel], nearest + o_n)    for each fragment of p;
-//   anyBehind(p): some fragment of p has farthest - o_f > buffer[pixel] + t,
-// t the depth tolerance (kDepthTolerance unless set) and o = s when t >= 0, -s when negative,
-// s the snap slack of the triangle hit (nearest or farthest): max(|dd/dx|, |dd/dy|) / 256, its
-// plane's depth slopes per pixel. The rasterizing oracles move depths by that much where
-// snapping may extrapolate a plane (cpu_oracle.h, rules 6 and 7); the same bound here makes the
-// answers agree: touching and coplanar faces are never behind each other, surfaces apart by more
-// than t + s + s always are. Answers are exact to double precision at pixel centres up to that
-// bound and independent of any rasterizer.
+// bind() casts one ray through the centre of every pixel and keeps ALL its hits, as the exact
+// fragment model defines them (docs/robustness.md, "The exact model"): the closed triangles the
+// ray meets, edges and corners included, within the depth range, ranked front to back at each
+// pixel by exact arithmetic on the float corners (hits at exactly the same depth share a rank).
+// It then regroups them by primitive as fragments (pixel, nearest rank, farthest rank). The depth
+// buffer holds ranks, cleared to "nothing":
+//   draw(p):      buffer[pixel] = min(buffer[pixel], nearest)    for each fragment of p;
+//   anyBehind(p): some fragment of p has farthest > buffer[pixel],
+// so with the default depth tolerance (0) a fragment is behind exactly when it lies farther than
+// something drawn there: touching and coplanar faces never are, nothing else is a tie. Any other
+// tolerance t compares depths rounded to double instead: behind when farthest > the nearest
+// drawn + t, so that a negative t (the renderer's blending rule, kBlendingDepthTolerance)
+// counts near ties both ways. Answers do not depend on any rasterizer.
 // After bind(), draw, anyBehind and clear allocate nothing.
 
 #include <cstdint>
@@ -45,12 +44,13 @@ public:
     /// primitive must be below primitiveCount().
     bool anyBehind(uint32_t primitive) override;
 
-    /// One primitive's coverage of one pixel: the nearest and farthest of its hits there, and
-    /// the snap slack of the triangles hit there.
+    /// One primitive's coverage of one pixel: the exact depth ranks of its nearest and farthest
+    /// hits there (0 is the pixel's nearest hit of any triangle; equal ranks are equally deep),
+    /// and their depths d, rounded to double.
     struct Fragment {
         uint32_t pixel; // py * width + px
-        double nearest, farthest;
-        double nearest_slack, farthest_slack;
+        uint32_t nearest, farthest;
+        double nearest_depth, farthest_depth;
     };
     /// The fragments of a primitive, in ascending pixel order. primitive < primitiveCount().
     std::span<const Fragment> fragments(uint32_t primitive) const;
@@ -60,7 +60,8 @@ private:
     uint32_t primitive_count_ = 0;
     std::vector<uint64_t> fragment_offsets_; // primitive p owns [offsets[p], offsets[p + 1])
     std::vector<Fragment> fragments_;
-    std::vector<double> depth_buffer_; // one per pixel, +infinity when clear
+    std::vector<uint32_t> rank_buffer_; // one per pixel, kNothing when clear
+    std::vector<double> depth_buffer_;  // one per pixel, +infinity when clear
 };
 
 } // namespace vissort

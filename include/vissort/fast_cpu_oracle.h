@@ -1,8 +1,12 @@
 #pragma once
 // A faster CPU depth rasterizer as an occlusion oracle. It gives the same answers as CpuOracle
 // (cpu_oracle.h), and leaves the same depth buffer, bit for bit: the same clipping, snapping,
-// int64_t edge functions with the top-left rule, and the same double depth expression rounded to
-// float (rules 1-7 of cpu_oracle.h). What differs is only how much work it takes:
+// int64_t edge functions with the exact rule's margin (or the top-left rule under the blending
+// rule), the same band pixels decided by the exact model, and the same double depth expression
+// rounded to float (rules 1-7 of cpu_oracle.h). Under the exact rule its "undecided" fragments
+// go to the exact model, which finds the triangles drawn at that pixel through a per-tile index
+// of the set-ups (built on first need, per bind) and each primitive's drawing time. What differs
+// from the reference is only how much work it takes:
 //  - every triangle is clipped, snapped and set up once per bind, not once per draw or query,
 //    four at a time with AVX2 where the CPU has it (the scalar set-up finishes the rest);
 //  - the depth buffer is divided into 8 x 8 pixel tiles, each with bounds on its stored depths,
@@ -52,6 +56,8 @@ struct FastCpuOracleStats {
                                  // depth bounds (query: nothing behind; draw: nothing passes)
     uint64_t tiles_accepted = 0; // query tiles answered "behind" without per-pixel work
     uint64_t images_built = 0;   // depth images made (FastCpuOracleOptions::image_min_triangles)
+    uint64_t band_pixels = 0;    // the exact rule's band pixels the last bind decided (all binds)
+    uint64_t arbitrations = 0;   // (fragment, pixel) pairs the exact model decided in queries
 };
 
 /// How FastCpuOracle may use the machine. The answers and the depth buffer never depend on it.

@@ -9,10 +9,12 @@
 
 namespace vissort {
 
-/// Depth tolerance, in units of the depth d (camera.h): a fragment is "behind" only when its
-/// depth exceeds the stored depth by more than this, so coplanar, touching and shared-edge
-/// surfaces never count as occluding each other. Every oracle's default.
-inline constexpr float kDepthTolerance = 1.0f / (1 << 20);
+/// The default depth tolerance, 0: "behind" is the exact fragment model's (docs/robustness.md,
+/// "The exact model"). A fragment is behind when the pixel centre's ray meets it strictly farther
+/// than something drawn there, decided exactly on the float corners: touching, coplanar and
+/// shared-edge surfaces never count as occluding each other, and nothing else is a tie. The
+/// `gl` oracle, which cannot decide inside the driver, counts what it cannot decide as behind.
+inline constexpr float kDepthTolerance = 0.0f;
 
 /// How a rasterizing oracle samples a triangle.
 enum class RasterMode {
@@ -42,9 +44,11 @@ public:
         bind(positions, view, primitives);
     }
 
-    /// Sets the depth tolerance of later queries: anyBehind is true when some fragment's depth
-    /// exceeds the stored depth + tolerance (a float sum). kDepthTolerance until set; negative
-    /// values make near ties count as occlusion (kBlendingDepthTolerance). Must be finite.
+    /// Sets the depth tolerance of later queries: 0 (kDepthTolerance, the default) is the exact
+    /// rule above. Any other t is an approximate rule, in float with the GPU's coverage (the
+    /// top-left rule): anyBehind is true when some fragment exceeds the stored depth + t, so a
+    /// negative t (kBlendingDepthTolerance, the renderer's rule without its check) counts near
+    /// ties both ways, and a positive one counts them neither way. Must be finite.
     void setDepthTolerance(float tolerance) { depth_tolerance_ = tolerance; }
     float depthTolerance() const { return depth_tolerance_; }
 

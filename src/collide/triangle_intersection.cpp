@@ -27,7 +27,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "collide/exact_predicates.h"
+#include "geometry/exact_predicates.h"
 
 namespace vissort::detail {
 namespace {

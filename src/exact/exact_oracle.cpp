@@ -16,30 +16,7 @@ namespace vissort {
 
 namespace {
 
-// The snap slack of triangle t (exact_oracle.h): max(|dd/dx|, |dd/dy|) / 256 of its plane, from
-// the depths where the rays through three screen points meet the plane (d is affine in screen
-// space for both projections: camera.h). Infinite for a plane seen edge-on.
-double snapSlackOf(PositionsView positions, const ViewProjection& view, std::size_t t) {
-    const auto corner = [&](std::size_t i) {
-        return Vec3{positions.x[i], positions.y[i], positions.z[i]};
-    };
-    const Vec3 a = corner(3 * t), b = corner(3 * t + 1), c = corner(3 * t + 2);
-    const Vec3 normal = cross(b - a, c - a);
-    const auto depthAt = [&](double sx, double sy, double& depth) {
-        Vec3 origin, direction;
-        view.pixelRay(sx, sy, origin, direction);
-        const double along = dot(normal, direction);
-        if (along == 0)
-            return false;
-        depth = view.depthOf(origin + direction * (dot(normal, a - origin) / along));
-        return std::isfinite(depth);
-    };
-    const double cx = 0.5 * view.width, cy = 0.5 * view.height;
-    double d0 = 0, dx = 0, dy = 0;
-    if (!depthAt(cx, cy, d0) || !depthAt(cx + 1, cy, dx) || !depthAt(cx, cy + 1, dy))
-        return std::numeric_limits<double>::infinity();
-    return std::max(std::abs(dx - d0), std::abs(dy - d0)) / 256;
-}
+constexpr uint32_t kNothing = std::numeric_limits<uint32_t>::max(); // an empty pixel
 
 } // namespace
 
@@ -82,10 +59,6 @@ void ExactOracle::bind(PositionsView positions, const ViewProjection& view,
     for (uint32_t p = 0; p < primitive_count_; ++p)
         fragment_offsets_[p + 1] += fragment_offsets_[p];
 
-    std::vector<double> slack(positions.triangleCount(), 0.0);
-    for (std::size_t t = 0; t < slack.size(); ++t)
-        if (primitive_of[t] != kNoPrimitive)
-            slack[t] = snapSlackOf(positions, view, t);
     fragments_.resize(fragment_offsets_.back());
     std::vector<uint64_t> next_fragment(fragment_offsets_.begin(), fragment_offsets_.end() - 1);
     std::fill(last_pixel.begin(), last_pixel.end(), kNoPixel);
@@ -94,23 +67,26 @@ void ExactOracle::bind(PositionsView positions, const ViewProjection& view,
             const uint32_t p = primitive_of[hits.triangles[h]];
             if (p == kNoPrimitive)
                 continue;
-            const double depth = hits.depths[h], s = slack[hits.triangles[h]];
+            const uint32_t rank = hits.ranks[h];
+            const double depth = hits.depths[h];
             if (last_pixel[p] == pixel) {
                 Fragment& fragment = fragments_[next_fragment[p] - 1];
-                fragment.farthest = depth; // depths ascend
-                fragment.farthest_slack = s;
+                fragment.farthest = rank; // hits come front to back
+                fragment.farthest_depth = depth;
             } else {
                 last_pixel[p] = pixel;
-                fragments_[next_fragment[p]++] = {uint32_t(pixel), depth, depth, s, s};
+                fragments_[next_fragment[p]++] = {uint32_t(pixel), rank, rank, depth, depth};
             }
         }
     }
 
+    rank_buffer_.resize(hits.pixelCount());
     depth_buffer_.resize(hits.pixelCount());
     clear();
 }
 
 void ExactOracle::clear() {
+    std::fill(rank_buffer_.begin(), rank_buffer_.end(), kNothing);
     std::fill(depth_buffer_.begin(), depth_buffer_.end(), std::numeric_limits<double>::infinity());
 }
 
@@ -121,22 +97,26 @@ std::span<const ExactOracle::Fragment> ExactOracle::fragments(uint32_t primitive
 }
 
 void ExactOracle::draw(uint32_t primitive) {
-    // Farther by the slack for a tolerance >= 0 (fewer "behind" answers), nearer for a negative.
-    const double side = depth_tolerance_ >= 0 ? 1.0 : -1.0;
     for (const Fragment& fragment : fragments(primitive)) {
-        double& stored = depth_buffer_[fragment.pixel];
-        stored = std::min(stored, fragment.nearest + side * fragment.nearest_slack);
+        uint32_t& rank = rank_buffer_[fragment.pixel];
+        rank = std::min(rank, fragment.nearest);
+        double& depth = depth_buffer_[fragment.pixel];
+        depth = std::min(depth, fragment.nearest_depth);
     }
 }
 
 bool ExactOracle::anyBehind(uint32_t primitive) {
-    // An empty pixel holds +infinity, and +infinity + tolerance is never exceeded.
-    const double side = depth_tolerance_ >= 0 ? 1.0 : -1.0;
-    for (const Fragment& fragment : fragments(primitive)) {
-        if (fragment.farthest - side * fragment.farthest_slack >
-            depth_buffer_[fragment.pixel] + depth_tolerance_)
-            return true;
+    // An empty pixel holds kNothing, which no rank exceeds, and +infinity, which no depth does.
+    if (depth_tolerance_ == 0) {
+        for (const Fragment& fragment : fragments(primitive))
+            if (fragment.farthest > rank_buffer_[fragment.pixel])
+                return true;
+        return false;
     }
+    // An approximate rule: the depths, rounded to double, within the tolerance.
+    for (const Fragment& fragment : fragments(primitive))
+        if (fragment.farthest_depth > depth_buffer_[fragment.pixel] + depth_tolerance_)
+            return true;
     return false;
 }
 

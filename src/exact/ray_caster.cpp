@@ -1,8 +1,12 @@
 // All-hits ray casting with Embree 3 (Wald, Woop, Benthin, Johnson, Ernst: "Embree: A Kernel
-// Framework for Efficient CPU Ray Tracing", SIGGRAPH 2014): an intersection filter records every
-// candidate and rejects it so that traversal goes on to the end of the ray. Each candidate is
-// then re-intersected in double precision (Moller, Trumbore: "Fast, Minimum Storage Ray/Triangle
-// Intersection", JGT 1997) for its depth and barycentric coordinates.
+// Framework for Efficient CPU Ray Tracing", SIGGRAPH 2014). The triangles are Embree user
+// geometry whose boxes are enlarged by a margin: the BVH then proposes every triangle the exact
+// ray can meet (Embree's ray is its float copy), the intersection callback decides with the exact
+// fragment model (geometry/exact_fragments.h) and records the triangle without committing a hit,
+// so that traversal goes on to the end of the ray. Built-in triangles would be faster, but their
+// float test may miss a triangle whose edge passes within rounding of the centre. Barycentric
+// coordinates for the robust flag come from a double-precision re-intersection (Moller,
+// Trumbore: "Fast, Minimum Storage Ray/Triangle Intersection", JGT 1997).
 
 #include "exact/ray_caster.h"
 
@@ -15,6 +19,8 @@
 #include <thread>
 
 #include <embree3/rtcore.h>
+
+#include "geometry/exact_fragments.h"
 
 namespace vissort::detail {
 namespace {
@@ -49,58 +55,75 @@ RTCDevice sharedDevice() {
     return device.get();
 }
 
-struct Candidate {
-    uint32_t triangle;
-    float embree_distance; // used only when the double-precision test finds the ray parallel
-};
-
-// Embree hands the filter the context pointer it was given, so the context must come first.
+// What the intersection callback needs: the exact ray it stands for (Embree's is its float copy),
+// the model, the triangles, and where to record them. Embree hands the callback the context
+// pointer it was given, so the context must come first.
 struct CandidateCollector {
     RTCIntersectContext context;
-    std::vector<Candidate>* candidates;
+    const PixelRay* ray;
+    const ExactFragments* model;
+    PositionsView positions;
+    std::vector<uint32_t>* candidates;
 };
 
-void recordAndReject(const RTCFilterFunctionNArguments* args) {
+void recordCovering(const RTCIntersectFunctionNArguments* args) {
     assert(args->N == 1);
     if (!args->valid[0])
         return;
     auto* collector = reinterpret_cast<CandidateCollector*>(args->context);
-    // During the filter call the ray's tfar holds the candidate's distance.
-    collector->candidates->push_back(
-        {RTCHitN_primID(args->hit, 1, 0), RTCRayN_tfar(args->ray, 1, 0)});
-    args->valid[0] = 0; // rejecting keeps tfar, so every later triangle is still found
+    const TriangleCorners corners = TriangleCorners::of(collector->positions, args->primID);
+    if (collector->model->covers(*collector->ray, corners))
+        collector->candidates->push_back(args->primID);
+    // No hit is committed: tfar stays infinite and every later triangle is still proposed.
 }
 
-bool isFinite(float x, float y, float z) {
-    return std::isfinite(x) && std::isfinite(y) && std::isfinite(z);
-}
+// What the bounds callback needs.
+struct BoundsData {
+    PositionsView positions;
+    float margin;
+};
 
-void addTriangles(RTCDevice device, RTCScene scene, PositionsView positions) {
-    const std::size_t triangle_count = positions.triangleCount();
-    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* vertices = static_cast<float*>(
-        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                3 * sizeof(float), 3 * triangle_count));
-    auto* indices = static_cast<uint32_t*>(
-        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                3 * sizeof(uint32_t), triangle_count));
-    if (!vertices || !indices) {
-        rtcReleaseGeometry(geometry);
-        throw std::runtime_error("Embree could not allocate the geometry buffers");
-    }
-    for (std::size_t t = 0; t < triangle_count; ++t) {
-        bool finite = true;
-        for (std::size_t k = 3 * t; k < 3 * t + 3; ++k)
-            finite = finite && isFinite(positions.x[k], positions.y[k], positions.z[k]);
-        for (std::size_t k = 3 * t; k < 3 * t + 3; ++k) {
-            // A triangle with a non-finite corner collapses to a point, which is never hit.
-            vertices[3 * k + 0] = finite ? positions.x[k] : 0.0f;
-            vertices[3 * k + 1] = finite ? positions.y[k] : 0.0f;
-            vertices[3 * k + 2] = finite ? positions.z[k] : 0.0f;
-            indices[k] = uint32_t(k);
+void triangleBounds(const RTCBoundsFunctionArguments* args) {
+    const auto* data = static_cast<const BoundsData*>(args->geometryUserPtr);
+    const std::size_t first = 3 * std::size_t(args->primID);
+    RTCBounds& box = *args->bounds_o;
+    float lower[3] = {0, 0, 0}, upper[3] = {0, 0, 0};
+    bool finite = true;
+    for (std::size_t k = first; k < first + 3; ++k)
+        finite = finite && std::isfinite(data->positions.x[k]) &&
+                 std::isfinite(data->positions.y[k]) && std::isfinite(data->positions.z[k]);
+    if (finite) { // a triangle with a non-finite corner is never hit: a point box at the origin
+        const std::span<const float> axes[3] = {data->positions.x, data->positions.y,
+                                                data->positions.z};
+        for (int a = 0; a < 3; ++a) {
+            lower[a] = std::min({axes[a][first], axes[a][first + 1], axes[a][first + 2]});
+            upper[a] = std::max({axes[a][first], axes[a][first + 1], axes[a][first + 2]});
+            lower[a] -= data->margin;
+            upper[a] += data->margin;
         }
     }
-    rtcSetGeometryIntersectFilterFunction(geometry, recordAndReject);
+    box = {lower[0], lower[1], lower[2], 0.0f, upper[0], upper[1], upper[2], 0.0f};
+}
+
+// The boxes' margin: far more than the distance between the exact ray and its float copy at any
+// point of the scene (a few units in the last place of the coordinates and of the distance from
+// the origin of the ray), so that the BVH proposes every triangle the exact ray meets.
+float boxMargin(PositionsView positions, const ViewProjection& view) {
+    // The largest finite coordinate (a triangle with another corner is never hit).
+    float largest = 0;
+    for (const std::span<const float> axis : {positions.x, positions.y, positions.z})
+        for (float v : axis)
+            largest = std::abs(v) <= 3.0e38f ? std::max(largest, std::abs(v)) : largest;
+    const double scale = length(view.eye_position) + 4.0 * double(largest) + 1.0;
+    return float(scale * 0x1p-16);
+}
+
+void addTriangles(RTCDevice device, RTCScene scene, BoundsData& bounds) {
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(geometry, unsigned(bounds.positions.triangleCount()));
+    rtcSetGeometryUserData(geometry, &bounds);
+    rtcSetGeometryBoundsFunction(geometry, triangleBounds, nullptr);
+    rtcSetGeometryIntersectFunction(geometry, recordCovering);
     rtcCommitGeometry(geometry);
     rtcAttachGeometry(scene, geometry);
     rtcReleaseGeometry(geometry); // the scene holds its own reference
@@ -109,7 +132,6 @@ void addTriangles(RTCDevice device, RTCScene scene, PositionsView positions) {
 // Moller-Trumbore for the ray o + t dir against triangle (a, b, c), in double precision and
 // before the division by det: the hit's barycentrics are u = u_det / det, v = v_det / det, its
 // distance t = t_det / det; det is 0 (or not finite) when the ray is parallel to the plane.
-// Callers scale by det themselves: the robustness test divides, intersect multiplies by 1 / det.
 struct RayTriangle {
     double det, u_det, v_det, t_det;
 };
@@ -144,6 +166,7 @@ private:
 
 struct PixelHit {
     uint32_t triangle;
+    uint32_t rank;
     double depth;
     bool robust;
 };
@@ -156,9 +179,9 @@ struct RowBlock {
 
 class BlockCaster {
 public:
-    BlockCaster(RTCScene scene, PositionsView positions, const ViewProjection& view,
-                bool mark_near_edges)
-        : scene_(scene), positions_(positions), view_(view), depth_of_(view),
+    BlockCaster(RTCScene scene, PositionsView positions, const ExactFragments& model,
+                const ViewProjection& view, bool mark_near_edges)
+        : scene_(scene), positions_(positions), model_(model), depth_of_(view), width_(view.width),
           mark_near_edges_(mark_near_edges) {}
 
     void cast(uint32_t first_row, uint32_t end_row, RowBlock& block) {
@@ -166,7 +189,7 @@ public:
         block.hits.clear();
         block.near_edge.clear();
         for (uint32_t py = first_row; py < end_row; ++py) {
-            for (uint32_t px = 0; px < view_.width; ++px) {
+            for (uint32_t px = 0; px < width_; ++px) {
                 const std::size_t before = block.hits.size();
                 uint8_t near_edge = 0;
                 castPixel(px, py, block.hits, near_edge);
@@ -177,82 +200,91 @@ public:
     }
 
 private:
-    // Every triangle the ray from origin along direction meets, into `into` (cleared first).
-    void collect(const Vec3& origin, const Vec3& direction, std::vector<Candidate>& into) {
+    // Every triangle with a fragment at ray, into `into` (cleared first), ascending.
+    void collect(const PixelRay& ray, std::vector<uint32_t>& into) {
         into.clear();
         CandidateCollector collector;
         rtcInitIntersectContext(&collector.context);
+        collector.ray = &ray;
+        collector.model = &model_;
+        collector.positions = positions_;
         collector.candidates = &into;
 
         RTCRayHit ray_hit{};
-        ray_hit.ray.org_x = float(origin.x);
-        ray_hit.ray.org_y = float(origin.y);
-        ray_hit.ray.org_z = float(origin.z);
-        ray_hit.ray.dir_x = float(direction.x);
-        ray_hit.ray.dir_y = float(direction.y);
-        ray_hit.ray.dir_z = float(direction.z);
+        ray_hit.ray.org_x = float(ray.origin.x);
+        ray_hit.ray.org_y = float(ray.origin.y);
+        ray_hit.ray.org_z = float(ray.origin.z);
+        ray_hit.ray.dir_x = float(ray.direction.x);
+        ray_hit.ray.dir_y = float(ray.direction.y);
+        ray_hit.ray.dir_z = float(ray.direction.z);
+        // Every hit in the depth range lies at least near in front of the eye (perspective), or
+        // beyond the eye plane 2 r before the scene (orthographic): far beyond the distance
+        // between the float origin and the exact one. The model decides the range itself.
         ray_hit.ray.tnear = 0.0f;
         ray_hit.ray.tfar = std::numeric_limits<float>::infinity();
         ray_hit.ray.mask = ~0u;
         ray_hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
         rtcIntersect1(scene_, &collector.context, &ray_hit);
+        std::sort(into.begin(), into.end());
+        // Embree may propose a triangle twice (it can sit in several leaves).
+        into.erase(std::unique(into.begin(), into.end()), into.end());
     }
 
-    // Is some triangle that the ray through screen point (sx, sy) meets within [0, 1] in depth
-    // missing from the centre ray's candidates?
+    // Is some triangle with a fragment at the ray through screen point (sx, sy) missing from
+    // the centre ray's?
     bool meetsAnother(double sx, double sy) {
-        Vec3 origin, direction;
-        view_.pixelRay(sx, sy, origin, direction);
-        collect(origin, direction, corner_candidates_);
-        const Vec3& o = origin;
-        const Vec3& dir = direction;
-        for (const Candidate& corner : corner_candidates_) {
-            const bool at_centre =
-                std::any_of(candidates_.begin(), candidates_.end(),
-                            [&](const Candidate& c) { return c.triangle == corner.triangle; });
-            if (at_centre)
-                continue;
-            const double depth = intersect(corner, o, dir).depth;
-            if (depth >= 0.0 && depth <= 1.0)
+        collect(model_.rays().at(sx, sy), corner_candidates_);
+        for (uint32_t t : corner_candidates_)
+            if (!std::binary_search(candidates_.begin(), candidates_.end(), t))
                 return true;
-        }
         return false;
     }
 
     void castPixel(uint32_t px, uint32_t py, std::vector<PixelHit>& out, uint8_t& near_edge) {
-        Vec3 origin, direction;
-        view_.pixelRay(px + 0.5, py + 0.5, origin, direction);
-        collect(origin, direction, candidates_);
+        const PixelRay ray = model_.rays().centre(px, py);
+        collect(ray, candidates_);
 
-        const std::size_t first = out.size();
-        const Vec3& o = origin;
-        const Vec3& dir = direction;
-        // Rays through the corners of a square of side 2 * kRobustPixelMargin around the centre.
-        Vec3 corner_origins[4], corner_directions[4];
-        for (int i = 0; i < 4; ++i)
-            view_.pixelRay(px + 0.5 + ((i & 1) ? kRobustPixelMargin : -kRobustPixelMargin),
-                           py + 0.5 + ((i & 2) ? kRobustPixelMargin : -kRobustPixelMargin),
-                           corner_origins[i], corner_directions[i]);
-        for (const Candidate& candidate : candidates_) {
-            PixelHit hit = intersect(candidate, o, dir);
-            // Robust only when the triangle covers the whole square: then the pixel centre is at
-            // least the margin away from every edge in screen space, farther than any
-            // rasterizer's sub-pixel snapping moves an edge.
-            for (int i = 0; hit.robust && i < 4; ++i)
-                hit.robust = covers(candidate, corner_origins[i], corner_directions[i]);
-            if (hit.depth >= 0.0 && hit.depth <= 1.0)
-                out.push_back(hit);
+        // Front to back by the exact model, ties by triangle id.
+        order_.clear();
+        for (uint32_t t : candidates_) {
+            const TriangleCorners corners = TriangleCorners::of(positions_, t);
+            order_.push_back({t, corners, model_.hit(ray, corners)});
         }
-        std::sort(out.begin() + first, out.end(), [](const PixelHit& a, const PixelHit& b) {
-            return a.depth != b.depth ? a.depth < b.depth : a.triangle < b.triangle;
+        std::sort(order_.begin(), order_.end(), [&](const Ordered& a, const Ordered& b) {
+            const int c = model_.compare(ray, a.corners, a.hit, b.corners, b.hit);
+            return c != 0 ? c < 0 : a.triangle < b.triangle;
         });
-        // Embree may report a triangle twice (it can sit in several leaves); the double-precision
-        // re-intersection gives both reports the same depth, so duplicates are neighbours.
-        out.erase(std::unique(out.begin() + first, out.end(),
-                              [](const PixelHit& a, const PixelHit& b) {
-                                  return a.triangle == b.triangle;
-                              }),
-                  out.end());
+
+        // Rays through the corners of a square of side 2 * kRobustPixelMargin around the centre.
+        PixelRay corner_rays[4];
+        for (int i = 0; i < 4; ++i)
+            corner_rays[i] =
+                model_.rays().at(px + 0.5 + ((i & 1) ? kRobustPixelMargin : -kRobustPixelMargin),
+                                 py + 0.5 + ((i & 2) ? kRobustPixelMargin : -kRobustPixelMargin));
+        uint32_t rank = 0;
+        for (std::size_t i = 0; i < order_.size(); ++i) {
+            const Ordered& o = order_[i];
+            if (i > 0 && model_.compare(ray, order_[i - 1].corners, order_[i - 1].hit, o.corners,
+                                        o.hit) != 0)
+                ++rank;
+            const Vec3 a = positions_.corner(3 * std::size_t(o.triangle)),
+                       b = positions_.corner(3 * std::size_t(o.triangle) + 1),
+                       c = positions_.corner(3 * std::size_t(o.triangle) + 2);
+            const RayTriangle hit = rayTriangle(ray.origin, ray.direction, a, b, c);
+            // Robust only when well inside and the triangle covers the whole square: then the
+            // pixel centre is at least the margin away from every edge in screen space, farther
+            // than any rasterizer's sub-pixel snapping moves an edge.
+            bool robust = false;
+            if (hit.det != 0 && std::isfinite(hit.det)) {
+                const double u = hit.u_det / hit.det, v = hit.v_det / hit.det;
+                robust = u > kRobustBarycentric && v > kRobustBarycentric &&
+                         1.0 - u - v > kRobustBarycentric;
+            }
+            for (int k = 0; robust && k < 4; ++k)
+                robust = coversApproximately(corner_rays[k], a, b, c);
+            const double t = o.hit.parameter();
+            out.push_back({o.triangle, rank, depth_of_(ray.origin + t * ray.direction), robust});
+        }
         if (!mark_near_edges_)
             return;
         near_edge = 0;
@@ -262,14 +294,9 @@ private:
                              py + 0.5 + ((i & 2) ? kRobustPixelMargin : -kRobustPixelMargin));
     }
 
-    RayTriangle rayCandidate(const Candidate& candidate, const Vec3& o, const Vec3& dir) const {
-        const std::size_t k = 3 * std::size_t(candidate.triangle);
-        return rayTriangle(o, dir, positions_.corner(k), positions_.corner(k + 1),
-                           positions_.corner(k + 2));
-    }
-
-    bool covers(const Candidate& candidate, const Vec3& o, const Vec3& dir) const {
-        const RayTriangle hit = rayCandidate(candidate, o, dir);
+    static bool coversApproximately(const PixelRay& ray, const Vec3& a, const Vec3& b,
+                                    const Vec3& c) {
+        const RayTriangle hit = rayTriangle(ray.origin, ray.direction, a, b, c);
         if (hit.det == 0.0 || !std::isfinite(hit.det))
             return false;
         const double u = hit.u_det / hit.det;
@@ -277,29 +304,20 @@ private:
         return u > 0 && v > 0 && 1.0 - u - v > 0;
     }
 
-    PixelHit intersect(const Candidate& candidate, const Vec3& o, const Vec3& dir) const {
-        const RayTriangle hit = rayCandidate(candidate, o, dir);
-        if (hit.det == 0.0 || !std::isfinite(hit.det)) {
-            // Embree saw a hit that double precision calls parallel: an edge-on grazing hit.
-            const double t = candidate.embree_distance;
-            return {candidate.triangle, depth_of_(o + t * dir), false};
-        }
-        const double inverse = 1.0 / hit.det;
-        const double u = hit.u_det * inverse;
-        const double v = hit.v_det * inverse;
-        const double t = hit.t_det * inverse;
-        const double w = 1.0 - u - v;
-        const bool robust =
-            u > kRobustBarycentric && v > kRobustBarycentric && w > kRobustBarycentric;
-        return {candidate.triangle, depth_of_(o + t * dir), robust};
-    }
+    struct Ordered {
+        uint32_t triangle;
+        TriangleCorners corners;
+        RayHit hit;
+    };
 
     RTCScene scene_;
     PositionsView positions_;
-    const ViewProjection& view_;
+    const ExactFragments& model_;
     DepthFunction depth_of_;
+    uint32_t width_;
     bool mark_near_edges_;
-    std::vector<Candidate> candidates_, corner_candidates_;
+    std::vector<uint32_t> candidates_, corner_candidates_;
+    std::vector<Ordered> order_;
 };
 
 // Enough rows per block to amortise the scheduling, few enough to balance two to 64 threads.
@@ -326,7 +344,8 @@ AllHits castAllHits(PositionsView positions, const ViewProjection& view, unsigne
     EmbreeScene scene(rtcNewScene(device));
     rtcSetSceneFlags(scene.get(), RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(scene.get(), RTC_BUILD_QUALITY_HIGH);
-    addTriangles(device, scene.get(), positions);
+    BoundsData bounds{positions, boxMargin(positions, view)};
+    addTriangles(device, scene.get(), bounds);
     rtcCommitScene(scene.get());
     if (const RTCError error = rtcGetDeviceError(device); error != RTC_ERROR_NONE)
         throw std::runtime_error("Embree failed to build the scene (error " +
@@ -335,8 +354,9 @@ AllHits castAllHits(PositionsView positions, const ViewProjection& view, unsigne
     const uint32_t block_count = (view.height + kRowsPerBlock - 1) / kRowsPerBlock;
     std::vector<RowBlock> blocks(block_count);
     std::atomic<uint32_t> next_block{0};
+    const ExactFragments model(view);
     const auto work = [&] {
-        BlockCaster caster(scene.get(), positions, view, mark_near_edges);
+        BlockCaster caster(scene.get(), positions, model, view, mark_near_edges);
         for (uint32_t b = next_block++; b < block_count; b = next_block++) {
             caster.cast(b * kRowsPerBlock, std::min(view.height, (b + 1) * kRowsPerBlock),
                         blocks[b]);
@@ -359,6 +379,7 @@ AllHits castAllHits(PositionsView positions, const ViewProjection& view, unsigne
     for (const RowBlock& block : blocks)
         total_hits += block.hits.size();
     result.triangles.reserve(total_hits);
+    result.ranks.reserve(total_hits);
     result.depths.reserve(total_hits);
     result.robust.reserve(total_hits);
     if (mark_near_edges)
@@ -374,6 +395,7 @@ AllHits castAllHits(PositionsView positions, const ViewProjection& view, unsigne
         }
         for (const PixelHit& hit : block.hits) {
             result.triangles.push_back(hit.triangle);
+            result.ranks.push_back(hit.rank);
             result.depths.push_back(hit.depth);
             result.robust.push_back(hit.robust ? 1 : 0);
         }

@@ -1,7 +1,9 @@
 #pragma once
-// All-hits ray casting through every pixel centre, the reference behind the exact oracle and the
-// test ground truth. Embree finds the candidate triangles; depths and barycentrics are then
-// recomputed in double precision so that the answers do not depend on Embree's float arithmetic.
+// All-hits ray casting through every pixel centre, the reference behind the exact oracle, depth
+// complexity and the tests' A-buffer. The hits are those of the exact fragment model
+// (geometry/exact_fragments.h): Embree's BVH proposes every triangle whose slightly enlarged box
+// the ray crosses, and the model decides, exactly, which of them the ray meets and in which
+// order, so that no answer depends on Embree's float arithmetic.
 
 #include <cassert>
 #include <cstdint>
@@ -23,12 +25,14 @@ inline constexpr double kRobustBarycentric = 1e-6;
 inline constexpr double kRobustPixelMargin = 0.01;
 
 /// Every hit of every pixel's ray, in compressed rows: pixel i = py * width + px owns the hits
-/// [offsets[i], offsets[i + 1]), sorted by (depth, triangle), at most one per triangle.
+/// [offsets[i], offsets[i + 1]), sorted front to back by the exact model, exact ties by
+/// triangle id, one per triangle.
 struct AllHits {
     uint32_t width = 0, height = 0;
     std::vector<uint64_t> offsets;   // pixelCount() + 1 entries
     std::vector<uint32_t> triangles; // triangle id of each hit
-    std::vector<double> depths;      // depth d (camera.h), in [0, 1]
+    std::vector<uint32_t> ranks;     // exact depth rank at its pixel: 0 nearest, ties share one
+    std::vector<double> depths;      // depth d (camera.h), rounded: ranks order the hits
     std::vector<uint8_t> robust;     // 1 when every barycentric coordinate > kRobustBarycentric
     /// With mark_near_edges, one per pixel: 1 when a triangle the centre's ray misses covers a
     /// corner of the square of half-side kRobustPixelMargin around it (an edge passes that close:
@@ -48,8 +52,9 @@ struct AllHits {
 };
 
 /// Casts the ray through the centre of every pixel of view (ViewProjection::pixelRay at
-/// (px + 0.5, py + 0.5), row 0 at the top) and records all its hits with 0 <= d <= 1.
-/// Degenerate triangles (zero area, non-finite corners) are never hit.
+/// (px + 0.5, py + 0.5), row 0 at the top) and records all its hits: the fragments of the exact
+/// fragment model, which keeps hits within the depth range (0 <= d, and d <= 1 orthographic).
+/// Degenerate triangles (zero area, non-finite corners) and triangles seen edge-on are never hit.
 /// thread_count 0 uses the hardware concurrency; the result is the same for any thread count.
 /// mark_near_edges also casts the four corner rays of each pixel's margin square (five rays a
 /// pixel) to fill AllHits::near_edge. Throws std::runtime_error when no Embree device can be

@@ -1,5 +1,7 @@
 #include "vissort/camera.h"
 
+#include "geometry/pixel_rays.h"
+
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -279,19 +281,9 @@ double ViewProjection::depthOf(const Vec3& world) const {
 }
 
 void ViewProjection::pixelRay(double px, double py, Vec3& origin, Vec3& direction) const {
-    const double x_ndc = 2.0 * px / width - 1.0;
-    const double y_ndc = 1.0 - 2.0 * py / height;
-    const glm::dmat4 inverse_view = glm::inverse(toMat(view));
-    const glm::dmat4& p = toMat(projection_matrix);
-    if (projection == Projection::perspective) {
-        const glm::dvec3 eye_dir(x_ndc / p[0][0], y_ndc / p[1][1], -1.0);
-        origin = eye_position;
-        direction = fromGlm(glm::normalize(glm::dvec3(inverse_view * glm::dvec4(eye_dir, 0.0))));
-    } else {
-        const glm::dvec3 eye_point(x_ndc / p[0][0], y_ndc / p[1][1], 0.0);
-        origin = fromGlm(glm::dvec3(inverse_view * glm::dvec4(eye_point, 1.0)));
-        direction = forward;
-    }
+    const detail::PixelRay ray = detail::PixelRays(*this).at(px, py);
+    origin = ray.origin;
+    direction = ray.direction;
 }
 
 Status validateCamera(const CameraSpec& camera) {

@@ -1,5 +1,6 @@
 // The reference occlusion oracle: Vis-sort's queries (Govindaraju, Henson, Lin, Manocha, I3D 2005,
-// section 4) answered by the plain depth rasterizer of cpu_rasterizer.h.
+// section 4) answered by the plain depth rasterizer of cpu_rasterizer.h, and by the exact
+// fragment model (geometry/exact_fragments.h) wherever the rasterizer's floats cannot decide.
 
 #include "vissort/cpu_oracle.h"
 
@@ -8,6 +9,7 @@
 #include <limits>
 
 #include "raster/cpu_rasterizer.h"
+#include "raster/depth_arbiter.h"
 
 namespace vissort {
 namespace {
@@ -17,6 +19,11 @@ template <class Corner> detail::ClipVertex toClipVertex(const Corner& corner) {
 }
 
 } // namespace
+
+CpuOracle::CpuOracle(RasterMode mode)
+    : mode_(mode), arbiter_(std::make_unique<detail::DepthArbiter>()) {}
+
+CpuOracle::~CpuOracle() = default;
 
 void CpuOracle::bind(PositionsView positions, const ViewProjection& view,
                      std::span<const PrimitiveRange> primitives) {
@@ -37,17 +44,52 @@ void CpuOracle::bind(PositionsView positions, const ViewProjection& view,
             detail::toClipSpace(m, positions.x[i], positions.y[i], positions.z[i]);
         corners_[i] = {c.x, c.y, c.z, c.w};
     }
+    positions_ = positions;
+    arbiter_->bind(view, positions);
+    const detail::ScreenErrors errors = detail::screenErrorsOf(m, view, positions, primitives);
+    screen_position_error_ = errors.position_px;
+    screen_depth_error_ = errors.depth;
+    // Each triangle's pixel bounds, the union of its fan triangles': where the exact rule's
+    // arbitration looks for it.
+    triangle_bounds_.assign(positions.triangleCount(), PixelBounds{1, 0, 1, 0});
+    if (mode_ == RasterMode::exact)
+        for (std::size_t t = 0; t < positions.triangleCount(); ++t) {
+            PixelBounds& b = triangle_bounds_[t];
+            b = {int32_t(width_), -1, int32_t(height_), -1};
+            detail::forEachFanTriangle(
+                toClipVertex(corners_[3 * t]), toClipVertex(corners_[3 * t + 1]),
+                toClipVertex(corners_[3 * t + 2]), width_, height_, false,
+                [&](const detail::TriangleSetup& s) {
+                    b.x_min = std::min(b.x_min, int32_t(s.px_min));
+                    b.x_max = std::max(b.x_max, int32_t(s.px_max));
+                    b.y_min = std::min(b.y_min, int32_t(s.py_min));
+                    b.y_max = std::max(b.y_max, int32_t(s.py_max));
+                    return false;
+                },
+                errors);
+        }
     depth_.resize(std::size_t(width_) * height_);
+    error_.resize(depth_.size());
+    is_drawn_.assign(primitives_.size(), 0);
+    drawn_.clear();
     clear();
 }
 
 void CpuOracle::clear() {
     std::fill(depth_.begin(), depth_.end(), std::numeric_limits<float>::infinity());
+    std::fill(error_.begin(), error_.end(), 0.0f);
+    for (uint32_t p : drawn_)
+        is_drawn_[p] = 0;
+    drawn_.clear();
 }
 
 void CpuOracle::draw(uint32_t primitive) {
     assert(primitive < primitives_.size());
     ++stats_.draws;
+    if (mode_ == RasterMode::exact && depth_tolerance_ == 0) {
+        drawExact(primitive);
+        return;
+    }
     const PrimitiveRange range = primitives_[primitive];
     uint64_t fragments = 0;
     const auto write = [&](uint32_t px, uint32_t py, float depth) {
@@ -62,7 +104,8 @@ void CpuOracle::draw(uint32_t primitive) {
         const auto a = toClipVertex(corners_[c]), b = toClipVertex(corners_[c + 1]),
                    d = toClipVertex(corners_[c + 2]);
         if (mode_ == RasterMode::exact) {
-            detail::rasterizeTriangleFor(true, depth_tolerance_, a, b, d, width_, height_, write);
+            detail::rasterizeTriangleBlending(true, depth_tolerance_, a, b, d, width_, height_,
+                                              write);
         } else {
             detail::rasterizeTriangleConservative(a, b, d, width_, height_,
                                                   [&](uint32_t px, uint32_t py, float nearest,
@@ -75,6 +118,8 @@ void CpuOracle::draw(uint32_t primitive) {
 bool CpuOracle::anyBehind(uint32_t primitive) {
     assert(primitive < primitives_.size());
     ++stats_.queries;
+    if (mode_ == RasterMode::exact && depth_tolerance_ == 0)
+        return anyBehindExact(primitive);
     const PrimitiveRange range = primitives_[primitive];
     uint64_t fragments = 0;
     bool behind = false;
@@ -88,8 +133,8 @@ bool CpuOracle::anyBehind(uint32_t primitive) {
         const auto a = toClipVertex(corners_[c]), b = toClipVertex(corners_[c + 1]),
                    d = toClipVertex(corners_[c + 2]);
         if (mode_ == RasterMode::exact) {
-            behind = detail::rasterizeTriangleFor(false, depth_tolerance_, a, b, d, width_, height_,
-                                                  test);
+            behind = detail::rasterizeTriangleBlending(false, depth_tolerance_, a, b, d, width_,
+                                                       height_, test);
         } else {
             behind = detail::rasterizeTriangleConservative(
                 a, b, d, width_, height_, [&](uint32_t px, uint32_t py, float, float farthest) {
@@ -99,6 +144,92 @@ bool CpuOracle::anyBehind(uint32_t primitive) {
     }
     stats_.fragments_tested += fragments;
     return behind;
+}
+
+void CpuOracle::drawExact(uint32_t primitive) {
+    if (!is_drawn_[primitive]) {
+        is_drawn_[primitive] = 1;
+        drawn_.push_back(primitive);
+    }
+    const detail::ScreenErrors errors{screen_position_error_, screen_depth_error_};
+    const PrimitiveRange range = primitives_[primitive];
+    for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count; ++t) {
+        const std::size_t c = std::size_t(t) * 3;
+        const detail::TriangleCorners corners = detail::TriangleCorners::of(positions_, t);
+        detail::rasterizeTriangleExact(
+            toClipVertex(corners_[c]), toClipVertex(corners_[c + 1]), toClipVertex(corners_[c + 2]),
+            width_, height_, errors,
+            [&](uint32_t px, uint32_t py) {
+                const detail::ExactFragments& model = arbiter_->model();
+                return model.covers(model.rays().centre(px, py), corners);
+            },
+            [&](uint32_t px, uint32_t py, float depth, double error) {
+                ++stats_.fragments_drawn;
+                const std::size_t i = std::size_t(py) * width_ + px;
+                depth_[i] = std::min(depth_[i], depth);
+                const float bound = error < 1e30 ? float(error) * (1 + 0x1p-20f)
+                                                 : std::numeric_limits<float>::infinity();
+                error_[i] = std::max(error_[i], bound);
+                return false;
+            });
+    }
+}
+
+bool CpuOracle::anyBehindExact(uint32_t primitive) {
+    const detail::ScreenErrors errors{screen_position_error_, screen_depth_error_};
+    struct Undecided {
+        uint32_t triangle, px, py;
+    };
+    std::vector<Undecided> undecided; // the reference allocates: plain rather than fast
+    const PrimitiveRange range = primitives_[primitive];
+    for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count; ++t) {
+        const std::size_t c = std::size_t(t) * 3;
+        const detail::TriangleCorners corners = detail::TriangleCorners::of(positions_, t);
+        const bool behind = detail::rasterizeTriangleExact(
+            toClipVertex(corners_[c]), toClipVertex(corners_[c + 1]), toClipVertex(corners_[c + 2]),
+            width_, height_, errors,
+            [&](uint32_t px, uint32_t py) {
+                const detail::ExactFragments& model = arbiter_->model();
+                return model.covers(model.rays().centre(px, py), corners);
+            },
+            [&](uint32_t px, uint32_t py, float depth, double error) {
+                ++stats_.fragments_tested;
+                const std::size_t i = std::size_t(py) * width_ + px;
+                const float band = detail::decisionBand(error, error_[i]);
+                switch (detail::decide(depth, depth_[i], band)) {
+                case detail::Decision::behind:
+                    return true;
+                case detail::Decision::undecided:
+                    undecided.push_back({t, px, py});
+                    return false;
+                case detail::Decision::not_behind:
+                    return false;
+                }
+                return false;
+            });
+        if (behind)
+            return true;
+    }
+    for (const Undecided& u : undecided)
+        if (behindSomethingDrawn(u.triangle, u.px, u.py))
+            return true;
+    return false;
+}
+
+bool CpuOracle::behindSomethingDrawn(uint32_t triangle, uint32_t px, uint32_t py) {
+    ++stats_.arbitrations;
+    const detail::DepthArbiter::Query query = arbiter_->query(triangle, px, py);
+    for (uint32_t p : drawn_) {
+        const PrimitiveRange range = primitives_[p];
+        for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count;
+             ++t) {
+            const PixelBounds& b = triangle_bounds_[t];
+            if (int32_t(px) >= b.x_min && int32_t(px) <= b.x_max && int32_t(py) >= b.y_min &&
+                int32_t(py) <= b.y_max && arbiter_->nearer(query, t))
+                return true;
+        }
+    }
+    return false;
 }
 
 } // namespace vissort

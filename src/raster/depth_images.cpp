@@ -78,11 +78,14 @@ void drawImageTile(const float* image, float* stored, float& stored_min, float& 
     stored_max = greatest;
 }
 
-bool queryImageTile(const float* image, const float* stored, float tolerance) {
-    bool behind = false;
-    for (std::size_t i = 0; i < kTileFloats; ++i)
-        behind |= image[i] > stored[i] + tolerance;
-    return behind;
+QueryResult queryImageTile(const float* image, const float* stored, float behind_above,
+                           float undecided_above) {
+    bool behind = false, undecided = false;
+    for (std::size_t i = 0; i < kTileFloats; ++i) {
+        behind |= image[i] > stored[i] + behind_above;
+        undecided |= image[i] > stored[i] + undecided_above;
+    }
+    return behind ? QueryResult::behind : undecided ? QueryResult::undecided : QueryResult::none;
 }
 
 } // namespace vissort::detail

@@ -72,7 +72,9 @@ private:
 /// image) pixelwise. Returns the least and greatest stored depths after it.
 void drawImageTile(const float* image, float* stored, float& stored_min, float& stored_max);
 
-/// True when some depth of a far image's tile exceeds the stored depth + tolerance.
-bool queryImageTile(const float* image, const float* stored, float tolerance);
+/// Whether some depth of a far image's tile is behind the stored depth, or else undecided, by
+/// the thresholds of TriangleWalk (fast_rows.h).
+QueryResult queryImageTile(const float* image, const float* stored, float behind_above,
+                           float undecided_above);
 
 } // namespace vissort::detail

@@ -15,6 +15,11 @@
 //    from it by at most a few units in the last place of |d0| + |ddx (cx - x0)| + |ddy (cy - y0)|:
 //    a margin of 2^-48 of that sum bounds v from both sides. Rounding to float is monotone, so
 //    bounds on v bound the fragments, and comparisons against float depths stay exact.
+//  - The exact rule's decisions (cpu_oracle.h, rule 7) compare a fragment with the stored depth
+//    within a band made of the fragment's error bound and one for every fragment drawn into the
+//    tile since its clear (TileState::error, at least each pixel's): a wider band than the
+//    reference's per-pixel one decides fewer fragments by floats and sends more to the exact
+//    model, whose answers are the same.
 
 #include "vissort/fast_cpu_oracle.h"
 
@@ -24,12 +29,14 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <span>
 #include <thread>
 #include <type_traits>
 #include <vector>
 
 #include "raster/cpu_rasterizer.h"
+#include "raster/depth_arbiter.h"
 #include "raster/depth_images.h"
 #include "raster/fast_rows.h"
 #include "raster/fast_setup.h"
@@ -49,26 +56,49 @@ constexpr std::size_t kTilePixels = detail::kTileFloats;
 constexpr double kDepthMargin = 0x1p-48;
 
 // A set-up as the oracle keeps it from bind to bind and the walks read it: FastSetup's values in
-// 120 bytes instead of 144, since a large input keeps one per triangle. Pixel bounds lie in a
-// viewport of at most 2^16 pixels a side; the narrow flag (a byte, not 8 of padding) and the
-// spread (the snap slack in exact mode) are kept beside them. The edge steps stay
-// int64_t: as int32_t quotients by kSubpixelScale (snapped coordinates are at most 2^29) the
-// set-up would take 96 bytes, but widening them back in every draw and query cost 6% more
-// instructions on builtin:bunnies at object level.
+// 128 bytes (two cache lines) instead of 176, since a large input keeps one per triangle. Pixel
+// bounds lie in a viewport of at most 2^16 pixels a side; the narrow flag (a byte, not 8 of
+// padding), the spread (the snap slack, or the conservative spread) and the exact rule's error
+// bound are kept beside them, and the margins are derived from the steps where the blending rule
+// needs them (marginsFromSteps). The edge steps stay int64_t: as int32_t quotients by
+// kSubpixelScale (snapped coordinates are at most 2^29) the set-up would take fewer bytes, but
+// widening them back in every draw and query cost 6% more instructions on builtin:bunnies at
+// object level.
 struct StoredSetup {
-    int64_t edge_at_origin[3];
+    int64_t edge_at_origin[3]; // with the exact rule's bias (-margin), or conservative mode's
     int64_t edge_step_x[3], edge_step_y[3];
     double x0, y0, d0, ddx, ddy;
     uint16_t px_min, px_max, py_min, py_max;
+    // The triangle of positions it is a fan triangle of (below 2^31), and in the top bit whether
+    // its exact-rule error bound exceeds the common one (kCommonErrorCap: errors_ has it).
+    uint32_t triangle_and_flag;
+    uint32_t band_first; // the exact rule's band pixels: an entry of band_pixels_, 0 for none
 
     int64_t edgeStepX(int e) const { return edge_step_x[e]; }
     int64_t edgeStepY(int e) const { return edge_step_y[e]; }
+    uint32_t triangle() const { return triangle_and_flag & ~kLargeError; }
+    bool largeError() const { return (triangle_and_flag & kLargeError) != 0; }
+    static constexpr uint32_t kLargeError = 1u << 31;
 };
-static_assert(sizeof(StoredSetup) == 120);
+static_assert(sizeof(StoredSetup) == 128);
 static_assert(detail::kMaxViewportSize <= 65536);
 
-StoredSetup storedSetup(const detail::FastSetup& s) {
+// The exact rule's common error bound: almost every fragment's is the float rounding, 2^-24, and
+// a few steep or sliver triangles' more; only those keep their own (StoredSetup::largeError) and
+// write it into the tiles they draw, so that a draw need not touch every tile's state.
+constexpr float kCommonErrorCap = 0x1p-22f;
+
+// An error bound as a float no smaller than it (+infinity beyond float's range).
+float roundedUp(double error) {
+    return error < 1e30 ? float(error) * (1 + 0x1p-20f) : std::numeric_limits<float>::infinity();
+}
+
+StoredSetup storedSetup(const detail::FastSetup& s, uint32_t triangle, uint32_t band_first) {
     StoredSetup c;
+    assert(triangle < StoredSetup::kLargeError);
+    c.triangle_and_flag =
+        triangle | (roundedUp(s.error) > kCommonErrorCap ? StoredSetup::kLargeError : 0);
+    c.band_first = band_first;
     for (int e = 0; e < 3; ++e) {
         c.edge_at_origin[e] = s.edge_at_origin[e];
         c.edge_step_x[e] = s.edge_step_x[e];
@@ -86,6 +116,12 @@ StoredSetup storedSetup(const detail::FastSetup& s) {
     return c;
 }
 
+// The exact rule's decision band as a float sum of floats (decisionBand of cpu_rasterizer.h, in
+// float): the sum rounded, then widened by far more than that rounding.
+inline float bandOf(float error, float stored_error) {
+    return (error + stored_error) * (1 + 0x1p-20f) + 0x1p-22f;
+}
+
 // What a draw or a query adds to each fragment's double value before rounding (fast_rows.h):
 // conservative mode, the nearest depth over the pixel for a draw and the farthest for a query;
 // exact mode, the slack as the reference moves it (detail::exactFragmentOffset).
@@ -99,7 +135,10 @@ template <bool kDraw>
 detail::TriangleWalk triangleWalk(const StoredSetup& s, bool narrow, double spread,
                                   bool conservative, float tolerance) {
     detail::TriangleWalk walk;
-    walk.tolerance = tolerance;
+    // The blending rule's and conservative mode's thresholds; the exact rule sets its own per
+    // tile (decisionBand).
+    walk.behind_above = tolerance;
+    walk.undecided_above = std::numeric_limits<float>::infinity();
     walk.narrow = narrow;
     for (int e = 0; e < 3; ++e) {
         walk.step_x[e] = s.edgeStepX(e);
@@ -110,7 +149,10 @@ detail::TriangleWalk triangleWalk(const StoredSetup& s, bool narrow, double spre
     walk.ddy = s.ddy;
     walk.x0 = s.x0;
     walk.y0_plane = s.y0;
-    walk.offset = fragmentOffset<kDraw>(spread, conservative, tolerance);
+    // The exact rule moves nothing (tolerance 0, not conservative).
+    walk.offset = !conservative && tolerance == 0
+                      ? -0.0
+                      : fragmentOffset<kDraw>(spread, conservative, tolerance);
     return walk;
 }
 
@@ -164,6 +206,95 @@ struct FastCpuOracle::Impl {
     bool sameAsBound(PositionsView positions, const ViewProjection& view) const;
     void draw(uint32_t primitive);
     bool anyBehind(uint32_t primitive);
+
+    // Tiles of rows [row_first, row_last) and columns [column_first, column_last].
+    struct TileRect {
+        int32_t row_first, row_last, column_first, column_last;
+    };
+
+    // The exact rule (depth tolerance 0, exact mode): its undecided fragments, collected by a
+    // query's walks and decided by the exact model once the walks found nothing behind.
+    bool exactRule() const { return !conservative_ && depth_tolerance_ == 0; }
+    struct Undecided {
+        enum class Kind : uint8_t {
+            setup_tile,  // some fragment of set-up `what` in tile `where`
+            setup_pixel, // set-up `what`'s band pixel `where` (py << 16 | px)
+            image_tile,  // primitive `what`'s far image entry `where`
+        };
+        Kind kind;
+        uint32_t what, where;
+    };
+    // What a query's walks share: its undecided fragments and its time (drawnBefore).
+    struct QueryContext {
+        std::vector<Undecided>* undecided;
+        uint32_t time;
+    };
+    /// Whether some undecided fragment of context, within rect's rows, is behind by the exact
+    /// model; clears the list.
+    bool resolve(QueryContext& context, const TileRect& rect, FastCpuOracleStats& stats);
+    /// Whether triangle's fragment at pixel (px, py) (its float `fragment`, within `error` of
+    /// the exact depth) lies strictly behind a fragment of a primitive drawn there before
+    /// `time`, by the exact model.
+    bool behindSomethingDrawn(uint32_t triangle, uint32_t px, uint32_t py, uint32_t time,
+                              float fragment, float error, FastCpuOracleStats& stats);
+    /// The set-up's fragment value at a pixel (rule 6, no offset) and whether it certainly
+    /// covers it (every edge function beyond the margin).
+    float fragmentAt(const StoredSetup& s, uint32_t px, uint32_t py) const;
+    bool certainlyCovers(const StoredSetup& s, uint32_t px, uint32_t py) const;
+    /// The primitive whose set-ups hold set-up k.
+    uint32_t primitiveOfSetup(uint32_t k) const {
+        return uint32_t(std::upper_bound(primitive_setups_.begin(),
+                                         primitive_setups_.begin() + primitive_count_ + 1, k) -
+                        primitive_setups_.begin()) -
+               1;
+    }
+    /// The index of set-ups by cells of the screen (by their pixel bounds), made on first need
+    /// after each (re)bind; thread-safe.
+    void ensureTileIndex();
+    /// When primitive p was first drawn since the clear (drawnBefore): the clock of draws, which
+    /// runs on across clears (a clear notes where it stood: clear_time_), at its first draw.
+    void stamp(uint32_t p) {
+        if (drawn_time_[p] < clear_time_) {
+            reserveClock(1);
+            drawn_time_[p] = clock_++;
+        }
+    }
+    bool drawnBefore(uint32_t p, uint32_t time) const {
+        return drawn_time_[p] >= clear_time_ && drawn_time_[p] < time;
+    }
+    /// Before `draws` more stamps: where the clock would pass 2^32 - 1, its stamps since the last
+    /// clear move down to start at 1 and the older ones to 0 (after 4 billion draws).
+    void reserveClock(std::size_t draws) {
+        if (uint64_t(clock_) + draws < std::numeric_limits<uint32_t>::max())
+            return;
+        for (uint32_t& time : drawn_time_)
+            time = time >= clear_time_ ? time - clear_time_ + 1 : 0;
+        clock_ -= clear_time_ - 1;
+        clear_time_ = 1;
+    }
+    /// The common bound of a (re)bind: the largest error bound of its set-ups, up to
+    /// kCommonErrorCap; set-ups above it raise the tiles they draw into instead.
+    void setGlobalError() {
+        global_error_ = 0;
+        for (float error : errors_)
+            global_error_ = std::max(global_error_, std::min(error, kCommonErrorCap));
+    }
+    /// A new epoch of the buffer in use (a wrap of the 32-bit count resets every tile's).
+    void newEpoch() {
+        if (++epoch_ == 0) {
+            for (TileState& tile : tiles_)
+                tile.epoch = 0;
+            epoch_ = 1;
+        }
+    }
+    /// clear(): a new epoch, and no primitive drawn since.
+    void clearBuffer() {
+        newEpoch();
+        clear_time_ = clock_;
+    }
+    /// The bind's band pixel lists (forEachFastBandPixel, then the exact model's coverage):
+    /// appended to band_pixels_ for set-up `setup` of triangle t; returns its band_first.
+    uint32_t bandPixelsOf(const detail::FastSetup& setup, uint32_t t);
     // The banded passes; bands >= 2 (bandsFor), else the oracle runs the sequential definition.
     // queryAgainst takes any band count (1: on the calling thread).
     void backToFrontPass(uint32_t bands, std::span<const uint32_t> sequence,
@@ -175,13 +306,39 @@ struct FastCpuOracle::Impl {
     /// Walks the tiles of set-up s in tile rows [ty_begin, ty_end); counts into stats. Each
     /// fragment moves as fragmentOffset says for a draw or a query, or with kFarImage (a draw of
     /// a negated plane, buildImage) by the negated query offset.
+    /// A query's undecided fragments go to context (k: the set-up's index, for them).
     template <bool kDraw, bool kFarImage = false>
-    bool rasterize(const StoredSetup& s, bool narrow, double spread, int32_t ty_begin,
-                   int32_t ty_end, FastCpuOracleStats& stats);
+    bool rasterize(const StoredSetup& s, bool narrow, double spread, float error, int32_t ty_begin,
+                   int32_t ty_end, FastCpuOracleStats& stats, QueryContext* context = nullptr,
+                   uint32_t k = 0);
     /// rasterize of set-up k.
     template <bool kDraw>
-    bool rasterize(uint32_t k, int32_t ty_begin, int32_t ty_end, FastCpuOracleStats& stats) {
-        return rasterize<kDraw>(setups_[k], narrow_[k] != 0, spreadOf(k), ty_begin, ty_end, stats);
+    bool rasterize(uint32_t k, int32_t ty_begin, int32_t ty_end, FastCpuOracleStats& stats,
+                   QueryContext* context = nullptr) {
+        const StoredSetup& s = setups_[k];
+        // Under the exact rule no fragment moves (the spread is unused) and the common error
+        // bound covers most set-ups: their arrays are not read.
+        const bool exact = exactRule();
+        return rasterize<kDraw>(s, narrow_[k] != 0, exact ? 0.0 : spreadOf(k),
+                                !exact || s.largeError() ? errors_[k] : global_error_, ty_begin,
+                                ty_end, stats, context, k);
+    }
+    /// The exact rule's band pixels of s within tile rows [ty_begin, ty_end): drawn, or queried
+    /// (undecided ones to context).
+    template <bool kDraw>
+    bool rasterizeBand(const StoredSetup& s, float error, int32_t ty_begin, int32_t ty_end,
+                       QueryContext* context, uint32_t k);
+    /// The edge functions at the centre of pixel (0, 0) under the oracle's rule: the stored ones,
+    /// or under the blending rule the top-left rule's (blendingBias).
+    void edgeOrigins(const StoredSetup& s, int64_t origin[3]) const {
+        for (int e = 0; e < 3; ++e)
+            origin[e] = s.edge_at_origin[e];
+        if (conservative_ || depth_tolerance_ == 0)
+            return;
+        const std::array<int64_t, 3> margins =
+            detail::marginsFromSteps(s.edge_step_x, s.edge_step_y, screen_errors_);
+        for (int e = 0; e < 3; ++e)
+            origin[e] += detail::blendingBias(margins[e], s.edge_step_x[e], s.edge_step_y[e]);
     }
     /// What a walk of s shares; a far image's moves each fragment by the negated query offset.
     /// (A separate step, not a parameter of triangleWalk: passing the offset in made the
@@ -192,7 +349,9 @@ struct FastCpuOracle::Impl {
         detail::TriangleWalk walk =
             triangleWalk<kDraw>(s, narrow, spread, conservative_, depth_tolerance_);
         if constexpr (kFarImage)
-            walk.offset = -fragmentOffset<false>(spread, conservative_, depth_tolerance_);
+            walk.offset = exactRule()
+                              ? -0.0
+                              : -fragmentOffset<false>(spread, conservative_, depth_tolerance_);
         return walk;
     }
     /// rasterize for a triangle whose pixel bounds span at most detail::kSmallTiles tiles each
@@ -201,8 +360,9 @@ struct FastCpuOracle::Impl {
     /// costs more than the few pixels a small triangle has in each tile. Rows of tile rows
     /// [ty_first, ty_last] only.
     template <bool kDraw, bool kFarImage>
-    bool rasterizeSmall(const StoredSetup& s, bool narrow, double spread, int32_t ty_first,
-                        int32_t ty_last, FastCpuOracleStats& stats);
+    bool rasterizeSmall(const StoredSetup& s, bool narrow, double spread, float error,
+                        int32_t ty_first, int32_t ty_last, FastCpuOracleStats& stats,
+                        QueryContext* context, uint32_t k);
     /// Runs band(b, stats of b) for b = 0..bands-1 on the calling thread and the pool's workers
     /// (each claims the next band when done); then adds the bands' tile counts to stats_.
     template <class Band> void runBands(uint32_t bands, Band&& band);
@@ -225,16 +385,14 @@ struct FastCpuOracle::Impl {
     /// Set-up k's FastSetup::spread: conservative mode, the spread over a pixel; exact mode,
     /// the snap slack (cpu_rasterizer.h).
     double spreadOf(uint32_t k) const { return spreads_[k]; }
-    /// Appends the set-ups of fan triangles to setups_ (and narrow_, spreads_).
-    void store(std::span<const detail::FastSetup> fan);
+    /// Appends the set-ups of triangle t's fan triangles to setups_ (and narrow_, spreads_,
+    /// errors_), with their band pixels under the exact rule.
+    void store(std::span<const detail::FastSetup> fan, uint32_t t);
 
     // Depth images (depth_images.h): a primitive of image_min_triangles_ set-ups or more is
     // rasterized once per bind into an image of its nearest fragments (for draws) and once into
     // one of its farthest (for queries), each on first use; its draws and queries then walk
     // its tiles. Tiles of rows [row_first, row_last) and columns [column_first, column_last].
-    struct TileRect {
-        int32_t row_first, row_last, column_first, column_last;
-    };
     TileRect wholeScreen() const { return {0, int32_t(tiles_y_), 0, int32_t(tiles_x_) - 1}; }
     static constexpr uint32_t kNoSlot = ~uint32_t(0);
     /// primitive's place among imaged_, or kNoSlot when it has too few set-ups for images.
@@ -271,8 +429,18 @@ struct FastCpuOracle::Impl {
     /// meet rect), else set-up by set-up (those whose pixel bounds meet rect's columns).
     void drawIn(uint32_t primitive, const TileRect& rect, FastCpuOracleStats& stats);
     /// Queries primitive within rect's rows: through its far image if it has one made, else
-    /// set-up by set-up.
-    bool anyBehindIn(uint32_t primitive, const TileRect& rect, FastCpuOracleStats& stats);
+    /// set-up by set-up. Under the exact rule, undecided fragments go to context, and true
+    /// means behind without them.
+    bool anyBehindIn(uint32_t primitive, const TileRect& rect, FastCpuOracleStats& stats,
+                     QueryContext& context);
+    /// anyBehindIn, then the undecided fragments: the answer.
+    bool queryIn(uint32_t primitive, const TileRect& rect, FastCpuOracleStats& stats,
+                 QueryContext& context) {
+        context.undecided->clear(); // what an earlier query found behind before resolving
+        if (anyBehindIn(primitive, rect, stats, context))
+            return true;
+        return !context.undecided->empty() && resolve(context, rect, stats);
+    }
     /// Calls visit(entry, tile) for the entries of an image whose tiles lie in rect, in tile
     /// order, until it returns true; returns whether it did.
     template <class Visit>
@@ -292,9 +460,39 @@ struct FastCpuOracle::Impl {
     // Primitive p's fan triangles are setups_[primitive_setups_[p], primitive_setups_[p + 1]).
     std::vector<uint32_t> primitive_setups_;
     std::vector<StoredSetup> setups_;
-    std::vector<uint8_t> narrow_;        // FastSetup::narrow, beside setups_
-    std::vector<double> spreads_;        // FastSetup::spread, beside setups_
+    std::vector<uint8_t> narrow_; // FastSetup::narrow, beside setups_
+    std::vector<double> spreads_; // FastSetup::spread, beside setups_
+    std::vector<float> errors_;   // FastSetup::error rounded up, beside setups_
+    // The exact rule's common error bound of the set-ups bound (setGlobalError): almost every
+    // fragment's is the float rounding, 2^-24, and a few steep or sliver triangles' more; only
+    // those write it into the tiles they draw, so that a draw need not touch every tile's state.
+    static constexpr float kCommonErrorCap = 0x1p-22f;
+    float global_error_ = 0;
     std::vector<detail::FastSetup> fan_; // bind's scratch: one triangle's fan set-ups
+    // The exact rule's band pixels: at a set-up's band_first, their count, then each covered one
+    // as py << 16 | px. Entry 0 is unused (band_first 0: none). Made by bind, kept by rebinds.
+    std::vector<uint32_t> band_pixels_;
+    // The exact model of the last bind and its arbitration, its positions (the exact model reads
+    // the corners), and the bind's screen errors.
+    detail::DepthArbiter arbiter_;
+    PositionsView positions_;
+    detail::ScreenErrors screen_errors_;
+    bool orthographic_ = false;
+    // When each primitive was first drawn since the clear (stamp), on a clock of draws that the
+    // clears do not reset (4 bytes a primitive); where the clock stood at the last clear.
+    std::vector<uint32_t> drawn_time_;
+    uint32_t clock_ = 1, clear_time_ = 1;
+    // The index of set-ups by cells of 32 x 32 pixels (a small triangle's bounds meet one or two,
+    // so the index is about a set-up long): cell c's are cell_setups_[cell_starts_[c], [c + 1]).
+    static constexpr int kCellShift = 5;
+    uint32_t cellsX() const { return (width_ + (1u << kCellShift) - 1) >> kCellShift; }
+    uint32_t cellsY() const { return (height_ + (1u << kCellShift) - 1) >> kCellShift; }
+    std::vector<uint32_t> cell_starts_, cell_setups_;
+    std::atomic<bool> tile_index_built_{false};
+    std::mutex tile_index_mutex_;
+    std::vector<Undecided> undecided_;                   // a sequential query's
+    std::vector<std::vector<Undecided>> band_undecided_; // per band
+    std::vector<uint32_t> query_times_;                  // a banded pass's, per element
 
     // For rebind, once one has been asked for (an oracle never rebound pays nothing for it):
     // where bind put each triangle's set-ups. A triangle's entry is current when its
@@ -309,6 +507,7 @@ struct FastCpuOracle::Impl {
     bool keep_for_rebind_ = false;
     std::vector<TriangleSetups> triangle_setups_;
     uint32_t bind_stamp_ = 0;
+    std::vector<float> source_errors_;
     // Where the set-ups that triangle_setups_ points into are: still setups_ until the first
     // rebind after a bind moves them to source_ (its set-ups are then copied from there); none
     // when the last bind kept no map.
@@ -330,15 +529,21 @@ struct FastCpuOracle::Impl {
     // whose fragments all pass, its depth bounds' lower end rounded to float); max is an upper
     // bound on every stored depth (exact after clear and after a depth-tested draw that covers
     // the whole tile, the upper end rounded after a passing draw that covers it, otherwise left
-    // as it was: stored depths only decrease).
+    // as it was: stored depths only decrease). error: the largest exact-rule error bound of a
+    // draw that walked the tile since its clear (0 when clear): every stored depth's, and every
+    // fragment's drawn there, whether it passed or not (the exact rule's band needs them all).
+    // 16 bytes: the epoch is 32 bits, and its wrap resets every tile (newEpoch).
     struct TileState {
-        float min, max;
-        uint64_t epoch;
+        float min, max, error;
+        uint32_t epoch;
     };
+    /// A bound on the error of every fragment drawn into a tile since its clear: the bind's
+    /// common bound, or the tile's own where a fragment above it was drawn there.
+    float storedError(const TileState& state) const { return std::max(global_error_, state.error); }
     mutable std::vector<float> depth_;     // tile by tile (fast_rows.h), padded to whole tiles
     mutable std::vector<float> row_major_; // depthBuffer()'s copy
     mutable std::vector<TileState> tiles_;
-    uint64_t epoch_ = 1;
+    uint32_t epoch_ = 1;
     FastCpuOracleStats stats_;
     // The oracle's depthTolerance(), copied here by every draw, query and pass.
     float depth_tolerance_ = kDepthTolerance;
@@ -347,14 +552,12 @@ struct FastCpuOracle::Impl {
     bool use_simd_ = false;
     // The pixel walks (src/raster/fast_rows.h): AVX2 or scalar, chosen at construction.
     void (*draw_tile_)(const detail::TileWalk&, detail::TileDraw&) = nullptr;
-    bool (*query_tile_)(const detail::TileWalk&) = nullptr;
+    detail::QueryTileFn query_tile_ = nullptr;
     void (*fill_tile_)(const detail::TileWalk&) = nullptr;
     void (*draw_small_)(const detail::SmallWalk&, detail::SmallDraw&) = nullptr;
-    bool (*query_small_)(const detail::SmallWalk&) = nullptr;
+    detail::QuerySmallFn query_small_ = nullptr;
     // The batch set-up (src/raster/fast_setup.h): AVX2, or null for the scalar one only.
-    void (*setup_quad_)(const std::array<double, 16>&, const float*, const float*, const float*,
-                        const uint32_t*, uint32_t, uint32_t, detail::FastSetup*,
-                        detail::LaneSetup*) = nullptr;
+    detail::SetupQuadFn setup_quad_ = nullptr;
     uint32_t threads_ = 1;
     uint32_t parallel_threshold_ = 0;
     // The caller's pool (Options::pool), or WorkerPool::shared() from the first parallel pass.
@@ -378,7 +581,8 @@ struct FastCpuOracle::Impl {
     // The buffer images are rasterized into: swapped with depth_, tiles_ and epoch_ meanwhile.
     std::vector<float> image_depth_;
     std::vector<TileState> image_tiles_;
-    uint64_t image_epoch_ = 1;
+    uint32_t image_epoch_ = 1;
+    std::vector<float> image_errors_; // per slot: the largest error bound of its set-ups
 };
 
 FastCpuOracle::Impl::Impl(const Options& options)
@@ -424,8 +628,16 @@ void FastCpuOracle::Impl::bind(PositionsView positions, const ViewProjection& vi
         std::swap(setups_, source_setups_);
         std::swap(narrow_, source_narrow_);
         std::swap(spreads_, source_spreads_);
+        std::swap(errors_, source_errors_);
     }
     source_at_ = Source::none;
+    positions_ = positions;
+    if (!conservative_) {
+        screen_errors_ = detail::screenErrorsOf(m, view, positions, primitives);
+        orthographic_ = view.projection == Projection::orthographic;
+        arbiter_.bind(view, positions);
+    }
+    band_pixels_.assign(1, 0); // entry 0: none
     if (keep_for_rebind_) {
         bound_x_ = positions.x.data();
         bound_triangles_ = positions.triangleCount();
@@ -447,6 +659,8 @@ void FastCpuOracle::Impl::bind(PositionsView positions, const ViewProjection& vi
     narrow_.reserve(n);
     spreads_.clear();
     spreads_.reserve(n);
+    errors_.clear();
+    errors_.reserve(n);
     // Before the set-ups of the triangle at bind position i: primitives starting there start here.
     std::size_t next_primitive = 0, next_start = 0;
     const auto reach = [&](std::size_t i) {
@@ -463,7 +677,7 @@ void FastCpuOracle::Impl::bind(PositionsView positions, const ViewProjection& vi
         detail::LaneSetup lanes[4];
         if (batch && quad_size == 4)
             setup_quad_(m, positions.x.data(), positions.y.data(), positions.z.data(),
-                        quad_triangles, width_, height_, quad, lanes);
+                        quad_triangles, width_, height_, screen_errors_, quad, lanes);
         else
             std::fill_n(lanes, 4, detail::LaneSetup::scalar);
         for (std::size_t l = 0; l < quad_size; ++l) {
@@ -471,12 +685,12 @@ void FastCpuOracle::Impl::bind(PositionsView positions, const ViewProjection& vi
             const uint32_t first = uint32_t(setups_.size());
             if (lanes[l] == detail::LaneSetup::ready) {
                 quad[l].narrow = detail::edgesFitInt32(quad[l]);
-                store({&quad[l], 1});
+                store({&quad[l], 1}, quad_triangles[l]);
             } else if (lanes[l] == detail::LaneSetup::scalar) {
                 fan_.clear();
                 detail::appendFastSetups(m, positions, quad_triangles[l], width_, height_,
-                                         conservative_, fan_);
-                store(fan_);
+                                         conservative_, screen_errors_, fan_);
+                store(fan_, quad_triangles[l]);
             }
             if (keep_for_rebind_) {
                 const uint32_t count = uint32_t(setups_.size()) - first;
@@ -523,6 +737,7 @@ void FastCpuOracle::Impl::rebind(PositionsView positions, const ViewProjection& 
         source_setups_.reserve(room);
         source_narrow_.reserve(room);
         source_spreads_.reserve(room);
+        source_errors_.reserve(room);
     };
     if (!sameAsBound(positions, view)) {
         bindInstead();
@@ -542,6 +757,7 @@ void FastCpuOracle::Impl::rebind(PositionsView positions, const ViewProjection& 
         std::swap(setups_, source_setups_);
         std::swap(narrow_, source_narrow_);
         std::swap(spreads_, source_spreads_);
+        std::swap(errors_, source_errors_);
         source_at_ = Source::source;
     }
     primitive_count_ = uint32_t(primitives.size());
@@ -552,6 +768,7 @@ void FastCpuOracle::Impl::rebind(PositionsView positions, const ViewProjection& 
     setups_.resize(n);
     narrow_.resize(n);
     spreads_.resize(n);
+    errors_.resize(n);
     uint32_t k = 0;
     constexpr std::size_t kAhead = 8; // primitives: a few cache misses in flight
     for (std::size_t p = 0; p < primitives.size(); ++p) {
@@ -577,6 +794,7 @@ void FastCpuOracle::Impl::rebind(PositionsView positions, const ViewProjection& 
                 setups_[k] = source_setups_[i];
                 narrow_[k] = source_narrow_[i];
                 spreads_[k] = source_spreads_[i];
+                errors_[k] = source_errors_[i];
             }
         }
     }
@@ -585,12 +803,17 @@ void FastCpuOracle::Impl::rebind(PositionsView positions, const ViewProjection& 
 }
 
 void FastCpuOracle::Impl::finishBind() {
+    setGlobalError();
     depth_.resize(std::size_t(tiles_x_) * tiles_y_ * kTilePixels);
-    tiles_.assign(std::size_t(tiles_x_) * tiles_y_, TileState{kInfinity, kInfinity, 0});
+    tiles_.assign(std::size_t(tiles_x_) * tiles_y_, TileState{kInfinity, kInfinity, 0, 0});
     epoch_ = 1; // every tile pending a clear
+    drawn_time_.assign(primitive_count_, 0);
+    clock_ = clear_time_ = 1;
+    tile_index_built_.store(false);
 
     imaged_.clear();
     imaged_rects_.clear();
+    image_errors_.clear();
     for (uint32_t p = 0; image_min_triangles_ != 0 && p < primitive_count_; ++p) {
         if (primitive_setups_[p + 1] - primitive_setups_[p] < image_min_triangles_)
             continue;
@@ -603,6 +826,10 @@ void FastCpuOracle::Impl::finishBind() {
         }
         imaged_.push_back(p);
         imaged_rects_.push_back(rect);
+        float error = 0;
+        for (uint32_t k = primitive_setups_[p]; k < primitive_setups_[p + 1]; ++k)
+            error = std::max(error, errors_[k]);
+        image_errors_.push_back(error);
     }
     near_images_.reset(uint32_t(imaged_.size()));
     far_images_.reset(uint32_t(imaged_.size()));
@@ -620,12 +847,12 @@ template <bool kNear> void FastCpuOracle::Impl::buildImage(uint32_t primitive, u
     // cleared by the epochs, whatever an earlier bind of another size left.
     if (image_tiles_.size() != tiles_.size()) {
         image_depth_.resize(depth_.size());
-        image_tiles_.assign(tiles_.size(), TileState{kInfinity, kInfinity, 0});
+        image_tiles_.assign(tiles_.size(), TileState{kInfinity, kInfinity, 0, 0});
     }
     std::swap(depth_, image_depth_);
     std::swap(tiles_, image_tiles_);
     std::swap(epoch_, image_epoch_);
-    ++epoch_; // an empty buffer
+    newEpoch(); // an empty buffer
     FastCpuOracleStats unused;
     for (uint32_t k = first; k < last; ++k) {
         if constexpr (kNear) {
@@ -633,8 +860,8 @@ template <bool kNear> void FastCpuOracle::Impl::buildImage(uint32_t primitive, u
         } else {
             // The farthest fragment per pixel: the nearest of the negated ones, each moved as a
             // query moves it.
-            rasterize<true, true>(negatedPlane(setups_[k]), narrow_[k] != 0, spreadOf(k), 0,
-                                  int32_t(tiles_y_), unused);
+            rasterize<true, true>(negatedPlane(setups_[k]), narrow_[k] != 0, spreadOf(k),
+                                  errors_[k], 0, int32_t(tiles_y_), unused);
         }
     }
     detail::DepthImages& made = images<kNear>();
@@ -683,11 +910,14 @@ void FastCpuOracle::Impl::drawIn(uint32_t primitive, const TileRect& rect,
             bounds.y_max < y_first)
             return; // nothing of it in rect
         const detail::DepthImages& near = near_images_;
+        const float error = image_errors_[slot];
         forImageTiles(near, slot, rect, [&](std::size_t e, uint32_t tile) {
             ++stats.tiles_visited;
             TileState& state = tiles_[tile];
             if (state.epoch != epoch_)
                 clearTile(tile);
+            if (error > global_error_)
+                state.error = std::max(state.error, error);
             // Every depth of the image >= the tile's max >= every stored depth: none passes.
             if (near.bound(e) >= state.max)
                 ++stats.tiles_culled;
@@ -703,38 +933,235 @@ void FastCpuOracle::Impl::drawIn(uint32_t primitive, const TileRect& rect,
 }
 
 bool FastCpuOracle::Impl::anyBehindIn(uint32_t primitive, const TileRect& rect,
-                                      FastCpuOracleStats& stats) {
+                                      FastCpuOracleStats& stats, QueryContext& context) {
     if (const uint32_t slot = builtSlot<false>(primitive); slot != kNoSlot) {
         const detail::DepthImages& far = far_images_;
+        const bool exact = exactRule();
+        const float error = image_errors_[slot];
         return forImageTiles(far, slot, rect, [&](std::size_t e, uint32_t tile) {
             ++stats.tiles_visited;
             const TileState& state = tiles_[tile];
+            // The thresholds of rasterize: the exact rule's band, or the tolerance.
+            const float band_width = exact ? bandOf(error, storedError(state)) : 0;
+            const float behind_above = exact ? band_width : depth_tolerance_;
+            const float undecided_above =
+                exact ? -band_width : std::numeric_limits<float>::infinity();
             // Cleared since last touched (nothing is behind +infinity), or every depth of the
-            // image <= the tile's min + tolerance <= stored + tolerance: none behind.
-            if (state.epoch != epoch_ || far.bound(e) <= state.min + depth_tolerance_) {
+            // image <= the tile's min + threshold <= stored + threshold: none behind (or
+            // undecided).
+            if (state.epoch != epoch_ ||
+                far.bound(e) <= state.min + (exact ? undecided_above : behind_above)) {
                 ++stats.tiles_culled;
                 return false;
             }
-            return detail::queryImageTile(far.depths(e), tileDepths(tile), depth_tolerance_);
+            const detail::QueryResult result = detail::queryImageTile(
+                far.depths(e), tileDepths(tile), behind_above, undecided_above);
+            if (result == detail::QueryResult::undecided)
+                context.undecided->push_back({Undecided::Kind::image_tile, primitive, uint32_t(e)});
+            return result == detail::QueryResult::behind;
         });
     }
     for (uint32_t k = primitive_setups_[primitive]; k < primitive_setups_[primitive + 1]; ++k)
-        if (rasterize<false>(k, rect.row_first, rect.row_last, stats))
+        if (rasterize<false>(k, rect.row_first, rect.row_last, stats, &context))
             return true;
     return false;
 }
 
-void FastCpuOracle::Impl::store(std::span<const detail::FastSetup> fan) {
+void FastCpuOracle::Impl::ensureTileIndex() {
+    if (tile_index_built_.load(std::memory_order_acquire))
+        return;
+    const std::lock_guard<std::mutex> lock(tile_index_mutex_);
+    if (tile_index_built_.load(std::memory_order_relaxed))
+        return;
+    // Counting sort of (cell, set-up) over each set-up's pixel bounds.
+    const std::size_t cells = std::size_t(cellsX()) * cellsY();
+    cell_starts_.assign(cells + 1, 0);
+    const auto forEachCell = [&](const StoredSetup& s, auto&& visit) {
+        for (uint32_t cy = s.py_min >> kCellShift; cy <= uint32_t(s.py_max >> kCellShift); ++cy)
+            for (uint32_t cx = s.px_min >> kCellShift; cx <= uint32_t(s.px_max >> kCellShift); ++cx)
+                visit(std::size_t(cy) * cellsX() + cx);
+    };
+    for (const StoredSetup& s : setups_)
+        forEachCell(s, [&](std::size_t cell) { ++cell_starts_[cell + 1]; });
+    for (std::size_t c = 0; c < cells; ++c)
+        cell_starts_[c + 1] += cell_starts_[c];
+    cell_setups_.resize(cell_starts_[cells]);
+    std::vector<uint32_t> next(cell_starts_.begin(), cell_starts_.end() - 1);
+    for (uint32_t k = 0; k < setups_.size(); ++k)
+        forEachCell(setups_[k], [&](std::size_t cell) { cell_setups_[next[cell]++] = k; });
+    tile_index_built_.store(true, std::memory_order_release);
+}
+
+bool FastCpuOracle::Impl::behindSomethingDrawn(uint32_t triangle, uint32_t px, uint32_t py,
+                                               uint32_t time, float fragment, float error,
+                                               FastCpuOracleStats& stats) {
+    ++stats.arbitrations;
+    ensureTileIndex();
+    const detail::DepthArbiter::Query query = arbiter_.query(triangle, px, py);
+    const std::size_t cell = std::size_t(py >> kCellShift) * cellsX() + (px >> kCellShift);
+    uint32_t last = std::numeric_limits<uint32_t>::max(); // a triangle's fan set-ups adjoin
+    for (uint32_t i = cell_starts_[cell]; i < cell_starts_[cell + 1]; ++i) {
+        const uint32_t k = cell_setups_[i];
+        const StoredSetup& s = setups_[k];
+        if (s.triangle() == last || px < s.px_min || px > s.px_max || py < s.py_min ||
+            py > s.py_max)
+            continue;
+        // Certainly farther than the query's fragment, by the floats: it decides nothing.
+        if (fragmentAt(s, px, py) - double(errors_[k]) > double(fragment) + double(error))
+            continue;
+        if (!drawnBefore(primitiveOfSetup(k), time))
+            continue;
+        last = s.triangle();
+        if (arbiter_.nearer(query, s.triangle()))
+            return true;
+    }
+    return false;
+}
+
+bool FastCpuOracle::Impl::resolve(QueryContext& context, const TileRect& rect,
+                                  FastCpuOracleStats& stats) {
+    std::vector<Undecided>& undecided = *context.undecided;
+    const uint32_t row_first = uint32_t(rect.row_first) << kTileShift;
+    const uint32_t row_end = std::min(uint32_t(rect.row_last) << kTileShift, height_);
+    // Whether set-up k's fragment at (px, py) is behind, its float undecided or not.
+    const auto setupBehind = [&](uint32_t k, uint32_t px, uint32_t py) {
+        const StoredSetup& s = setups_[k];
+        const std::size_t tile = std::size_t(py >> kTileShift) * tiles_x_ + (px >> kTileShift);
+        const TileState& state = tiles_[tile];
+        if (state.epoch != epoch_)
+            return false;
+        const float fragment = fragmentAt(s, px, py);
+        switch (detail::decide(fragment, *pixel(px, py), bandOf(errors_[k], storedError(state)))) {
+        case detail::Decision::behind:
+            return true;
+        case detail::Decision::undecided:
+            return behindSomethingDrawn(s.triangle(), px, py, context.time, fragment, errors_[k],
+                                        stats);
+        case detail::Decision::not_behind:
+            return false;
+        }
+        return false;
+    };
+    bool behind = false;
+    for (const Undecided& u : undecided) {
+        if (u.kind == Undecided::Kind::setup_pixel) {
+            behind = setupBehind(u.what, u.where & 0xFFFF, u.where >> 16);
+        } else if (u.kind == Undecided::Kind::setup_tile) {
+            const StoredSetup& s = setups_[u.what];
+            const uint32_t tx = u.where % tiles_x_, ty = u.where / tiles_x_;
+            for (uint32_t py = std::max(ty << kTileShift, row_first);
+                 !behind && py < std::min((ty + 1) << kTileShift, row_end); ++py)
+                for (uint32_t px = tx << kTileShift;
+                     !behind && px < std::min((tx + 1) << kTileShift, width_); ++px)
+                    behind = certainlyCovers(s, px, py) && setupBehind(u.what, px, py);
+        } else {
+            // A far image's tile: each pixel whose image depth is undecided, against every
+            // triangle of the primitive the exact model says covers it.
+            const detail::DepthImages& far = far_images_;
+            const uint32_t tile = far.tile(u.where);
+            const uint32_t slot = slotOf(u.what);
+            const TileState& state = tiles_[tile];
+            const float band_width = bandOf(image_errors_[slot], storedError(state));
+            const uint32_t tx = tile % tiles_x_, ty = tile / tiles_x_;
+            const float* image = far.depths(u.where);
+            for (uint32_t py = std::max(ty << kTileShift, row_first);
+                 !behind && py < std::min((ty + 1) << kTileShift, row_end); ++py)
+                for (uint32_t px = tx << kTileShift;
+                     !behind && px < std::min((tx + 1) << kTileShift, width_); ++px) {
+                    const float depth =
+                        image[(py & (kTileSize - 1)) * kTileSize + (px & (kTileSize - 1))];
+                    if (detail::decide(depth, *pixel(px, py), band_width) !=
+                        detail::Decision::undecided)
+                        continue;
+                    const detail::ExactFragments& model = arbiter_.model();
+                    const detail::PixelRay ray = model.rays().centre(px, py);
+                    uint32_t last = std::numeric_limits<uint32_t>::max();
+                    for (uint32_t k = primitive_setups_[u.what];
+                         !behind && k < primitive_setups_[u.what + 1]; ++k) {
+                        const StoredSetup& s = setups_[k];
+                        if (s.triangle() == last || px < s.px_min || px > s.px_max ||
+                            py < s.py_min || py > s.py_max)
+                            continue;
+                        last = s.triangle();
+                        behind = model.covers(
+                                     ray, detail::TriangleCorners::of(positions_, s.triangle())) &&
+                                 behindSomethingDrawn(s.triangle(), px, py, context.time,
+                                                      fragmentAt(s, px, py), errors_[k], stats);
+                    }
+                }
+        }
+        if (behind)
+            break;
+    }
+    undecided.clear();
+    return behind;
+}
+
+void FastCpuOracle::Impl::store(std::span<const detail::FastSetup> fan, uint32_t t) {
     for (const detail::FastSetup& s : fan) {
-        setups_.push_back(storedSetup(s));
+        const uint32_t band = conservative_ ? 0 : bandPixelsOf(s, t);
+        setups_.push_back(storedSetup(s, t, band));
         narrow_.push_back(s.narrow ? 1 : 0);
         spreads_.push_back(s.spread);
+        errors_.push_back(roundedUp(s.error));
     }
+}
+
+uint32_t FastCpuOracle::Impl::bandPixelsOf(const detail::FastSetup& setup, uint32_t t) {
+    const std::size_t at = band_pixels_.size();
+    band_pixels_.push_back(0); // the count, once known
+    // A whole triangle well within the depth range: screen space settles most band pixels (the
+    // corners stay its own, the depths between its corners' and so in the range).
+    constexpr double kDepthRoom = 0x1p-20;
+    const bool screen = setup.whole && setup.d_min >= kDepthRoom &&
+                        (!orthographic_ || setup.d_max <= 1 - kDepthRoom);
+    const std::array<double, 3> ux{setup.ux[0], setup.ux[1], setup.ux[2]};
+    const std::array<double, 3> uy{setup.uy[0], setup.uy[1], setup.uy[2]};
+    bool have_corners = false; // read only where the exact model must decide
+    detail::TriangleCorners corners;
+    uint32_t count = 0;
+    detail::forEachFastBandPixel(setup, [&](uint32_t px, uint32_t py) {
+        ++stats_.band_pixels;
+        int covered = screen ? detail::screenCoverage(ux, uy, px, py, screen_errors_) : 0;
+        if (covered == 0) {
+            if (!have_corners) {
+                corners = detail::TriangleCorners::of(positions_, t);
+                have_corners = true;
+            }
+            const detail::ExactFragments& model = arbiter_.model();
+            covered = model.covers(model.rays().centre(px, py), corners) ? 1 : -1;
+        }
+        if (covered > 0) {
+            band_pixels_.push_back(py << 16 | px);
+            ++count;
+        }
+    });
+    if (count == 0) {
+        band_pixels_.pop_back();
+        return 0;
+    }
+    band_pixels_[at] = count;
+    return uint32_t(at);
+}
+
+float FastCpuOracle::Impl::fragmentAt(const StoredSetup& s, uint32_t px, uint32_t py) const {
+    return float((s.d0 + s.ddx * ((double(px) + 0.5) - s.x0)) +
+                 s.ddy * ((double(py) + 0.5) - s.y0));
+}
+
+bool FastCpuOracle::Impl::certainlyCovers(const StoredSetup& s, uint32_t px, uint32_t py) const {
+    if (px < s.px_min || px > s.px_max || py < s.py_min || py > s.py_max)
+        return false;
+    for (int e = 0; e < 3; ++e)
+        if (s.edge_at_origin[e] + int64_t(px) * s.edge_step_x[e] + int64_t(py) * s.edge_step_y[e] <=
+            0)
+            return false;
+    return true;
 }
 
 void FastCpuOracle::Impl::clearTile(std::size_t tile) const {
     std::fill_n(depth_.begin() + std::ptrdiff_t(tile * kTilePixels), kTilePixels, kInfinity);
-    tiles_[tile] = {kInfinity, kInfinity, epoch_};
+    tiles_[tile] = {kInfinity, kInfinity, 0.0f, epoch_};
 }
 
 std::span<const float> FastCpuOracle::Impl::depthBuffer() const {
@@ -749,17 +1176,28 @@ std::span<const float> FastCpuOracle::Impl::depthBuffer() const {
 }
 
 template <bool kDraw, bool kFarImage>
-bool FastCpuOracle::Impl::rasterize(const StoredSetup& s, bool narrow, double spread,
-                                    int32_t ty_begin, int32_t ty_end, FastCpuOracleStats& stats) {
+bool FastCpuOracle::Impl::rasterize(const StoredSetup& s, bool narrow, double spread, float error,
+                                    int32_t ty_begin, int32_t ty_end, FastCpuOracleStats& stats,
+                                    QueryContext* context, uint32_t k) {
     const int32_t px_min = s.px_min, px_max = s.px_max, py_min = s.py_min, py_max = s.py_max;
     const int32_t tx_first = px_min >> kTileShift, tx_last = px_max >> kTileShift;
     const int32_t ty_first = std::max(py_min >> kTileShift, ty_begin);
     const int32_t ty_last = std::min(py_max >> kTileShift, ty_end - 1);
     if (ty_first > ty_last)
         return false; // outside the band
+    const bool exact = exactRule();
+    // The band pixels after the walk (the walk covers only the certain ones).
+    const auto band = [&] {
+        return exact && s.band_first != 0 &&
+               rasterizeBand<kDraw>(s, error, ty_begin, ty_end, context, k);
+    };
     if (tx_last - tx_first < detail::kSmallTiles && ty_last - ty_first < detail::kSmallTiles)
-        return rasterizeSmall<kDraw, kFarImage>(s, narrow, spread, ty_first, ty_last, stats);
+        return rasterizeSmall<kDraw, kFarImage>(s, narrow, spread, error, ty_first, ty_last, stats,
+                                                context, k) ||
+               band();
     const int32_t last_x = int32_t(width_) - 1, last_y = int32_t(height_) - 1;
+    int64_t origin[3];
+    edgeOrigins(s, origin);
     detail::TileWalk walk;
     static_cast<detail::TriangleWalk&>(walk) = walkOf<kDraw, kFarImage>(s, narrow, spread);
     for (int32_t ty = ty_first; ty <= ty_last; ++ty) {
@@ -771,8 +1209,8 @@ bool FastCpuOracle::Impl::rasterize(const StoredSetup& s, bool narrow, double sp
         // change over the rows, and the depth plane's row terms.
         int64_t edge_at_row[3], rise_low[3], rise_high[3];
         for (int e = 0; e < 3; ++e) {
-            edge_at_row[e] = s.edge_at_origin[e] + int64_t(px_min) * s.edgeStepX(e) +
-                             int64_t(y0) * s.edgeStepY(e);
+            edge_at_row[e] =
+                origin[e] + int64_t(px_min) * s.edgeStepX(e) + int64_t(y0) * s.edgeStepY(e);
             const int64_t span_y = int64_t(y1 - y0) * s.edgeStepY(e);
             rise_low[e] = std::min<int64_t>(span_y, 0);
             rise_high[e] = std::max<int64_t>(span_y, 0);
@@ -818,6 +1256,9 @@ bool FastCpuOracle::Impl::rasterize(const StoredSetup& s, bool narrow, double sp
                         lowest, highest);
             bool all_pass = false;
             if constexpr (kDraw) {
+                // Every fragment drawn here counts in the tile's error, passing or not.
+                if (error > global_error_)
+                    state.error = std::max(state.error, error);
                 // Every fragment >= the tile's max >= every stored depth: none passes LESS.
                 if (float(lowest) >= state.max) {
                     ++stats.tiles_culled;
@@ -827,14 +1268,21 @@ bool FastCpuOracle::Impl::rasterize(const StoredSetup& s, bool narrow, double sp
                 // needed (the common case back to front).
                 all_pass = float(highest) < state.min;
             } else {
-                // Every fragment <= the tile's min + tolerance <= stored + tolerance: none behind.
-                if (float(highest) <= state.min + depth_tolerance_) {
+                if (exact) {
+                    const float band_width = bandOf(error, storedError(state));
+                    walk.behind_above = band_width;
+                    walk.undecided_above = -band_width;
+                }
+                // Every fragment <= the tile's min + threshold <= stored + threshold: none
+                // behind, none undecided.
+                const float threshold = exact ? walk.undecided_above : walk.behind_above;
+                if (float(highest) <= state.min + threshold) {
                     ++stats.tiles_culled;
                     continue;
                 }
-                // Every pixel covered, every fragment > the tile's max + tolerance: behind
+                // Every pixel covered, every fragment > the tile's max + threshold: behind
                 // somewhere.
-                if (full_tile && float(lowest) > state.max + depth_tolerance_) {
+                if (full_tile && float(lowest) > state.max + walk.behind_above) {
                     ++stats.tiles_accepted;
                     return true;
                 }
@@ -867,8 +1315,52 @@ bool FastCpuOracle::Impl::rasterize(const StoredSetup& s, bool narrow, double sp
                 if (full_tile)
                     state.max = result.stored_max;
             } else {
-                if (query_tile_(walk))
+                const detail::QueryResult result = query_tile_(walk);
+                if (result == detail::QueryResult::behind)
                     return true;
+                if (result == detail::QueryResult::undecided)
+                    context->undecided->push_back({Undecided::Kind::setup_tile, k, uint32_t(tile)});
+            }
+        }
+    }
+    return band();
+}
+
+template <bool kDraw>
+bool FastCpuOracle::Impl::rasterizeBand(const StoredSetup& s, float error, int32_t ty_begin,
+                                        int32_t ty_end, QueryContext* context, uint32_t k) {
+    const uint32_t count = band_pixels_[s.band_first];
+    const uint32_t* pixels = band_pixels_.data() + s.band_first + 1;
+    const uint32_t row_first = uint32_t(ty_begin) << kTileShift;
+    const uint32_t row_end = uint32_t(ty_end) << kTileShift;
+    for (uint32_t i = 0; i < count; ++i) {
+        const uint32_t px = pixels[i] & 0xFFFF, py = pixels[i] >> 16;
+        if (py < row_first || py >= row_end)
+            continue;
+        const std::size_t tile = std::size_t(py >> kTileShift) * tiles_x_ + (px >> kTileShift);
+        TileState& state = tiles_[tile];
+        float& stored = *pixel(px, py);
+        const float fragment = fragmentAt(s, px, py);
+        if constexpr (kDraw) {
+            if (state.epoch != epoch_)
+                clearTile(tile);
+            if (error > global_error_)
+                state.error = std::max(state.error, error);
+            if (fragment < stored) {
+                stored = fragment;
+                state.min = std::min(state.min, fragment);
+            }
+        } else {
+            if (state.epoch != epoch_)
+                continue; // nothing drawn there
+            switch (detail::decide(fragment, stored, bandOf(error, storedError(state)))) {
+            case detail::Decision::behind:
+                return true;
+            case detail::Decision::undecided:
+                context->undecided->push_back({Undecided::Kind::setup_pixel, k, pixels[i]});
+                break;
+            case detail::Decision::not_behind:
+                break;
             }
         }
     }
@@ -877,8 +1369,9 @@ bool FastCpuOracle::Impl::rasterize(const StoredSetup& s, bool narrow, double sp
 
 template <bool kDraw, bool kFarImage>
 bool FastCpuOracle::Impl::rasterizeSmall(const StoredSetup& s, bool narrow, double spread,
-                                         int32_t ty_first, int32_t ty_last,
-                                         FastCpuOracleStats& stats) {
+                                         float error, int32_t ty_first, int32_t ty_last,
+                                         FastCpuOracleStats& stats, QueryContext* context,
+                                         uint32_t k) {
     detail::SmallWalk walk;
     walk.depth = depth_.data();
     walk.tiles_x = tiles_x_;
@@ -887,34 +1380,48 @@ bool FastCpuOracle::Impl::rasterizeSmall(const StoredSetup& s, bool narrow, doub
     // The rows of the band.
     walk.py_min = std::max(int32_t(s.py_min), ty_first << kTileShift);
     walk.py_max = std::min(int32_t(s.py_max), (ty_last << kTileShift) + int32_t(kTileSize) - 1);
+    int64_t origin[3];
+    edgeOrigins(s, origin);
     for (int e = 0; e < 3; ++e)
-        walk.edge[e] = s.edge_at_origin[e] + int64_t(walk.px_min) * s.edgeStepX(e) +
+        walk.edge[e] = origin[e] + int64_t(walk.px_min) * s.edgeStepX(e) +
                        int64_t(walk.py_min) * s.edgeStepY(e);
     // narrow holds over the whole bounds, so over the band's rows too.
     static_cast<detail::TriangleWalk&>(walk) = walkOf<kDraw, kFarImage>(s, narrow, spread);
     double lowest, highest;
     depthBounds(s, columnTerm(s, walk.px_min), columnTerm(s, walk.px_max), rowTerm(s, walk.py_min),
                 rowTerm(s, walk.py_max), walk.offset, spread, lowest, highest);
+    const bool exact = exactRule();
 
     // Which tiles to walk, decided as the tile walk decides (rasterize), with the triangle's
-    // depth bounds for each tile's.
+    // depth bounds for each tile's. A query's band is the widest of its live tiles'.
     const int32_t tx_first = walk.px_min >> kTileShift, tx_last = walk.px_max >> kTileShift;
     bool any = false;
+    float widest = 0;
     for (int32_t ty = ty_first; ty <= ty_last; ++ty)
         for (int32_t tx = tx_first; tx <= tx_last; ++tx) {
             ++stats.tiles_visited;
             const std::size_t tile = std::size_t(ty) * tiles_x_ + std::size_t(tx);
+            TileState& state = tiles_[tile];
             bool& live = walk.live[ty - ty_first][tx - tx_first];
             if constexpr (kDraw) {
-                if (tiles_[tile].epoch != epoch_)
+                if (state.epoch != epoch_)
                     clearTile(tile);
+                // Every fragment drawn here counts in the tile's error, passing or not.
+                if (error > global_error_)
+                    state.error = std::max(state.error, error);
                 // Every fragment >= the tile's max >= every stored depth: none passes LESS.
-                live = lowest < double(tiles_[tile].max);
+                live = lowest < double(state.max);
+            } else if (exact) {
+                // Cleared since last touched (nothing is behind +infinity), or every fragment
+                // <= the tile's min - band: none behind, none undecided.
+                const float band_width = bandOf(error, storedError(state));
+                live = state.epoch == epoch_ && float(highest) > state.min - band_width;
+                if (live)
+                    widest = std::max(widest, band_width);
             } else {
                 // Cleared since last touched (nothing is behind +infinity), or every fragment
                 // <= the tile's min + tolerance <= stored + tolerance: none behind.
-                live = tiles_[tile].epoch == epoch_ &&
-                       highest > double(tiles_[tile].min + depth_tolerance_);
+                live = state.epoch == epoch_ && highest > double(state.min + depth_tolerance_);
             }
             stats.tiles_culled += live ? 0 : 1;
             any |= live;
@@ -933,13 +1440,27 @@ bool FastCpuOracle::Impl::rasterizeSmall(const StoredSetup& s, bool narrow, doub
             }
         return false;
     } else {
-        return (simd_walk ? query_small_ : detail::scalarRowKernels().query_small)(walk);
+        if (exact) {
+            walk.behind_above = widest;
+            walk.undecided_above = -widest;
+        }
+        const detail::QueryResult result =
+            (simd_walk ? query_small_ : detail::scalarRowKernels().query_small)(walk);
+        if (result == detail::QueryResult::undecided)
+            for (int32_t ty = ty_first; ty <= ty_last; ++ty)
+                for (int32_t tx = tx_first; tx <= tx_last; ++tx)
+                    if (walk.live[ty - ty_first][tx - tx_first])
+                        context->undecided->push_back(
+                            {Undecided::Kind::setup_tile, k,
+                             uint32_t(std::size_t(ty) * tiles_x_ + std::size_t(tx))});
+        return result == detail::QueryResult::behind;
     }
 }
 
 void FastCpuOracle::Impl::draw(uint32_t primitive) {
     assert(primitive < primitive_count_);
     ++stats_.draws;
+    stamp(primitive);
     makeImage<true>(primitive);
     drawIn(primitive, wholeScreen(), stats_);
 }
@@ -948,7 +1469,8 @@ bool FastCpuOracle::Impl::anyBehind(uint32_t primitive) {
     assert(primitive < primitive_count_);
     ++stats_.queries;
     makeImage<false>(primitive);
-    return anyBehindIn(primitive, wholeScreen(), stats_);
+    QueryContext context{&undecided_, clock_};
+    return queryIn(primitive, wholeScreen(), stats_, context);
 }
 
 // Bands per thread. Each band repeats the walk over the whole sequence (per triangle: its range,
@@ -1002,6 +1524,7 @@ template <class Band> void FastCpuOracle::Impl::runBands(uint32_t bands, Band&& 
         stats_.tiles_visited += band_stats_[b].tiles_visited;
         stats_.tiles_culled += band_stats_[b].tiles_culled;
         stats_.tiles_accepted += band_stats_[b].tiles_accepted;
+        stats_.arbitrations += band_stats_[b].arbitrations;
     }
 }
 
@@ -1013,7 +1536,7 @@ template <class Band> void FastCpuOracle::Impl::runBands(uint32_t bands, Band&& 
 void FastCpuOracle::Impl::backToFrontPass(uint32_t bands, std::span<const uint32_t> sequence,
                                           std::span<const uint8_t> query,
                                           std::span<uint8_t> behind) {
-    ++epoch_; // clear()
+    clearBuffer();
     for (std::size_t i = 0; i < sequence.size(); ++i) {
         assert(sequence[i] < primitive_count_);
         if (query[i]) {
@@ -1022,20 +1545,28 @@ void FastCpuOracle::Impl::backToFrontPass(uint32_t bands, std::span<const uint32
         }
     }
     stats_.draws += sequence.size();
-    // Every image the bands use, made before they start.
-    for (std::size_t i = 0; i < sequence.size(); ++i) {
+    // Every image the bands use, made before they start; the draws' times, as the sequential
+    // pass would stamp them, and each query's (drawnBefore).
+    query_times_.resize(sequence.size());
+    reserveClock(sequence.size());
+    for (std::size_t i = sequence.size(); i-- > 0;) {
         makeImage<true>(sequence[i]);
         if (query[i])
             makeImage<false>(sequence[i]);
+        query_times_[i] = clock_;
+        stamp(sequence[i]);
     }
+    if (band_undecided_.size() < bands)
+        band_undecided_.resize(bands);
     runBands(bands, [&](uint32_t b, FastCpuOracleStats& stats) {
         TileRect rows = wholeScreen();
         bandRows(b, bands, rows.row_first, rows.row_last);
         for (std::size_t i = sequence.size(); i-- > 0;) {
             if (query[i]) {
                 std::atomic_ref<uint8_t> answer(behind[i]);
+                QueryContext context{&band_undecided_[b], query_times_[i]};
                 if (answer.load(std::memory_order_relaxed) == 0 &&
-                    anyBehindIn(sequence[i], rows, stats))
+                    queryIn(sequence[i], rows, stats, context))
                     answer.store(1, std::memory_order_relaxed);
             }
             drawIn(sequence[i], rows, stats);
@@ -1048,7 +1579,7 @@ void FastCpuOracle::Impl::backToFrontPass(uint32_t bands, std::span<const uint32
 void FastCpuOracle::Impl::queryAgainst(uint32_t bands, std::span<const uint32_t> occluders,
                                        std::span<const uint32_t> targets,
                                        std::span<uint8_t> behind) {
-    ++epoch_; // clear()
+    clearBuffer();
     std::fill(behind.begin(), behind.end(), uint8_t(0));
     stats_.draws += occluders.size();
     stats_.queries += targets.size();
@@ -1083,6 +1614,12 @@ void FastCpuOracle::Impl::queryAgainst(uint32_t bands, std::span<const uint32_t>
     }
     for (uint32_t p : targets)
         makeImage<false>(p);
+    reserveClock(occluders.size());
+    for (uint32_t p : occluders)
+        stamp(p);
+    const uint32_t time = clock_;
+    if (band_undecided_.size() < std::max<uint32_t>(bands, 1))
+        band_undecided_.resize(std::max<uint32_t>(bands, 1));
     const auto band = [&](uint32_t b, FastCpuOracleStats& stats) {
         TileRect rect = near_targets; // within the band's rows
         int32_t first_row, last_row;
@@ -1095,7 +1632,9 @@ void FastCpuOracle::Impl::queryAgainst(uint32_t bands, std::span<const uint32_t>
             drawIn(p, rect, stats);
         for (std::size_t i = 0; i < targets.size(); ++i) {
             std::atomic_ref<uint8_t> answer(behind[i]);
-            if (answer.load(std::memory_order_relaxed) == 0 && anyBehindIn(targets[i], rect, stats))
+            QueryContext context{&band_undecided_[b], time};
+            if (answer.load(std::memory_order_relaxed) == 0 &&
+                queryIn(targets[i], rect, stats, context))
                 answer.store(1, std::memory_order_relaxed);
         }
     };
@@ -1127,7 +1666,7 @@ uint32_t FastCpuOracle::primitiveCount() const {
     return impl_->primitive_count_;
 }
 void FastCpuOracle::clear() {
-    ++impl_->epoch_;
+    impl_->clearBuffer();
 }
 std::span<const float> FastCpuOracle::depthBuffer() const {
     return impl_->depthBuffer();

@@ -59,10 +59,15 @@ void fillTileScalar(const TileWalk& w) {
     });
 }
 
-bool queryTileScalar(const TileWalk& w) {
-    const float tolerance = w.tolerance;
-    return forEachCovered(
-        w, [tolerance](float depth, float frag) { return frag > depth + tolerance; });
+QueryResult queryTileScalar(const TileWalk& w) {
+    bool undecided = false;
+    const bool behind = forEachCovered(w, [&](float depth, float frag) {
+        if (frag > depth + w.behind_above)
+            return true;
+        undecided |= frag > depth + w.undecided_above;
+        return false;
+    });
+    return behind ? QueryResult::behind : undecided ? QueryResult::undecided : QueryResult::none;
 }
 
 // Calls pixel(depth, fragment) for every covered pixel of the live tiles of a small walk, row by
@@ -109,11 +114,15 @@ void drawSmallScalar(const SmallWalk& w, SmallDraw& out) {
     });
 }
 
-bool querySmallScalar(const SmallWalk& w) {
-    const float tolerance = w.tolerance;
-    return forEachSmallCovered(w, [tolerance](float depth, float frag, int32_t, int32_t) {
-        return frag > depth + tolerance;
+QueryResult querySmallScalar(const SmallWalk& w) {
+    bool undecided = false;
+    const bool behind = forEachSmallCovered(w, [&](float depth, float frag, int32_t, int32_t) {
+        if (frag > depth + w.behind_above)
+            return true;
+        undecided |= frag > depth + w.undecided_above;
+        return false;
     });
+    return behind ? QueryResult::behind : undecided ? QueryResult::undecided : QueryResult::none;
 }
 
 bool cpuHasAvx2() {

@@ -29,10 +29,22 @@ struct TriangleWalk {
     int64_t step_y[3]; // change of E_e from row py to py + 1
     double d0, ddx, ddy, x0, y0_plane; // the depth plane (TriangleSetup's d0, ddx, ddy, x0, y0)
     // Added to each fragment's double value before rounding: in conservative mode -spread for
-    // draws and +spread for queries; in exact mode the snap slack, moved as
-    // exactFragmentOffset says (cpu_rasterizer.h, cpu_oracle.h rule 7).
+    // draws and +spread for queries; under the blending rule the snap slack, moved as
+    // exactFragmentOffset says (cpu_rasterizer.h, cpu_oracle.h rule 7); -0.0 (nothing) under
+    // the exact rule.
     double offset;
-    float tolerance; // the oracle's depth tolerance: behind iff frag > stored + tolerance
+    // A query's thresholds: a fragment is behind when frag > stored + behind_above (float sum),
+    // else undecided when frag > stored + undecided_above. The exact rule: +B and -B, B the
+    // decision band (cpu_rasterizer.h); the blending rule and conservative mode: the depth
+    // tolerance and +infinity (never undecided).
+    float behind_above, undecided_above;
+};
+
+/// What a query's walk found.
+enum class QueryResult : uint8_t {
+    none,      // no fragment behind, none undecided
+    behind,    // a fragment behind: the walk stopped there
+    undecided, // no fragment behind, but some undecided (the caller arbitrates them)
 };
 
 /// The pixels of one tile that a fan triangle's bounding box overlaps. Lane k is column vx0 + k.
@@ -54,8 +66,8 @@ struct TileDraw {
 
 /// Draws the covered pixels with depth test LESS, writes on.
 using DrawTileFn = void (*)(const TileWalk& walk, TileDraw& out);
-/// True when some covered pixel's fragment exceeds the stored depth + walk.tolerance.
-using QueryTileFn = bool (*)(const TileWalk& walk);
+/// Whether some covered pixel's fragment is behind, or else undecided (TriangleWalk).
+using QueryTileFn = QueryResult (*)(const TileWalk& walk);
 /// Draws the covered pixels when the caller has shown that every fragment passes LESS (all lie
 /// before the tile's least stored depth): the same stores as DrawTileFn, without the depth test.
 using FillTileFn = void (*)(const TileWalk& walk);
@@ -84,8 +96,8 @@ struct SmallDraw {
 
 /// Draws the covered pixels of the live tiles with depth test LESS, writes on.
 using DrawSmallFn = void (*)(const SmallWalk& walk, SmallDraw& out);
-/// True when some covered pixel of a live tile lies behind the stored depth + walk.tolerance.
-using QuerySmallFn = bool (*)(const SmallWalk& walk);
+/// Whether some covered pixel of a live tile is behind, or else undecided (TriangleWalk).
+using QuerySmallFn = QueryResult (*)(const SmallWalk& walk);
 
 struct RowKernels {
     DrawTileFn draw;

@@ -193,21 +193,27 @@ template <bool kOffset> VISSORT_AVX2 void fillTile(const TileWalk& w) {
     }
 }
 
-template <bool kOffset> VISSORT_AVX2 bool queryTile(const TileWalk& w) {
+template <bool kOffset> VISSORT_AVX2 QueryResult queryTile(const TileWalk& w) {
     Avx2Row a;
     start(w, a);
-    const __m256 tolerance = _mm256_set1_ps(w.tolerance);
+    const __m256 behind_above = _mm256_set1_ps(w.behind_above);
+    const __m256 undecided_above = _mm256_set1_ps(w.undecided_above);
+    __m256 undecided = _mm256_setzero_ps();
     const float* row = w.origin;
     for (int32_t r = 0; r < w.rows; ++r, row += kTileRowFloats) {
         const __m256 covered = coverage(w, a);
         const __m256 frag = fragments<kOffset>(w, a, r);
         const __m256 stored = _mm256_loadu_ps(row);
         const __m256 behind = _mm256_and_ps(
-            _mm256_cmp_ps(frag, _mm256_add_ps(stored, tolerance), _CMP_GT_OQ), covered);
+            _mm256_cmp_ps(frag, _mm256_add_ps(stored, behind_above), _CMP_GT_OQ), covered);
         if (_mm256_movemask_ps(behind) != 0)
-            return true;
+            return QueryResult::behind;
+        undecided = _mm256_or_ps(
+            undecided,
+            _mm256_and_ps(_mm256_cmp_ps(frag, _mm256_add_ps(stored, undecided_above), _CMP_GT_OQ),
+                          covered));
     }
-    return false;
+    return _mm256_movemask_ps(undecided) != 0 ? QueryResult::undecided : QueryResult::none;
 }
 
 // A small triangle's walk (fast_rows.h) over kChunks tile columns (a template argument, so that
@@ -334,17 +340,27 @@ VISSORT_AVX2 void drawSmall(const SmallWalk& w, SmallDraw& out) {
         });
 }
 
-template <int32_t kChunks, bool kOffset> VISSORT_AVX2 bool querySmall(const SmallWalk& w) {
-    const __m256 tolerance = _mm256_set1_ps(w.tolerance);
-    return walkSmall<kChunks, kOffset>(
+template <int32_t kChunks, bool kOffset> VISSORT_AVX2 QueryResult querySmall(const SmallWalk& w) {
+    const __m256 behind_above = _mm256_set1_ps(w.behind_above);
+    const __m256 undecided_above = _mm256_set1_ps(w.undecided_above);
+    __m256 undecided = _mm256_setzero_ps();
+    const bool behind = walkSmall<kChunks, kOffset>(
         w,
         [&](float* row, __m256 frag, __m256 uncovered, int32_t) VISSORT_AVX2 {
             const __m256 stored = _mm256_loadu_ps(row);
             const __m256 behind = _mm256_andnot_ps(
-                uncovered, _mm256_cmp_ps(frag, _mm256_add_ps(stored, tolerance), _CMP_GT_OQ));
+                uncovered, _mm256_cmp_ps(frag, _mm256_add_ps(stored, behind_above), _CMP_GT_OQ));
+            undecided = _mm256_or_ps(
+                undecided,
+                _mm256_andnot_ps(
+                    uncovered,
+                    _mm256_cmp_ps(frag, _mm256_add_ps(stored, undecided_above), _CMP_GT_OQ)));
             return _mm256_movemask_ps(behind) != 0;
         },
         [](int32_t) {});
+    if (behind)
+        return QueryResult::behind;
+    return _mm256_movemask_ps(undecided) != 0 ? QueryResult::undecided : QueryResult::none;
 }
 
 // Tile columns of a small walk: 1 to kSmallTiles.
@@ -366,7 +382,7 @@ template <bool kOffset> VISSORT_AVX2 void drawSmallWith(const SmallWalk& w, Smal
     }
 }
 
-template <bool kOffset> VISSORT_AVX2 bool querySmallWith(const SmallWalk& w) {
+template <bool kOffset> VISSORT_AVX2 QueryResult querySmallWith(const SmallWalk& w) {
     switch (chunksOf(w)) {
     case 1:
         return querySmall<1, kOffset>(w);
@@ -385,7 +401,7 @@ VISSORT_AVX2 void drawSmallAvx2(const SmallWalk& w, SmallDraw& out) {
             least = std::numeric_limits<float>::infinity();
     hasOffset(w) ? drawSmallWith<true>(w, out) : drawSmallWith<false>(w, out);
 }
-VISSORT_AVX2 bool querySmallAvx2(const SmallWalk& w) {
+VISSORT_AVX2 QueryResult querySmallAvx2(const SmallWalk& w) {
     return hasOffset(w) ? querySmallWith<true>(w) : querySmallWith<false>(w);
 }
 
@@ -395,7 +411,7 @@ VISSORT_AVX2 void drawTileAvx2(const TileWalk& w, TileDraw& out) {
 VISSORT_AVX2 void fillTileAvx2(const TileWalk& w) {
     hasOffset(w) ? fillTile<true>(w) : fillTile<false>(w);
 }
-VISSORT_AVX2 bool queryTileAvx2(const TileWalk& w) {
+VISSORT_AVX2 QueryResult queryTileAvx2(const TileWalk& w) {
     return hasOffset(w) ? queryTile<true>(w) : queryTile<false>(w);
 }
 

@@ -68,7 +68,7 @@ VISSORT_AVX2 inline __m128i lastCentreTo(__m128i v) {
 
 VISSORT_AVX2 void setupQuadAvx2(const Matrix4& m, const float* x, const float* y, const float* z,
                                 const uint32_t* triangles, uint32_t width, uint32_t height,
-                                FastSetup* out, LaneSetup* lanes) {
+                                const ScreenErrors& errors, FastSetup* out, LaneSetup* lanes) {
     const __m256d zero = _mm256_setzero_pd();
     const __m256d one = _mm256_set1_pd(1.0);
     const __m256d sign = _mm256_set1_pd(-0.0);
@@ -143,31 +143,29 @@ VISSORT_AVX2 void setupQuadAvx2(const Matrix4& m, const float* x, const float* y
         }
     }
 
-    // Edge functions at the centre of pixel (0, 0) with the top-left bias, and their steps.
+    // Edge functions at the centre of pixel (0, 0), without bias (the exact rule's -margin is
+    // subtracted per lane below), and their steps.
     const __m128i zero32 = _mm_setzero_si128();
     const __m128i half32 = _mm_set1_epi32(int32_t(kSubpixelScale / 2));
     __m256i edge[3], step_x[3], step_y[3];
     for (int e = 0; e < 3; ++e) {
         const int j = (e + 1) % 3;
         const __m128i dx = _mm_sub_epi32(fx[j], fx[e]), dy = _mm_sub_epi32(fy[j], fy[e]);
-        // Top edge (dy == 0, dx > 0) or left edge (dy < 0): 1, else 0.
-        const __m128i top_left =
-            _mm_or_si128(_mm_and_si128(_mm_cmpeq_epi32(dy, zero32), _mm_cmpgt_epi32(dx, zero32)),
-                         _mm_cmpgt_epi32(zero32, dy));
-        const __m128i bias = _mm_and_si128(top_left, _mm_set1_epi32(1));
-        edge[e] = _mm256_add_epi64(_mm256_sub_epi64(product(dx, _mm_sub_epi32(half32, fy[e])),
-                                                    product(dy, _mm_sub_epi32(half32, fx[e]))),
-                                   _mm256_cvtepi32_epi64(bias));
+        edge[e] = _mm256_sub_epi64(product(dx, _mm_sub_epi32(half32, fy[e])),
+                                   product(dy, _mm_sub_epi32(half32, fx[e])));
         step_x[e] =
             _mm256_slli_epi64(_mm256_cvtepi32_epi64(_mm_sub_epi32(zero32, dy)), kSubpixelBits);
         step_y[e] = _mm256_slli_epi64(_mm256_cvtepi32_epi64(dx), kSubpixelBits);
     }
 
-    // Pixels whose centres the snapped bounding box may hold: ceil and floor of (v - 128) / 256.
-    const __m128i min_x = _mm_min_epi32(_mm_min_epi32(fx[0], fx[1]), fx[2]);
-    const __m128i max_x = _mm_max_epi32(_mm_max_epi32(fx[0], fx[1]), fx[2]);
-    const __m128i min_y = _mm_min_epi32(_mm_min_epi32(fy[0], fy[1]), fy[2]);
-    const __m128i max_y = _mm_max_epi32(_mm_max_epi32(fy[0], fy[1]), fy[2]);
+    // Pixels whose centres the snapped bounding box, grown as setupTriangle grows it, may hold:
+    // ceil and floor of (v - 128) / 256. (A growth past 2^20 units goes to the scalar set-up.)
+    const int64_t grow_units = rangeGrowth(errors);
+    const __m128i grow = _mm_set1_epi32(grow_units < (1 << 20) ? int32_t(grow_units) : 0);
+    const __m128i min_x = _mm_sub_epi32(_mm_min_epi32(_mm_min_epi32(fx[0], fx[1]), fx[2]), grow);
+    const __m128i max_x = _mm_add_epi32(_mm_max_epi32(_mm_max_epi32(fx[0], fx[1]), fx[2]), grow);
+    const __m128i min_y = _mm_sub_epi32(_mm_min_epi32(_mm_min_epi32(fy[0], fy[1]), fy[2]), grow);
+    const __m128i max_y = _mm_add_epi32(_mm_max_epi32(_mm_max_epi32(fy[0], fy[1]), fy[2]), grow);
     const __m128i px_min = _mm_max_epi32(firstCentreFrom(min_x), zero32);
     const __m128i px_max = _mm_min_epi32(lastCentreTo(max_x), _mm_set1_epi32(int32_t(width) - 1));
     const __m128i py_min = _mm_max_epi32(firstCentreFrom(min_y), zero32);
@@ -190,14 +188,19 @@ VISSORT_AVX2 void setupQuadAvx2(const Matrix4& m, const float* x, const float* y
         _mm256_div_pd(_mm256_sub_pd(_mm256_mul_pd(e2d, e1x), _mm256_mul_pd(e1d, e2x)), det));
 
     alignas(32) int64_t edge_out[3][4], step_x_out[3][4], step_y_out[3][4];
-    alignas(32) double plane[5][4];
-    alignas(16) int32_t bounds[4][4], empty[4], okay[4];
+    alignas(32) double plane[5][4], vertex[3][3][4]; // vertex[corner][x, y, d][lane]
+    alignas(16) int32_t bounds[4][4], empty[4], okay[4], flat[4];
     alignas(32) int64_t planar[4];
     _mm256_store_si256(reinterpret_cast<__m256i*>(planar), _mm256_castpd_si256(has_det));
     for (int e = 0; e < 3; ++e) {
         _mm256_store_si256(reinterpret_cast<__m256i*>(edge_out[e]), edge[e]);
         _mm256_store_si256(reinterpret_cast<__m256i*>(step_x_out[e]), step_x[e]);
         _mm256_store_si256(reinterpret_cast<__m256i*>(step_y_out[e]), step_y[e]);
+    }
+    for (int k = 0; k < 3; ++k) {
+        _mm256_store_pd(vertex[k][0], sx[k]);
+        _mm256_store_pd(vertex[k][1], sy[k]);
+        _mm256_store_pd(vertex[k][2], sd[k]);
     }
     _mm256_store_pd(plane[0], sx[0]);
     _mm256_store_pd(plane[1], sy[0]);
@@ -208,11 +211,13 @@ VISSORT_AVX2 void setupQuadAvx2(const Matrix4& m, const float* x, const float* y
     _mm_store_si128(reinterpret_cast<__m128i*>(bounds[1]), px_max);
     _mm_store_si128(reinterpret_cast<__m128i*>(bounds[2]), py_min);
     _mm_store_si128(reinterpret_cast<__m128i*>(bounds[3]), py_max);
-    _mm_store_si128(reinterpret_cast<__m128i*>(empty),
-                    _mm_or_si128(narrowMask(no_area), no_centres));
+    _mm_store_si128(reinterpret_cast<__m128i*>(empty), no_centres);
+    _mm_store_si128(reinterpret_cast<__m128i*>(flat), narrowMask(no_area));
     _mm_store_si128(reinterpret_cast<__m128i*>(okay), narrowMask(_mm256_castpd_si256(ok)));
     for (int l = 0; l < 4; ++l) {
-        if (okay[l] == 0) {
+        // No snapped area: the exact rule's band along the longest edge, set up by the scalar
+        // code (rare). Likewise a growth too large for the vector bounds.
+        if (okay[l] == 0 || flat[l] != 0 || grow_units >= (1 << 20)) {
             lanes[l] = LaneSetup::scalar;
             continue;
         }
@@ -232,10 +237,16 @@ VISSORT_AVX2 void setupQuadAvx2(const Matrix4& m, const float* x, const float* y
         FastSetup& s = out[l];
         s.spread = slack;
         for (int e = 0; e < 3; ++e) {
-            s.edge_at_origin[e] = edge_out[e][l];
             s.edge_step_x[e] = step_x_out[e][l];
             s.edge_step_y[e] = step_y_out[e][l];
         }
+        const std::array<int64_t, 3> margins =
+            marginsFromSteps(s.edge_step_x, s.edge_step_y, errors);
+        for (int e = 0; e < 3; ++e) {
+            s.margin[e] = margins[e];
+            s.edge_at_origin[e] = edge_out[e][l] - margins[e];
+        }
+        s.flat = false;
         s.x0 = plane[0][l];
         s.y0 = plane[1][l];
         s.d0 = plane[2][l];
@@ -245,6 +256,18 @@ VISSORT_AVX2 void setupQuadAvx2(const Matrix4& m, const float* x, const float* y
         s.px_max = bounds[1][l];
         s.py_min = bounds[2][l];
         s.py_max = bounds[3][l];
+        const ScreenVertex v[3] = {{vertex[0][0][l], vertex[0][1][l], vertex[0][2][l]},
+                                   {vertex[1][0][l], vertex[1][1][l], vertex[1][2][l]},
+                                   {vertex[2][0][l], vertex[2][1][l], vertex[2][2][l]}};
+        const double extent = double(std::max(s.px_max - s.px_min, s.py_max - s.py_min) + 1);
+        s.error = fragmentError(v, s.ddx, s.ddy, extent, errors);
+        for (int k = 0; k < 3; ++k) {
+            s.ux[k] = v[k].x;
+            s.uy[k] = v[k].y;
+        }
+        s.whole = true; // inside every clipping plane
+        s.d_min = std::min({v[0].d, v[1].d, v[2].d});
+        s.d_max = std::max({v[0].d, v[1].d, v[2].d});
         s.narrow = false; // the caller's (edgesFitInt32)
     }
 }

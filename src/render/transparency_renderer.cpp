@@ -24,6 +24,10 @@
 namespace vissort {
 namespace {
 
+// markSelfOverlapping's depth tolerance: triangles of one object count as overlapping only
+// where one lies behind another by more than this (in depth d).
+constexpr float kFoldTolerance = 1.0f / (1 << 20);
+
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
         .count();
@@ -180,10 +184,12 @@ struct TransparencyRenderer::Impl {
     void markSelfOverlapping(PositionsView ordered, const ViewProjection& view,
                              std::vector<uint32_t>& group_of) {
         oracle->bind(ordered, view, primitives); // object level: one primitive an object
-        // The default tolerance here: the blending one would find every object behind itself.
-        // Triangles of one object whose depths nearly tie are neighbours at a fold, where both
-        // take their colours from the shared corners: their order hardly shows.
-        oracle->setDepthTolerance(kDepthTolerance);
+        // An approximate rule that counts near ties neither way: the blending one would find
+        // every object behind itself, and the exact one would have to decide every pixel of it
+        // (each a tie with itself). Triangles of one object whose depths nearly tie are
+        // neighbours at a fold, where both take their colours from the shared corners: their
+        // order hardly shows.
+        oracle->setDepthTolerance(kFoldTolerance);
         uint8_t behind = 0;
         for (uint32_t p = 0; p < primitives.size(); ++p) {
             if (group_of[p] != detail::kNoGroup)

@@ -14,7 +14,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <gtest/gtest.h>
 
-#include "collide/exact_predicates.h"
+#include "geometry/exact_predicates.h"
 
 namespace vissort {
 namespace {

@@ -5,7 +5,6 @@
 #include <set>
 #include <sstream>
 
-#include "exact_cycles.h"
 #include "ground_truth.h"
 #include "vissort/oracles.h"
 #include "vissort/scene.h"
@@ -135,7 +134,7 @@ void runChecks(const std::string& path, const CorpusSettings& settings, CorpusRe
         for (OrderLevel level : settings.levels) {
             const std::string where = corpus_view.name + " " + orderLevelName(level) + ": ";
             const std::vector<PrimitiveRange> primitives = primitivesOf(scene, level);
-            const Cycles truth = exactCycles(scene.positions, view, primitives);
+            const Cycles truth = occlusionCycles(scene.positions, view, primitives);
             for (const auto& cycle : truth)
                 report.max_cycle = std::max(report.max_cycle, uint32_t(cycle.size()));
 
@@ -167,7 +166,7 @@ void runChecks(const std::string& path, const CorpusSettings& settings, CorpusRe
                 // (b) the cycles are the exact oracle's strongly connected components.
                 if (cycleSet(frame.cycles) != cycleSet(truth))
                     report.failures.push_back(who + "reports " + cycleSizes(frame.cycles) +
-                                              ", the exact oracle's components are " +
+                                              ", the ground truth's components are " +
                                               cycleSizes(truth));
             }
         }

@@ -1,10 +1,10 @@
 #pragma once
 // The checks every file of a corpus goes through (tests/corpus): a file is either refused with a
 // one-line message naming it, or loaded and, at each view and level,
-//  (a) ordered by the cpu oracle and by the exact oracle with no violation of the ray-cast ground
+//  (a) ordered by the cpu oracle and by the exact oracle with no violation of the exact ground
 //      truth (ground_truth.h), outside the cycles each reports;
 //  (b) the cycles each reports are exactly the strongly connected components (tarjan_scc.h) of
-//      the occlusion graph the exact oracle's fragments give, pair by pair (exact_cycles.h);
+//      the ground truth's occlusion graph (occlusionCycles);
 //  (c) rendered all-transparent, vissort matches the per-pixel linked-list reference to 1/255 on
 //      every pixel, at each level (with OpenGL only).
 // Failures are collected as lines naming the view, level and check with their numbers, so that

@@ -169,9 +169,12 @@ INSTANTIATE_TEST_SUITE_P(Levels, OrdererAllocations,
 // Peak bytes held by an oracle and an orderer over it, from the oracle's creation to the end of
 // the second frame (the first coherent one), per primitive, for builtin:soup (one object a
 // triangle, so every level has n primitives). They hold per-primitive arrays: the oracle's
-// triangle set-ups (121 bytes, reserved for every triangle) and their starts, the orderer's copy
-// of the object ranges, the ranges as bound, the start, previous and output orders, Vis-sort's
-// list and flags. Before the large-input work (issue 14) this was about 215 bytes at object level.
+// triangle set-ups (133 bytes, reserved for every triangle: 128 with the triangle and its band
+// pixels, its flag and the exact rule's error bound) and their starts, each primitive's drawing
+// time (the exact rule's arbitration), the orderer's copy of the object ranges, the ranges as
+// bound, the start, previous and output orders, Vis-sort's list and flags. Before the
+// large-input work (issue 14) this was about 215 bytes at object level; before the exact rule
+// (issue 32) 172.
 class OrdererMemory : public testing::TestWithParam<OrderLevel> {};
 
 TEST_P(OrdererMemory, PeakBytesPerPrimitiveAreBounded) {
@@ -195,11 +198,11 @@ TEST_P(OrdererMemory, PeakBytesPerPrimitiveAreBounded) {
     const double per_primitive = double(g_peak_live_bytes - before) / kTriangles;
     std::cout << orderLevelName(GetParam()) << ": " << per_primitive
               << " bytes per primitive at the peak\n";
-    // About 172 (multistage about 208: per triangle its object, last frame's order, its place
+    // About 189 (multistage about 225: per triangle its object, last frame's order, its place
     // in the groups' start lists and where its set-ups are (FastCpuOracle::rebind); per object
     // its cycle, its group and its first id in the group,
     // which this scene of one-triangle objects pays per primitive).
-    EXPECT_LE(per_primitive, GetParam() == OrderLevel::multistage ? 215.0 : 175.0);
+    EXPECT_LE(per_primitive, GetParam() == OrderLevel::multistage ? 230.0 : 192.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Levels, OrdererMemory,

@@ -35,7 +35,8 @@ struct RandomWalk {
 };
 
 // A depth plane through a point near pixel (x, y), exact mode's -0.0 offset or a conservative
-// spread either way (+0.0 included: it is not -0.0), and the default or the blending tolerance.
+// spread either way (+0.0 included: it is not -0.0), and the thresholds of the exact rule (a
+// band both ways, some fragments undecided) or of the blending tolerance (never undecided).
 void randomPlane(std::mt19937_64& rng, int32_t x, int32_t y, TriangleWalk& w) {
     std::uniform_real_distribution<double> unit(0, 1);
     w.d0 = 0.2 + 0.6 * unit(rng);
@@ -45,7 +46,14 @@ void randomPlane(std::mt19937_64& rng, int32_t x, int32_t y, TriangleWalk& w) {
     w.y0_plane = y + 8 * unit(rng);
     const double offsets[] = {-0.0, 0.0, (unit(rng) - 0.5) * 0.01};
     w.offset = offsets[std::uniform_int_distribution<int>(0, 2)(rng)];
-    w.tolerance = unit(rng) < 0.5 ? kDepthTolerance : kNegativeTolerance;
+    if (unit(rng) < 0.5) {
+        const float band = float(unit(rng) * 0.02);
+        w.behind_above = band;
+        w.undecided_above = -band;
+    } else {
+        w.behind_above = kNegativeTolerance;
+        w.undecided_above = std::numeric_limits<float>::infinity();
+    }
 }
 
 RandomWalk makeWalk(std::mt19937_64& rng, EdgeScale scale) {
@@ -111,7 +119,7 @@ TEST(FastRows, Avx2WalksMatchThePortableOnes) {
     const RowKernels scalar = scalarRowKernels();
     std::mt19937_64 rng(41);
     for (EdgeScale scale : {EdgeScale::small, EdgeScale::at_int32_limit, EdgeScale::huge}) {
-        std::size_t queries_behind = 0, pixels_written = 0;
+        std::size_t queries_behind = 0, queries_undecided = 0, pixels_written = 0;
         for (int i = 0; i < 20000; ++i) {
             SCOPED_TRACE("scale " + std::to_string(int(scale)) + ", walk " + std::to_string(i));
             RandomWalk r = makeWalk(rng, scale);
@@ -121,9 +129,10 @@ TEST(FastRows, Avx2WalksMatchThePortableOnes) {
             wa.origin = a.data() + first_row * kTileRowFloats;
             wb.origin = b.data() + first_row * kTileRowFloats;
 
-            const bool behind = scalar.query(wa);
-            ASSERT_EQ(simd.query(wb), behind);
-            queries_behind += behind;
+            const QueryResult result = scalar.query(wa);
+            ASSERT_EQ(simd.query(wb), result);
+            queries_behind += result == QueryResult::behind;
+            queries_undecided += result == QueryResult::undecided;
 
             TileDraw da{}, db{};
             scalar.draw(wa, da);
@@ -142,6 +151,7 @@ TEST(FastRows, Avx2WalksMatchThePortableOnes) {
         }
         // Both answers and real writes were exercised at every scale.
         EXPECT_GT(queries_behind, 100u);
+        EXPECT_GT(queries_undecided, 20u);
         EXPECT_GT(pixels_written, 1000u);
     }
 }
@@ -196,7 +206,7 @@ TEST(FastRows, Avx2SmallWalksMatchThePortableOnes) {
         GTEST_SKIP() << "this CPU has no AVX2: only the portable walks run here";
     const RowKernels scalar = scalarRowKernels();
     std::mt19937_64 rng(43);
-    std::size_t queries_behind = 0, pixels_written = 0;
+    std::size_t queries_behind = 0, queries_undecided = 0, pixels_written = 0;
     for (int i = 0; i < 20000; ++i) {
         SCOPED_TRACE("walk " + std::to_string(i));
         RandomSmallWalk r = makeSmallWalk(rng);
@@ -205,9 +215,10 @@ TEST(FastRows, Avx2SmallWalksMatchThePortableOnes) {
         wa.depth = a.data();
         wb.depth = b.data();
 
-        const bool behind = scalar.query_small(wa);
-        ASSERT_EQ(simd.query_small(wb), behind);
-        queries_behind += behind;
+        const QueryResult result = scalar.query_small(wa);
+        ASSERT_EQ(simd.query_small(wb), result);
+        queries_behind += result == QueryResult::behind;
+        queries_undecided += result == QueryResult::undecided;
 
         SmallDraw da{}, db{};
         scalar.draw_small(wa, da);
@@ -219,6 +230,7 @@ TEST(FastRows, Avx2SmallWalksMatchThePortableOnes) {
     }
     // Both answers and real writes were exercised.
     EXPECT_GT(queries_behind, 1000u);
+    EXPECT_GT(queries_undecided, 20u);
     EXPECT_GT(pixels_written, 10000u);
 }
 

@@ -1,58 +1,29 @@
-// Ground truth by brute force over all-hits ray casting: every pair of primitives at every pixel.
+// Ground truth by brute force over the exact fragments: every pair of primitives at every pixel.
 
 #include "ground_truth.h"
 
 #include <algorithm>
 #include <cassert>
-#include <cmath>
 #include <limits>
 #include <unordered_set>
 
-#include "exact/ray_caster.h"
+#include "tarjan_scc.h"
 
 namespace vissort::test {
 namespace {
 
 constexpr uint32_t kNoPrimitive = std::numeric_limits<uint32_t>::max();
 
-// One primitive's robust hits at one pixel, and the snap slack of the triangles hit nearest and
-// farthest.
+// One primitive's fragments at one pixel: the ranks of its nearest and farthest, and their
+// approximate depths. a is in front of b there iff a.nearest_rank < b.farthest_rank.
 struct PixelSpan {
     uint32_t primitive;
-    double nearest, farthest;
-    double nearest_slack, farthest_slack;
+    uint32_t nearest_rank, farthest_rank;
+    double nearest_depth, farthest_depth;
 };
 
-// The snap slack of cpu_oracle.h's rule 6 for triangle t seen through view: max(|dd/dx|,
-// |dd/dy|) / 256, from the slopes of the triangle's plane in depth per pixel, here measured
-// where the rays through three screen points meet that plane (d is affine in screen space for
-// both projections: camera.h). Independent of the oracles' set-up code. Infinite for a plane
-// seen edge-on.
-double snapSlackOf(const TrianglePositions& positions, const ViewProjection& view, std::size_t t) {
-    const Vec3 a = positions.corner(3 * t), b = positions.corner(3 * t + 1),
-               c = positions.corner(3 * t + 2);
-    const Vec3 normal = cross(b - a, c - a);
-    const auto depthAt = [&](double sx, double sy, double& depth) {
-        Vec3 origin, direction;
-        view.pixelRay(sx, sy, origin, direction);
-        const double along = dot(normal, direction);
-        if (along == 0)
-            return false;
-        depth = view.depthOf(origin + direction * (dot(normal, a - origin) / along));
-        return std::isfinite(depth);
-    };
-    const double cx = 0.5 * view.width, cy = 0.5 * view.height;
-    double d0 = 0, dx = 0, dy = 0;
-    if (!depthAt(cx, cy, d0) || !depthAt(cx + 1, cy, dx) || !depthAt(cx, cy + 1, dy))
-        return std::numeric_limits<double>::infinity();
-    return std::max(std::abs(dx - d0), std::abs(dy - d0)) / 256;
-}
-
-// Whether front lies in front of behind at a pixel by more than the margin the oracles promise
-// to see (cpu_oracle.h, rule 7): kFrontMargin plus the two triangles' snap slack.
 bool inFront(const PixelSpan& front, const PixelSpan& behind) {
-    return front.nearest + kFrontMargin + front.nearest_slack + behind.farthest_slack <
-           behind.farthest;
+    return front.primitive != behind.primitive && front.nearest_rank < behind.farthest_rank;
 }
 
 std::vector<uint32_t> primitiveOfTriangles(std::size_t triangle_count,
@@ -67,40 +38,34 @@ std::vector<uint32_t> primitiveOfTriangles(std::size_t triangle_count,
     return primitive_of;
 }
 
-// Calls visit(px, py, spans) for every pixel with the robust spans of each primitive there.
+// Calls visit(px, py, spans) for every pixel with the spans of each primitive there.
 template <class Visit>
-void forEachPixel(const TrianglePositions& positions, const ViewProjection& view,
+void forEachPixel(const ExactFragments& fragments, std::size_t triangle_count,
                   std::span<const PrimitiveRange> primitives, Visit&& visit) {
-    const std::vector<uint32_t> primitive_of =
-        primitiveOfTriangles(positions.triangleCount(), primitives);
-    const detail::AllHits hits = detail::castAllHits(positions, view);
-    std::vector<double> slack(positions.triangleCount());
-    for (std::size_t t = 0; t < slack.size(); ++t)
-        slack[t] = snapSlackOf(positions, view, t);
+    const std::vector<uint32_t> primitive_of = primitiveOfTriangles(triangle_count, primitives);
+    std::vector<uint32_t> span_of(primitives.size(), kNoPrimitive); // kNoPrimitive between pixels
     std::vector<PixelSpan> spans;
-    for (std::size_t pixel = 0; pixel < hits.pixelCount(); ++pixel) {
+    for (std::size_t pixel = 0; pixel < fragments.pixelCount(); ++pixel) {
         spans.clear();
-        for (uint64_t h = hits.firstHit(pixel); h < hits.endHit(pixel); ++h) {
-            const uint32_t p = primitive_of[hits.triangles[h]];
-            if (p == kNoPrimitive || !hits.robust[h])
+        // Fragments come nearest first: the first of a primitive is its nearest, the last its
+        // farthest.
+        for (uint64_t f = fragments.firstFragment(pixel); f < fragments.endFragment(pixel); ++f) {
+            const uint32_t p = primitive_of[fragments.triangles[f]];
+            if (p == kNoPrimitive)
                 continue;
-            const double d = hits.depths[h], e = slack[hits.triangles[h]];
-            auto it = std::find_if(spans.begin(), spans.end(),
-                                   [p](const PixelSpan& s) { return s.primitive == p; });
-            if (it == spans.end()) {
-                spans.push_back({p, d, d, e, e});
+            const uint32_t rank = fragments.ranks[f];
+            const double d = fragments.depths[f];
+            if (span_of[p] == kNoPrimitive) {
+                span_of[p] = uint32_t(spans.size());
+                spans.push_back({p, rank, rank, d, d});
             } else {
-                if (d < it->nearest) {
-                    it->nearest = d;
-                    it->nearest_slack = e;
-                }
-                if (d > it->farthest) {
-                    it->farthest = d;
-                    it->farthest_slack = e;
-                }
+                spans[span_of[p]].farthest_rank = rank;
+                spans[span_of[p]].farthest_depth = d;
             }
         }
-        visit(uint32_t(pixel % hits.width), uint32_t(pixel / hits.width),
+        for (const PixelSpan& span : spans)
+            span_of[span.primitive] = kNoPrimitive;
+        visit(uint32_t(pixel % fragments.width), uint32_t(pixel / fragments.width),
               std::span<const PixelSpan>(spans));
     }
 }
@@ -120,6 +85,17 @@ bool isPermutation(std::span<const uint32_t> order, std::size_t n) {
 } // namespace
 
 OrderCheck checkVisibilityOrder(const TrianglePositions& positions, const ViewProjection& view,
+                                std::span<const PrimitiveRange> primitives,
+                                std::span<const uint32_t> order,
+                                const std::vector<std::vector<uint32_t>>& cycles,
+                                std::size_t max_violations_kept) {
+    if (!isPermutation(order, primitives.size()))
+        return {};
+    return checkVisibilityOrder(exactFragments(positions, view), positions.triangleCount(),
+                                primitives, order, cycles, max_violations_kept);
+}
+
+OrderCheck checkVisibilityOrder(const ExactFragments& fragments, std::size_t triangle_count,
                                 std::span<const PrimitiveRange> primitives,
                                 std::span<const uint32_t> order,
                                 const std::vector<std::vector<uint32_t>>& cycles,
@@ -149,13 +125,13 @@ OrderCheck checkVisibilityOrder(const TrianglePositions& positions, const ViewPr
         return false;
     };
 
-    forEachPixel(positions, view, primitives,
+    forEachPixel(fragments, triangle_count, primitives,
                  [&](uint32_t px, uint32_t py, std::span<const PixelSpan> spans) {
                      check.max_depth_complexity =
                          std::max(check.max_depth_complexity, uint32_t(spans.size()));
                      for (const PixelSpan& front : spans) {
                          for (const PixelSpan& behind : spans) {
-                             if (front.primitive == behind.primitive || !inFront(front, behind))
+                             if (!inFront(front, behind))
                                  continue;
                              ++check.pairs_checked;
                              if (position[behind.primitive] > position[front.primitive] ||
@@ -164,8 +140,8 @@ OrderCheck checkVisibilityOrder(const TrianglePositions& positions, const ViewPr
                              ++check.violation_count;
                              if (check.violations.size() < max_violations_kept) {
                                  check.violations.push_back({px, py, front.primitive,
-                                                             behind.primitive, front.nearest,
-                                                             behind.farthest});
+                                                             behind.primitive, front.nearest_depth,
+                                                             behind.farthest_depth});
                              }
                          }
                      }
@@ -176,22 +152,55 @@ OrderCheck checkVisibilityOrder(const TrianglePositions& positions, const ViewPr
 std::vector<std::vector<uint32_t>> occlusionGraph(const TrianglePositions& positions,
                                                   const ViewProjection& view,
                                                   std::span<const PrimitiveRange> primitives) {
+    return occlusionGraph(exactFragments(positions, view), positions.triangleCount(), primitives);
+}
+
+std::vector<std::vector<uint32_t>> occlusionGraph(const ExactFragments& fragments,
+                                                  std::size_t triangle_count,
+                                                  std::span<const PrimitiveRange> primitives) {
+    // The edges seen so far: a bit matrix up to kMaxMatrixPrimitives (32 MiB), a hash set above.
+    constexpr std::size_t kMaxMatrixPrimitives = 16384;
+    const std::size_t n = primitives.size();
+    const bool use_matrix = n <= kMaxMatrixPrimitives;
+    std::vector<uint64_t> matrix(use_matrix ? (n * n + 63) / 64 : 0);
     std::unordered_set<uint64_t> edges;
-    forEachPixel(positions, view, primitives,
+    forEachPixel(fragments, triangle_count, primitives,
                  [&](uint32_t, uint32_t, std::span<const PixelSpan> spans) {
                      for (const PixelSpan& front : spans) {
                          for (const PixelSpan& behind : spans) {
-                             if (front.primitive != behind.primitive && inFront(front, behind))
+                             if (!inFront(front, behind))
+                                 continue;
+                             if (use_matrix) {
+                                 const std::size_t bit = front.primitive * n + behind.primitive;
+                                 matrix[bit / 64] |= uint64_t(1) << (bit % 64);
+                             } else {
                                  edges.insert(uint64_t(front.primitive) << 32 | behind.primitive);
+                             }
                          }
                      }
                  });
-    std::vector<std::vector<uint32_t>> graph(primitives.size());
+    std::vector<std::vector<uint32_t>> graph(n);
+    if (use_matrix) {
+        for (std::size_t a = 0; a < n; ++a) {
+            for (std::size_t b = 0; b < n; ++b) {
+                const std::size_t bit = a * n + b;
+                if (matrix[bit / 64] >> (bit % 64) & 1)
+                    graph[a].push_back(uint32_t(b));
+            }
+        }
+        return graph;
+    }
     for (uint64_t edge : edges)
         graph[edge >> 32].push_back(uint32_t(edge));
     for (std::vector<uint32_t>& successors : graph)
         std::sort(successors.begin(), successors.end());
     return graph;
+}
+
+std::vector<std::vector<uint32_t>> occlusionCycles(const TrianglePositions& positions,
+                                                   const ViewProjection& view,
+                                                   std::span<const PrimitiveRange> primitives) {
+    return cyclicComponents(occlusionGraph(positions, view, primitives));
 }
 
 } // namespace vissort::test

@@ -20,7 +20,7 @@
 //   lo = fma(p, z, -hi) is the exact remainder (fma rounds once, and the remainder, a multiple
 //   of 2^-447 of at most 19 significant bits, is representable), so hi + lo == p * z exactly.
 
-#include "collide/exact_predicates.h"
+#include "geometry/exact_predicates.h"
 
 #include <array>
 #include <cmath>

@@ -1,0 +1,88 @@
+// The exact rule's arbitration (depth_arbiter.h).
+
+#include "raster/depth_arbiter.h"
+
+#include "geometry/exact_predicates.h"
+
+namespace vissort::detail {
+
+void DepthArbiter::bind(const ViewProjection& view, PositionsView positions) {
+    model_.emplace(view);
+    positions_ = positions;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    orders_.clear();
+}
+
+DepthArbiter::Query DepthArbiter::query(uint32_t triangle, uint32_t px, uint32_t py) const {
+    Query q;
+    q.ray = model_->rays().centre(px, py);
+    q.triangle = triangle;
+    q.corners = TriangleCorners::of(positions_, triangle);
+    q.hit = model_->hit(q.ray, q.corners);
+    return q;
+}
+
+bool DepthArbiter::nearer(const Query& query, uint32_t drawn) {
+    if (drawn == query.triangle)
+        return false; // a fragment is never in front of itself
+    const TriangleCorners corners = TriangleCorners::of(positions_, drawn);
+    if (!model_->covers(query.ray, corners))
+        return false;
+    const RayHit hit = model_->hit(query.ray, corners);
+    switch (pairOrder(query, drawn, corners, hit)) {
+    case kDrawnNearer:
+        return true;
+    case kNotNearer:
+        return false;
+    case kPerPixel:
+        break;
+    }
+    return model_->compare(query.ray, query.corners, query.hit, corners, hit) > 0;
+}
+
+DepthArbiter::Order DepthArbiter::pairOrder(const Query& query, uint32_t drawn,
+                                            const TriangleCorners& corners, const RayHit& hit) {
+    const uint64_t key = uint64_t(query.triangle) << 32 | drawn;
+    {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        if (const auto found = orders_.find(key); found != orders_.end())
+            return found->second;
+    }
+    // Which way a triangle faces every ray that meets it: the sign of Q = n . D, the same for
+    // every such ray (they all start at the eye, or share one direction). Both triangles cover
+    // this ray, so neither Q is 0: the bound settles it, or the exact model does.
+    const auto facing = [&](const TriangleCorners& t, const RayHit& h) {
+        const int sign = h.q.certainSign();
+        return sign != 0 ? sign : model_->facing(query.ray, t);
+    };
+    const int query_facing = facing(query.corners, query.hit);
+    const int drawn_facing = facing(corners, hit);
+    // A point lies beyond a triangle's plane along these rays (farther than where they meet the
+    // plane) when orient3d against the plane has the sign of its facing: +1 beyond, -1 before,
+    // 0 in the plane. A triangle wholly (weakly) on one side orders every shared pixel alike.
+    const auto sides = [](const TriangleCorners& plane, int plane_facing,
+                          const TriangleCorners& points, int(&out)[3]) {
+        for (int k = 0; k < 3; ++k)
+            out[k] = orient3d(plane.p[0], plane.p[1], plane.p[2], points.p[k]) * plane_facing;
+    };
+    int query_side[3], drawn_side[3];
+    sides(corners, drawn_facing, query.corners, query_side);
+    sides(query.corners, query_facing, corners, drawn_side);
+    const auto all = [](const int(&s)[3], auto&& test) {
+        return test(s[0]) && test(s[1]) && test(s[2]);
+    };
+    Order order = kPerPixel;
+    if (all(query_side, [](int s) { return s > 0; }) ||
+        all(drawn_side, [](int s) { return s < 0; }))
+        order = kDrawnNearer; // the query wholly beyond the drawn's plane, or the drawn wholly
+                              // before the query's: strictly, at every shared pixel
+    else if (all(query_side, [](int s) { return s <= 0; }) ||
+             all(drawn_side, [](int s) { return s >= 0; }))
+        order = kNotNearer; // the query before or in the drawn's plane (coplanar: a tie), or the
+                            // drawn beyond or in the query's
+    const std::lock_guard<std::mutex> lock(mutex_);
+    orders_.emplace(key, order);
+    return order;
+}
+
+} // namespace vissort::detail

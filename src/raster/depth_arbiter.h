@@ -1,0 +1,52 @@
+#pragma once
+// The exact rule's arbitration (cpu_oracle.h, rule 7), shared by the rasterizing oracles: at one
+// pixel, whether a triangle drawn there lies strictly nearer than a query triangle, by the exact
+// fragment model (geometry/exact_fragments.h). What settles it for a whole pair of triangles is
+// kept for the bind: one triangle wholly on one side of the other's plane (or both in one plane)
+// orders them the same way at every pixel they share, so touching and coplanar faces, whose
+// every shared pixel is a tie the floats cannot see, cost a hash lookup per pixel after the
+// first, not exact arithmetic.
+
+#include <cstdint>
+#include <mutex>
+#include <optional>
+#include <unordered_map>
+
+#include "geometry/exact_fragments.h"
+
+namespace vissort::detail {
+
+class DepthArbiter {
+public:
+    /// Prepares for a bind: the view's model, the positions' corners (kept as a view: they must
+    /// outlive the bind), and an empty cache.
+    void bind(const ViewProjection& view, PositionsView positions);
+
+    const ExactFragments& model() const { return *model_; }
+
+    /// A query triangle's fragment at one pixel, which it must have (the exact model's).
+    struct Query {
+        PixelRay ray;
+        uint32_t triangle;
+        TriangleCorners corners;
+        RayHit hit;
+    };
+    Query query(uint32_t triangle, uint32_t px, uint32_t py) const;
+
+    /// Whether triangle `drawn` has a fragment at the query's pixel strictly nearer than the
+    /// query's. Safe to call from several threads at once.
+    bool nearer(const Query& query, uint32_t drawn);
+
+private:
+    // How two triangles order at every pixel they share, or kPerPixel.
+    enum Order : uint8_t { kDrawnNearer, kNotNearer, kPerPixel };
+    Order pairOrder(const Query& query, uint32_t drawn, const TriangleCorners& corners,
+                    const RayHit& hit);
+
+    std::optional<ExactFragments> model_; // in place: a bind allocates nothing
+    PositionsView positions_;
+    std::mutex mutex_;
+    std::unordered_map<uint64_t, Order> orders_; // (query << 32 | drawn) -> its order
+};
+
+} // namespace vissort::detail
