@@ -1,6 +1,7 @@
 // The OpenGL occlusion oracle (gl_oracle.h): Vis-sort's queries (Govindaraju, Henson, Lin,
 // Manocha, I3D 2005, section 4) as GL_ANY_SAMPLES_PASSED occlusion queries, pass 2's dependent
-// draws as conditional rendering (OpenGL 3.0, NV_conditional_render).
+// draws as conditional rendering (OpenGL 3.0, NV_conditional_render). Depth tolerance 0 draws
+// through bounded_fragments.h's program, any other through the plain one below.
 
 #include "vissort/gl_oracle.h"
 
@@ -14,6 +15,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat4x4.hpp>
 
+#include "gl/bounded_fragments.h"
 #include "gl/gl_api.h"
 #include "gl/gl_objects.h"
 #include "gl/gl_program.h"
@@ -21,8 +23,9 @@
 namespace vissort {
 namespace {
 
-// x, y and z come from three float arrays of one buffer (TrianglePositions' layout); depth_offset
-// moves a query's fragments nearer by kDepthTolerance after the divide (gl_oracle.h).
+// For a non-zero depth tolerance. x, y and z come from three float arrays of one buffer
+// (TrianglePositions' layout); depth_offset moves a query's fragments nearer by the tolerance
+// after the divide (gl_oracle.h).
 constexpr const char* kVertexShader = R"(#version 450 core
 layout(location = 0) in float x;
 layout(location = 1) in float y;
@@ -45,8 +48,9 @@ void main() {}
 
 struct GlOracle::Impl {
     std::shared_ptr<GlContext> context;
-    detail::GlProgram program;
+    detail::GlProgram program; // a non-zero tolerance's
     GLint matrix_location = -1, offset_location = -1;
+    detail::BoundedFragmentProgram bounded; // tolerance 0's, on the same vertex array
     detail::GlVertexArray vertex_array;
     detail::GlBuffer corners;        // x of every corner, then y, then z
     std::size_t corner_capacity = 0; // corners the buffer holds
@@ -60,6 +64,7 @@ struct GlOracle::Impl {
     std::vector<GLsizei> corner_counts;
     enum class Mode { unset, draw, query } mode = Mode::unset;
     float tolerance = kDepthTolerance; // the oracle's, taken at every call
+    bool exact() const { return tolerance == 0; }
     // glPolygonOffset's factor for the snap slack: the driver moves a fragment by factor times
     // max(|dz/dx|, |dz/dy|), the CPU's slack with factor 2^-(subpixel bits) (cpu_rasterizer.h).
     // Set at the first call (the context is current then).
@@ -73,6 +78,11 @@ struct GlOracle::Impl {
         const bool query = wanted == Mode::query;
         glDepthFunc(query ? GL_GREATER : GL_LESS);
         glDepthMask(query ? GL_FALSE : GL_TRUE);
+        if (exact()) {
+            // Draws write their fragments' depth bounds from below, queries from above.
+            bounded.setQuery(query);
+            return;
+        }
         glProgramUniform1f(program.get(), offset_location, query ? -tolerance : 0.0f);
         // The snap slack (cpu_oracle.h, rule 7) as a slope-scaled polygon offset: towards "not
         // behind" for a tolerance >= 0 (draws farther, queries nearer), else the other way.
@@ -111,7 +121,8 @@ struct GlOracle::Impl {
         ++stats.draw_calls;
     }
 
-    // Queries primitive p into query object q (GREATER, writes off, nearer by the tolerance).
+    // Queries primitive p into query object q (GREATER, writes off; tolerance 0: the depths'
+    // upper bounds, else nearer by the tolerance).
     void issueQuery(uint32_t p, GLuint q) {
         flushDraws();
         setMode(Mode::query);
@@ -135,8 +146,8 @@ struct GlOracle::Impl {
         glGenQueries(GLsizei(count - old), queries.data() + old);
     }
 
-    // Ends a public call: the polygon offset is this oracle's alone, not the shared context's
-    // other users' (the renderer draws without one).
+    // Ends a public call: the polygon offset (a non-zero tolerance's) is this oracle's alone, not
+    // the shared context's other users' (the renderer draws without one).
     struct [[nodiscard]] Scope {
         Scope() = default;
         Scope(const Scope&) = delete;
@@ -148,7 +159,7 @@ struct GlOracle::Impl {
         tolerance = depth_tolerance;
         context->makeCurrent();
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.get());
-        glUseProgram(program.get());
+        glUseProgram(exact() ? bounded.get() : program.get());
         glBindVertexArray(vertex_array.get());
         glViewport(0, 0, GLsizei(width), GLsizei(height));
         // Every call: another user of the shared context (the renderer) may have changed these.
@@ -158,6 +169,7 @@ struct GlOracle::Impl {
         glDisable(GL_BLEND);
         glDisable(GL_SCISSOR_TEST);
         glDisable(GL_STENCIL_TEST);
+        glDisable(GL_CULL_FACE); // tolerance 0's coverage polygons wind either way
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         glClearDepth(1.0);
         if (slope_factor < 0) {
@@ -165,7 +177,10 @@ struct GlOracle::Impl {
             glGetIntegerv(GL_SUBPIXEL_BITS, &bits);
             slope_factor = std::ldexp(1.0f, -std::clamp(bits, 4, 12));
         }
-        glEnable(GL_POLYGON_OFFSET_FILL);
+        if (exact())
+            glDisable(GL_POLYGON_OFFSET_FILL); // the fragment shader writes the depth
+        else
+            glEnable(GL_POLYGON_OFFSET_FILL);
         mode = Mode::unset;
         return {};
     }
@@ -199,6 +214,7 @@ GlOracle::GlOracle(std::shared_ptr<GlContext> context) : impl_(std::make_unique<
     impl_->program = detail::linkProgram(kVertexShader, kFragmentShader);
     impl_->matrix_location = glGetUniformLocation(impl_->program.get(), "view_projection");
     impl_->offset_location = glGetUniformLocation(impl_->program.get(), "depth_offset");
+    impl_->bounded = detail::BoundedFragmentProgram::link();
     GLuint name = 0;
     glCreateVertexArrays(1, &name);
     impl_->vertex_array = detail::GlVertexArray(name);
@@ -270,6 +286,7 @@ void GlOracle::bind(PositionsView positions, const ViewProjection& view,
     const glm::mat4 rounded(matrix);
     glProgramUniformMatrix4fv(d.program.get(), d.matrix_location, 1, GL_FALSE,
                               glm::value_ptr(rounded));
+    d.bounded.setView(view);
     d.primitives.assign(primitives.begin(), primitives.end());
     for ([[maybe_unused]] const PrimitiveRange& range : d.primitives)
         assert(uint64_t(range.first_triangle) + range.triangle_count <= positions.triangleCount());

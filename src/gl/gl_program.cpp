@@ -1,5 +1,6 @@
 #include "gl/gl_program.h"
 
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
 
@@ -24,10 +25,22 @@ GlShader compile(GLenum stage, const char* source) {
     glShaderSource(shader.get(), 1, &source, nullptr);
     glCompileShader(shader.get());
     requireStatus(shader.get(), GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog,
-                  stage == GL_VERTEX_SHADER    ? "OpenGL vertex shader does not compile"
-                  : stage == GL_COMPUTE_SHADER ? "OpenGL compute shader does not compile"
-                                               : "OpenGL fragment shader does not compile");
+                  stage == GL_VERTEX_SHADER     ? "OpenGL vertex shader does not compile"
+                  : stage == GL_GEOMETRY_SHADER ? "OpenGL geometry shader does not compile"
+                  : stage == GL_COMPUTE_SHADER  ? "OpenGL compute shader does not compile"
+                                                : "OpenGL fragment shader does not compile");
     return shader;
+}
+
+// Links the compiled stages into one program.
+GlProgram link(std::initializer_list<const GlShader*> stages) {
+    GlProgram program(glCreateProgram());
+    for (const GlShader* stage : stages)
+        glAttachShader(program.get(), stage->get());
+    glLinkProgram(program.get());
+    requireStatus(program.get(), GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog,
+                  "OpenGL program does not link");
+    return program;
 }
 
 } // namespace
@@ -35,23 +48,20 @@ GlShader compile(GLenum stage, const char* source) {
 GlProgram linkProgram(const char* vertex_source, const char* fragment_source) {
     const GlShader vertex = compile(GL_VERTEX_SHADER, vertex_source);
     const GlShader fragment = compile(GL_FRAGMENT_SHADER, fragment_source);
-    GlProgram program(glCreateProgram());
-    glAttachShader(program.get(), vertex.get());
-    glAttachShader(program.get(), fragment.get());
-    glLinkProgram(program.get());
-    requireStatus(program.get(), GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog,
-                  "OpenGL program does not link");
-    return program;
+    return link({&vertex, &fragment});
+}
+
+GlProgram linkProgram(const char* vertex_source, const char* geometry_source,
+                      const char* fragment_source) {
+    const GlShader vertex = compile(GL_VERTEX_SHADER, vertex_source);
+    const GlShader geometry = compile(GL_GEOMETRY_SHADER, geometry_source);
+    const GlShader fragment = compile(GL_FRAGMENT_SHADER, fragment_source);
+    return link({&vertex, &geometry, &fragment});
 }
 
 GlProgram linkComputeProgram(const char* compute_source) {
     const GlShader compute = compile(GL_COMPUTE_SHADER, compute_source);
-    GlProgram program(glCreateProgram());
-    glAttachShader(program.get(), compute.get());
-    glLinkProgram(program.get());
-    requireStatus(program.get(), GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog,
-                  "OpenGL program does not link");
-    return program;
+    return link({&compute});
 }
 
 } // namespace vissort::detail

@@ -10,6 +10,10 @@ namespace vissort::detail {
 /// context.
 GlProgram linkProgram(const char* vertex_source, const char* fragment_source);
 
+/// Links a program from vertex, geometry and fragment shader sources; throws like linkProgram.
+GlProgram linkProgram(const char* vertex_source, const char* geometry_source,
+                      const char* fragment_source);
+
 /// Links a compute program from one compute shader source; throws like linkProgram.
 GlProgram linkComputeProgram(const char* compute_source);
 
