@@ -30,6 +30,11 @@ struct FastSetup {
     double error;                // TriangleSetup::error: the exact rule's bound (not conservative)
     int64_t margin[3];           // TriangleSetup::margin (0 in conservative mode)
     bool flat;                   // TriangleSetup::flat
+    // The edges that may have band pixels (bit e: edge e), and in bit 3 whether the batch
+    // set-up's quick screen chose them (all three otherwise, screened when walked):
+    // forEachFastBandPixel walks only these.
+    uint8_t band_edges;
+    static constexpr uint8_t kBandScreened = 8;
     // For the band decisions at bind (screenCoverage), not kept: the unsnapped corners in edge
     // order, whether this fan triangle is its whole triangle (clipping cut nothing), and the
     // least and greatest corner depth.
@@ -133,6 +138,8 @@ template <class Visit> void forEachFastBandPixel(const FastSetup& s, Visit&& vis
         return true;
     };
     for (int e = 0; e < edges; ++e) {
+        if ((s.band_edges & (1u << e)) == 0)
+            continue; // screened: no centre within its margin
         const int64_t m = s.margin[e];
         const int64_t step_x = s.edge_step_x[e], step_y = s.edge_step_y[e];
         // Walk the edge along its major axis, a column (or row) at a time, keeping the row (or
@@ -146,7 +153,8 @@ template <class Visit> void forEachFastBandPixel(const FastSetup& s, Visit&& vis
         const int64_t low = columns ? s.py_min : s.px_min, high = columns ? s.py_max : s.px_max;
         if (cross_size > 2 * m) {
             const int64_t start = columns ? edgeAt(e, first, 0) : edgeAt(e, 0, first);
-            if (!mayHaveBand(start, along, cross, m, last - first + 1))
+            if ((s.band_edges & FastSetup::kBandScreened) == 0 &&
+                !mayHaveBand(start, along, cross, m, last - first + 1))
                 continue;
             BandHit hits[kMaxBandHits];
             int found = 0;

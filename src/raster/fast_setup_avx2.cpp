@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #define VISSORT_AVX2 __attribute__((target("avx2")))
 
@@ -187,8 +188,144 @@ VISSORT_AVX2 void setupQuadAvx2(const Matrix4& m, const float* x, const float* y
         has_det,
         _mm256_div_pd(_mm256_sub_pd(_mm256_mul_pd(e2d, e1x), _mm256_mul_pd(e1d, e2x)), det));
 
+    // The exact rule's margins (edgeMargins' integer form, for a position error of at most
+    // 2^-10 units; otherwise the lanes take the scalar form), in double: every value an integer
+    // below 2^53, floor exact.
+    const double position_units = errors.position_px * double(kSubpixelScale);
+    const bool integer_margins = position_units <= 0x1p-10;
+    const __m256d reach =
+        _mm256_add_pd(_mm256_cvtepi32_pd(_mm_sub_epi32(max_x, min_x)),
+                      _mm256_cvtepi32_pd(_mm_sub_epi32(max_y, min_y))); // W + H + 4 grow
+    const __m256d eight = _mm256_set1_pd(8.0);
+    const __m256d reach_part = _mm256_add_pd(
+        reach,
+        _mm256_add_pd(_mm256_floor_pd(_mm256_mul_pd(reach, _mm256_set1_pd(1.0 / 512))), eight));
+    __m256d margin[3];
+    for (int e = 0; e < 3; ++e) {
+        const int j = (e + 1) % 3;
+        const __m256d length =
+            _mm256_add_pd(_mm256_andnot_pd(sign, _mm256_cvtepi32_pd(_mm_sub_epi32(fx[j], fx[e]))),
+                          _mm256_andnot_pd(sign, _mm256_cvtepi32_pd(_mm_sub_epi32(fy[j], fy[e]))));
+        margin[e] = _mm256_add_pd(
+            _mm256_add_pd(_mm256_floor_pd(_mm256_mul_pd(length, _mm256_set1_pd(0.5))),
+                          _mm256_floor_pd(_mm256_mul_pd(length, _mm256_set1_pd(1.0 / 1024)))),
+            reach_part);
+    }
+
+    // fragmentError (cpu_rasterizer.cpp), the same operations in the same order.
+    __m256d error;
+    {
+        const __m256d abs_det = _mm256_andnot_pd(sign, det);
+        const __m256d condition =
+            _mm256_div_pd(_mm256_add_pd(_mm256_andnot_pd(sign, _mm256_mul_pd(e1x, e2y)),
+                                        _mm256_andnot_pd(sign, _mm256_mul_pd(e2x, e1y))),
+                          abs_det);
+        const __m256d slopes =
+            _mm256_add_pd(_mm256_andnot_pd(sign, ddx), _mm256_andnot_pd(sign, ddy));
+        const __m256d numerators = _mm256_div_pd(
+            _mm256_add_pd(
+                _mm256_add_pd(_mm256_add_pd(_mm256_andnot_pd(sign, _mm256_mul_pd(e1d, e2y)),
+                                            _mm256_andnot_pd(sign, _mm256_mul_pd(e2d, e1y))),
+                              _mm256_andnot_pd(sign, _mm256_mul_pd(e2d, e1x))),
+                _mm256_andnot_pd(sign, _mm256_mul_pd(e1d, e2x))),
+            abs_det);
+        const __m128i extent32 = _mm_add_epi32(
+            _mm_max_epi32(_mm_sub_epi32(px_max, px_min), _mm_sub_epi32(py_max, py_min)),
+            _mm_set1_epi32(1));
+        const __m256d span = _mm256_add_pd(_mm256_cvtepi32_pd(extent32), _mm256_set1_pd(2.0));
+        const __m256d inner = _mm256_add_pd(
+            _mm256_andnot_pd(sign, sd[0]),
+            _mm256_mul_pd(span, _mm256_add_pd(numerators, _mm256_mul_pd(slopes, condition))));
+        error = _mm256_add_pd(
+            _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(0x1p-40), inner),
+                                        _mm256_set1_pd(errors.depth)),
+                          _mm256_mul_pd(_mm256_set1_pd(2 * errors.position_px), slopes)),
+            _mm256_set1_pd(0x1p-24));
+        // Not usable (no area, a slope or depth not finite, an error not finite): infinite.
+        const __m256d infinity = _mm256_set1_pd(std::numeric_limits<double>::infinity());
+        const __m256d finite_error =
+            _mm256_cmp_pd(_mm256_andnot_pd(sign, error), infinity, _CMP_LT_OQ);
+        const __m256d usable = _mm256_and_pd(
+            _mm256_and_pd(_mm256_cmp_pd(abs_det, zero, _CMP_GT_OQ), finite_error),
+            _mm256_and_pd(_mm256_and_pd(_mm256_cmp_pd(_mm256_sub_pd(ddx, ddx), zero, _CMP_EQ_OQ),
+                                        _mm256_cmp_pd(_mm256_sub_pd(ddy, ddy), zero, _CMP_EQ_OQ)),
+                          _mm256_cmp_pd(_mm256_sub_pd(sd[0], sd[0]), zero, _CMP_EQ_OQ)));
+        error = _mm256_blendv_pd(infinity, error, usable);
+    }
+
+    // The band screen of forEachFastBandPixel (fast_setup.h), per edge: along its major axis,
+    // does any step's edge function come within the margin (+1) of a multiple of the cross step?
+    // In double, exact while the values stay below 2^50; a lane that does not fit, has more than
+    // kScreenSteps steps or a wide band keeps its edge (the exact walk decides).
+    constexpr int kScreenSteps = 64;
+    __m256d band_may[3];
+    {
+        const __m256d first_x = _mm256_cvtepi32_pd(px_min), first_y = _mm256_cvtepi32_pd(py_min);
+        const __m256d steps_x = _mm256_cvtepi32_pd(_mm_sub_epi32(px_max, px_min));
+        const __m256d steps_y = _mm256_cvtepi32_pd(_mm_sub_epi32(py_max, py_min));
+        const __m256d limit = _mm256_set1_pd(0x1p50);
+        const __m256d half = _mm256_set1_pd(double(kSubpixelScale / 2));
+        const __m256d scale = _mm256_set1_pd(double(kSubpixelScale));
+        for (int e = 0; e < 3; ++e) {
+            // The raw edge function at the centre of pixel (0, 0) and its steps, in double from
+            // the snapped corners: exact while the products stay below 2^53 (the limit test
+            // below keeps the edge otherwise).
+            const int j = (e + 1) % 3;
+            const __m256d dx = _mm256_cvtepi32_pd(_mm_sub_epi32(fx[j], fx[e]));
+            const __m256d dy = _mm256_cvtepi32_pd(_mm_sub_epi32(fy[j], fy[e]));
+            const __m256d origin =
+                _mm256_sub_pd(_mm256_mul_pd(dx, _mm256_sub_pd(half, _mm256_cvtepi32_pd(fy[e]))),
+                              _mm256_mul_pd(dy, _mm256_sub_pd(half, _mm256_cvtepi32_pd(fx[e]))));
+            const __m256d sxd = _mm256_mul_pd(_mm256_sub_pd(zero, dy), scale);
+            const __m256d syd = _mm256_mul_pd(dx, scale);
+            const __m256d columns =
+                _mm256_cmp_pd(_mm256_andnot_pd(sign, syd), _mm256_andnot_pd(sign, sxd), _CMP_GE_OQ);
+            const __m256d along = _mm256_blendv_pd(syd, sxd, columns);
+            const __m256d cross = _mm256_blendv_pd(sxd, syd, columns);
+            const __m256d first = _mm256_blendv_pd(first_y, first_x, columns);
+            const __m256d last_step = _mm256_blendv_pd(steps_y, steps_x, columns); // steps - 1
+            const __m256d start = _mm256_add_pd(origin, _mm256_mul_pd(first, along));
+            const __m256d bound = _mm256_add_pd(margin[e], _mm256_set1_pd(1.0));
+            const __m256d inverse = _mm256_div_pd(_mm256_set1_pd(1.0), cross);
+            // Kept without screening: too many steps, a wide band, values beyond the limit.
+            const __m256d largest = _mm256_add_pd(
+                _mm256_add_pd(_mm256_andnot_pd(sign, start),
+                              _mm256_mul_pd(_mm256_andnot_pd(sign, along), last_step)),
+                _mm256_andnot_pd(sign, cross));
+            __m256d may = _mm256_or_pd(
+                _mm256_or_pd(_mm256_cmp_pd(last_step, _mm256_set1_pd(kScreenSteps - 1), _CMP_GT_OQ),
+                             _mm256_cmp_pd(_mm256_andnot_pd(sign, cross),
+                                           _mm256_mul_pd(_mm256_set1_pd(2.0), margin[e]),
+                                           _CMP_LE_OQ)),
+                _mm256_cmp_pd(largest, limit, _CMP_NLT_UQ));
+            alignas(32) double lasts[4];
+            _mm256_store_pd(lasts, last_step);
+            const int steps = int(std::min<double>(
+                kScreenSteps - 1, std::max({lasts[0], lasts[1], lasts[2], lasts[3]}) + 0));
+            __m256d value = start;
+            for (int i = 0; i <= steps; ++i) {
+                const __m256d active =
+                    _mm256_cmp_pd(_mm256_set1_pd(double(i)), last_step, _CMP_LE_OQ);
+                const __m256d k = _mm256_round_pd(_mm256_mul_pd(value, inverse),
+                                                  _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
+                const __m256d remainder = _mm256_sub_pd(value, _mm256_mul_pd(k, cross));
+                may = _mm256_or_pd(
+                    may, _mm256_and_pd(active, _mm256_cmp_pd(_mm256_andnot_pd(sign, remainder),
+                                                             bound, _CMP_LE_OQ)));
+                value = _mm256_add_pd(value, along);
+            }
+            band_may[e] = may;
+        }
+    }
+
     alignas(32) int64_t edge_out[3][4], step_x_out[3][4], step_y_out[3][4];
     alignas(32) double plane[5][4], vertex[3][3][4]; // vertex[corner][x, y, d][lane]
+    alignas(32) double margins_out[3][4], error_out[4], may_out[3][4];
+    for (int e = 0; e < 3; ++e) {
+        _mm256_store_pd(margins_out[e], margin[e]);
+        _mm256_store_pd(may_out[e], band_may[e]);
+    }
+    _mm256_store_pd(error_out, error);
     alignas(16) int32_t bounds[4][4], empty[4], okay[4], flat[4];
     alignas(32) int64_t planar[4];
     _mm256_store_si256(reinterpret_cast<__m256i*>(planar), _mm256_castpd_si256(has_det));
@@ -240,11 +377,19 @@ VISSORT_AVX2 void setupQuadAvx2(const Matrix4& m, const float* x, const float* y
             s.edge_step_x[e] = step_x_out[e][l];
             s.edge_step_y[e] = step_y_out[e][l];
         }
-        const std::array<int64_t, 3> margins =
-            marginsFromSteps(s.edge_step_x, s.edge_step_y, errors);
+        std::array<int64_t, 3> margins;
+        if (integer_margins)
+            for (int e = 0; e < 3; ++e)
+                margins[e] = int64_t(margins_out[e][l]);
+        else
+            margins = marginsFromSteps(s.edge_step_x, s.edge_step_y, errors);
+        s.band_edges = integer_margins ? FastSetup::kBandScreened : 0;
         for (int e = 0; e < 3; ++e) {
             s.margin[e] = margins[e];
             s.edge_at_origin[e] = edge_out[e][l] - margins[e];
+            // The screen used the integer margins; otherwise every edge is walked.
+            if (!integer_margins || may_out[e][l] != 0)
+                s.band_edges |= uint8_t(1u << e);
         }
         s.flat = false;
         s.x0 = plane[0][l];
@@ -259,8 +404,7 @@ VISSORT_AVX2 void setupQuadAvx2(const Matrix4& m, const float* x, const float* y
         const ScreenVertex v[3] = {{vertex[0][0][l], vertex[0][1][l], vertex[0][2][l]},
                                    {vertex[1][0][l], vertex[1][1][l], vertex[1][2][l]},
                                    {vertex[2][0][l], vertex[2][1][l], vertex[2][2][l]}};
-        const double extent = double(std::max(s.px_max - s.px_min, s.py_max - s.py_min) + 1);
-        s.error = fragmentError(v, s.ddx, s.ddy, extent, errors);
+        s.error = error_out[l];
         for (int k = 0; k < 3; ++k) {
             s.ux[k] = v[k].x;
             s.uy[k] = v[k].y;

@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -76,6 +78,14 @@ bool sameBits(const FastSetup& a, const FastSetup& b) {
            a.py_min == b.py_min && a.py_max == b.py_max && a.narrow == b.narrow;
 }
 
+// A set-up's band pixels, sorted.
+std::vector<std::pair<uint32_t, uint32_t>> bandPixels(const FastSetup& s) {
+    std::vector<std::pair<uint32_t, uint32_t>> pixels;
+    forEachFastBandPixel(s, [&](uint32_t px, uint32_t py) { pixels.push_back({px, py}); });
+    std::sort(pixels.begin(), pixels.end());
+    return pixels;
+}
+
 TEST(FastSetup, Avx2QuadsMatchTheScalarSetup) {
     bool uses_simd = false;
     selectRowKernels(true, uses_simd); // the same run-time check FastCpuOracle makes
@@ -93,7 +103,7 @@ TEST(FastSetup, Avx2QuadsMatchTheScalarSetup) {
     bounds.add({1, 1, 1});
     const uint32_t sizes[][2] = {{1, 1},     {3, 5},       {17, 13},
                                  {640, 480}, {1920, 1080}, {65536, 65536}};
-    std::size_t ready = 0, empty = 0, scalar_by_kind[5] = {};
+    std::size_t ready = 0, empty = 0, scalar_by_kind[5] = {}, screened_edges = 0;
     for (Projection projection : {Projection::perspective, Projection::orthographic})
         for (const auto& size : sizes) {
             CameraSpec spec;
@@ -122,6 +132,10 @@ TEST(FastSetup, Avx2QuadsMatchTheScalarSetup) {
                         ASSERT_EQ(expected.size(), 1u);
                         out[l].narrow = edgesFitInt32(out[l]);
                         ASSERT_TRUE(sameBits(expected[0], out[l]));
+                        // The batch's band screen keeps every edge with a band pixel: the same
+                        // pixels as the scalar set-up's, which walks all three.
+                        ASSERT_EQ(bandPixels(out[l]), bandPixels(expected[0]));
+                        screened_edges += 3 - std::popcount(unsigned(out[l].band_edges & 7));
                         break;
                     case LaneSetup::empty:
                         ++empty;
@@ -137,6 +151,7 @@ TEST(FastSetup, Avx2QuadsMatchTheScalarSetup) {
     // Every outcome happened; the batch finished every triangle that needs no clipping (triangle
     // i is of kind i % 5) and handed back the ones that do.
     EXPECT_GT(ready, 20000u);
+    EXPECT_GT(screened_edges, 10000u); // the screen skips most edges
     EXPECT_GT(empty, 10000u);
     // An inside triangle whose snapped corners are collinear (no snapped area: on the smallest
     // viewports) goes back too.
@@ -182,6 +197,7 @@ TEST(FastSetup, BandPixelsAreTheReferences) {
             return false;
         });
         FastSetup fast{};
+        fast.band_edges = 7;
         constexpr int64_t half = kSubpixelScale / 2;
         for (int e = 0; e < 3; ++e) {
             const int j = (e + 1) % 3;
