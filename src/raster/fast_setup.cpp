@@ -155,7 +155,8 @@ void appendFastSetups(const Matrix4& clip, PositionsView positions, std::size_t 
         for (int e = 0; e < 3; ++e)
             s.margin[e] = conservative ? 0 : ts.margin[e];
         s.flat = ts.flat;
-        s.band_edges = 7;
+        s.band_walk = 7;
+        s.screen_hit_count = 0;
         // Conservative: every square the grown box touches, as setupConservative computed.
         s.px_min = int32_t(ts.px_min);
         s.px_max = int32_t(ts.px_max);

@@ -30,11 +30,18 @@ struct FastSetup {
     double error;                // TriangleSetup::error: the exact rule's bound (not conservative)
     int64_t margin[3];           // TriangleSetup::margin (0 in conservative mode)
     bool flat;                   // TriangleSetup::flat
-    // The edges that may have band pixels (bit e: edge e), and in bit 3 whether the batch
-    // set-up's quick screen chose them (all three otherwise, screened when walked):
-    // forEachFastBandPixel walks only these.
-    uint8_t band_edges;
-    static constexpr uint8_t kBandScreened = 8;
+    // The exact rule's band, as forEachFastBandPixel finds it: the edges it walks (bit e: edge
+    // e), and the centres within the margin of the others (every one of them), which the batch
+    // set-up's screen found exactly: at most kMaxScreenHits (where it finds more, it hands the
+    // edges that had them to the walk instead).
+    uint8_t band_walk;
+    uint8_t screen_hit_count;
+    struct ScreenHit {
+        uint16_t px, py;
+        uint8_t edge;
+    };
+    static constexpr int kMaxScreenHits = 4;
+    ScreenHit screen_hits[kMaxScreenHits];
     // For the band decisions at bind (screenCoverage), not kept: the unsnapped corners in edge
     // order, whether this fan triangle is its whole triangle (clipping cut nothing), and the
     // least and greatest corner depth.
@@ -137,9 +144,14 @@ template <class Visit> void forEachFastBandPixel(const FastSetup& s, Visit&& vis
         }
         return true;
     };
+    for (int h = 0; h < s.screen_hit_count; ++h) {
+        const FastSetup::ScreenHit& hit = s.screen_hits[h];
+        if (take(hit.edge, hit.px, hit.py))
+            visit(uint32_t(hit.px), uint32_t(hit.py));
+    }
     for (int e = 0; e < edges; ++e) {
-        if ((s.band_edges & (1u << e)) == 0)
-            continue; // screened: no centre within its margin
+        if ((s.band_walk & (1u << e)) == 0)
+            continue; // screened: its centres are among the hits
         const int64_t m = s.margin[e];
         const int64_t step_x = s.edge_step_x[e], step_y = s.edge_step_y[e];
         // Walk the edge along its major axis, a column (or row) at a time, keeping the row (or
@@ -153,8 +165,7 @@ template <class Visit> void forEachFastBandPixel(const FastSetup& s, Visit&& vis
         const int64_t low = columns ? s.py_min : s.px_min, high = columns ? s.py_max : s.px_max;
         if (cross_size > 2 * m) {
             const int64_t start = columns ? edgeAt(e, first, 0) : edgeAt(e, 0, first);
-            if ((s.band_edges & FastSetup::kBandScreened) == 0 &&
-                !mayHaveBand(start, along, cross, m, last - first + 1))
+            if (!mayHaveBand(start, along, cross, m, last - first + 1))
                 continue;
             BandHit hits[kMaxBandHits];
             int found = 0;

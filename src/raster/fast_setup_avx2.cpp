@@ -254,11 +254,16 @@ VISSORT_AVX2 void setupQuadAvx2(const Matrix4& m, const float* x, const float* y
     }
 
     // The band screen of forEachFastBandPixel (fast_setup.h), per edge: along its major axis,
-    // does any step's edge function come within the margin (+1) of a multiple of the cross step?
-    // In double, exact while the values stay below 2^50; a lane that does not fit, has more than
-    // kScreenSteps steps or a wide band keeps its edge (the exact walk decides).
+    // at each step the nearest multiple of the cross step, and whether the edge function there
+    // is within the margin: the band centres of that edge, found exactly. In double: the values
+    // are integers below 2^50, so every value and remainder is exact, and with the cross step
+    // above 2 m the rounded quotient is the nearest multiple wherever the remainder is within m
+    // (it is off by at most 2^50 / |cross| 2^-52 of a step, less than the 1 / (2 |cross|) that
+    // separates such a quotient from a half). A lane with more than kScreenSteps steps, a wide
+    // band or values beyond the limit walks that edge instead.
     constexpr int kScreenSteps = 64;
-    __m256d band_may[3];
+    uint8_t walk_edges[4] = {}, hit_edges[4] = {}, hit_count[4] = {};
+    FastSetup::ScreenHit hits[4][FastSetup::kMaxScreenHits];
     {
         const __m256d first_x = _mm256_cvtepi32_pd(px_min), first_y = _mm256_cvtepi32_pd(py_min);
         const __m256d steps_x = _mm256_cvtepi32_pd(_mm_sub_epi32(px_max, px_min));
@@ -266,10 +271,15 @@ VISSORT_AVX2 void setupQuadAvx2(const Matrix4& m, const float* x, const float* y
         const __m256d limit = _mm256_set1_pd(0x1p50);
         const __m256d half = _mm256_set1_pd(double(kSubpixelScale / 2));
         const __m256d scale = _mm256_set1_pd(double(kSubpixelScale));
+        alignas(16) int32_t first_px[4], first_py[4], last_px[4], last_py[4];
+        _mm_store_si128(reinterpret_cast<__m128i*>(first_px), px_min);
+        _mm_store_si128(reinterpret_cast<__m128i*>(first_py), py_min);
+        _mm_store_si128(reinterpret_cast<__m128i*>(last_px), px_max);
+        _mm_store_si128(reinterpret_cast<__m128i*>(last_py), py_max);
         for (int e = 0; e < 3; ++e) {
             // The raw edge function at the centre of pixel (0, 0) and its steps, in double from
             // the snapped corners: exact while the products stay below 2^53 (the limit test
-            // below keeps the edge otherwise).
+            // below walks the edge otherwise).
             const int j = (e + 1) % 3;
             const __m256d dx = _mm256_cvtepi32_pd(_mm_sub_epi32(fx[j], fx[e]));
             const __m256d dy = _mm256_cvtepi32_pd(_mm_sub_epi32(fy[j], fy[e]));
@@ -285,46 +295,70 @@ VISSORT_AVX2 void setupQuadAvx2(const Matrix4& m, const float* x, const float* y
             const __m256d first = _mm256_blendv_pd(first_y, first_x, columns);
             const __m256d last_step = _mm256_blendv_pd(steps_y, steps_x, columns); // steps - 1
             const __m256d start = _mm256_add_pd(origin, _mm256_mul_pd(first, along));
-            const __m256d bound = _mm256_add_pd(margin[e], _mm256_set1_pd(1.0));
             const __m256d inverse = _mm256_div_pd(_mm256_set1_pd(1.0), cross);
-            // Kept without screening: too many steps, a wide band, values beyond the limit.
+            // Walked instead: too many steps, a wide band, values beyond the limit.
             const __m256d largest = _mm256_add_pd(
                 _mm256_add_pd(_mm256_andnot_pd(sign, start),
                               _mm256_mul_pd(_mm256_andnot_pd(sign, along), last_step)),
                 _mm256_andnot_pd(sign, cross));
-            __m256d may = _mm256_or_pd(
+            const __m256d walk = _mm256_or_pd(
                 _mm256_or_pd(_mm256_cmp_pd(last_step, _mm256_set1_pd(kScreenSteps - 1), _CMP_GT_OQ),
                              _mm256_cmp_pd(_mm256_andnot_pd(sign, cross),
                                            _mm256_mul_pd(_mm256_set1_pd(2.0), margin[e]),
                                            _CMP_LE_OQ)),
                 _mm256_cmp_pd(largest, limit, _CMP_NLT_UQ));
+            const int walk_mask = _mm256_movemask_pd(walk);
+            const int column_mask = _mm256_movemask_pd(columns);
+            for (int l = 0; l < 4; ++l)
+                walk_edges[l] |= uint8_t(((walk_mask >> l) & 1) << e);
+            // The screened lanes' steps: i <= last_step.
+            const __m256d screened_steps = _mm256_blendv_pd(last_step, _mm256_set1_pd(-1.0), walk);
             alignas(32) double lasts[4];
-            _mm256_store_pd(lasts, last_step);
-            const int steps = int(std::min<double>(
-                kScreenSteps - 1, std::max({lasts[0], lasts[1], lasts[2], lasts[3]}) + 0));
+            _mm256_store_pd(lasts, screened_steps);
+            const int steps = int(std::max({lasts[0], lasts[1], lasts[2], lasts[3]}));
             __m256d value = start;
             for (int i = 0; i <= steps; ++i) {
                 const __m256d active =
-                    _mm256_cmp_pd(_mm256_set1_pd(double(i)), last_step, _CMP_LE_OQ);
+                    _mm256_cmp_pd(_mm256_set1_pd(double(i)), screened_steps, _CMP_LE_OQ);
                 const __m256d k = _mm256_round_pd(_mm256_mul_pd(value, inverse),
                                                   _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
                 const __m256d remainder = _mm256_sub_pd(value, _mm256_mul_pd(k, cross));
-                may = _mm256_or_pd(
-                    may, _mm256_and_pd(active, _mm256_cmp_pd(_mm256_andnot_pd(sign, remainder),
-                                                             bound, _CMP_LE_OQ)));
+                const int hit_mask = _mm256_movemask_pd(
+                    _mm256_and_pd(active, _mm256_cmp_pd(_mm256_andnot_pd(sign, remainder),
+                                                        margin[e], _CMP_LE_OQ)));
                 value = _mm256_add_pd(value, along);
+                if (hit_mask == 0)
+                    continue;
+                // Rare (a centre within about a hundredth of a pixel of the edge): E is the
+                // remainder at cross index -k, a centre inside the bounds or none.
+                alignas(32) double at[4];
+                _mm256_store_pd(at, k);
+                for (int l = 0; l < 4; ++l) {
+                    if ((hit_mask >> l & 1) == 0)
+                        continue;
+                    const bool by_columns = (column_mask >> l & 1) != 0;
+                    const int64_t across = -int64_t(at[l]);
+                    const int64_t low = by_columns ? first_py[l] : first_px[l];
+                    const int64_t high = by_columns ? last_py[l] : last_px[l];
+                    if (across < low || across > high)
+                        continue;
+                    hit_edges[l] |= uint8_t(1u << e);
+                    if (hit_count[l] < FastSetup::kMaxScreenHits) {
+                        const int64_t major = (by_columns ? first_px[l] : first_py[l]) + i;
+                        hits[l][hit_count[l]] = {uint16_t(by_columns ? major : across),
+                                                 uint16_t(by_columns ? across : major), uint8_t(e)};
+                    }
+                    ++hit_count[l]; // past kMaxScreenHits: the edges with hits are walked
+                }
             }
-            band_may[e] = may;
         }
     }
 
     alignas(32) int64_t edge_out[3][4], step_x_out[3][4], step_y_out[3][4];
     alignas(32) double plane[5][4], vertex[3][3][4]; // vertex[corner][x, y, d][lane]
-    alignas(32) double margins_out[3][4], error_out[4], may_out[3][4];
-    for (int e = 0; e < 3; ++e) {
+    alignas(32) double margins_out[3][4], error_out[4];
+    for (int e = 0; e < 3; ++e)
         _mm256_store_pd(margins_out[e], margin[e]);
-        _mm256_store_pd(may_out[e], band_may[e]);
-    }
     _mm256_store_pd(error_out, error);
     alignas(16) int32_t bounds[4][4], empty[4], okay[4], flat[4];
     alignas(32) int64_t planar[4];
@@ -383,14 +417,15 @@ VISSORT_AVX2 void setupQuadAvx2(const Matrix4& m, const float* x, const float* y
                 margins[e] = int64_t(margins_out[e][l]);
         else
             margins = marginsFromSteps(s.edge_step_x, s.edge_step_y, errors);
-        s.band_edges = integer_margins ? FastSetup::kBandScreened : 0;
         for (int e = 0; e < 3; ++e) {
             s.margin[e] = margins[e];
             s.edge_at_origin[e] = edge_out[e][l] - margins[e];
-            // The screen used the integer margins; otherwise every edge is walked.
-            if (!integer_margins || may_out[e][l] != 0)
-                s.band_edges |= uint8_t(1u << e);
         }
+        // The screen used the integer margins; otherwise every edge is walked.
+        const bool hits_kept = integer_margins && hit_count[l] <= FastSetup::kMaxScreenHits;
+        s.band_walk = !integer_margins ? 7 : walk_edges[l] | (hits_kept ? 0 : hit_edges[l]);
+        s.screen_hit_count = hits_kept ? hit_count[l] : 0;
+        std::copy_n(hits[l], s.screen_hit_count, s.screen_hits);
         s.flat = false;
         s.x0 = plane[0][l];
         s.y0 = plane[1][l];

@@ -135,7 +135,7 @@ TEST(FastSetup, Avx2QuadsMatchTheScalarSetup) {
                         // The batch's band screen keeps every edge with a band pixel: the same
                         // pixels as the scalar set-up's, which walks all three.
                         ASSERT_EQ(bandPixels(out[l]), bandPixels(expected[0]));
-                        screened_edges += 3 - std::popcount(unsigned(out[l].band_edges & 7));
+                        screened_edges += 3 - std::popcount(unsigned(out[l].band_walk));
                         break;
                     case LaneSetup::empty:
                         ++empty;
@@ -197,7 +197,7 @@ TEST(FastSetup, BandPixelsAreTheReferences) {
             return false;
         });
         FastSetup fast{};
-        fast.band_edges = 7;
+        fast.band_walk = 7;
         constexpr int64_t half = kSubpixelScale / 2;
         for (int e = 0; e < 3; ++e) {
             const int j = (e + 1) % 3;
