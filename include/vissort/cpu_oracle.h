@@ -142,7 +142,8 @@ private:
     std::vector<float> error_; // per pixel, the largest error bound drawn there since the clear
     // What the exact rule needs: the world corners (the bind's view of them), the exact model
     // and its arbitration, the bind's screen errors, each triangle's pixel bounds (x_min > x_max
-    // when it has none), and the primitives drawn since the clear (each once).
+    // when it has none; current where its stamp is the bind's number, made by boundsOf on first
+    // need), and the primitives drawn since the clear (each once).
     PositionsView positions_;
     std::unique_ptr<detail::DepthArbiter> arbiter_;
     double screen_position_error_ = 0, screen_depth_error_ = 0; // detail::ScreenErrors
@@ -150,6 +151,9 @@ private:
         int32_t x_min, x_max, y_min, y_max;
     };
     std::vector<PixelBounds> triangle_bounds_;
+    std::vector<uint32_t> bounds_stamps_;
+    uint32_t bind_number_ = 0;
+    const PixelBounds& boundsOf(uint32_t triangle);
     std::vector<uint32_t> drawn_;
     std::vector<uint8_t> is_drawn_;
     CpuOracleStats stats_;

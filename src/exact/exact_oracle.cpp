@@ -39,7 +39,7 @@ void ExactOracle::bind(PositionsView positions, const ViewProjection& view,
         }
     }
 
-    const detail::AllHits hits = detail::castAllHits(positions, view, thread_count_);
+    const detail::AllHits hits = detail::castHitsOf(positions, primitives, view, thread_count_);
 
     // Two passes over the hits: count each primitive's fragments, then fill them. Within a
     // pixel the hits are sorted by depth, so a primitive's first hit there is its nearest.

@@ -63,6 +63,7 @@ struct CandidateCollector {
     const PixelRay* ray;
     const ExactFragments* model;
     PositionsView positions;
+    const uint32_t* triangles; // the triangle of each primitive id, or null: the id is it
     std::vector<uint32_t>* candidates;
 };
 
@@ -71,9 +72,11 @@ void recordCovering(const RTCIntersectFunctionNArguments* args) {
     if (!args->valid[0])
         return;
     auto* collector = reinterpret_cast<CandidateCollector*>(args->context);
-    const TriangleCorners corners = TriangleCorners::of(collector->positions, args->primID);
+    const uint32_t triangle =
+        collector->triangles != nullptr ? collector->triangles[args->primID] : args->primID;
+    const TriangleCorners corners = TriangleCorners::of(collector->positions, triangle);
     if (collector->model->covers(*collector->ray, corners))
-        collector->candidates->push_back(args->primID);
+        collector->candidates->push_back(triangle);
     // No hit is committed: tfar stays infinite and every later triangle is still proposed.
 }
 
@@ -81,11 +84,16 @@ void recordCovering(const RTCIntersectFunctionNArguments* args) {
 struct BoundsData {
     PositionsView positions;
     float margin;
+    std::span<const uint32_t> triangles; // the triangle of each primitive id; empty: all of them
+    uint32_t count() const {
+        return uint32_t(triangles.empty() ? positions.triangleCount() : triangles.size());
+    }
 };
 
 void triangleBounds(const RTCBoundsFunctionArguments* args) {
     const auto* data = static_cast<const BoundsData*>(args->geometryUserPtr);
-    const std::size_t first = 3 * std::size_t(args->primID);
+    const std::size_t first =
+        3 * std::size_t(data->triangles.empty() ? args->primID : data->triangles[args->primID]);
     RTCBounds& box = *args->bounds_o;
     float lower[3] = {0, 0, 0}, upper[3] = {0, 0, 0};
     bool finite = true;
@@ -120,7 +128,7 @@ float boxMargin(PositionsView positions, const ViewProjection& view) {
 
 void addTriangles(RTCDevice device, RTCScene scene, BoundsData& bounds) {
     RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
-    rtcSetGeometryUserPrimitiveCount(geometry, unsigned(bounds.positions.triangleCount()));
+    rtcSetGeometryUserPrimitiveCount(geometry, bounds.count());
     rtcSetGeometryUserData(geometry, &bounds);
     rtcSetGeometryBoundsFunction(geometry, triangleBounds, nullptr);
     rtcSetGeometryIntersectFunction(geometry, recordCovering);
@@ -179,10 +187,11 @@ struct RowBlock {
 
 class BlockCaster {
 public:
-    BlockCaster(RTCScene scene, PositionsView positions, const ExactFragments& model,
-                const ViewProjection& view, bool mark_near_edges)
-        : scene_(scene), positions_(positions), model_(model), depth_of_(view), width_(view.width),
-          mark_near_edges_(mark_near_edges) {}
+    BlockCaster(RTCScene scene, PositionsView positions, std::span<const uint32_t> triangles,
+                const ExactFragments& model, const ViewProjection& view, bool mark_near_edges)
+        : scene_(scene), positions_(positions),
+          triangles_(triangles.empty() ? nullptr : triangles.data()), model_(model),
+          depth_of_(view), width_(view.width), mark_near_edges_(mark_near_edges) {}
 
     void cast(uint32_t first_row, uint32_t end_row, RowBlock& block) {
         block.hit_counts.clear();
@@ -208,6 +217,7 @@ private:
         collector.ray = &ray;
         collector.model = &model_;
         collector.positions = positions_;
+        collector.triangles = triangles_;
         collector.candidates = &into;
 
         RTCRayHit ray_hit{};
@@ -312,6 +322,7 @@ private:
 
     RTCScene scene_;
     PositionsView positions_;
+    const uint32_t* triangles_; // CandidateCollector::triangles
     const ExactFragments& model_;
     DepthFunction depth_of_;
     uint32_t width_;
@@ -325,10 +336,9 @@ constexpr uint32_t kRowsPerBlock = 4;
 // Below this many pixels, starting threads costs more than it saves.
 constexpr std::size_t kParallelThreshold = 64 * 64;
 
-} // namespace
-
-AllHits castAllHits(PositionsView positions, const ViewProjection& view, unsigned thread_count,
-                    bool mark_near_edges) {
+// castAllHits over the triangles listed (empty: every triangle of positions).
+AllHits castHits(PositionsView positions, std::span<const uint32_t> triangles,
+                 const ViewProjection& view, unsigned thread_count, bool mark_near_edges) {
     assert(positions.x.size() == positions.y.size() && positions.x.size() == positions.z.size());
     assert(positions.x.size() % 3 == 0);
     assert(positions.triangleCount() < std::numeric_limits<uint32_t>::max());
@@ -339,12 +349,14 @@ AllHits castAllHits(PositionsView positions, const ViewProjection& view, unsigne
     result.offsets.assign(result.pixelCount() + 1, 0);
     if (positions.triangleCount() == 0 || result.pixelCount() == 0)
         return result;
+    assert(std::all_of(triangles.begin(), triangles.end(),
+                       [&](uint32_t t) { return t < positions.triangleCount(); }));
 
     const RTCDevice device = sharedDevice();
     EmbreeScene scene(rtcNewScene(device));
     rtcSetSceneFlags(scene.get(), RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(scene.get(), RTC_BUILD_QUALITY_HIGH);
-    BoundsData bounds{positions, boxMargin(positions, view)};
+    BoundsData bounds{positions, boxMargin(positions, view), triangles};
     addTriangles(device, scene.get(), bounds);
     rtcCommitScene(scene.get());
     if (const RTCError error = rtcGetDeviceError(device); error != RTC_ERROR_NONE)
@@ -356,7 +368,7 @@ AllHits castAllHits(PositionsView positions, const ViewProjection& view, unsigne
     std::atomic<uint32_t> next_block{0};
     const ExactFragments model(view);
     const auto work = [&] {
-        BlockCaster caster(scene.get(), positions, model, view, mark_near_edges);
+        BlockCaster caster(scene.get(), positions, triangles, model, view, mark_near_edges);
         for (uint32_t b = next_block++; b < block_count; b = next_block++) {
             caster.cast(b * kRowsPerBlock, std::min(view.height, (b + 1) * kRowsPerBlock),
                         blocks[b]);
@@ -402,6 +414,25 @@ AllHits castAllHits(PositionsView positions, const ViewProjection& view, unsigne
     }
     assert(pixel == result.pixelCount());
     return result;
+}
+
+} // namespace
+
+AllHits castAllHits(PositionsView positions, const ViewProjection& view, unsigned thread_count,
+                    bool mark_near_edges) {
+    return castHits(positions, {}, view, thread_count, mark_near_edges);
+}
+
+AllHits castHitsOf(PositionsView positions, std::span<const PrimitiveRange> ranges,
+                   const ViewProjection& view, unsigned thread_count) {
+    std::vector<uint32_t> triangles;
+    for (const PrimitiveRange& range : ranges)
+        for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count;
+             ++t)
+            triangles.push_back(t);
+    if (triangles.empty()) // none: an empty list would mean all
+        return castHits(PositionsView{}, {}, view, thread_count, false);
+    return castHits(positions, triangles, view, thread_count, false);
 }
 
 } // namespace vissort::detail

@@ -62,4 +62,10 @@ struct AllHits {
 AllHits castAllHits(PositionsView positions, const ViewProjection& view, unsigned thread_count = 0,
                     bool mark_near_edges = false);
 
+/// castAllHits over the triangles of ranges only (the others are not there): what an oracle bound
+/// to some of the triangles needs (a multi-stage frame binds each group's). Ranks order the
+/// hits among those triangles.
+AllHits castHitsOf(PositionsView positions, std::span<const PrimitiveRange> ranges,
+                   const ViewProjection& view, unsigned thread_count = 0);
+
 } // namespace vissort::detail

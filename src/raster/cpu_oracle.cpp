@@ -49,25 +49,15 @@ void CpuOracle::bind(PositionsView positions, const ViewProjection& view,
     const detail::ScreenErrors errors = detail::screenErrorsOf(m, view, positions, primitives);
     screen_position_error_ = errors.position_px;
     screen_depth_error_ = errors.depth;
-    // Each triangle's pixel bounds, the union of its fan triangles': where the exact rule's
-    // arbitration looks for it.
-    triangle_bounds_.assign(positions.triangleCount(), PixelBounds{1, 0, 1, 0});
-    if (mode_ == RasterMode::exact)
-        for (std::size_t t = 0; t < positions.triangleCount(); ++t) {
-            PixelBounds& b = triangle_bounds_[t];
-            b = {int32_t(width_), -1, int32_t(height_), -1};
-            detail::forEachFanTriangle(
-                toClipVertex(corners_[3 * t]), toClipVertex(corners_[3 * t + 1]),
-                toClipVertex(corners_[3 * t + 2]), width_, height_, false,
-                [&](const detail::TriangleSetup& s) {
-                    b.x_min = std::min(b.x_min, int32_t(s.px_min));
-                    b.x_max = std::max(b.x_max, int32_t(s.px_max));
-                    b.y_min = std::min(b.y_min, int32_t(s.py_min));
-                    b.y_max = std::max(b.y_max, int32_t(s.py_max));
-                    return false;
-                },
-                errors);
-        }
+    // Each triangle's pixel bounds (where the exact rule's arbitration looks for it) are made on
+    // first need after each bind: a multi-stage frame binds once per group, and arbitrations
+    // are rare.
+    bounds_stamps_.resize(positions.triangleCount(), 0);
+    if (++bind_number_ == 0) { // wrapped: every stamp is stale
+        std::fill(bounds_stamps_.begin(), bounds_stamps_.end(), 0);
+        bind_number_ = 1;
+    }
+    triangle_bounds_.resize(positions.triangleCount());
     depth_.resize(std::size_t(width_) * height_);
     error_.resize(depth_.size());
     is_drawn_.assign(primitives_.size(), 0);
@@ -216,6 +206,27 @@ bool CpuOracle::anyBehindExact(uint32_t primitive) {
     return false;
 }
 
+const CpuOracle::PixelBounds& CpuOracle::boundsOf(uint32_t t) {
+    PixelBounds& b = triangle_bounds_[t];
+    if (bounds_stamps_[t] == bind_number_)
+        return b;
+    bounds_stamps_[t] = bind_number_;
+    b = {int32_t(width_), -1, int32_t(height_), -1};
+    const detail::ScreenErrors errors{screen_position_error_, screen_depth_error_};
+    detail::forEachFanTriangle(
+        toClipVertex(corners_[3 * t]), toClipVertex(corners_[3 * t + 1]),
+        toClipVertex(corners_[3 * t + 2]), width_, height_, false,
+        [&](const detail::TriangleSetup& s) {
+            b.x_min = std::min(b.x_min, int32_t(s.px_min));
+            b.x_max = std::max(b.x_max, int32_t(s.px_max));
+            b.y_min = std::min(b.y_min, int32_t(s.py_min));
+            b.y_max = std::max(b.y_max, int32_t(s.py_max));
+            return false;
+        },
+        errors);
+    return b;
+}
+
 bool CpuOracle::behindSomethingDrawn(uint32_t triangle, uint32_t px, uint32_t py) {
     ++stats_.arbitrations;
     const detail::DepthArbiter::Query query = arbiter_->query(triangle, px, py);
@@ -223,7 +234,7 @@ bool CpuOracle::behindSomethingDrawn(uint32_t triangle, uint32_t px, uint32_t py
         const PrimitiveRange range = primitives_[p];
         for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count;
              ++t) {
-            const PixelBounds& b = triangle_bounds_[t];
+            const PixelBounds& b = boundsOf(t);
             if (int32_t(px) >= b.x_min && int32_t(px) <= b.x_max && int32_t(py) >= b.y_min &&
                 int32_t(py) <= b.y_max && arbiter_->nearer(query, t))
                 return true;

@@ -86,7 +86,10 @@ int screenCoverage(const std::array<double, 3>& ux, const std::array<double, 3>&
     const double cx = double(px) + 0.5, cy = double(py) + 0.5;
     const double width = std::max({ux[0], ux[1], ux[2]}) - std::min({ux[0], ux[1], ux[2]});
     const double height = std::max({uy[0], uy[1], uy[2]}) - std::min({uy[0], uy[1], uy[2]});
-    int inside = 1;
+    // The closed triangle holds the centre iff its three edge values are all >= 0 or all <= 0,
+    // whichever way the corners turn: those of a sliver may turn the other way than its snapped
+    // corners, which the set-up oriented.
+    bool positive = false, negative = false, unsure = false;
     for (int i = 0; i < 3; ++i) {
         const int j = (i + 1) % 3;
         const double dx = ux[j] - ux[i], dy = uy[j] - uy[i];
@@ -99,12 +102,16 @@ int screenCoverage(const std::array<double, 3>& ux, const std::array<double, 3>&
         const double p = errors.position_px;
         const double bound = 2 * p * (std::abs(dx) + std::abs(dy) + width + height + 4) +
                              8 * p * p + 0x1p-48 * (std::abs(a) + std::abs(b)) + 1e-300;
-        if (!(std::abs(value) > bound))
-            inside = 0; // this edge cannot tell (NaN too)
-        else if (value < 0)
-            return -1; // outside this edge: not covered, whatever the others say
+        if (value > bound)
+            positive = true;
+        else if (value < -bound)
+            negative = true;
+        else
+            unsure = true; // this edge cannot tell (NaN too)
     }
-    return inside;
+    if (positive && negative)
+        return -1; // strictly on both sides of two edges: not covered
+    return unsure ? 0 : 1;
 }
 
 double fragmentError(const ScreenVertex v[3], double ddx, double ddy, double extent,

@@ -172,7 +172,8 @@ float decisionBand(double error, double stored_error);
 /// The exact rule's band decision in screen space, which settles almost every band pixel without
 /// the exact model: +1 when pixel (px, py)'s centre lies inside the triangle with unsnapped
 /// corners (ux, uy) by more than the screen error and the rounding can move it (so inside the
-/// exact model's triangle), -1 when it lies outside one edge by that much, 0 when it cannot
+/// exact model's triangle), -1 when it lies that far outside (strictly on the inner side of one
+/// edge and the outer side of another: the corners may turn either way), 0 when it cannot
 /// tell. Valid for a fan triangle that is a whole triangle (not clipped): its edges are the
 /// original's.
 int screenCoverage(const std::array<double, 3>& ux, const std::array<double, 3>& uy, uint32_t px,
