@@ -131,8 +131,12 @@ private:
     void drawExact(uint32_t primitive);
     bool anyBehindExact(uint32_t primitive);
     /// Whether triangle's fragment at pixel (px, py) lies strictly behind one of a triangle
-    /// drawn since the clear, by the exact model.
-    bool behindSomethingDrawn(uint32_t triangle, uint32_t px, uint32_t py);
+    /// drawn since the clear, by the exact model; `candidates` are the drawn triangles whose
+    /// bounds meet the triangle's (arbitrationCandidates), thinned here of those never nearer.
+    bool behindSomethingDrawn(uint32_t triangle, uint32_t px, uint32_t py,
+                              std::vector<uint32_t>& candidates);
+    /// The triangles drawn since the clear, other than triangle, whose pixel bounds meet its own.
+    std::vector<uint32_t> arbitrationCandidates(uint32_t triangle);
 
     RasterMode mode_;
     uint32_t width_ = 0, height_ = 0;

@@ -18,7 +18,8 @@ enum class OracleKind {
     cpu,           // "cpu": the tiled CPU rasterizer (fast_cpu_oracle.h), the default
     cpu_reference, // "cpu-reference": the plain rasterizer that defines the cpu answers
                    // (cpu_oracle.h); cpu gives identical answers, faster
-    exact,         // "exact": ray casting at pixel centres in double (exact_oracle.h)
+    exact,         // "exact": ray casting at pixel centres, decided by the exact fragment
+                   // model (exact_oracle.h)
     gl,            // "gl": OpenGL occlusion queries through headless EGL (gl_oracle.h)
 };
 

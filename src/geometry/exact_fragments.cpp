@@ -136,6 +136,33 @@ struct ExactHit {
     Rational s[3]; // the edge sides
 };
 
+// Two corners equal as stored: Q is 0 at every ray, so the triangle has no fragment. Files
+// with repeated indices (a fan over a polygon that revisits its corners) have thousands.
+bool hasRepeatedCorner(const TriangleCorners& t) {
+    const auto same = [](const float(&u)[3], const float(&v)[3]) {
+        return u[0] == v[0] && u[1] == v[1] && u[2] == v[2];
+    };
+    return same(t.p[0], t.p[1]) || same(t.p[1], t.p[2]) || same(t.p[2], t.p[0]);
+}
+
+// t = n / q exactly, without the edge sides: what ordering two fragments needs.
+struct ExactParameter {
+    Rational q, n;
+};
+
+ExactParameter exactParameter(const PixelRay& ray, const TriangleCorners& t) {
+    const Corners3 c = cornersOf(t);
+    double o[3], d[3];
+    toArray(ray.origin, o);
+    toArray(ray.direction, d);
+    const RationalVec ro = rational(o);
+    const RationalVec ra = rational(c.a), rb = rational(c.b), rc = rational(c.c);
+    ExactParameter h;
+    h.q = det3(rb - ra, rc - ra, rational(d));
+    h.n = det3(ra - ro, rb - ro, rc - ro);
+    return h;
+}
+
 ExactHit exactHit(const PixelRay& ray, const TriangleCorners& t) {
     const Corners3 c = cornersOf(t);
     double o[3], d[3];
@@ -154,6 +181,19 @@ ExactHit exactHit(const PixelRay& ray, const TriangleCorners& t) {
 }
 
 } // namespace
+
+bool TriangleCorners::sameCornersAs(const TriangleCorners& other) const {
+    const auto same = [](const float(&u)[3], const float(&v)[3]) {
+        return u[0] == v[0] && u[1] == v[1] && u[2] == v[2];
+    };
+    const auto within = [&](const TriangleCorners& a, const TriangleCorners& b) {
+        for (const auto& corner : a.p)
+            if (!same(corner, b.p[0]) && !same(corner, b.p[1]) && !same(corner, b.p[2]))
+                return false;
+        return true;
+    };
+    return within(*this, other) && within(other, *this);
+}
 
 TriangleCorners TriangleCorners::of(PositionsView positions, std::size_t triangle) {
     TriangleCorners t;
@@ -178,6 +218,8 @@ bool ExactFragments::covers(const PixelRay& ray, const TriangleCorners& triangle
     for (const auto& corner : triangle.p)
         if (!std::isfinite(corner[0]) || !std::isfinite(corner[1]) || !std::isfinite(corner[2]))
             return false; // such a triangle is never drawn
+    if (hasRepeatedCorner(triangle))
+        return false;
     const Corners3 c = cornersOf(triangle);
     double o[3], dir[3];
     toArray(ray.origin, o);
@@ -276,13 +318,15 @@ int ExactFragments::compare(const PixelRay& ray, const TriangleCorners& a, const
         if (difference != 0)
             return difference * qa * qb;
     }
+    if (a.sameCornersAs(b))
+        return 0;
     return compareExactly(ray, a, b);
 }
 
 int ExactFragments::compareExactly(const PixelRay& ray, const TriangleCorners& a,
                                    const TriangleCorners& b) const {
     exact_evaluations_.fetch_add(1, std::memory_order_relaxed);
-    const ExactHit ha = exactHit(ray, a), hb = exactHit(ray, b);
+    const ExactParameter ha = exactParameter(ray, a), hb = exactParameter(ray, b);
     return sgn(ha.n * hb.q - hb.n * ha.q) * sgn(ha.q) * sgn(hb.q);
 }
 

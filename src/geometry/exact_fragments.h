@@ -31,6 +31,10 @@ struct TriangleCorners {
     float p[3][3]; // p[corner][axis]
 
     static TriangleCorners of(PositionsView positions, std::size_t triangle);
+
+    /// The same three corners in any order: one plane, so a tie at every ray both meet.
+    /// Duplicated faces are common in real files.
+    bool sameCornersAs(const TriangleCorners& other) const;
 };
 
 /// A double and a bound on its distance from the exact value it stands for.

@@ -5,7 +5,9 @@
 #include "vissort/cpu_oracle.h"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
+#include <cmath>
 #include <limits>
 
 #include "raster/cpu_rasterizer.h"
@@ -200,10 +202,65 @@ bool CpuOracle::anyBehindExact(uint32_t primitive) {
         if (behind)
             return true;
     }
-    for (const Undecided& u : undecided)
-        if (behindSomethingDrawn(u.triangle, u.px, u.py))
+    // The undecided fragments come triangle by triangle: each triangle's candidates are made
+    // once, and thinned as pairs turn out never nearer (touching, coplanar and duplicated faces,
+    // where every pixel is undecided: a stack of copies must not cost the stack at each pixel).
+    std::vector<uint32_t> candidates;
+    uint32_t candidates_of = 0;
+    for (std::size_t i = 0; i < undecided.size(); ++i) {
+        const Undecided& u = undecided[i];
+        if (i == 0 || u.triangle != candidates_of) {
+            candidates = arbitrationCandidates(u.triangle);
+            candidates_of = u.triangle;
+        }
+        if (behindSomethingDrawn(u.triangle, u.px, u.py, candidates))
             return true;
+    }
     return false;
+}
+
+std::vector<uint32_t> CpuOracle::arbitrationCandidates(uint32_t triangle) {
+    const PixelBounds own = boundsOf(triangle);
+    std::vector<uint32_t> candidates;
+    for (uint32_t p : drawn_) {
+        const PrimitiveRange range = primitives_[p];
+        for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count;
+             ++t) {
+            const PixelBounds& b = boundsOf(t);
+            if (t != triangle && b.x_min <= own.x_max && own.x_min <= b.x_max &&
+                b.y_min <= own.y_max && own.y_min <= b.y_max)
+                candidates.push_back(t);
+        }
+    }
+    // Copies (the same corners) answer alike: one of each is enough, and none of the query's
+    // own. A triangle with a non-finite corner has no fragment (and would break the sort).
+    using Key = std::array<float, 9>;
+    const auto keyOf = [&](uint32_t t) {
+        const detail::TriangleCorners c = detail::TriangleCorners::of(positions_, t);
+        std::array<std::array<float, 3>, 3> corners{};
+        for (int k = 0; k < 3; ++k)
+            corners[k] = {c.p[k][0], c.p[k][1], c.p[k][2]};
+        std::sort(corners.begin(), corners.end());
+        Key key;
+        for (int k = 0; k < 9; ++k)
+            key[k] = corners[k / 3][k % 3];
+        return key;
+    };
+    const Key own_key = keyOf(triangle);
+    std::vector<std::pair<Key, uint32_t>> keyed;
+    keyed.reserve(candidates.size());
+    for (uint32_t t : candidates) {
+        const Key key = keyOf(t);
+        if (std::all_of(key.begin(), key.end(), [](float v) { return std::isfinite(v); }) &&
+            key != own_key)
+            keyed.push_back({key, t});
+    }
+    std::sort(keyed.begin(), keyed.end());
+    candidates.clear();
+    for (std::size_t i = 0; i < keyed.size(); ++i)
+        if (i == 0 || keyed[i].first != keyed[i - 1].first)
+            candidates.push_back(keyed[i].second);
+    return candidates;
 }
 
 const CpuOracle::PixelBounds& CpuOracle::boundsOf(uint32_t t) {
@@ -227,17 +284,27 @@ const CpuOracle::PixelBounds& CpuOracle::boundsOf(uint32_t t) {
     return b;
 }
 
-bool CpuOracle::behindSomethingDrawn(uint32_t triangle, uint32_t px, uint32_t py) {
+bool CpuOracle::behindSomethingDrawn(uint32_t triangle, uint32_t px, uint32_t py,
+                                     std::vector<uint32_t>& candidates) {
     ++stats_.arbitrations;
     const detail::DepthArbiter::Query query = arbiter_->query(triangle, px, py);
-    for (uint32_t p : drawn_) {
-        const PrimitiveRange range = primitives_[p];
-        for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count;
-             ++t) {
-            const PixelBounds& b = boundsOf(t);
-            if (int32_t(px) >= b.x_min && int32_t(px) <= b.x_max && int32_t(py) >= b.y_min &&
-                int32_t(py) <= b.y_max && arbiter_->nearer(query, t))
-                return true;
+    for (std::size_t i = 0; i < candidates.size();) {
+        const PixelBounds& b = boundsOf(candidates[i]);
+        if (int32_t(px) < b.x_min || int32_t(px) > b.x_max || int32_t(py) < b.y_min ||
+            int32_t(py) > b.y_max) {
+            ++i;
+            continue;
+        }
+        switch (arbiter_->nearness(query, candidates[i])) {
+        case detail::DepthArbiter::Nearness::nearer:
+            return true;
+        case detail::DepthArbiter::Nearness::never:
+            candidates[i] = candidates.back(); // not nearer at any pixel of this triangle
+            candidates.pop_back();
+            break;
+        case detail::DepthArbiter::Nearness::not_here:
+            ++i;
+            break;
         }
     }
     return false;

@@ -22,22 +22,27 @@ DepthArbiter::Query DepthArbiter::query(uint32_t triangle, uint32_t px, uint32_t
     return q;
 }
 
-bool DepthArbiter::nearer(const Query& query, uint32_t drawn) {
+DepthArbiter::Nearness DepthArbiter::nearness(const Query& query, uint32_t drawn) {
     if (drawn == query.triangle)
-        return false; // a fragment is never in front of itself
+        return Nearness::never; // a fragment is never in front of itself
     const TriangleCorners corners = TriangleCorners::of(positions_, drawn);
+    // A copy of the query's triangle ties with it everywhere: cheaper to see than to arbitrate.
+    if (corners.sameCornersAs(query.corners))
+        return Nearness::never;
     if (!model_->covers(query.ray, corners))
-        return false;
+        return Nearness::not_here;
     const RayHit hit = model_->hit(query.ray, corners);
     switch (pairOrder(query, drawn, corners, hit)) {
     case kDrawnNearer:
-        return true;
+        return Nearness::nearer;
     case kNotNearer:
-        return false;
+        return Nearness::never;
     case kPerPixel:
         break;
     }
-    return model_->compare(query.ray, query.corners, query.hit, corners, hit) > 0;
+    return model_->compare(query.ray, query.corners, query.hit, corners, hit) > 0
+               ? Nearness::nearer
+               : Nearness::not_here;
 }
 
 DepthArbiter::Order DepthArbiter::pairOrder(const Query& query, uint32_t drawn,

@@ -34,8 +34,12 @@ public:
     Query query(uint32_t triangle, uint32_t px, uint32_t py) const;
 
     /// Whether triangle `drawn` has a fragment at the query's pixel strictly nearer than the
-    /// query's. Safe to call from several threads at once.
-    bool nearer(const Query& query, uint32_t drawn);
+    /// query's (nearer), or not at this pixel (not_here), or at no pixel at all (never: the
+    /// query's own triangle, a copy of it, and pairs decided whole by their planes: touching
+    /// and coplanar faces), which a caller arbitrating many pixels of one query can stop asking
+    /// about. Safe to call from several threads at once.
+    enum class Nearness : uint8_t { nearer, not_here, never };
+    Nearness nearness(const Query& query, uint32_t drawn);
 
 private:
     // How two triangles order at every pixel they share, or kPerPixel.

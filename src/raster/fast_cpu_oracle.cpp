@@ -28,6 +28,8 @@
 #include <atomic>
 #include <cassert>
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 #include <limits>
 #include <mutex>
 #include <span>
@@ -81,6 +83,10 @@ struct StoredSetup {
     static constexpr uint32_t kLargeError = 1u << 31;
 };
 static_assert(sizeof(StoredSetup) == 128);
+// The bytes that make a set-up's shape (all but the triangle and its band list's place): equal
+// for the set-ups of two copies of a triangle.
+constexpr std::size_t kSetupShapeBytes = offsetof(StoredSetup, triangle_and_flag);
+static_assert(kSetupShapeBytes == 120);
 static_assert(detail::kMaxViewportSize <= 65536);
 
 // The exact rule's common error bound: almost every fragment's is the float rounding, 2^-24, and
@@ -224,10 +230,24 @@ struct FastCpuOracle::Impl {
         Kind kind;
         uint32_t what, where;
     };
-    // What a query's walks share: its undecided fragments and its time (drawnBefore).
+    // The set-ups one query's arbitrations may meet, per cell of the index: a cell's list is
+    // made at the query's first arbitration there (the set-ups drawn before the query, of other
+    // triangles) and thinned as pairs turn out never nearer (DepthArbiter::Nearness::never:
+    // copies of the query's triangle, faces touching or coplanar with it). Where a query ties
+    // with a stack of faces at every pixel (a duplicated face: assimp's OBJ/box_longline.obj
+    // has 236 copies of each), each pixel then costs what could still be nearer, not the stack.
+    struct ArbitrationLists {
+        uint32_t triangle = 0, time = 0;
+        uint64_t generation = 0; // arbitration_generation_ when made; 0: never
+        std::size_t used = 0;    // cells[0, used) are this query's; the rest kept for reuse
+        std::vector<std::pair<uint32_t, std::vector<uint32_t>>> cells;
+    };
+    // What a query's walks share: its undecided fragments, its time (drawnBefore) and its
+    // arbitration lists.
     struct QueryContext {
         std::vector<Undecided>* undecided;
         uint32_t time;
+        ArbitrationLists* lists;
     };
     /// Whether some undecided fragment of context, within rect's rows, is behind by the exact
     /// model; clears the list.
@@ -235,8 +255,13 @@ struct FastCpuOracle::Impl {
     /// Whether triangle's fragment at pixel (px, py) (its float `fragment`, within `error` of
     /// the exact depth) lies strictly behind a fragment of a primitive drawn there before
     /// `time`, by the exact model.
-    bool behindSomethingDrawn(uint32_t triangle, uint32_t px, uint32_t py, uint32_t time,
+    bool behindSomethingDrawn(uint32_t triangle, uint32_t px, uint32_t py, QueryContext& context,
                               float fragment, float error, FastCpuOracleStats& stats);
+    /// The list of set-ups context's query may meet in a cell (ArbitrationLists).
+    std::vector<uint32_t>& arbitrationList(QueryContext& context, uint32_t triangle, uint32_t cell);
+    /// Whether set-up s covers pixel (px, py) as its draws do: certainly, or as a band pixel the
+    /// exact model gave it.
+    bool setupCovers(const StoredSetup& s, uint32_t px, uint32_t py) const;
     /// The set-up's fragment value at a pixel (rule 6, no offset) and whether it certainly
     /// covers it (every edge function beyond the margin).
     float fragmentAt(const StoredSetup& s, uint32_t px, uint32_t py) const;
@@ -291,6 +316,7 @@ struct FastCpuOracle::Impl {
     void clearBuffer() {
         newEpoch();
         clear_time_ = clock_;
+        ++arbitration_generation_;
     }
     /// The bind's band pixel lists (forEachFastBandPixel, then the exact model's coverage):
     /// appended to band_pixels_ for set-up `setup` of triangle t; returns its band_first.
@@ -492,6 +518,9 @@ struct FastCpuOracle::Impl {
     std::mutex tile_index_mutex_;
     std::vector<Undecided> undecided_;                   // a sequential query's
     std::vector<std::vector<Undecided>> band_undecided_; // per band
+    ArbitrationLists arbitration_lists_;                 // a sequential query's
+    std::vector<ArbitrationLists> band_lists_;           // per band
+    uint64_t arbitration_generation_ = 1;                // a clear or bind makes every list stale
     std::vector<uint32_t> query_times_;                  // a banded pass's, per element
 
     // For rebind, once one has been asked for (an oracle never rebound pays nothing for it):
@@ -810,6 +839,7 @@ void FastCpuOracle::Impl::finishBind() {
     drawn_time_.assign(primitive_count_, 0);
     clock_ = clear_time_ = 1;
     tile_index_built_.store(false);
+    ++arbitration_generation_;
 
     imaged_.clear();
     imaged_rects_.clear();
@@ -993,29 +1023,88 @@ void FastCpuOracle::Impl::ensureTileIndex() {
 }
 
 bool FastCpuOracle::Impl::behindSomethingDrawn(uint32_t triangle, uint32_t px, uint32_t py,
-                                               uint32_t time, float fragment, float error,
+                                               QueryContext& context, float fragment, float error,
                                                FastCpuOracleStats& stats) {
     ++stats.arbitrations;
     ensureTileIndex();
     const detail::DepthArbiter::Query query = arbiter_.query(triangle, px, py);
-    const std::size_t cell = std::size_t(py >> kCellShift) * cellsX() + (px >> kCellShift);
-    uint32_t last = std::numeric_limits<uint32_t>::max(); // a triangle's fan set-ups adjoin
-    for (uint32_t i = cell_starts_[cell]; i < cell_starts_[cell + 1]; ++i) {
-        const uint32_t k = cell_setups_[i];
+    const uint32_t cell = (py >> kCellShift) * cellsX() + (px >> kCellShift);
+    std::vector<uint32_t>& list = arbitrationList(context, triangle, cell);
+    for (std::size_t i = 0; i < list.size();) {
+        const uint32_t k = list[i];
         const StoredSetup& s = setups_[k];
-        if (s.triangle() == last || px < s.px_min || px > s.px_max || py < s.py_min ||
-            py > s.py_max)
+        // Certainly farther than the query's fragment, by the floats, or not there at all: it
+        // decides nothing here.
+        if (px < s.px_min || px > s.px_max || py < s.py_min || py > s.py_max ||
+            fragmentAt(s, px, py) - double(errors_[k]) > double(fragment) + double(error) ||
+            !setupCovers(s, px, py)) {
+            ++i;
             continue;
-        // Certainly farther than the query's fragment, by the floats: it decides nothing.
-        if (fragmentAt(s, px, py) - double(errors_[k]) > double(fragment) + double(error))
-            continue;
-        if (!drawnBefore(primitiveOfSetup(k), time))
-            continue;
-        last = s.triangle();
-        if (arbiter_.nearer(query, s.triangle()))
+        }
+        switch (arbiter_.nearness(query, s.triangle())) {
+        case detail::DepthArbiter::Nearness::nearer:
             return true;
+        case detail::DepthArbiter::Nearness::never:
+            list[i] = list.back(); // not nearer at any pixel of this query
+            list.pop_back();
+            break;
+        case detail::DepthArbiter::Nearness::not_here:
+            ++i;
+            break;
+        }
     }
     return false;
+}
+
+std::vector<uint32_t>& FastCpuOracle::Impl::arbitrationList(QueryContext& context,
+                                                            uint32_t triangle, uint32_t cell) {
+    ArbitrationLists& lists = *context.lists;
+    if (lists.generation != arbitration_generation_ || lists.triangle != triangle ||
+        lists.time != context.time) {
+        lists.generation = arbitration_generation_;
+        lists.triangle = triangle;
+        lists.time = context.time;
+        lists.used = 0;
+    }
+    for (std::size_t i = 0; i < lists.used; ++i)
+        if (lists.cells[i].first == cell)
+            return lists.cells[i].second;
+    if (lists.used == lists.cells.size())
+        lists.cells.emplace_back();
+    auto& [list_cell, list] = lists.cells[lists.used++];
+    list_cell = cell;
+    list.clear();
+    for (uint32_t i = cell_starts_[cell]; i < cell_starts_[cell + 1]; ++i) {
+        const uint32_t k = cell_setups_[i];
+        if (setups_[k].triangle() != triangle && drawnBefore(primitiveOfSetup(k), context.time))
+            list.push_back(k);
+    }
+    // Copies of a triangle (the same corners in the same order) have the same set-ups but for
+    // the triangle and its band list's place, and answer alike: one of each is enough.
+    const auto bytes = [&](uint32_t k) {
+        return reinterpret_cast<const unsigned char*>(&setups_[k]);
+    };
+    const auto less = [&](uint32_t a, uint32_t b) {
+        const int c = std::memcmp(bytes(a), bytes(b), kSetupShapeBytes);
+        return c != 0 ? c < 0 : a < b;
+    };
+    std::sort(list.begin(), list.end(), less);
+    list.erase(std::unique(list.begin(), list.end(),
+                           [&](uint32_t a, uint32_t b) {
+                               return std::memcmp(bytes(a), bytes(b), kSetupShapeBytes) == 0;
+                           }),
+               list.end());
+    return list;
+}
+
+bool FastCpuOracle::Impl::setupCovers(const StoredSetup& s, uint32_t px, uint32_t py) const {
+    if (certainlyCovers(s, px, py))
+        return true;
+    if (s.band_first == 0)
+        return false;
+    const uint32_t count = band_pixels_[s.band_first];
+    const uint32_t* pixels = band_pixels_.data() + s.band_first + 1;
+    return std::find(pixels, pixels + count, py << 16 | px) != pixels + count;
 }
 
 bool FastCpuOracle::Impl::resolve(QueryContext& context, const TileRect& rect,
@@ -1035,8 +1124,7 @@ bool FastCpuOracle::Impl::resolve(QueryContext& context, const TileRect& rect,
         case detail::Decision::behind:
             return true;
         case detail::Decision::undecided:
-            return behindSomethingDrawn(s.triangle(), px, py, context.time, fragment, errors_[k],
-                                        stats);
+            return behindSomethingDrawn(s.triangle(), px, py, context, fragment, errors_[k], stats);
         case detail::Decision::not_behind:
             return false;
         }
@@ -1085,7 +1173,7 @@ bool FastCpuOracle::Impl::resolve(QueryContext& context, const TileRect& rect,
                         last = s.triangle();
                         behind = model.covers(
                                      ray, detail::TriangleCorners::of(positions_, s.triangle())) &&
-                                 behindSomethingDrawn(s.triangle(), px, py, context.time,
+                                 behindSomethingDrawn(s.triangle(), px, py, context,
                                                       fragmentAt(s, px, py), errors_[k], stats);
                     }
                 }
@@ -1469,7 +1557,7 @@ bool FastCpuOracle::Impl::anyBehind(uint32_t primitive) {
     assert(primitive < primitive_count_);
     ++stats_.queries;
     makeImage<false>(primitive);
-    QueryContext context{&undecided_, clock_};
+    QueryContext context{&undecided_, clock_, &arbitration_lists_};
     return queryIn(primitive, wholeScreen(), stats_, context);
 }
 
@@ -1556,15 +1644,17 @@ void FastCpuOracle::Impl::backToFrontPass(uint32_t bands, std::span<const uint32
         query_times_[i] = clock_;
         stamp(sequence[i]);
     }
-    if (band_undecided_.size() < bands)
+    if (band_undecided_.size() < bands) {
         band_undecided_.resize(bands);
+        band_lists_.resize(bands);
+    }
     runBands(bands, [&](uint32_t b, FastCpuOracleStats& stats) {
         TileRect rows = wholeScreen();
         bandRows(b, bands, rows.row_first, rows.row_last);
         for (std::size_t i = sequence.size(); i-- > 0;) {
             if (query[i]) {
                 std::atomic_ref<uint8_t> answer(behind[i]);
-                QueryContext context{&band_undecided_[b], query_times_[i]};
+                QueryContext context{&band_undecided_[b], query_times_[i], &band_lists_[b]};
                 if (answer.load(std::memory_order_relaxed) == 0 &&
                     queryIn(sequence[i], rows, stats, context))
                     answer.store(1, std::memory_order_relaxed);
@@ -1618,8 +1708,10 @@ void FastCpuOracle::Impl::queryAgainst(uint32_t bands, std::span<const uint32_t>
     for (uint32_t p : occluders)
         stamp(p);
     const uint32_t time = clock_;
-    if (band_undecided_.size() < std::max<uint32_t>(bands, 1))
+    if (band_undecided_.size() < std::max<uint32_t>(bands, 1)) {
         band_undecided_.resize(std::max<uint32_t>(bands, 1));
+        band_lists_.resize(std::max<uint32_t>(bands, 1));
+    }
     const auto band = [&](uint32_t b, FastCpuOracleStats& stats) {
         TileRect rect = near_targets; // within the band's rows
         int32_t first_row, last_row;
@@ -1632,7 +1724,7 @@ void FastCpuOracle::Impl::queryAgainst(uint32_t bands, std::span<const uint32_t>
             drawIn(p, rect, stats);
         for (std::size_t i = 0; i < targets.size(); ++i) {
             std::atomic_ref<uint8_t> answer(behind[i]);
-            QueryContext context{&band_undecided_[b], time};
+            QueryContext context{&band_undecided_[b], time, &band_lists_[b]};
             if (answer.load(std::memory_order_relaxed) == 0 &&
                 queryIn(targets[i], rect, stats, context))
                 answer.store(1, std::memory_order_relaxed);

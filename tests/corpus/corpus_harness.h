@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "vissort/camera.h"
+#include "vissort/oracles.h"
 #include "vissort/scene_orderer.h"
 
 namespace vissort::test {
@@ -33,6 +34,11 @@ struct CorpusSettings {
     std::vector<OrderLevel> levels = {OrderLevel::object, OrderLevel::triangle};
     uint32_t width = 192, height = 144;
     bool render = true; // (c); ignored without OpenGL
+    // The oracles held to (a) and (b); gl, where built, is held to (a) and to cycles that hold
+    // the components (it counts what it cannot decide both ways), its extra members measured.
+    std::vector<OracleKind> oracles = {OracleKind::cpu, OracleKind::cpu_reference,
+                                       OracleKind::exact};
+    bool gl = true;
     float alpha = 0.5f; // all-transparent alpha of (c)
 };
 
@@ -41,8 +47,11 @@ struct CorpusReport {
     bool loaded = false;
     std::string load_error; // the loader's message when refused
     std::size_t objects = 0, triangles = 0;
-    uint64_t pairs_checked = 0;        // ground-truth occlusions checked over every view and level
-    uint32_t max_cycle = 0;            // largest exact strongly connected component seen
+    uint64_t pairs_checked = 0;      // ground-truth occlusions checked over every view and level
+    uint32_t max_cycle = 0;          // largest exact strongly connected component seen
+    uint64_t true_cycle_members = 0; // members of the exact components, every view and level
+    uint64_t gl_cycle_members = 0;   // members of gl's cycles, every view and level
+    bool gl_ran = false;
     std::vector<std::string> failures; // one line per failed check
 };
 

@@ -1,7 +1,7 @@
 // Touching and coplanar faces, as architecture and CAD models are full of (boxes sharing a face,
 // walls standing on a slab, faces lying on faces), seen at grazing angles in both projections.
 // The rasterizing oracles must never count such faces as behind each other (docs/robustness.md,
-// "Depth precision"): their cycles equal the strongly connected components of the ray-cast
+// "The exact model"): their cycles equal the strongly connected components of the exact
 // occlusion graph, and equal the exact oracle's, and the order has no ground-truth violation.
 // Surfaces truly apart by more than the documented bound must still count.
 #include <cmath>

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <optional>
 #include <thread>
+#include <utility>
 
 #include <CGAL/FPU.h>
 #include <CGAL/Gmpq.h>
@@ -238,6 +239,15 @@ void findBlockFragments(PositionsView positions, const ViewProjection& view, con
                                  positions.corner(3 * std::size_t(t) + 2)};
         if (!isFinite(corners[0]) || !isFinite(corners[1]) || !isFinite(corners[2]))
             continue;
+        // Two equal corners: Q = det[B - A, C - A, D] has a zero column or two equal ones at
+        // every ray, so there is no fragment (rule 2); the interval filter cannot see that, and
+        // would send every pixel of the box to the exact test.
+        const auto same = [](const Vec3& u, const Vec3& v) {
+            return u.x == v.x && u.y == v.y && u.z == v.z;
+        };
+        if (same(corners[0], corners[1]) || same(corners[1], corners[2]) ||
+            same(corners[2], corners[0]))
+            continue;
         const PixelBox box = candidatePixels(corners, view, setup);
         if (box.x0 > box.x1 || box.y0 > box.y1)
             continue;
@@ -318,6 +328,22 @@ void findBlockFragments(PositionsView positions, const ViewProjection& view, con
     }
 }
 
+// A triangle's corners in a canonical order (sorted), to find copies: finite corners only (the
+// fragments' triangles are).
+using CornerKey = std::array<double, 9>;
+CornerKey cornerKey(PositionsView positions, uint32_t t) {
+    std::array<std::array<double, 3>, 3> corners;
+    for (int k = 0; k < 3; ++k) {
+        const Vec3 c = positions.corner(3 * std::size_t(t) + std::size_t(k));
+        corners[std::size_t(k)] = {c.x, c.y, c.z};
+    }
+    std::sort(corners.begin(), corners.end());
+    CornerKey key;
+    for (std::size_t k = 0; k < 9; ++k)
+        key[k] = corners[k / 3][k % 3];
+    return key;
+}
+
 // Orders the candidates of one pixel (rule 6) into the output's fragment slots [first, end).
 void orderPixel(PositionsView positions, const ViewProjection& view, const Setup& setup,
                 std::size_t pixel, std::span<Candidate> candidates, uint32_t* triangles,
@@ -334,7 +360,8 @@ void orderPixel(PositionsView positions, const ViewProjection& view, const Setup
     const Vec3 origin = setup.origins[pixel], direction = setup.directions[pixel];
     const auto depthAt = [&](double t) { return view.depthOf(origin + direction * t); };
     uint32_t rank = 0;
-    std::vector<std::pair<Exact, uint32_t>> cluster; // exact t and triangle
+    std::vector<std::pair<Exact, uint32_t>> cluster;   // exact t and triangle
+    std::vector<std::pair<CornerKey, uint32_t>> keyed; // a cluster's corners and triangle
     for (std::size_t i = 0; i < candidates.size();) {
         std::size_t end = i + 1;
         double reach = candidates[i].t_high;
@@ -349,17 +376,29 @@ void orderPixel(PositionsView positions, const ViewProjection& view, const Setup
             i = end;
             continue;
         }
+        // Copies of a triangle (the same corners, in any order) lie in one plane and share t:
+        // computed once for each set of corners (a file may stack hundreds of copies).
+        keyed.clear();
+        for (std::size_t k = i; k < end; ++k)
+            keyed.emplace_back(cornerKey(positions, candidates[k].triangle),
+                               candidates[k].triangle);
+        std::sort(keyed.begin(), keyed.end());
         cluster.clear();
-        for (std::size_t k = i; k < end; ++k) {
-            const uint32_t t = candidates[k].triangle;
+        for (std::size_t k = 0; k < keyed.size(); ++k) {
+            const uint32_t t = keyed[k].second;
+            if (k > 0 && keyed[k].first == keyed[k - 1].first) {
+                Exact same = cluster.back().first; // a copy: emplace_back may reallocate
+                cluster.emplace_back(std::move(same), t);
+                continue;
+            }
             const Vec3 corners[3] = {positions.corner(3 * std::size_t(t)),
                                      positions.corner(3 * std::size_t(t) + 1),
                                      positions.corner(3 * std::size_t(t) + 2)};
             std::optional<Exact> hit = exactHit(corners, setup, pixel);
             assert(hit); // every candidate is a fragment, decided exactly
             cluster.emplace_back(hit ? std::move(*hit) : Exact(0), t);
+            ++exact_depths;
         }
-        exact_depths += cluster.size();
         std::sort(cluster.begin(), cluster.end());
         for (std::size_t k = 0; k < cluster.size(); ++k) {
             if (k > 0 && cluster[k].first != cluster[k - 1].first)
