@@ -135,8 +135,9 @@ private:
     /// bounds meet the triangle's (arbitrationCandidates), thinned here of those never nearer.
     bool behindSomethingDrawn(uint32_t triangle, uint32_t px, uint32_t py,
                               std::vector<uint32_t>& candidates);
-    /// The triangles drawn since the clear, other than triangle, whose pixel bounds meet its own.
-    std::vector<uint32_t> arbitrationCandidates(uint32_t triangle);
+    /// The triangles drawn since the clear, other than triangle, whose pixel bounds meet its own;
+    /// with drop_copies, one of each set of copies and none of triangle's own.
+    std::vector<uint32_t> arbitrationCandidates(uint32_t triangle, bool drop_copies);
 
     RasterMode mode_;
     uint32_t width_ = 0, height_ = 0;

@@ -210,7 +210,11 @@ bool CpuOracle::anyBehindExact(uint32_t primitive) {
     for (std::size_t i = 0; i < undecided.size(); ++i) {
         const Undecided& u = undecided[i];
         if (i == 0 || u.triangle != candidates_of) {
-            candidates = arbitrationCandidates(u.triangle);
+            // Copies are looked for (a sort) only where the triangle arbitrates at many pixels.
+            std::size_t pixels = 1;
+            while (i + pixels < undecided.size() && undecided[i + pixels].triangle == u.triangle)
+                ++pixels;
+            candidates = arbitrationCandidates(u.triangle, pixels >= 16);
             candidates_of = u.triangle;
         }
         if (behindSomethingDrawn(u.triangle, u.px, u.py, candidates))
@@ -219,7 +223,7 @@ bool CpuOracle::anyBehindExact(uint32_t primitive) {
     return false;
 }
 
-std::vector<uint32_t> CpuOracle::arbitrationCandidates(uint32_t triangle) {
+std::vector<uint32_t> CpuOracle::arbitrationCandidates(uint32_t triangle, bool drop_copies) {
     const PixelBounds own = boundsOf(triangle);
     std::vector<uint32_t> candidates;
     for (uint32_t p : drawn_) {
@@ -232,6 +236,8 @@ std::vector<uint32_t> CpuOracle::arbitrationCandidates(uint32_t triangle) {
                 candidates.push_back(t);
         }
     }
+    if (!drop_copies)
+        return candidates;
     // Copies (the same corners) answer alike: one of each is enough, and none of the query's
     // own. A triangle with a non-finite corner has no fragment (and would break the sort).
     using Key = std::array<float, 9>;

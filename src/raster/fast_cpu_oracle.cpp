@@ -236,11 +236,23 @@ struct FastCpuOracle::Impl {
     // copies of the query's triangle, faces touching or coplanar with it). Where a query ties
     // with a stack of faces at every pixel (a duplicated face: assimp's OBJ/box_longline.obj
     // has 236 copies of each), each pixel then costs what could still be nearer, not the stack.
+    // Copies of a triangle are dropped from a list once it has served kDedupeAfterScans
+    // arbitrations: the sort that finds them costs a dozen scans, paid only where a stack of
+    // ties arbitrates pixel after pixel, not where each triangle of a query ties at one pixel.
+    // A query's first arbitration in a cell scans the cell's index directly (most queries
+    // arbitrate once or twice, each triangle of a primitive at its own pixels); the list is made
+    // at the second.
+    struct CellList {
+        uint32_t cell = 0, scans = 0;
+        bool built = false, deduplicated = false;
+        std::vector<uint32_t> setups;
+    };
+    static constexpr uint32_t kDedupeAfterScans = 16;
     struct ArbitrationLists {
         uint32_t triangle = 0, time = 0;
         uint64_t generation = 0; // arbitration_generation_ when made; 0: never
         std::size_t used = 0;    // cells[0, used) are this query's; the rest kept for reuse
-        std::vector<std::pair<uint32_t, std::vector<uint32_t>>> cells;
+        std::vector<CellList> cells;
     };
     // What a query's walks share: its undecided fragments, its time (drawnBefore) and its
     // arbitration lists.
@@ -258,7 +270,10 @@ struct FastCpuOracle::Impl {
     bool behindSomethingDrawn(uint32_t triangle, uint32_t px, uint32_t py, QueryContext& context,
                               float fragment, float error, FastCpuOracleStats& stats);
     /// The list of set-ups context's query may meet in a cell (ArbitrationLists).
-    std::vector<uint32_t>& arbitrationList(QueryContext& context, uint32_t triangle, uint32_t cell);
+    /// Null at the query's first arbitration in the cell (scan the index directly).
+    std::vector<uint32_t>* arbitrationList(QueryContext& context, uint32_t triangle, uint32_t cell);
+    /// Keeps one set-up of each set of copies in list (the same shape: kSetupShapeBytes).
+    void dropCopies(std::vector<uint32_t>& list) const;
     /// Whether set-up s covers pixel (px, py) as its draws do: certainly, or as a band pixel the
     /// exact model gave it.
     bool setupCovers(const StoredSetup& s, uint32_t px, uint32_t py) const;
@@ -1029,19 +1044,33 @@ bool FastCpuOracle::Impl::behindSomethingDrawn(uint32_t triangle, uint32_t px, u
     ensureTileIndex();
     const detail::DepthArbiter::Query query = arbiter_.query(triangle, px, py);
     const uint32_t cell = (py >> kCellShift) * cellsX() + (px >> kCellShift);
-    std::vector<uint32_t>& list = arbitrationList(context, triangle, cell);
-    for (std::size_t i = 0; i < list.size();) {
-        const uint32_t k = list[i];
+    // Certainly farther than the query's fragment, by the floats, or not there at all: set-up k
+    // decides nothing here.
+    const auto irrelevant = [&](uint32_t k) {
         const StoredSetup& s = setups_[k];
-        // Certainly farther than the query's fragment, by the floats, or not there at all: it
-        // decides nothing here.
-        if (px < s.px_min || px > s.px_max || py < s.py_min || py > s.py_max ||
-            fragmentAt(s, px, py) - double(errors_[k]) > double(fragment) + double(error) ||
-            !setupCovers(s, px, py)) {
+        return px < s.px_min || px > s.px_max || py < s.py_min || py > s.py_max ||
+               fragmentAt(s, px, py) - double(errors_[k]) > double(fragment) + double(error) ||
+               !setupCovers(s, px, py);
+    };
+    std::vector<uint32_t>* listed = arbitrationList(context, triangle, cell);
+    if (listed == nullptr) {
+        for (uint32_t i = cell_starts_[cell]; i < cell_starts_[cell + 1]; ++i) {
+            const uint32_t k = cell_setups_[i];
+            if (setups_[k].triangle() != triangle && !irrelevant(k) &&
+                drawnBefore(primitiveOfSetup(k), context.time) &&
+                arbiter_.nearness(query, setups_[k].triangle()) ==
+                    detail::DepthArbiter::Nearness::nearer)
+                return true;
+        }
+        return false;
+    }
+    std::vector<uint32_t>& list = *listed;
+    for (std::size_t i = 0; i < list.size();) {
+        if (irrelevant(list[i])) {
             ++i;
             continue;
         }
-        switch (arbiter_.nearness(query, s.triangle())) {
+        switch (arbiter_.nearness(query, setups_[list[i]].triangle())) {
         case detail::DepthArbiter::Nearness::nearer:
             return true;
         case detail::DepthArbiter::Nearness::never:
@@ -1056,7 +1085,7 @@ bool FastCpuOracle::Impl::behindSomethingDrawn(uint32_t triangle, uint32_t px, u
     return false;
 }
 
-std::vector<uint32_t>& FastCpuOracle::Impl::arbitrationList(QueryContext& context,
+std::vector<uint32_t>* FastCpuOracle::Impl::arbitrationList(QueryContext& context,
                                                             uint32_t triangle, uint32_t cell) {
     ArbitrationLists& lists = *context.lists;
     if (lists.generation != arbitration_generation_ || lists.triangle != triangle ||
@@ -1066,19 +1095,36 @@ std::vector<uint32_t>& FastCpuOracle::Impl::arbitrationList(QueryContext& contex
         lists.time = context.time;
         lists.used = 0;
     }
-    for (std::size_t i = 0; i < lists.used; ++i)
-        if (lists.cells[i].first == cell)
-            return lists.cells[i].second;
+    for (std::size_t i = 0; i < lists.used; ++i) {
+        CellList& found = lists.cells[i];
+        if (found.cell != cell)
+            continue;
+        if (!found.built) {
+            found.built = true;
+            std::vector<uint32_t>& list = found.setups;
+            list.clear();
+            for (uint32_t i = cell_starts_[cell]; i < cell_starts_[cell + 1]; ++i) {
+                const uint32_t k = cell_setups_[i];
+                if (setups_[k].triangle() != triangle &&
+                    drawnBefore(primitiveOfSetup(k), context.time))
+                    list.push_back(k);
+            }
+        } else if (!found.deduplicated && ++found.scans >= kDedupeAfterScans) {
+            dropCopies(found.setups);
+            found.deduplicated = true;
+        }
+        return &found.setups;
+    }
     if (lists.used == lists.cells.size())
         lists.cells.emplace_back();
-    auto& [list_cell, list] = lists.cells[lists.used++];
-    list_cell = cell;
-    list.clear();
-    for (uint32_t i = cell_starts_[cell]; i < cell_starts_[cell + 1]; ++i) {
-        const uint32_t k = cell_setups_[i];
-        if (setups_[k].triangle() != triangle && drawnBefore(primitiveOfSetup(k), context.time))
-            list.push_back(k);
-    }
+    CellList& noted = lists.cells[lists.used++];
+    noted.cell = cell;
+    noted.scans = 1;
+    noted.built = noted.deduplicated = false;
+    return nullptr;
+}
+
+void FastCpuOracle::Impl::dropCopies(std::vector<uint32_t>& list) const {
     // Copies of a triangle (the same corners in the same order) have the same set-ups but for
     // the triangle and its band list's place, and answer alike: one of each is enough.
     const auto bytes = [&](uint32_t k) {
@@ -1094,7 +1140,6 @@ std::vector<uint32_t>& FastCpuOracle::Impl::arbitrationList(QueryContext& contex
                                return std::memcmp(bytes(a), bytes(b), kSetupShapeBytes) == 0;
                            }),
                list.end());
-    return list;
 }
 
 bool FastCpuOracle::Impl::setupCovers(const StoredSetup& s, uint32_t px, uint32_t py) const {
