@@ -14,6 +14,7 @@
 
 #include "geometry/exact_fragments.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <gmpxx.h>
@@ -136,13 +137,14 @@ struct ExactHit {
     Rational s[3]; // the edge sides
 };
 
+bool sameCorner(const float (&u)[3], const float (&v)[3]) {
+    return u[0] == v[0] && u[1] == v[1] && u[2] == v[2];
+}
+
 // Two corners equal as stored: Q is 0 at every ray, so the triangle has no fragment. Files
 // with repeated indices (a fan over a polygon that revisits its corners) have thousands.
 bool hasRepeatedCorner(const TriangleCorners& t) {
-    const auto same = [](const float(&u)[3], const float(&v)[3]) {
-        return u[0] == v[0] && u[1] == v[1] && u[2] == v[2];
-    };
-    return same(t.p[0], t.p[1]) || same(t.p[1], t.p[2]) || same(t.p[2], t.p[0]);
+    return sameCorner(t.p[0], t.p[1]) || sameCorner(t.p[1], t.p[2]) || sameCorner(t.p[2], t.p[0]);
 }
 
 // t = n / q exactly, without the edge sides: what ordering two fragments needs.
@@ -183,16 +185,25 @@ ExactHit exactHit(const PixelRay& ray, const TriangleCorners& t) {
 } // namespace
 
 bool TriangleCorners::sameCornersAs(const TriangleCorners& other) const {
-    const auto same = [](const float(&u)[3], const float(&v)[3]) {
-        return u[0] == v[0] && u[1] == v[1] && u[2] == v[2];
-    };
-    const auto within = [&](const TriangleCorners& a, const TriangleCorners& b) {
+    const auto within = [](const TriangleCorners& a, const TriangleCorners& b) {
         for (const auto& corner : a.p)
-            if (!same(corner, b.p[0]) && !same(corner, b.p[1]) && !same(corner, b.p[2]))
+            if (!sameCorner(corner, b.p[0]) && !sameCorner(corner, b.p[1]) &&
+                !sameCorner(corner, b.p[2]))
                 return false;
         return true;
     };
     return within(*this, other) && within(other, *this);
+}
+
+std::array<float, 9> TriangleCorners::sortedKey() const {
+    std::array<std::array<float, 3>, 3> corners;
+    for (int k = 0; k < 3; ++k)
+        corners[std::size_t(k)] = {p[k][0], p[k][1], p[k][2]};
+    std::sort(corners.begin(), corners.end());
+    std::array<float, 9> key;
+    for (std::size_t k = 0; k < 9; ++k)
+        key[k] = corners[k / 3][k % 3];
+    return key;
 }
 
 TriangleCorners TriangleCorners::of(PositionsView positions, std::size_t triangle) {

@@ -16,6 +16,7 @@
 // Each sign is first computed in double with a bound on its rounding error; only when the bound
 // does not settle it is the expression evaluated in exact rational arithmetic (GMP).
 
+#include <array>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
@@ -35,6 +36,10 @@ struct TriangleCorners {
     /// The same three corners in any order: one plane, so a tie at every ray both meet.
     /// Duplicated faces are common in real files.
     bool sameCornersAs(const TriangleCorners& other) const;
+
+    /// The corners in ascending (x, y, z) order, as one key: equal exactly for copies (the same
+    /// corners in any order). Finite corners only (a NaN breaks the order).
+    std::array<float, 9> sortedKey() const;
 };
 
 /// A double and a bound on its distance from the exact value it stands for.

@@ -242,15 +242,7 @@ std::vector<uint32_t> CpuOracle::arbitrationCandidates(uint32_t triangle, bool d
     // own. A triangle with a non-finite corner has no fragment (and would break the sort).
     using Key = std::array<float, 9>;
     const auto keyOf = [&](uint32_t t) {
-        const detail::TriangleCorners c = detail::TriangleCorners::of(positions_, t);
-        std::array<std::array<float, 3>, 3> corners{};
-        for (int k = 0; k < 3; ++k)
-            corners[k] = {c.p[k][0], c.p[k][1], c.p[k][2]};
-        std::sort(corners.begin(), corners.end());
-        Key key;
-        for (int k = 0; k < 9; ++k)
-            key[k] = corners[k / 3][k % 3];
-        return key;
+        return detail::TriangleCorners::of(positions_, t).sortedKey();
     };
     const Key own_key = keyOf(triangle);
     std::vector<std::pair<Key, uint32_t>> keyed;
@@ -293,27 +285,13 @@ const CpuOracle::PixelBounds& CpuOracle::boundsOf(uint32_t t) {
 bool CpuOracle::behindSomethingDrawn(uint32_t triangle, uint32_t px, uint32_t py,
                                      std::vector<uint32_t>& candidates) {
     ++stats_.arbitrations;
-    const detail::DepthArbiter::Query query = arbiter_->query(triangle, px, py);
-    for (std::size_t i = 0; i < candidates.size();) {
-        const PixelBounds& b = boundsOf(candidates[i]);
-        if (int32_t(px) < b.x_min || int32_t(px) > b.x_max || int32_t(py) < b.y_min ||
-            int32_t(py) > b.y_max) {
-            ++i;
-            continue;
-        }
-        switch (arbiter_->nearness(query, candidates[i])) {
-        case detail::DepthArbiter::Nearness::nearer:
-            return true;
-        case detail::DepthArbiter::Nearness::never:
-            candidates[i] = candidates.back(); // not nearer at any pixel of this triangle
-            candidates.pop_back();
-            break;
-        case detail::DepthArbiter::Nearness::not_here:
-            ++i;
-            break;
-        }
-    }
-    return false;
+    return arbiter_->anyNearer(
+        arbiter_->query(triangle, px, py), candidates, [](uint32_t t) { return t; },
+        [&](uint32_t t) {
+            const PixelBounds& b = boundsOf(t);
+            return int32_t(px) < b.x_min || int32_t(px) > b.x_max || int32_t(py) < b.y_min ||
+                   int32_t(py) > b.y_max;
+        });
 }
 
 } // namespace vissort

@@ -11,6 +11,7 @@
 #include <mutex>
 #include <optional>
 #include <unordered_map>
+#include <vector>
 
 #include "geometry/exact_fragments.h"
 
@@ -40,6 +41,34 @@ public:
     /// about. Safe to call from several threads at once.
     enum class Nearness : uint8_t { nearer, not_here, never };
     Nearness nearness(const Query& query, uint32_t drawn);
+
+    /// Whether a candidate's triangle is nearer at the query's pixel: candidates are a caller's
+    /// entries (triangles, set-ups) for the query, triangleOf(entry) their triangle, and
+    /// irrelevant(entry) true where one cannot decide this pixel (outside it, certainly
+    /// farther). The entries never nearer are removed, so that a query arbitrating pixel after
+    /// pixel against a stack of ties asks about each only once.
+    template <class TriangleOf, class Irrelevant>
+    bool anyNearer(const Query& query, std::vector<uint32_t>& candidates, TriangleOf&& triangleOf,
+                   Irrelevant&& irrelevant) {
+        for (std::size_t i = 0; i < candidates.size();) {
+            if (irrelevant(candidates[i])) {
+                ++i;
+                continue;
+            }
+            switch (nearness(query, triangleOf(candidates[i]))) {
+            case Nearness::nearer:
+                return true;
+            case Nearness::never:
+                candidates[i] = candidates.back();
+                candidates.pop_back();
+                break;
+            case Nearness::not_here:
+                ++i;
+                break;
+            }
+        }
+        return false;
+    }
 
 private:
     // How two triangles order at every pixel they share, or kPerPixel.

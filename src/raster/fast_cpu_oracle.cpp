@@ -1064,25 +1064,8 @@ bool FastCpuOracle::Impl::behindSomethingDrawn(uint32_t triangle, uint32_t px, u
         }
         return false;
     }
-    std::vector<uint32_t>& list = *listed;
-    for (std::size_t i = 0; i < list.size();) {
-        if (irrelevant(list[i])) {
-            ++i;
-            continue;
-        }
-        switch (arbiter_.nearness(query, setups_[list[i]].triangle())) {
-        case detail::DepthArbiter::Nearness::nearer:
-            return true;
-        case detail::DepthArbiter::Nearness::never:
-            list[i] = list.back(); // not nearer at any pixel of this query
-            list.pop_back();
-            break;
-        case detail::DepthArbiter::Nearness::not_here:
-            ++i;
-            break;
-        }
-    }
-    return false;
+    return arbiter_.anyNearer(
+        query, *listed, [&](uint32_t k) { return setups_[k].triangle(); }, irrelevant);
 }
 
 std::vector<uint32_t>* FastCpuOracle::Impl::arbitrationList(QueryContext& context,
@@ -1103,8 +1086,8 @@ std::vector<uint32_t>* FastCpuOracle::Impl::arbitrationList(QueryContext& contex
             found.built = true;
             std::vector<uint32_t>& list = found.setups;
             list.clear();
-            for (uint32_t i = cell_starts_[cell]; i < cell_starts_[cell + 1]; ++i) {
-                const uint32_t k = cell_setups_[i];
+            for (uint32_t j = cell_starts_[cell]; j < cell_starts_[cell + 1]; ++j) {
+                const uint32_t k = cell_setups_[j];
                 if (setups_[k].triangle() != triangle &&
                     drawnBefore(primitiveOfSetup(k), context.time))
                     list.push_back(k);
