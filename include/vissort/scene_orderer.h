@@ -107,7 +107,7 @@ private:
     template <class PrimitiveAt>
     void sortFrom(PositionsView positions, const ViewProjection& view, std::size_t n,
                   const PrimitiveAt& primitive, std::span<const uint32_t> start,
-                  VisibilityOrder& into, Bind how = Bind::new_frame);
+                  VisibilityOrder& into, Bind how = Bind::new_frame, CycleHints hints = {});
 
     std::vector<PrimitiveRange> objects_;
     uint32_t triangle_count_;
@@ -117,6 +117,11 @@ private:
     std::size_t progress_base_ = 0, progress_total_ = 0; // what sortFrom's share is out of
     std::vector<uint32_t> previous_order_; // last frame, at level_ (objects for multistage)
     std::vector<uint32_t> previous_triangle_order_; // multistage: last frame's order
+    // Last frame's cycles at level_ (objects for multistage) with their witnesses, and the same
+    // as hints in this frame's bound ids (CycleHints): cycles are as coherent as orders.
+    std::vector<std::vector<uint32_t>> previous_cycles_, hint_cycles_;
+    std::vector<std::vector<Occlusion>> previous_witnesses_, hint_witnesses_;
+    std::vector<uint32_t> bound_id_; // primitive -> its id in this frame's bind
     // Reused every frame, so that a steady-state frame without cycles allocates nothing
     // (tests/order/orderer_allocation_tests.cpp).
     VisSortWorkspace workspace_;

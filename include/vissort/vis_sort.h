@@ -21,6 +21,13 @@ struct VisSortStats {
     uint32_t stuck_iterations = 0; // iterations that output nothing (a cycle was met)
     uint64_t cycle_queries = 0;    // of queries, those spent finding cycles
     uint64_t cycle_draws = 0;      // of draws, those spent finding cycles
+    uint32_t hinted_cycles = 0;    // cycles confirmed from CycleHints instead of searched for
+};
+
+/// An edge of the occlusion graph: `front` lies in front of `back` at some pixel.
+struct Occlusion {
+    uint32_t front = 0, back = 0;
+    friend bool operator==(const Occlusion&, const Occlusion&) = default;
 };
 
 struct VisibilityOrder {
@@ -29,6 +36,10 @@ struct VisibilityOrder {
     /// Each cycle: the primitives of one strongly connected component (of two or more) of the
     /// occlusion graph among primitives that could not be ordered, ascending ids.
     std::vector<std::vector<uint32_t>> cycles;
+    /// Per cycle (parallel to cycles), occlusions among its members that the oracle confirmed and
+    /// that make it strongly connected: what a later frame re-checks, one small test each, to
+    /// confirm the same cycle instead of searching for it again (CycleHints).
+    std::vector<std::vector<Occlusion>> cycle_witnesses;
     VisSortStats stats;
 };
 
@@ -36,17 +47,41 @@ struct VisibilityOrder {
 /// allocates nothing in steady state unless it meets a cycle (the cycle search and
 /// VisibilityOrder::cycles allocate a few small vectors per cycle). Contents between calls are
 /// unspecified.
+/// A strongly connected set of primitives on the cycle search's path (src/core/source_cycle.h):
+/// its members, the occlusions among them that make it so, and the occlusion that links it to
+/// the set below it on the path (an occluder of one of that set's members).
+struct CycleSearchStep {
+    std::vector<uint32_t> members;
+    std::vector<Occlusion> witness;
+    Occlusion link;
+};
+
 struct VisSortWorkspace {
     std::vector<uint32_t> unsorted, outside, candidates, targets, position;
     std::vector<uint8_t> in_monotone_run, query, behind, in_cycle, walk_state;
     std::vector<int32_t> path_index;
     // The cycle search's path below the last source it found, resumed at the next stuck
     // iteration of the same visSort call (src/core/source_cycle.h).
-    std::vector<std::vector<uint32_t>> pending_path;
+    std::vector<CycleSearchStep> pending_path;
     std::vector<uint8_t> seen; // the precondition check's, in builds with assertions
     /// Called after each iteration with the primitives output so far and their total, when set:
     /// what a progress display of a long order reads. Not scratch: visSort leaves it as it is.
     std::function<void(std::size_t sorted, std::size_t total)> on_iteration;
+};
+
+/// Cycles expected from an earlier frame, each given by its members and a witness: occlusions
+/// among them that made it strongly connected then (VisibilityOrder::cycles and
+/// cycle_witnesses of the last frame, in this call's ids). When Vis-sort is stuck it first
+/// re-checks the hints: each occlusion of a witness once per call (one small test per occluder),
+/// keeping of each hint its members still unsorted that the confirmed occlusions connect; a part
+/// that no other unsorted primitive occludes is a source component and is reported as a cycle
+/// without a search. The other parts are where the search starts its walks. Hints change how
+/// many queries a frame takes, never its order's validity: nothing becomes a cycle unless this
+/// frame's oracle confirms it, and a witness that names other primitives or does not connect its
+/// members only shrinks its hint.
+struct CycleHints {
+    std::span<const std::vector<uint32_t>> cycles;
+    std::span<const std::vector<Occlusion>> witnesses; // parallel to cycles
 };
 
 /// Orders the oracle's primitives front to back.
@@ -57,7 +92,8 @@ struct VisSortWorkspace {
 VisibilityOrder visSort(OcclusionOracle& oracle, std::span<const uint32_t> initial_order);
 
 /// The same, writing into result (its vectors keep their capacity) with the caller's scratch.
+/// hints: cycles the last frame found (see CycleHints); none by default.
 void visSort(OcclusionOracle& oracle, std::span<const uint32_t> initial_order,
-             VisibilityOrder& result, VisSortWorkspace& workspace);
+             VisibilityOrder& result, VisSortWorkspace& workspace, CycleHints hints = {});
 
 } // namespace vissort

@@ -37,6 +37,7 @@ OrderResult resultOf(FrameOrder&& frame, const PythonCamera& camera) {
     result.stats["iterations"] = s.iterations;
     result.stats["stuck_iterations"] = s.stuck_iterations;
     result.stats["cycle_queries"] = s.cycle_queries;
+    result.stats["hinted_cycles"] = s.hinted_cycles;
     result.stats["cycle_draws"] = s.cycle_draws;
     result.stats["ms"] = frame.milliseconds;
     result.level = orderLevelName(frame.level);
@@ -156,7 +157,7 @@ void bindOrder(py::module_& m) {
                       "Each cycle the order met: its ids, ascending (uint32 arrays)")
         .def_readonly("stats", &OrderResult::stats,
                       "queries, draws, clears, iterations, stuck_iterations, cycle_queries, "
-                      "cycle_draws, ms: as the command line's --json")
+                      "cycle_draws, hinted_cycles, ms: as the command line's --json")
         .def_readonly("level", &OrderResult::level)
         .def_readonly("camera", &OrderResult::camera, "The camera the order was computed for")
         .def("__repr__", [](const OrderResult& r) {

@@ -32,6 +32,7 @@ nlohmann::json frameRecord(const FrameOrder& frame, std::size_t order_list,
               {"iterations", frame.stats.iterations},
               {"stuck_iterations", frame.stats.stuck_iterations},
               {"cycle_queries", frame.stats.cycle_queries},
+              {"hinted_cycles", frame.stats.hinted_cycles},
               {"cycle_draws", frame.stats.cycle_draws},
               {"ms", frame.milliseconds}}}};
 }

@@ -17,12 +17,7 @@ public:
 
     void test(std::span<const uint32_t> occluders, std::span<const uint32_t> targets,
               std::span<uint8_t> behind) {
-        oracle_.queryAgainst(occluders, targets, behind);
-        stats_.clears += 1;
-        stats_.draws += occluders.size();
-        stats_.queries += targets.size();
-        stats_.cycle_draws += occluders.size();
-        stats_.cycle_queries += targets.size();
+        groupTest(oracle_, occluders, targets, behind, stats_);
     }
 
     /// One member of candidates that occludes target, given that the whole set does.
@@ -77,35 +72,77 @@ private:
 
 constexpr int32_t kNotOnPath = -1;
 
-// Adds an occluder of the path's top component: a new component on the path, or, when it is
-// already on the path, the merge of the cycle it closes. Returns true when it pushed.
-bool extendPath(std::vector<std::vector<uint32_t>>& path, std::vector<int32_t>& path_index,
-                uint32_t occluder) {
+} // namespace
+
+void groupTest(OcclusionOracle& oracle, std::span<const uint32_t> occluders,
+               std::span<const uint32_t> targets, std::span<uint8_t> behind, VisSortStats& stats) {
+    oracle.queryAgainst(occluders, targets, behind);
+    stats.clears += 1;
+    stats.draws += occluders.size();
+    stats.queries += targets.size();
+    stats.cycle_draws += occluders.size();
+    stats.cycle_queries += targets.size();
+}
+
+bool findOccluderAmong(OcclusionOracle& oracle, std::span<const uint32_t> candidates,
+                       uint32_t target, VisSortStats& stats, uint32_t& occluder) {
+    uint8_t behind = 0;
+    if (candidates.empty())
+        return false;
+    groupTest(oracle, candidates, std::span(&target, 1), std::span(&behind, 1), stats);
+    if (!behind)
+        return false;
+    std::vector<uint32_t> left(candidates.begin(), candidates.end());
+    while (left.size() > 1) {
+        const std::size_t half = left.size() / 2;
+        groupTest(oracle, std::span(left).first(half), std::span(&target, 1), std::span(&behind, 1),
+                  stats);
+        if (behind)
+            left.resize(half);
+        else
+            left.erase(left.begin(), left.begin() + half);
+    }
+    occluder = left.front();
+    return true;
+}
+
+namespace {
+
+// Adds an occluder of a member of the path's top component (the occlusion `found`): a new
+// component on the path, or, when it is already on the path, the merge of the cycle it closes,
+// whose witness is then the merged components' witnesses, the links between them and `found`.
+// Returns true when it pushed.
+bool extendPath(std::vector<CycleSearchStep>& path, std::vector<int32_t>& path_index,
+                Occlusion found) {
     const auto top = static_cast<int32_t>(path.size() - 1);
-    const int32_t found_at = path_index[occluder];
+    const int32_t found_at = path_index[found.front];
     if (found_at == kNotOnPath) {
-        path.push_back({occluder});
-        path_index[occluder] = top + 1;
+        path.push_back({{found.front}, {}, found});
+        path_index[found.front] = top + 1;
         return true;
     }
     // occluder -> path[top] -> ... -> path[found_at] ∋ occluder closes a cycle: merge.
+    CycleSearchStep& into = path[found_at];
     for (int32_t k = found_at + 1; k <= top; ++k) {
-        for (uint32_t p : path[k]) {
+        for (uint32_t p : path[k].members) {
             path_index[p] = found_at;
-            path[found_at].push_back(p);
+            into.members.push_back(p);
         }
+        into.witness.insert(into.witness.end(), path[k].witness.begin(), path[k].witness.end());
+        into.witness.push_back(path[k].link);
     }
+    into.witness.push_back(found);
     path.resize(found_at + 1);
     return false;
 }
 
 } // namespace
 
-std::vector<std::vector<uint32_t>> findSourceCycles(OcclusionOracle& oracle,
-                                                    std::span<const uint32_t> stuck,
-                                                    std::span<const uint8_t> in_monotone_run,
-                                                    uint32_t max_walks, VisSortStats& stats,
-                                                    VisSortWorkspace& scratch) {
+std::vector<SourceComponent> findSourceCycles(OcclusionOracle& oracle,
+                                              std::span<const uint32_t> stuck,
+                                              std::span<const uint8_t> in_monotone_run,
+                                              uint32_t max_walks, VisSortStats& stats,
+                                              VisSortWorkspace& scratch) {
     assert(!stuck.empty() && in_monotone_run.size() == stuck.size() && max_walks >= 1);
     GroupTester tester(oracle, stats);
     // Every entry is kNotOnPath (path_index) or kUnknown (walk_state) between calls; only the
@@ -129,18 +166,18 @@ std::vector<std::vector<uint32_t>> findSourceCycles(OcclusionOracle& oracle,
 
     // The path the last call left (see the header), up to its first component with a member
     // that is no longer stuck: Vis-sort outputs a component once the source above it has left.
-    std::vector<std::vector<uint32_t>> path = std::move(scratch.pending_path);
+    std::vector<CycleSearchStep> path = std::move(scratch.pending_path);
     scratch.pending_path.clear();
     for (std::size_t k = 0; k < path.size(); ++k)
-        if (!std::all_of(path[k].begin(), path[k].end(), is_stuck)) {
+        if (!std::all_of(path[k].members.begin(), path[k].members.end(), is_stuck)) {
             path.resize(k);
             break;
         }
     for (std::size_t k = 0; k < path.size(); ++k)
-        for (uint32_t p : path[k])
+        for (uint32_t p : path[k].members)
             path_index[p] = int32_t(k);
 
-    std::vector<std::vector<uint32_t>> sources;
+    std::vector<SourceComponent> sources;
     std::size_t next_start = 0;
     for (uint32_t walk = 0; walk < max_walks; ++walk) {
         if (path.empty()) {
@@ -150,7 +187,7 @@ std::vector<std::vector<uint32_t>> findSourceCycles(OcclusionOracle& oracle,
                 break;
             // path[k + 1] holds an occluder of a member of path[k]; each entry is strongly
             // connected.
-            path.push_back({stuck[next_start]});
+            path.push_back({{stuck[next_start]}, {}, {}});
             path_index[stuck[next_start]] = 0;
         }
         bool found_source = false;
@@ -158,14 +195,15 @@ std::vector<std::vector<uint32_t>> findSourceCycles(OcclusionOracle& oracle,
         uint32_t merged_at = kNoPosition;
         for (;;) {
             const auto top = static_cast<int32_t>(path.size() - 1);
-            const std::vector<uint32_t>& component = path.back();
-            uint32_t occluder = 0;
+            const std::vector<uint32_t>& component = path.back().members;
+            uint32_t occluder = 0, occluded = 0;
             bool have_occluder = false;
             if (component.size() == 1) {
                 // A lone primitive: search its sides nearest first. A member of M has every
                 // occluder before it (pass 1 found nothing after it in front of it); any other
                 // one was found behind something after it, so that side goes first.
                 const uint32_t target = component.front();
+                occluded = target;
                 const uint32_t at = position[target];
                 const std::span<const uint32_t> before = std::span(stuck).first(at),
                                                 after = std::span(stuck).subspan(at + 1);
@@ -178,7 +216,7 @@ std::vector<std::vector<uint32_t>> findSourceCycles(OcclusionOracle& oracle,
                 if (!have_occluder) {
                     // Nothing stuck and usable occludes it (the source that did has left): a
                     // source of one, output as an ordinary primitive.
-                    sources.push_back({target});
+                    sources.push_back({{target}, {}});
                     found_source = true;
                     break;
                 }
@@ -253,30 +291,32 @@ std::vector<std::vector<uint32_t>> findSourceCycles(OcclusionOracle& oracle,
                     for (uint32_t p : stuck)
                         if (path_index[p] == top)
                             members.push_back(p);
-                    sources.push_back(std::move(members));
+                    sources.push_back({std::move(members), std::move(path.back().witness)});
                     found_source = true;
                     break;
                 }
                 scratch.candidates.assign(outside.begin(), outside.end());
                 occluder = tester.findOccluder(scratch.candidates, occluded_member);
+                occluded = occluded_member;
             }
             // Reaching what lies behind an earlier walk's path puts this one behind it too.
             if (walk_state[occluder] != kUnknown)
                 break;
-            merged_at = extendPath(path, path_index, occluder) ? kNoPosition : position[occluder];
+            merged_at = extendPath(path, path_index, {occluder, occluded}) ? kNoPosition
+                                                                           : position[occluder];
         }
         if (found_source) {
             // The source leaves; the rest of the path stays valid (each component strongly
             // connected, occluded by the next one's members), and the next walk goes on from
             // its top, which lost its occluder: no path is ever walked twice.
-            for (uint32_t p : path.back()) {
+            for (uint32_t p : path.back().members) {
                 walk_state[p] = kInSource;
                 path_index[p] = kNotOnPath;
             }
             path.pop_back();
         } else {
             for (const auto& component : path)
-                for (uint32_t p : component) {
+                for (uint32_t p : component.members) {
                     walk_state[p] = kDownstream;
                     path_index[p] = kNotOnPath;
                 }
@@ -284,7 +324,7 @@ std::vector<std::vector<uint32_t>> findSourceCycles(OcclusionOracle& oracle,
         }
     }
     for (const auto& component : path)
-        for (uint32_t p : component)
+        for (uint32_t p : component.members)
             path_index[p] = kNotOnPath;
     scratch.pending_path = std::move(path);
     for (uint32_t p : stuck)

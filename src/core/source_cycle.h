@@ -11,6 +11,22 @@
 
 namespace vissort::detail {
 
+/// A source strongly connected component: its members and the occlusions among them, found by
+/// the search, that make it strongly connected (empty for a source of one).
+struct SourceComponent {
+    std::vector<uint32_t> members;
+    std::vector<Occlusion> witness;
+};
+
+/// One group test (OcclusionOracle::queryAgainst), counted in stats as a cycle search's.
+void groupTest(OcclusionOracle& oracle, std::span<const uint32_t> occluders,
+               std::span<const uint32_t> targets, std::span<uint8_t> behind, VisSortStats& stats);
+
+/// An occluder of target among candidates (which do not hold it), by one group test of them all
+/// and then halving; false when none occludes it.
+bool findOccluderAmong(OcclusionOracle& oracle, std::span<const uint32_t> candidates,
+                       uint32_t target, VisSortStats& stats, uint32_t& occluder);
+
 /// `stuck` is the list I of an iteration that output nothing and in_monotone_run its M flags
 /// after that iteration: a primitive in M is occluded by one before it in the list (pass 2 found
 /// it behind those), any other by one after it (pass 1). The search uses that to halve its work.
@@ -22,11 +38,12 @@ namespace vissort::detail {
 /// least one. Up to max_walks walks, each from the front-most primitive not yet known to be in a
 /// source or behind one; a walk that reaches such a primitive ends without a new source.
 /// Uses group tests only (draw a set, query members) and counts them in stats. Each source lists
-/// its members in the order they have in `stuck`.
-std::vector<std::vector<uint32_t>> findSourceCycles(OcclusionOracle& oracle,
-                                                    std::span<const uint32_t> stuck,
-                                                    std::span<const uint8_t> in_monotone_run,
-                                                    uint32_t max_walks, VisSortStats& stats,
-                                                    VisSortWorkspace& scratch);
+/// its members in the order they have in `stuck`, and the occlusions it found among them that
+/// make them strongly connected.
+std::vector<SourceComponent> findSourceCycles(OcclusionOracle& oracle,
+                                              std::span<const uint32_t> stuck,
+                                              std::span<const uint8_t> in_monotone_run,
+                                              uint32_t max_walks, VisSortStats& stats,
+                                              VisSortWorkspace& scratch);
 
 } // namespace vissort::detail

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cassert>
 
+#include "contracted_vis_sort.h"
 #include "source_cycle.h"
 
 namespace vissort {
@@ -52,6 +53,7 @@ public:
         result_.order.clear();
         result_.order.reserve(unsorted_.size());
         result_.cycles.clear();
+        result_.cycle_witnesses.clear();
         result_.stats = {};
     }
 
@@ -139,15 +141,15 @@ private:
 
     // No progress: every unsorted primitive is occluded by another unsorted one, so the occlusion
     // graph among them has a cycle. Output source components whole (members in list order: the
-    // cycle-breaking rule), several per stuck iteration when the walks find them, and go on; M
-    // stays valid because primitives are only removed.
+    // cycle-breaking rule), several per stuck iteration when the walks find them,
+    // and go on; M stays valid because primitives are only removed.
     void outputSourceCycles() {
         in_cycle_.resize(oracle_.primitiveCount(), 0);
-        std::vector<std::vector<uint32_t>> sources =
+        std::vector<detail::SourceComponent> sources =
             detail::findSourceCycles(oracle_, unsorted_, in_monotone_run_, kWalksPerStuckIteration,
                                      result_.stats, workspace_);
-        for (const auto& cycle : sources)
-            for (uint32_t p : cycle) {
+        for (const auto& source : sources)
+            for (uint32_t p : source.members) {
                 in_cycle_[p] = 1;
                 result_.order.push_back(p);
             }
@@ -160,12 +162,14 @@ private:
         }
         unsorted_.resize(kept);
         in_monotone_run_.resize(kept);
-        for (auto& cycle : sources) {
-            for (uint32_t p : cycle)
+        for (auto& source : sources) {
+            for (uint32_t p : source.members)
                 in_cycle_[p] = 0;
-            if (cycle.size() > 1) {
-                std::sort(cycle.begin(), cycle.end());
-                result_.cycles.push_back(std::move(cycle));
+            if (source.members.size() > 1) {
+                assert(detail::witnessConnects(source.members, source.witness));
+                std::sort(source.members.begin(), source.members.end());
+                result_.cycles.push_back(std::move(source.members));
+                result_.cycle_witnesses.push_back(std::move(source.witness));
             }
         }
     }
@@ -190,10 +194,13 @@ private:
 } // namespace
 
 void visSort(OcclusionOracle& oracle, std::span<const uint32_t> initial_order,
-             VisibilityOrder& result, VisSortWorkspace& workspace) {
+             VisibilityOrder& result, VisSortWorkspace& workspace, CycleHints hints) {
     assert(isPermutation(initial_order, oracle.primitiveCount(), workspace.seen));
     (void)isPermutation;
-    VisSorter(oracle, initial_order, result, workspace).run();
+    if (hints.cycles.empty())
+        VisSorter(oracle, initial_order, result, workspace).run();
+    else
+        detail::contractedVisSort(oracle, initial_order, hints, result, workspace);
 }
 
 VisibilityOrder visSort(OcclusionOracle& oracle, std::span<const uint32_t> initial_order) {

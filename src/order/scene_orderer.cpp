@@ -19,6 +19,7 @@ void addStats(VisSortStats& total, const VisSortStats& part) {
     total.stuck_iterations += part.stuck_iterations;
     total.cycle_queries += part.cycle_queries;
     total.cycle_draws += part.cycle_draws;
+    total.hinted_cycles += part.hinted_cycles;
 }
 
 } // namespace
@@ -64,7 +65,25 @@ void SceneOrderer::sortStage1(PositionsView positions, const ViewProjection& vie
         return triangles ? PrimitiveRange{i, 1} : objects_[i];
     };
     if (previous_order_.size() == n) {
-        sortFrom(positions, view, n, primitive, previous_order_, sorted_);
+        // Last frame's cycles, as hints in this frame's bound ids (positions in its order); a
+        // frame after one without cycles holds no map.
+        if (!previous_cycles_.empty()) {
+            bound_id_.resize(n);
+            for (uint32_t i = 0; i < n; ++i)
+                bound_id_[previous_order_[i]] = i;
+        }
+        hint_cycles_.resize(previous_cycles_.size());
+        hint_witnesses_.resize(previous_cycles_.size());
+        for (std::size_t c = 0; c < previous_cycles_.size(); ++c) {
+            hint_cycles_[c].clear();
+            for (uint32_t p : previous_cycles_[c])
+                hint_cycles_[c].push_back(bound_id_[p]);
+            hint_witnesses_[c].clear();
+            for (const Occlusion& o : previous_witnesses_[c])
+                hint_witnesses_[c].push_back({bound_id_[o.front], bound_id_[o.back]});
+        }
+        sortFrom(positions, view, n, primitive, previous_order_, sorted_, Bind::new_frame,
+                 {hint_cycles_, hint_witnesses_});
     } else {
         std::span<const PrimitiveRange> primitives = objects_;
         if (triangles) { // bound_ as scratch: sortFrom overwrites it
@@ -78,6 +97,13 @@ void SceneOrderer::sortStage1(PositionsView positions, const ViewProjection& vie
     }
     // The order becomes the previous one; sorted_ keeps the old buffer for the next frame.
     std::swap(previous_order_, sorted_.order);
+    // Objects' cycles, the next frame's hints. Not triangles': on the deforming bunnies 1 to 3
+    // of their 45 to 70 cycles a frame survive to the next, and confirming the rest cost 4 to 7%
+    // of the frame (docs/benchmarks.md).
+    if (!triangles) {
+        previous_cycles_ = sorted_.cycles;
+        previous_witnesses_ = sorted_.cycle_witnesses;
+    }
 }
 
 // Why bind in start order: Vis-sort visits primitives in list order, the list stays close to the
@@ -87,7 +113,7 @@ void SceneOrderer::sortStage1(PositionsView positions, const ViewProjection& vie
 template <class PrimitiveAt>
 void SceneOrderer::sortFrom(PositionsView positions, const ViewProjection& view, std::size_t n,
                             const PrimitiveAt& primitive, std::span<const uint32_t> start,
-                            VisibilityOrder& into, Bind how) {
+                            VisibilityOrder& into, Bind how, CycleHints hints) {
     bound_.resize(n);
     for (std::size_t i = 0; i < n; ++i)
         bound_[i] = primitive(start[i]);
@@ -105,7 +131,7 @@ void SceneOrderer::sortFrom(PositionsView positions, const ViewProjection& view,
         };
     else
         workspace_.on_iteration = nullptr;
-    visSort(oracle_, identity_, into, workspace_);
+    visSort(oracle_, identity_, into, workspace_, hints);
     for (uint32_t& p : into.order)
         p = start[p];
     for (std::vector<uint32_t>& cycle : into.cycles) {
@@ -113,6 +139,9 @@ void SceneOrderer::sortFrom(PositionsView positions, const ViewProjection& view,
             p = start[p];
         std::sort(cycle.begin(), cycle.end());
     }
+    for (std::vector<Occlusion>& witness : into.cycle_witnesses)
+        for (Occlusion& o : witness)
+            o = {start[o.front], start[o.back]};
 }
 
 void SceneOrderer::orderFrame(PositionsView positions, const ViewProjection& view,

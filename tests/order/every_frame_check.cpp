@@ -17,7 +17,7 @@ std::string EveryFrameTally::describe() const {
     out << frames << " frames, " << orders << " orders, " << pairs_checked
         << " occlusions checked, " << violations << " out of order, " << true_cycles
         << " true cycles; gl cycle members " << gl_cycle_members << " (" << extra_gl_members
-        << " beyond the true components)";
+        << " beyond the true components), " << hinted_cycles << " confirmed from the last frame";
     return out.str();
 }
 
@@ -97,6 +97,7 @@ void EveryFrameCheck::checkFrame(PositionsView positions, const ViewProjection& 
         const OrderCheck check =
             checkVisibilityOrder(fragments, triangle_count_, primitives, frame.order, frame.cycles);
         ++tally_.orders;
+        tally_.hinted_cycles += frame.stats.hinted_cycles;
         ASSERT_TRUE(check.valid_permutation);
         tally_.pairs_checked += check.pairs_checked;
         tally_.violations += check.violation_count;

@@ -34,6 +34,7 @@ struct EveryFrameTally {
     uint64_t true_cycles = 0;      // components of two or more, summed over frames and levels
     uint64_t extra_gl_members = 0; // gl cycle members beyond the components they hold
     uint64_t gl_cycle_members = 0; // all gl cycle members
+    uint64_t hinted_cycles = 0;    // cycles confirmed from the last frame's (VisSortStats)
     std::string describe() const;
 };
 

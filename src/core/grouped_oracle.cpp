@@ -1,0 +1,84 @@
+// Groups of primitives as primitives (grouped_oracle.h).
+
+#include "grouped_oracle.h"
+
+#include <algorithm>
+#include <cassert>
+
+namespace vissort::detail {
+
+GroupedOracle::GroupedOracle(OcclusionOracle& base, std::span<const uint32_t> members,
+                             std::span<const uint32_t> first)
+    : base_(base), members_(members), first_(first) {
+    assert(!first.empty() && first.back() == members.size());
+}
+
+void GroupedOracle::draw(uint32_t group) {
+    const std::span<const uint32_t> members = membersOf(group);
+    extra_draws_ += members.size() - 1;
+    for (uint32_t p : members)
+        base_.draw(p);
+}
+
+bool GroupedOracle::anyBehind(uint32_t group) {
+    // Queries change nothing: asking members one by one is asking before any is drawn.
+    const std::span<const uint32_t> members = membersOf(group);
+    extra_queries_ += members.size() - 1;
+    for (uint32_t p : members)
+        if (base_.anyBehind(p))
+            return true;
+    return false;
+}
+
+bool GroupedOracle::allSingle(std::span<const uint32_t> sequence) const {
+    return std::all_of(sequence.begin(), sequence.end(),
+                       [&](uint32_t g) { return first_[g + 1] - first_[g] == 1; });
+}
+
+std::span<const uint32_t> GroupedOracle::expand(std::span<const uint32_t> groups,
+                                                std::vector<uint32_t>& into) const {
+    into.clear();
+    for (uint32_t g : groups) {
+        const std::span<const uint32_t> members = membersOf(g);
+        into.insert(into.end(), members.begin(), members.end());
+    }
+    return into;
+}
+
+void GroupedOracle::backToFrontPass(std::span<const uint32_t> sequence,
+                                    std::span<const uint8_t> query, std::span<uint8_t> behind) {
+    if (!allSingle(sequence)) {
+        OcclusionOracle::backToFrontPass(sequence, query, behind);
+        return;
+    }
+    base_.backToFrontPass(expand(sequence, sequence_), query, behind);
+}
+
+void GroupedOracle::frontToBackPass(std::span<const uint32_t> sequence,
+                                    std::span<const uint8_t> query, std::span<uint8_t> behind) {
+    if (!allSingle(sequence)) {
+        OcclusionOracle::frontToBackPass(sequence, query, behind);
+        return;
+    }
+    base_.frontToBackPass(expand(sequence, sequence_), query, behind);
+}
+
+void GroupedOracle::queryAgainst(std::span<const uint32_t> occluders,
+                                 std::span<const uint32_t> targets, std::span<uint8_t> behind) {
+    const std::span<const uint32_t> drawn = expand(occluders, occluders_);
+    const std::span<const uint32_t> asked = expand(targets, targets_);
+    extra_draws_ += drawn.size() - occluders.size();
+    extra_queries_ += asked.size() - targets.size();
+    extra_test_draws_ += drawn.size() - occluders.size();
+    extra_test_queries_ += asked.size() - targets.size();
+    behind_.assign(asked.size(), 0);
+    base_.queryAgainst(drawn, asked, behind_);
+    for (std::size_t i = 0, k = 0; i < targets.size(); ++i) {
+        const std::size_t members = first_[targets[i] + 1] - first_[targets[i]];
+        behind[i] = std::any_of(behind_.begin() + k, behind_.begin() + k + members,
+                                [](uint8_t b) { return b != 0; });
+        k += members;
+    }
+}
+
+} // namespace vissort::detail
