@@ -123,7 +123,9 @@ std::vector<PaperPath> paperPaths(const PaperBenchSettings& settings) {
     plant.specification = settings.quick ? "builtin:powerplant?scale=0.05" : "builtin:powerplant";
     plant.path = CameraPath::scene;
     plant.level = OrderLevel::object;
-    plant.reported = {{"paper, 7 to 10 fps", 100, 1000.0 / 7}};
+    // And issue 33's target for the ordering alone (a frame with transparency: 100 ms, the
+    // paper's faster end).
+    plant.reported = {{"paper, 7 to 10 fps", 100, 1000.0 / 7}, {"target, ordering", 33, 33}};
     PaperPath still;
     still.name = "bunnies-static";
     still.figure = "5 right";

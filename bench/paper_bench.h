@@ -29,7 +29,8 @@ class GlContext;
 
 namespace vissort::bench {
 
-/// What the paper reports for its paths (GeForce 6800, 1600x1200), drawn on the plots.
+/// What the paper reports for its paths (GeForce 6800, 1600x1200), and the project's targets,
+/// drawn on the plots.
 struct PaperReported {
     const char* what;
     double low_ms, high_ms; // a range of frame times; equal when one value is reported

@@ -104,6 +104,12 @@ public:
                          std::span<uint8_t> behind) override;
     void frontToBackPass(std::span<const uint32_t> sequence, std::span<const uint8_t> query,
                          std::span<uint8_t> behind) override;
+    /// A group's query is one query object over all its members (any sample of any member
+    /// passes it), its draws conditional on it in pass 2: batched as the plain passes are.
+    void backToFrontGroupPass(std::span<const uint32_t> members, std::span<const uint32_t> first,
+                              std::span<const uint8_t> query, std::span<uint8_t> behind) override;
+    void frontToBackGroupPass(std::span<const uint32_t> members, std::span<const uint32_t> first,
+                              std::span<const uint8_t> query, std::span<uint8_t> behind) override;
     void queryAgainst(std::span<const uint32_t> occluders, std::span<const uint32_t> targets,
                       std::span<uint8_t> behind) override;
 

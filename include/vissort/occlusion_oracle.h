@@ -42,6 +42,19 @@ public:
     virtual void frontToBackPass(std::span<const uint32_t> sequence, std::span<const uint8_t> query,
                                  std::span<uint8_t> behind);
 
+    /// The two passes over groups of primitives, each group standing for the union of its
+    /// members (Vis-sort over the groups of the last frame's cycles, vis_sort.h): `members`
+    /// holds the groups one after another, group g being members[first[g] .. first[g + 1]), and
+    /// query and behind have one entry a group. A group's query asks whether any member is
+    /// behind, before any member is drawn; its draw draws every member. The defaults call the
+    /// primitive operations in that order; an override must give the same answers.
+    virtual void backToFrontGroupPass(std::span<const uint32_t> members,
+                                      std::span<const uint32_t> first,
+                                      std::span<const uint8_t> query, std::span<uint8_t> behind);
+    virtual void frontToBackGroupPass(std::span<const uint32_t> members,
+                                      std::span<const uint32_t> first,
+                                      std::span<const uint8_t> query, std::span<uint8_t> behind);
+
     /// Group test: clears, draws every occluder, then behind[i] = anyBehind(targets[i]).
     /// Afterwards the depth buffer holds the occluders' depths wherever a target has a fragment;
     /// elsewhere an oracle may have left out occluders that cannot change an answer

@@ -30,37 +30,59 @@ bool GroupedOracle::anyBehind(uint32_t group) {
     return false;
 }
 
+void GroupedOracle::countMembers(std::span<const uint32_t> sequence,
+                                 std::span<const uint8_t> query) {
+    // The caller counts a query and a draw a group; a group of k members costs base up to k of
+    // each (a front-to-back pass draws fewer: the same bound the caller counts).
+    for (std::size_t i = 0; i < sequence.size(); ++i) {
+        const uint32_t extra = first_[sequence[i] + 1] - first_[sequence[i]] - 1;
+        extra_draws_ += extra;
+        extra_queries_ += query[i] ? extra : 0;
+    }
+}
+
 bool GroupedOracle::allSingle(std::span<const uint32_t> sequence) const {
     return std::all_of(sequence.begin(), sequence.end(),
                        [&](uint32_t g) { return first_[g + 1] - first_[g] == 1; });
 }
 
 std::span<const uint32_t> GroupedOracle::expand(std::span<const uint32_t> groups,
-                                                std::vector<uint32_t>& into) const {
+                                                std::vector<uint32_t>& into,
+                                                std::vector<uint32_t>* starts) const {
     into.clear();
+    if (starts != nullptr)
+        starts->assign(1, 0);
     for (uint32_t g : groups) {
         const std::span<const uint32_t> members = membersOf(g);
         into.insert(into.end(), members.begin(), members.end());
+        if (starts != nullptr)
+            starts->push_back(uint32_t(into.size()));
     }
     return into;
 }
 
 void GroupedOracle::backToFrontPass(std::span<const uint32_t> sequence,
                                     std::span<const uint8_t> query, std::span<uint8_t> behind) {
-    if (!allSingle(sequence)) {
-        OcclusionOracle::backToFrontPass(sequence, query, behind);
+    if (allSingle(sequence)) {
+        base_.backToFrontPass(expand(sequence, sequence_), query, behind);
         return;
     }
-    base_.backToFrontPass(expand(sequence, sequence_), query, behind);
+    countMembers(sequence, query);
+    // Expanded first: the span of starts_ must see the groups' starts.
+    const std::span<const uint32_t> members = expand(sequence, sequence_, &starts_);
+    base_.backToFrontGroupPass(members, starts_, query, behind);
 }
 
 void GroupedOracle::frontToBackPass(std::span<const uint32_t> sequence,
                                     std::span<const uint8_t> query, std::span<uint8_t> behind) {
-    if (!allSingle(sequence)) {
-        OcclusionOracle::frontToBackPass(sequence, query, behind);
+    if (allSingle(sequence)) {
+        base_.frontToBackPass(expand(sequence, sequence_), query, behind);
         return;
     }
-    base_.frontToBackPass(expand(sequence, sequence_), query, behind);
+    countMembers(sequence, query);
+    // Expanded first: the span of starts_ must see the groups' starts.
+    const std::span<const uint32_t> members = expand(sequence, sequence_, &starts_);
+    base_.frontToBackGroupPass(members, starts_, query, behind);
 }
 
 void GroupedOracle::queryAgainst(std::span<const uint32_t> occluders,

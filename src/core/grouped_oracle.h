@@ -23,8 +23,8 @@ public:
     void clear() override { base_.clear(); }
     void draw(uint32_t group) override;
     bool anyBehind(uint32_t group) override;
-    /// Both passes use base's own when every group of the sequence has one member (its batches
-    /// stay batched), else the definitions in primitive operations.
+    /// Both passes are base's: its plain passes when every group of the sequence has one member,
+    /// else its group passes (batched where base batches them).
     void backToFrontPass(std::span<const uint32_t> sequence, std::span<const uint8_t> query,
                          std::span<uint8_t> behind) override;
     void frontToBackPass(std::span<const uint32_t> sequence, std::span<const uint8_t> query,
@@ -45,13 +45,16 @@ private:
         return members_.subspan(first_[group], first_[group + 1] - first_[group]);
     }
     bool allSingle(std::span<const uint32_t> sequence) const;
-    // Expands groups into their members' ids (scratch_ids_), one group after another.
-    std::span<const uint32_t> expand(std::span<const uint32_t> groups,
-                                     std::vector<uint32_t>& into) const;
+    // Counts the members beyond one a group of a pass in the extras.
+    void countMembers(std::span<const uint32_t> sequence, std::span<const uint8_t> query);
+    // Expands groups into their members' ids, one group after another; where each group's
+    // members begin in `into`, and its end, into `starts` when given.
+    std::span<const uint32_t> expand(std::span<const uint32_t> groups, std::vector<uint32_t>& into,
+                                     std::vector<uint32_t>* starts = nullptr) const;
 
     OcclusionOracle& base_;
     std::span<const uint32_t> members_, first_;
-    std::vector<uint32_t> sequence_, occluders_, targets_;
+    std::vector<uint32_t> sequence_, starts_, occluders_, targets_;
     std::vector<uint8_t> behind_;
     uint64_t extra_draws_ = 0, extra_queries_ = 0, extra_test_draws_ = 0, extra_test_queries_ = 0;
 };

@@ -12,6 +12,10 @@
 namespace vissort::detail {
 namespace {
 
+// A hint's lost occlusions are replaced only when they are at most one in this many of its
+// witness (and at most 2 otherwise).
+constexpr std::size_t kRepairableShare = 8;
+
 // Adjacency lists of n vertices in compressed form: vertex v's targets are
 // next[first[v] .. first[v + 1]).
 struct Adjacency {
@@ -42,6 +46,23 @@ std::vector<std::pair<uint32_t, uint32_t>> localEdges(std::span<const uint32_t> 
             edges.emplace_back(uint32_t(front), uint32_t(back));
     }
     return edges;
+}
+
+// The members nearest to p (ascending ids, p among them) on each side, up to kNear in all, and
+// the others; p in neither.
+constexpr std::size_t kNear = 8;
+void splitNear(std::span<const uint32_t> members, uint32_t p, std::vector<uint32_t>& near,
+               std::vector<uint32_t>& rest) {
+    near.clear();
+    rest.clear();
+    const std::size_t at = std::lower_bound(members.begin(), members.end(), p) - members.begin();
+    const std::size_t first = at > kNear / 2 ? at - kNear / 2 : 0;
+    const std::size_t last = std::min(members.size(), at + kNear / 2 + 1);
+    for (std::size_t i = 0; i < members.size(); ++i) {
+        if (members[i] == p)
+            continue;
+        (i >= first && i < last ? near : rest).push_back(members[i]);
+    }
 }
 
 } // namespace
@@ -132,7 +153,7 @@ std::vector<ConfirmedGroup> confirmHints(OcclusionOracle& oracle, const CycleHin
     std::vector<ConfirmedGroup> groups;
     std::vector<uint8_t> grouped(n, 0);
     std::vector<Occlusion> witness;
-    std::vector<uint32_t> backs, others;
+    std::vector<uint32_t> backs, near, rest;
     std::vector<uint8_t> behind;
     std::vector<Occlusion> lost;
     for (std::size_t h = 0; h < hints.cycles.size() && h < hints.witnesses.size(); ++h) {
@@ -174,29 +195,44 @@ std::vector<ConfirmedGroup> confirmHints(OcclusionOracle& oracle, const CycleHin
         }
         // An occlusion that no longer holds (the camera moved off the few pixels where it did)
         // is replaced, where the members allow, by two that do: an occluder of its back member
-        // among the members (one test of all of them, then halving) and a member behind its
-        // front one (one test). What the witness then connects is what the hint confirms; the
+        // among the members (one test, then halving) and a member behind its front one (one
+        // test). What the witness then connects is what the hint confirms; the
         // contracted order's search joins the parts if they still form one component.
+        // Repairs cost a test of all members each: only for a few lost occlusions. Where many
+        // are lost the cycle has changed (the cold frame's large cycle split in two on the
+        // power plant's first coherent frame: 14,464 queries repairing it); the parts the
+        // confirmed ones connect are kept and the search finds the rest.
         const std::size_t tested = witness.size();
-        for (std::size_t i = kept; i < tested; ++i)
-            lost.push_back(witness[i]);
+        if (tested - kept <= std::max<std::size_t>(2, tested / kRepairableShare))
+            for (std::size_t i = kept; i < tested; ++i)
+                lost.push_back(witness[i]);
         witness.resize(kept);
         for (const Occlusion& o : lost) {
-            others.clear();
-            for (uint32_t p : members)
-                if (p != o.back)
-                    others.push_back(p);
+            // Members are in list order, and in a nearly sorted list occluders lie near: the
+            // nearest few first, then the rest.
             uint32_t occluder = 0;
-            if (findOccluderAmong(oracle, others, o.back, stats, occluder))
+            bool found = false;
+            for (int round = 0; round < 2 && !found; ++round) {
+                splitNear(members, o.back, near, rest);
+                found =
+                    findOccluderAmong(oracle, round == 0 ? near : rest, o.back, stats, occluder);
+            }
+            if (found)
                 witness.push_back({occluder, o.back});
-            others.clear();
-            for (uint32_t p : members)
-                if (p != o.front)
-                    others.push_back(p);
-            behind.assign(others.size(), 0);
-            groupTest(oracle, std::span(&o.front, 1), others, behind, stats);
-            if (const auto hit = std::find(behind.begin(), behind.end(), 1); hit != behind.end())
-                witness.push_back({o.front, others[hit - behind.begin()]});
+            found = false;
+            for (int round = 0; round < 2 && !found; ++round) {
+                splitNear(members, o.front, near, rest);
+                const std::vector<uint32_t>& asked = round == 0 ? near : rest;
+                if (asked.empty())
+                    continue;
+                behind.assign(asked.size(), 0);
+                groupTest(oracle, std::span(&o.front, 1), asked, behind, stats);
+                if (const auto hit = std::find(behind.begin(), behind.end(), 1);
+                    hit != behind.end()) {
+                    witness.push_back({o.front, asked[hit - behind.begin()]});
+                    found = true;
+                }
+            }
         }
         lost.clear();
         for (std::vector<uint32_t>& part : connectedParts(members, witness)) {

@@ -9,6 +9,7 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -58,7 +59,8 @@ struct GlOracle::Impl {
     detail::GlRenderbuffer depth;
     uint32_t width = 0, height = 0;
     std::vector<PrimitiveRange> primitives;
-    std::vector<GLuint> queries; // one per element of a pass, reused
+    std::vector<GLuint> queries;         // one per element of a pass, reused
+    std::vector<uint32_t> single_groups; // singleGroups' 0, 1, 2, ...
     // Draws waiting to go out as one glMultiDrawArrays, and the state they and queries need.
     std::vector<GLint> first_corners;
     std::vector<GLsizei> corner_counts;
@@ -123,12 +125,16 @@ struct GlOracle::Impl {
 
     // Queries primitive p into query object q (GREATER, writes off; tolerance 0: the depths'
     // upper bounds, else nearer by the tolerance).
-    void issueQuery(uint32_t p, GLuint q) {
+    void issueQuery(uint32_t p, GLuint q) { issueQuery(std::span(&p, 1), q); }
+
+    // Queries the union of primitives ps into one query object: any sample of any of them.
+    void issueQuery(std::span<const uint32_t> ps, GLuint q) {
         flushDraws();
         setMode(Mode::query);
-        ++stats.queries;
+        stats.queries += ps.size();
         glBeginQuery(GL_ANY_SAMPLES_PASSED, q);
-        drawNow(p);
+        for (uint32_t p : ps)
+            drawNow(p);
         glEndQuery(GL_ANY_SAMPLES_PASSED);
     }
 
@@ -197,6 +203,15 @@ struct GlOracle::Impl {
     void beginPass(std::size_t count) {
         clearDepth();
         ensureQueries(count);
+    }
+
+    // 0, 1, ..., count: the group starts of count groups of one member.
+    std::span<const uint32_t> singleGroups(std::size_t count) {
+        if (single_groups.size() < count + 1) {
+            single_groups.resize(count + 1);
+            std::iota(single_groups.begin(), single_groups.end(), 0u);
+        }
+        return std::span(single_groups).first(count + 1);
     }
 
     // Reads the answers once, after every query of the pass has been issued.
@@ -318,38 +333,58 @@ bool GlOracle::anyBehind(uint32_t primitive) {
     return d.answer(d.queries[0]);
 }
 
+// The plain passes are the group passes over groups of one (singleGroups).
 void GlOracle::backToFrontPass(std::span<const uint32_t> sequence, std::span<const uint8_t> query,
                                std::span<uint8_t> behind) {
     assert(query.size() == sequence.size() && behind.size() == sequence.size());
-    Impl& d = *impl_;
-    const Impl::Scope scope = d.begin(depth_tolerance_);
-    d.beginPass(sequence.size());
-    for (std::size_t i = sequence.size(); i-- > 0;) {
-        if (query[i])
-            d.issueQuery(sequence[i], d.queries[i]);
-        d.queueDraw(sequence[i]);
-    }
-    d.flushDraws();
-    d.readAnswers(query, behind);
+    backToFrontGroupPass(sequence, impl_->singleGroups(sequence.size()), query, behind);
 }
 
 void GlOracle::frontToBackPass(std::span<const uint32_t> sequence, std::span<const uint8_t> query,
                                std::span<uint8_t> behind) {
     assert(query.size() == sequence.size() && behind.size() == sequence.size());
+    frontToBackGroupPass(sequence, impl_->singleGroups(sequence.size()), query, behind);
+}
+
+void GlOracle::backToFrontGroupPass(std::span<const uint32_t> members,
+                                    std::span<const uint32_t> first, std::span<const uint8_t> query,
+                                    std::span<uint8_t> behind) {
+    assert(first.size() == query.size() + 1 && behind.size() == query.size());
     Impl& d = *impl_;
     const Impl::Scope scope = d.begin(depth_tolerance_);
-    d.beginPass(sequence.size());
-    for (std::size_t i = 0; i < sequence.size(); ++i) {
-        if (!query[i]) {
-            d.queueDraw(sequence[i]);
+    d.beginPass(query.size());
+    for (std::size_t g = query.size(); g-- > 0;) {
+        const std::span<const uint32_t> group = members.subspan(first[g], first[g + 1] - first[g]);
+        if (query[g])
+            d.issueQuery(group, d.queries[g]);
+        for (uint32_t p : group)
+            d.queueDraw(p);
+    }
+    d.flushDraws();
+    d.readAnswers(query, behind);
+}
+
+void GlOracle::frontToBackGroupPass(std::span<const uint32_t> members,
+                                    std::span<const uint32_t> first, std::span<const uint8_t> query,
+                                    std::span<uint8_t> behind) {
+    assert(first.size() == query.size() + 1 && behind.size() == query.size());
+    Impl& d = *impl_;
+    const Impl::Scope scope = d.begin(depth_tolerance_);
+    d.beginPass(query.size());
+    for (std::size_t g = 0; g < query.size(); ++g) {
+        const std::span<const uint32_t> group = members.subspan(first[g], first[g + 1] - first[g]);
+        if (!query[g]) {
+            for (uint32_t p : group)
+                d.queueDraw(p);
             continue;
         }
-        // Drawn only when its own query found a fragment behind: the GPU decides.
-        d.issueQuery(sequence[i], d.queries[i]);
+        // Drawn only when the group's own query found a fragment behind: the GPU decides.
+        d.issueQuery(group, d.queries[g]);
         d.setMode(Impl::Mode::draw);
-        ++d.stats.draws;
-        glBeginConditionalRender(d.queries[i], GL_QUERY_WAIT);
-        d.drawNow(sequence[i]);
+        d.stats.draws += group.size();
+        glBeginConditionalRender(d.queries[g], GL_QUERY_WAIT);
+        for (uint32_t p : group)
+            d.drawNow(p);
         glEndConditionalRender();
     }
     d.flushDraws();

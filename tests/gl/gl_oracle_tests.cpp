@@ -161,7 +161,7 @@ TEST_P(GlOnScenes, DepthsBoundTheExactOnesFromBelow) {
         }
 }
 
-// The three pass-level batches on random sequences and query flags, then single draws and
+// The pass-level batches on random sequences and query flags, then single draws and
 // queries interleaved at random, against the exact oracle: no exact "behind" missed. The extra
 // answers are reported (measured: at most 0.16% of the exact "not behind" ones, on the three
 // sticks).

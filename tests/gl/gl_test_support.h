@@ -169,9 +169,10 @@ inline void interleave(ExactOracle& exact, GlOracle& gl, uint32_t seed, int oper
     }
 }
 
-/// The three pass-level batches on random sequences and query flags, both oracles: every
-/// exact "behind" must be gl's. In pass 2 gl then draws whatever exact draws, and more: its
-/// later answers stay a superset. Entries not queried must be left alone.
+/// The pass-level batches (both passes, plain and over random groups, and the group test) on
+/// random sequences and query flags, both oracles: every exact "behind" must be gl's. In pass 2
+/// gl then draws whatever exact draws, and more: its later answers stay a superset. Entries not
+/// queried must be left alone.
 inline void comparePasses(ExactOracle& exact, GlOracle& gl, uint32_t seed, int rounds,
                           Tally& tally) {
     const uint32_t n = exact.primitiveCount();
@@ -213,6 +214,27 @@ inline void comparePasses(ExactOracle& exact, GlOracle& gl, uint32_t seed, int r
         exact.queryAgainst(occluders, targets, expected_group);
         gl.queryAgainst(occluders, targets, got_group);
         compare(expected_group, got_group, {}, "group test");
+        // The passes over groups: the sequence cut into groups of 1 to 4 members, against the
+        // exact oracle's, which are the definitions in primitive operations.
+        std::vector<uint32_t> first{0};
+        while (first.back() < n)
+            first.push_back(std::min<uint32_t>(n, first.back() + 1 + rng() % 4));
+        const std::size_t groups = first.size() - 1;
+        std::vector<uint8_t> group_query(groups);
+        for (uint8_t& q : group_query)
+            q = uint8_t(rng() % 3 != 0);
+        expected.assign(groups, 7);
+        got.assign(groups, 7);
+        exact.backToFrontGroupPass(sequence, first, group_query, std::span(expected).first(groups));
+        gl.backToFrontGroupPass(sequence, first, group_query, std::span(got).first(groups));
+        compare(std::span(expected).first(groups), std::span(got).first(groups), group_query,
+                "group pass 1");
+        expected.assign(groups, 7);
+        got.assign(groups, 7);
+        exact.frontToBackGroupPass(sequence, first, group_query, std::span(expected).first(groups));
+        gl.frontToBackGroupPass(sequence, first, group_query, std::span(got).first(groups));
+        compare(std::span(expected).first(groups), std::span(got).first(groups), group_query,
+                "group pass 2");
     }
 }
 
