@@ -10,6 +10,7 @@
 #include <cassert>
 
 #include "contracted_vis_sort.h"
+#include "hinted_cycles.h" // witnessConnects, for the assertion
 #include "source_cycle.h"
 
 namespace vissort {
