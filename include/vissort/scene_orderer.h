@@ -117,10 +117,10 @@ private:
     std::size_t progress_base_ = 0, progress_total_ = 0; // what sortFrom's share is out of
     std::vector<uint32_t> previous_order_; // last frame, at level_ (objects for multistage)
     std::vector<uint32_t> previous_triangle_order_; // multistage: last frame's order
-    // Last frame's cycles at level_ (objects for multistage) with their witnesses, and the same
-    // as hints in this frame's bound ids (CycleHints): cycles are as coherent as orders.
-    std::vector<std::vector<uint32_t>> previous_cycles_, hint_cycles_;
-    std::vector<std::vector<Occlusion>> previous_witnesses_, hint_witnesses_;
+    // Last frame's cycles and witnesses (sorted_'s) as hints in this frame's bound ids
+    // (CycleHints): cycles are as coherent as orders.
+    std::vector<std::vector<uint32_t>> hint_cycles_;
+    std::vector<std::vector<Occlusion>> hint_witnesses_;
     std::vector<uint32_t> bound_id_; // primitive -> its id in this frame's bind
     // Reused every frame, so that a steady-state frame without cycles allocates nothing
     // (tests/order/orderer_allocation_tests.cpp).

@@ -22,6 +22,19 @@ struct VisSortStats {
     uint64_t cycle_queries = 0;    // of queries, those spent finding cycles
     uint64_t cycle_draws = 0;      // of draws, those spent finding cycles
     uint32_t hinted_cycles = 0;    // cycles confirmed from CycleHints instead of searched for
+
+    /// Adds every count of `part` (a stage's or a step's) to these.
+    VisSortStats& operator+=(const VisSortStats& part) {
+        queries += part.queries;
+        draws += part.draws;
+        clears += part.clears;
+        iterations += part.iterations;
+        stuck_iterations += part.stuck_iterations;
+        cycle_queries += part.cycle_queries;
+        cycle_draws += part.cycle_draws;
+        hinted_cycles += part.hinted_cycles;
+        return *this;
+    }
 };
 
 /// An edge of the occlusion graph: `front` lies in front of `back` at some pixel.

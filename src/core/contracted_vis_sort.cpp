@@ -43,11 +43,7 @@ void contractedVisSort(OcclusionOracle& oracle, std::span<const uint32_t> initia
     std::vector<ConfirmedGroup> groups = confirmHints(oracle, hints, confirming);
     if (groups.empty()) {
         visSort(oracle, initial_order, result, workspace);
-        result.stats.queries += confirming.queries;
-        result.stats.draws += confirming.draws;
-        result.stats.clears += confirming.clears;
-        result.stats.cycle_queries += confirming.cycle_queries;
-        result.stats.cycle_draws += confirming.cycle_draws;
+        result.stats += confirming;
         return;
     }
     // Nodes in list order: a group where its first member is, its members in list order (the
@@ -132,12 +128,12 @@ void contractedVisSort(OcclusionOracle& oracle, std::span<const uint32_t> initia
         result.cycle_witnesses.push_back(std::move(group.witness));
         ++result.stats.hinted_cycles;
     }
-    // The members' draws and queries beyond one a node, and the confirmation's.
-    result.stats.queries += grouped.extraQueries() + confirming.queries;
-    result.stats.draws += grouped.extraDraws() + confirming.draws;
-    result.stats.clears += confirming.clears;
-    result.stats.cycle_queries += grouped.extraGroupTestQueries() + confirming.cycle_queries;
-    result.stats.cycle_draws += grouped.extraGroupTestDraws() + confirming.cycle_draws;
+    // The confirmation's tests, and the members' draws and queries beyond one a node.
+    result.stats += confirming;
+    result.stats.queries += grouped.extraQueries();
+    result.stats.draws += grouped.extraDraws();
+    result.stats.cycle_queries += grouped.extraGroupTestQueries();
+    result.stats.cycle_draws += grouped.extraGroupTestDraws();
 }
 
 } // namespace vissort::detail

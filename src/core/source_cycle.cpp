@@ -11,6 +11,24 @@
 namespace vissort::detail {
 namespace {
 
+// One member of candidates that occludes target, given that the whole set does, by halving;
+// candidates is consumed. Behind a union means behind one of its members, so when the first
+// half does not occlude the target, the second half does.
+uint32_t halveToOccluder(OcclusionOracle& oracle, std::vector<uint32_t>& candidates,
+                         uint32_t target, VisSortStats& stats) {
+    uint8_t behind = 0;
+    while (candidates.size() > 1) {
+        const std::size_t half = candidates.size() / 2;
+        groupTest(oracle, std::span(candidates).first(half), std::span(&target, 1),
+                  std::span(&behind, 1), stats);
+        if (behind)
+            candidates.resize(half);
+        else
+            candidates.erase(candidates.begin(), candidates.begin() + half);
+    }
+    return candidates.front();
+}
+
 class GroupTester {
 public:
     GroupTester(OcclusionOracle& oracle, VisSortStats& stats) : oracle_(oracle), stats_(stats) {}
@@ -23,18 +41,7 @@ public:
     /// One member of candidates that occludes target, given that the whole set does.
     /// candidates is consumed.
     uint32_t findOccluder(std::vector<uint32_t>& candidates, uint32_t target) {
-        uint8_t behind = 0;
-        while (candidates.size() > 1) {
-            const std::size_t half = candidates.size() / 2;
-            test(std::span(candidates).first(half), std::span(&target, 1), std::span(&behind, 1));
-            // Behind a union means behind one of its members, so when the first half does not
-            // occlude the target, the second half does.
-            if (behind)
-                candidates.resize(half);
-            else
-                candidates.erase(candidates.begin(), candidates.begin() + half);
-        }
-        return candidates.front();
+        return halveToOccluder(oracle_, candidates, target, stats_);
     }
 
     /// An occluder of target among the usable primitives of `side`, a part of the list next
@@ -93,16 +100,7 @@ bool findOccluderAmong(OcclusionOracle& oracle, std::span<const uint32_t> candid
     if (!behind)
         return false;
     std::vector<uint32_t> left(candidates.begin(), candidates.end());
-    while (left.size() > 1) {
-        const std::size_t half = left.size() / 2;
-        groupTest(oracle, std::span(left).first(half), std::span(&target, 1), std::span(&behind, 1),
-                  stats);
-        if (behind)
-            left.resize(half);
-        else
-            left.erase(left.begin(), left.begin() + half);
-    }
-    occluder = left.front();
+    occluder = halveToOccluder(oracle, left, target, stats);
     return true;
 }
 

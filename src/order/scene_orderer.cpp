@@ -9,20 +9,7 @@
 #include <numeric>
 
 namespace vissort {
-namespace {
-
-void addStats(VisSortStats& total, const VisSortStats& part) {
-    total.queries += part.queries;
-    total.draws += part.draws;
-    total.clears += part.clears;
-    total.iterations += part.iterations;
-    total.stuck_iterations += part.stuck_iterations;
-    total.cycle_queries += part.cycle_queries;
-    total.cycle_draws += part.cycle_draws;
-    total.hinted_cycles += part.hinted_cycles;
-}
-
-} // namespace
+namespace {} // namespace
 
 std::vector<PrimitiveRange> levelPrimitives(std::span<const PrimitiveRange> objects,
                                             uint32_t triangle_count, OrderLevel level) {
@@ -65,21 +52,25 @@ void SceneOrderer::sortStage1(PositionsView positions, const ViewProjection& vie
         return triangles ? PrimitiveRange{i, 1} : objects_[i];
     };
     if (previous_order_.size() == n) {
-        // Last frame's cycles, as hints in this frame's bound ids (positions in its order); a
-        // frame after one without cycles holds no map.
-        if (!previous_cycles_.empty()) {
+        // Last frame's cycles (still in sorted_: stage 2 sorts into group_sorted_), as hints in
+        // this frame's bound ids (positions in its order). Not triangles': on the deforming
+        // bunnies 1 to 3 of their 45 to 70 cycles a frame survive to the next, and confirming the
+        // rest cost 4 to 7% of the frame (docs/benchmarks.md). A frame after one without cycles
+        // holds no map.
+        const std::size_t hints = triangles ? 0 : sorted_.cycles.size();
+        if (hints != 0) {
             bound_id_.resize(n);
             for (uint32_t i = 0; i < n; ++i)
                 bound_id_[previous_order_[i]] = i;
         }
-        hint_cycles_.resize(previous_cycles_.size());
-        hint_witnesses_.resize(previous_cycles_.size());
-        for (std::size_t c = 0; c < previous_cycles_.size(); ++c) {
+        hint_cycles_.resize(hints);
+        hint_witnesses_.resize(hints);
+        for (std::size_t c = 0; c < hints; ++c) {
             hint_cycles_[c].clear();
-            for (uint32_t p : previous_cycles_[c])
+            for (uint32_t p : sorted_.cycles[c])
                 hint_cycles_[c].push_back(bound_id_[p]);
             hint_witnesses_[c].clear();
-            for (const Occlusion& o : previous_witnesses_[c])
+            for (const Occlusion& o : sorted_.cycle_witnesses[c])
                 hint_witnesses_[c].push_back({bound_id_[o.front], bound_id_[o.back]});
         }
         sortFrom(positions, view, n, primitive, previous_order_, sorted_, Bind::new_frame,
@@ -97,13 +88,6 @@ void SceneOrderer::sortStage1(PositionsView positions, const ViewProjection& vie
     }
     // The order becomes the previous one; sorted_ keeps the old buffer for the next frame.
     std::swap(previous_order_, sorted_.order);
-    // Objects' cycles, the next frame's hints. Not triangles': on the deforming bunnies 1 to 3
-    // of their 45 to 70 cycles a frame survive to the next, and confirming the rest cost 4 to 7%
-    // of the frame (docs/benchmarks.md).
-    if (!triangles) {
-        previous_cycles_ = sorted_.cycles;
-        previous_witnesses_ = sorted_.cycle_witnesses;
-    }
 }
 
 // Why bind in start order: Vis-sort visits primitives in list order, the list stays close to the
@@ -176,7 +160,7 @@ void SceneOrderer::orderMultistage(PositionsView positions, const ViewProjection
     sortStage1(positions, view);
     const VisibilityOrder& objects = sorted_; // its order is in previous_order_
     const std::vector<uint32_t>& object_order = previous_order_;
-    addStats(frame.stats, objects.stats);
+    frame.stats += objects.stats;
 
     // Stage 2: a group is one object, or all objects of one cycle; groups come out whole and in
     // object order (a cycle's members are contiguous in it), and no triangle of a later group
@@ -214,7 +198,7 @@ void SceneOrderer::orderMultistage(PositionsView positions, const ViewProjection
         sortFrom(
             positions, view, group.size(), [&](uint32_t i) { return group[i]; }, start, triangles,
             Bind::same_frame);
-        addStats(frame.stats, triangles.stats);
+        frame.stats += triangles.stats;
         for (uint32_t local : triangles.order)
             frame.order.push_back(group[local].first_triangle);
         for (auto& cycle : triangles.cycles) {
