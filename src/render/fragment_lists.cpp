@@ -136,6 +136,8 @@ FragmentLists::FragmentLists(uint64_t max_bytes)
     GLuint name = 0;
     glCreateBuffers(1, &name);
     counter_ = GlBuffer(name);
+    glCreateBuffers(1, &name);
+    tiles_ = GlBuffer(name);
     glNamedBufferStorage(counter_.get(), 2 * sizeof(GLuint), nullptr,
                          GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
 }
@@ -194,9 +196,10 @@ uint64_t FragmentLists::build(PixelRect rect, GLuint opaque_depth,
     return counts[1] != 0 ? kHuge : counts[0];
 }
 
-FragmentLists::Result FragmentLists::composite(const RenderTarget& target, PixelRect rect,
-                                               GLuint opaque_depth,
-                                               const std::function<void()>& draw) {
+FragmentLists::Result
+FragmentLists::composite(const RenderTarget& target, PixelRect rect, GLuint opaque_depth,
+                         const std::function<void()>& draw,
+                         std::optional<std::span<const uint32_t>> tile_origins) {
     Result result;
     if (rect.empty())
         return result;
@@ -221,7 +224,10 @@ FragmentLists::Result FragmentLists::composite(const RenderTarget& target, Pixel
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, colours_.get());
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, links_.get());
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, triangles_.get());
-            runPixelProgram(resolve_program_.get(), r);
+            if (tile_origins)
+                runPixelProgramOnTiles(resolve_program_.get(), r, *tile_origins, tiles_);
+            else
+                runPixelProgram(resolve_program_.get(), r);
             result.fragments += stored;
             continue;
         }

@@ -10,6 +10,8 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
+#include <span>
 
 #include "gl/gl_objects.h"
 #include "render/render_target.h"
@@ -35,8 +37,12 @@ public:
     /// run more than once. With opaque_depth (a depth texture, not the framebuffer's), fragments
     /// at or behind it are dropped; with 0 the caller's depth test hides the opaque surfaces.
     /// Throws std::runtime_error when a single pixel has more fragments than the buffers hold.
+    /// With tile_origins (x, y pairs of 8x8 tiles' top-left pixels, as MarkedPixels lists
+    /// them), only those tiles' pixels are resolved: the draw's fragments must all lie in them
+    /// (a stencil test), as the few a repair composites do.
     Result composite(const RenderTarget& target, PixelRect rect, GLuint opaque_depth,
-                     const std::function<void()>& draw);
+                     const std::function<void()>& draw,
+                     std::optional<std::span<const uint32_t>> tile_origins = std::nullopt);
 
     /// The program `draw` binds: the shading vertex shader, fragments into the lists.
     GLuint buildProgram() const { return build_program_.get(); }
@@ -52,7 +58,7 @@ private:
 
     GlProgram build_program_, resolve_program_;
     GlTexture heads_;
-    GlBuffer counter_, colours_, links_, triangles_;
+    GlBuffer counter_, colours_, links_, triangles_, tiles_;
     uint32_t width_ = 0, height_ = 0;
     uint64_t capacity_ = 0;  // nodes the buffers hold
     uint64_t max_nodes_ = 0; // the most nodes the buffers may hold

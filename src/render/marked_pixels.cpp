@@ -28,10 +28,13 @@ MarkedPixels::MarkedPixels(std::span<const uint8_t> stencil, uint32_t width, uin
         bounds_ = {x0, y0, x1 - x0 + 1, y1 - y0 + 1};
     const std::size_t stride = tiles_x_ + 1;
     for (uint32_t ty = 0; ty < tiles_y_; ++ty)
-        for (uint32_t tx = 0; tx < tiles_x_; ++tx)
+        for (uint32_t tx = 0; tx < tiles_x_; ++tx) {
+            if (tile_marked[std::size_t(ty) * tiles_x_ + tx])
+                tile_origins_.insert(tile_origins_.end(), {tx * kTileSide, ty * kTileSide});
             summed_[(ty + 1) * stride + tx + 1] =
                 tile_marked[std::size_t(ty) * tiles_x_ + tx] + summed_[ty * stride + tx + 1] +
                 summed_[(ty + 1) * stride + tx] - summed_[ty * stride + tx];
+        }
 }
 
 bool MarkedPixels::anyTileIn(const PixelRect& rect) const {

@@ -22,6 +22,8 @@ public:
     uint64_t count() const { return count_; }
     /// The rectangle around the marked pixels; empty when there are none.
     PixelRect bounds() const { return bounds_; }
+    /// The tiles holding a marked pixel: their top-left pixels as x, y pairs, in rows.
+    const std::vector<uint32_t>& tileOrigins() const { return tile_origins_; }
     /// Whether a tile that rect overlaps (clipped to the image) holds a marked pixel.
     bool anyTileIn(const PixelRect& rect) const;
 
@@ -30,6 +32,7 @@ private:
     // Marked tiles in rows and columns [0, y) x [0, x), at (y * (tiles_x_ + 1) + x): any
     // rectangle of tiles answers in four reads.
     std::vector<uint32_t> summed_;
+    std::vector<uint32_t> tile_origins_;
     uint64_t count_ = 0;
     PixelRect bounds_;
 };

@@ -1,5 +1,6 @@
 #include "render/render_target.h"
 
+#include <algorithm>
 #include <cassert>
 #include <stdexcept>
 #include <string>
@@ -101,16 +102,45 @@ GlProgram linkPixelProgram(const char* body) {
     return linkComputeProgram((std::string(kPixelComputeHeader) + body).c_str());
 }
 
-void runPixelProgram(GLuint program, PixelRect rect) {
-    if (rect.empty())
-        return;
+namespace {
+
+void setRectangle(GLuint program, PixelRect rect, bool tiled, uint32_t tile_count) {
     glUseProgram(program);
     glUniform2i(glGetUniformLocation(program, "origin"), GLint(rect.x), GLint(rect.y));
     glUniform2i(glGetUniformLocation(program, "extent"), GLint(rect.width), GLint(rect.height));
-    glDispatchCompute((rect.width + kPixelGroupSide - 1) / kPixelGroupSide,
-                      (rect.height + kPixelGroupSide - 1) / kPixelGroupSide, 1);
+    glUniform1i(glGetUniformLocation(program, "tiled"), tiled ? 1 : 0);
+    glUniform1ui(glGetUniformLocation(program, "tile_count"), tile_count);
+}
+
+void afterPixelProgram() {
     glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
                     GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+}
+
+} // namespace
+
+void runPixelProgram(GLuint program, PixelRect rect) {
+    if (rect.empty())
+        return;
+    setRectangle(program, rect, false, 0);
+    glDispatchCompute((rect.width + kPixelGroupSide - 1) / kPixelGroupSide,
+                      (rect.height + kPixelGroupSide - 1) / kPixelGroupSide, 1);
+    afterPixelProgram();
+}
+
+void runPixelProgramOnTiles(GLuint program, PixelRect rect, std::span<const uint32_t> origins,
+                            const GlBuffer& tiles_buffer) {
+    const uint32_t tiles = uint32_t(origins.size() / 2);
+    if (rect.empty() || tiles == 0)
+        return;
+    glNamedBufferData(tiles_buffer.get(), GLsizeiptr(origins.size_bytes()), origins.data(),
+                      GL_STREAM_DRAW);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, tiles_buffer.get());
+    setRectangle(program, rect, true, tiles);
+    // Work groups in rows of at most 65,535, the least count every driver dispatches along x.
+    constexpr uint32_t kRow = 65535;
+    glDispatchCompute(std::min(tiles, kRow), (tiles + kRow - 1) / kRow, 1);
+    afterPixelProgram();
 }
 
 } // namespace vissort::detail

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <initializer_list>
+#include <span>
 #include <vector>
 
 #include "gl/gl_objects.h"
@@ -44,6 +45,12 @@ GlProgram linkPixelProgram(const char* body);
 /// sets its origin and extent uniforms, dispatches, and makes its image writes visible to the
 /// draws, texture fetches and image loads that follow.
 void runPixelProgram(GLuint program, PixelRect rect);
+
+/// The same over the pixels of rect within the 8x8 tiles (kPixelGroupSide) whose top-left
+/// pixels are origins (x, y pairs; shading.h's header reads them from shader storage binding 7,
+/// uploaded to tiles_buffer here).
+void runPixelProgramOnTiles(GLuint program, PixelRect rect, std::span<const uint32_t> origins,
+                            const GlBuffer& tiles_buffer);
 
 /// Runs draw under an occlusion query and waits for the answer: did any sample pass? (A peeling
 /// pass that finds nothing ends the loop.) query is a GL_ANY_SAMPLES_PASSED query object.

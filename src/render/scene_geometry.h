@@ -43,24 +43,19 @@ public:
     /// Sets program's view (setView), makes it current and binds the geometry (bind): what
     /// every draw below needs first.
     void use(GLuint program, const ViewProjection& view) const;
-    /// Draws every opaque triangle with the bound program and state.
-    void drawOpaque() const;
+    /// Draws the opaque triangles with the bound program and state, but for the objects wholly
+    /// out of view (view: the one the program's uniforms were set for).
+    void drawOpaque(const ViewProjection& view);
     /// Draws transparent triangles [first, first + count) of setTriangles' order.
     void drawTransparent(std::size_t first, std::size_t count) const;
     std::size_t transparentCount() const { return transparent_count_; }
 
-    /// A second list of triangles (scene ids), opaque and transparent, drawn on their own by the
-    /// two calls below: the few a repair redraws (verified_blending.h), without touching the
-    /// frame's list.
-    void setSubset(std::span<const uint32_t> opaque, std::span<const uint32_t> transparent);
-    void drawOpaqueSubset() const { drawSubset(0, subset_opaque_count_); }
-    void drawTransparentSubset() const {
-        drawSubset(subset_opaque_count_, subset_transparent_count_);
-    }
+    /// A second list of transparent triangles (scene ids), drawn on their own by the call below:
+    /// the few a repair redraws (verified_blending.h), without touching the frame's list.
+    void setSubset(std::span<const uint32_t> transparent);
+    void drawTransparentSubset() const;
 
 private:
-    /// Draws subset triangles [first, first + count) through the subset's element buffer.
-    void drawSubset(std::size_t first, std::size_t count) const;
     /// Uploads the tints: a highlight where one is set, else the triangle's cycle colour.
     void uploadTints();
 
@@ -72,7 +67,14 @@ private:
     std::vector<uint32_t> element_data_;
     std::size_t opaque_count_ = 0, transparent_count_ = 0;
     std::vector<uint32_t> subset_data_;
-    std::size_t subset_opaque_count_ = 0, subset_transparent_count_ = 0;
+    std::size_t subset_count_ = 0;
+    struct ObjectRun {
+        uint32_t object, first, count; // triangles [first, first + count) of the opaque list
+    };
+    std::vector<ObjectRun> opaque_runs_;
+    std::vector<Bounds> object_bounds_; // of the positions uploaded
+    std::vector<GLsizei> draw_counts_;  // drawOpaque's ranges, reused from frame to frame
+    std::vector<const void*> draw_offsets_;
     std::vector<uint8_t> highlighted_;      // one per triangle
     std::vector<uint32_t> cycle_tints_;     // one per triangle: kNoTint or kCycleTint + group
     std::vector<uint32_t> cycle_triangles_; // those with a cycle tint, to clear it cheaply

@@ -76,15 +76,27 @@ void main() { colour = shaded; }
 
 // The full-screen compositing steps run as compute shaders over pixel rectangles, one
 // invocation per pixel (runPixelProgram, render_target.h): exact per-pixel work with no
-// rasterization rules in the way. Each program is this header followed by its body.
+// rasterization rules in the way; or over a list of 8x8 tiles of a rectangle, one work group a
+// tile (runPixelProgramOnTiles), where only a few scattered pixels need the work. Each program is
+// this header followed by its body.
 inline constexpr const char* kPixelComputeHeader = R"(#version 450 core
 layout(local_size_x = 8, local_size_y = 8) in;
 uniform ivec2 origin;  // the rectangle's top-left pixel
 uniform ivec2 extent;  // its width and height
+uniform bool tiled;    // one work group per tile of tile_origins
+uniform uint tile_count;
+layout(std430, binding = 7) readonly buffer TileOrigins { uvec2 tile_origins[]; };
 // This invocation's pixel; false for the invocations beyond the rectangle's edges.
 bool rectanglePixel(out ivec2 pixel) {
-    pixel = origin + ivec2(gl_GlobalInvocationID.xy);
-    return all(lessThan(gl_GlobalInvocationID.xy, uvec2(extent)));
+    uvec2 local = gl_GlobalInvocationID.xy;
+    if (tiled) {
+        uint tile = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+        // A tile left of or above the rectangle wraps to a huge offset, outside the extent.
+        local = tile < tile_count ? tile_origins[tile] - uvec2(origin) + gl_LocalInvocationID.xy
+                                  : uvec2(extent);
+    }
+    pixel = origin + ivec2(local);
+    return all(lessThan(local, uvec2(extent)));
 }
 )";
 inline constexpr unsigned kPixelGroupSide = 8;

@@ -97,7 +97,7 @@ struct TransparencyRenderer::Impl {
     FrameOrder frame_order;           // this frame's order, its buffers reused from frame to frame
     std::vector<uint32_t> group_of;   // per primitive: its per-pixel group, or kNoGroup
     detail::DrawSequence sequence;    // transparent triangles back to front, scene ids
-    std::vector<uint32_t> repair_opaque, repair_transparent; // triangles a repair draws again
+    std::vector<uint32_t> repair_transparent;           // triangles a repair draws again
     std::vector<std::vector<uint32_t>> cycle_triangles; // colour_cycles: each cycle's, scene ids
     bool triangles_uploaded = false;
 
@@ -280,16 +280,10 @@ struct TransparencyRenderer::Impl {
         if (marked.count() == 0)
             return;
         // Only the triangles that may cover a marked pixel are drawn again.
-        detail::trianglesCovering(positions, opaque_triangles, view, marked, repair_opaque);
         detail::trianglesCovering(positions, sequence.triangles, view, marked, repair_transparent);
-        geometry->setSubset(repair_opaque, repair_transparent);
-        const detail::VerifiedBlending::Result repaired = verified->repair(
-            target, fragmentLists(), marked, settings.background, has_opaque,
-            [&](GLuint program) {
-                geometry->use(program, view);
-                geometry->drawOpaqueSubset();
-            },
-            [&](GLuint program) {
+        geometry->setSubset(repair_transparent);
+        const detail::VerifiedBlending::Result repaired =
+            verified->repair(target, fragmentLists(), marked, has_opaque, [&](GLuint program) {
                 geometry->use(program, view);
                 geometry->drawTransparentSubset();
             });
@@ -494,7 +488,7 @@ Image TransparencyRenderer::render(PositionsView positions, const ViewProjection
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
     d.geometry->use(d.shade_program.get(), sampled);
-    d.geometry->drawOpaque();
+    d.geometry->drawOpaque(sampled);
 
     // Transparent ones: tested against the opaque depth, never written.
     glDepthMask(GL_FALSE);

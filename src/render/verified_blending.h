@@ -6,8 +6,8 @@
 // pixel. Groups (the primitives the order cannot separate) are blended in the sequence like the
 // rest, and the check marks the pixels where their fragments came out of depth order (unchecked,
 // they are composited per pixel from fragment lists at their place). Marked pixels are
-// composited again at the end, in one list pass: the background, the opaque surfaces drawn
-// again, and every transparent fragment that covers them.
+// composited again at the end, in one list pass: the colour the opaque pass left there (copied
+// before blending), and every transparent fragment that covers them.
 //
 // With Vis-sort's order marked pixels are few: where a cycle's triangles overlap, a pixel centre
 // within a rounding error of an edge, which the oracle's rasterizer and the GPU's put on
@@ -51,22 +51,22 @@ public:
     /// The pixels the last blend marked (none when it had nothing to blend).
     MarkedPixels marked();
 
-    /// Composites the marked pixels again: the background, the opaque surfaces again, then every
-    /// transparent fragment from lists. `draw_opaque(program)` and `draw_transparent(program)`
-    /// draw, the same way as blend's draw, at least every opaque and transparent triangle that
-    /// may cover a marked pixel (trianglesCovering); each may run more than once.
+    /// Composites the marked pixels again: the colour the opaque pass left (the target's colour
+    /// when blend began), then every transparent fragment from lists. `draw_transparent(program)`
+    /// draws, the same way as blend's draw, at least every transparent triangle that may cover a
+    /// marked pixel (trianglesCovering); it may run more than once.
     Result repair(const RenderTarget& target, FragmentLists& lists, const MarkedPixels& marked,
-                  const Rgba& background, bool has_opaque,
-                  const std::function<void(GLuint program)>& draw_opaque,
-                  const std::function<void(GLuint program)>& draw_transparent);
+                  bool has_opaque, const std::function<void(GLuint program)>& draw_transparent);
 
 private:
     void resize(const RenderTarget& target);
 
     GlProgram blend_program_, opaque_blend_program_; // without and with the opaque test
-    GlProgram opaque_program_, background_program_;
+    GlProgram opaque_colour_program_;                // the repair's first pass
+
     GlVertexArray empty_vertex_array_;
     GlTexture nearest_;         // depth and stencil of the check
+    GlTexture opaque_colour_;   // the target's colour as blend found it
     GlFramebuffer framebuffer_; // the target's colour with nearest_
     uint32_t width_ = 0, height_ = 0;
     GLuint target_colour_ = 0;

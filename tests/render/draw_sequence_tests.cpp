@@ -1,6 +1,7 @@
 // The CPU side of the checked blend's repair (no OpenGL): the marks read back from the stencil
-// (MarkedPixels) and the triangles that may cover them (trianglesCovering), against brute force
-// over every pixel; and the groups blended in sequence (blendGroupsInSequence).
+// (MarkedPixels: count, bounds, the tiles that hold one) and the triangles that may cover them
+// (trianglesCovering), against brute force over every pixel; and the groups blended in sequence
+// (blendGroupsInSequence).
 
 #include <gtest/gtest.h>
 
@@ -75,6 +76,13 @@ TEST(MarkedPixels, CountBoundsAndTilesMatchBruteForce) {
             EXPECT_EQ(marked.anyTileIn(rect), expected)
                 << rect.x << "," << rect.y << " " << rect.width << "x" << rect.height;
         }
+        // The tiles listed for the repair's resolve: exactly those holding a mark, in rows.
+        std::vector<uint32_t> tiles;
+        for (uint32_t ty = 0; ty < height; ty += side)
+            for (uint32_t tx = 0; tx < width; tx += side)
+                if (anyMarkedIn(stencil, width, height, tx, ty, tx + side, ty + side))
+                    tiles.insert(tiles.end(), {tx, ty});
+        EXPECT_EQ(marked.tileOrigins(), tiles);
     }
 }
 

@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -33,6 +34,20 @@ namespace {
 using namespace test; // render_cases.h
 
 class RenderScenes : public testing::TestWithParam<RenderCase> {};
+
+// Whether a box may be in the view volume: some point of it on the inner side of every clip
+// plane, sampled on a 5x5x5 lattice (the boxes here are the objects', out of view by far or not).
+bool inViewVolume(const ViewProjection& view, const Bounds& box) {
+    for (int i = 0; i < 125; ++i) {
+        const double u = (i % 5) / 4.0, v = (i / 5 % 5) / 4.0, w = (i / 25) / 4.0;
+        const std::array<double, 4> c = view.toClip({box.min.x + u * (box.max.x - box.min.x),
+                                                     box.min.y + v * (box.max.y - box.min.y),
+                                                     box.min.z + w * (box.max.z - box.min.z)});
+        if (std::abs(c[0]) <= c[3] && std::abs(c[1]) <= c[3] && c[2] >= 0)
+            return true;
+    }
+    return false;
+}
 
 TEST_P(RenderScenes, ExactMethodsMatchTheRayCastABuffer) {
     const RenderCase& c = GetParam();
@@ -300,6 +315,41 @@ TEST(TransparencyRenderer, CoherentFramesOfTheBunniesStayExact) {
         const std::vector<uint8_t> expected =
             reference.render(positions, view, reference_stats).toRgba8();
         EXPECT_LE(compareImages(image, expected).max_abs, 1);
+    }
+}
+
+// From inside the power plant, as its walkthrough goes: much of the scene lies beside and behind
+// the eye, and the renderer draws only the opaque objects whose boxes may be in view
+// (view_culling.h). Each frame, rendered coherently from the last, against its own A-buffer.
+TEST(TransparencyRenderer, WalkthroughFramesInsideThePlantMatchTheABuffer) {
+    const Scene scene = test::loadTestScene("builtin:powerplant?scale=0.05");
+    const Bounds bounds = scene.positions.bounds();
+    RenderSettings settings;
+    settings.shading = Shading::flat;
+    TransparencyRenderer renderer(context(), scene, settings);
+    const std::vector<Rgba> colours = triangleColours(scene, settings);
+    for (int f : {0, 1, 150, 450}) {
+        SCOPED_TRACE("frame " + std::to_string(f));
+        const ViewProjection view = frameCamera(
+            cameraOnPath(*scene.camera, CameraPath::scene, f, bounds, scene.camera_path), bounds,
+            kWidth, kHeight);
+        // The frame exercises the culling: objects out of view, by the boxes' own points.
+        uint32_t out_of_view = 0;
+        for (const SceneObject& object : scene.objects) {
+            Bounds box;
+            for (uint32_t c = object.first_triangle * 3;
+                 c < (object.first_triangle + object.triangle_count) * 3; ++c)
+                box.add(scene.positions.corner(c));
+            out_of_view += !inViewVolume(view, box);
+        }
+        EXPECT_GT(out_of_view, scene.objects.size() / 5);
+        RenderStats stats;
+        const test::ABufferComparison compared = test::compareWithABuffer(
+            renderer.render(scene.positions, view, stats).toRgba8(),
+            test::rayCastComposite(scene.positions, view, colours, settings.background));
+        EXPECT_GT(compared.compared, uint64_t(kWidth) * kHeight / 2);
+        EXPECT_LE(compared.max_abs, 1)
+            << "worst at (" << compared.worst_x << ", " << compared.worst_y << ")";
     }
 }
 
