@@ -27,7 +27,10 @@ void FrameDriver::seek(int frame) {
     if (!has_view_)
         return;
     camera_ = cameraOnPath(base_, path_, frame, first_bounds_, scene_->camera_path);
-    view_ = frameCamera(camera_, positions_.bounds(), width_, height_);
+    // A static scene's bounds are its first frame's: not walked again (9 ms a frame, the
+    // power plant's 2.4M corners).
+    view_ = frameCamera(camera_, scene_->isDynamic() ? positions_.bounds() : first_bounds_, width_,
+                        height_);
 }
 
 } // namespace vissort
