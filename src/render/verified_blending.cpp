@@ -79,9 +79,9 @@ VerifiedBlending::Result VerifiedBlending::blend(
     if (!blended_)
         return result;
     resize(target);
-    // What the repair restores marked pixels to. Copying the colour costs a few milliseconds at
-    // 1600x1200; drawing the opaque surfaces again over marked tiles cost the power plant's
-    // walkthrough 100 to 190 ms a frame (a third of its opaque triangles reach a marked tile).
+    // What the repair restores marked pixels to: one copy of the colour, where drawing the
+    // opaque surfaces again over the marked tiles drew a good part of the power plant's opaque
+    // triangles every frame of its walkthrough (docs/benchmarks.md, issue 33 step 2).
     glCopyImageSubData(target_colour_, GL_TEXTURE_2D, 0, 0, 0, 0, opaque_colour_.get(),
                        GL_TEXTURE_2D, 0, 0, 0, 0, GLsizei(width_), GLsizei(height_), 1);
     const float far = 1.0f;

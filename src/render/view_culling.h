@@ -1,7 +1,7 @@
 #pragma once
 // Which boxes the view cannot see: a draw skips the objects whose bounding boxes lie wholly
 // outside one side of the view volume (or behind its near plane), so the rasterizer never
-// transforms their corners. On the power plant's walkthrough most of the opaque triangles are
+// transforms their corners. On the power plant's walkthrough much of the scene is
 // out of view on every frame.
 
 #include <glm/mat4x4.hpp>
