@@ -21,11 +21,6 @@ int framesOf(const PaperBenchSettings& settings) {
     return settings.frames > 0 ? settings.frames : settings.quick ? 6 : 60;
 }
 
-int glFramesOf(const PaperBenchSettings& settings) {
-    const int gl_frames = settings.gl_frames > 0 ? settings.gl_frames : settings.quick ? 2 : 3;
-    return std::min(gl_frames, framesOf(settings));
-}
-
 #if VISSORT_WITH_GL
 TransparencyBenchSettings figure6Settings(const PaperBenchSettings& settings) {
     TransparencyBenchSettings figure6;
@@ -80,13 +75,14 @@ Status measurePath(const PaperBenchSettings& settings, PaperPath& path,
 
     FrameOrder order;
     CollisionResult collisions;
-    const int frames = framesOf(settings), gl_frames = glFramesOf(settings);
+    const int frames = framesOf(settings), gl_frames = paperGlFrames(settings);
     for (int f = 0; f < frames; ++f) {
         driver.seek(f);
         PaperFrame frame;
         frame.frame = f;
         cpu_orderer.orderFrame(driver.positions(), driver.view(), order);
         frame.cpu_queries = order.stats.queries;
+        frame.cpu_cycle_queries = order.stats.cycle_queries;
         frame.cpu_order_ms = order.milliseconds;
         if (gl_orderer && f < gl_frames) {
             gl_orderer->orderFrame(driver.positions(), driver.view(), order);
@@ -148,6 +144,26 @@ std::vector<PaperPath> paperPaths(const PaperBenchSettings& settings) {
 
 } // namespace
 
+int paperGlFrames(const PaperBenchSettings& settings) {
+#if VISSORT_WITH_GL
+    if (!settings.context)
+        return 0;
+    if (settings.gl_frames >= 0)
+        return std::min(settings.gl_frames, framesOf(settings));
+    if (settings.quick)
+        return std::min(2, framesOf(settings));
+    // Mesa's software renderers (llvmpipe, softpipe) and its software EGL device.
+    const GlContextInfo& info = settings.context->info();
+    const bool software = info.renderer.find("llvmpipe") != std::string::npos ||
+                          info.renderer.find("softpipe") != std::string::npos ||
+                          info.device == "Mesa software device";
+    return software ? 0 : std::min(3, framesOf(settings));
+#else
+    (void)settings;
+    return 0;
+#endif
+}
+
 Result<PaperBenchResult> runPaperBench(const PaperBenchSettings& settings,
                                        const PaperProgress& progress) {
     using Failed = Result<PaperBenchResult>;
@@ -190,6 +206,8 @@ std::optional<double> metricOf(const PaperFrame& frame, PaperMetric metric) {
         return frame.cpu_order_ms;
     case PaperMetric::cpu_queries:
         return double(frame.cpu_queries);
+    case PaperMetric::cpu_cycle_queries:
+        return double(frame.cpu_cycle_queries);
     case PaperMetric::gl_order_ms:
         return frame.gl_order_ms;
     case PaperMetric::gl_queries:
@@ -221,6 +239,7 @@ PaperSummary summarize(const PaperPath& path) {
     PaperSummary s;
     s.cpu_order_ms = coherentMedian(path, PaperMetric::cpu_order_ms);
     s.cpu_queries = coherentMedian(path, PaperMetric::cpu_queries);
+    s.cpu_cycle_queries = coherentMedian(path, PaperMetric::cpu_cycle_queries);
     s.gl_order_ms = coherentMedian(path, PaperMetric::gl_order_ms);
     s.gl_queries = coherentMedian(path, PaperMetric::gl_queries);
     s.render_ms = coherentMedian(path, PaperMetric::render_ms);

@@ -40,6 +40,7 @@ struct PaperReported {
 struct PaperFrame {
     int frame = 0;
     uint64_t cpu_queries = 0;
+    uint64_t cpu_cycle_queries = 0; // of cpu_queries, those the cycle search and its hints spent
     double cpu_order_ms = 0;
     std::optional<uint64_t> gl_queries; // the first gl_frames frames only
     std::optional<double> gl_order_ms;
@@ -66,7 +67,7 @@ struct PaperBenchSettings {
     std::shared_ptr<GlContext> context; // null: no gl oracle, no rendering, no figure 6
     bool quick = false;                 // small scenes and images, few frames: under two minutes
     int frames = 0;                     // per path; 0: 60 (quick: 6)
-    int gl_frames = 0;                  // of those through the gl oracle; 0: 3 (quick: 2)
+    int gl_frames = -1;                 // of those through the gl oracle; -1: paperGlFrames's
     uint32_t width = 0, height = 0;     // 0: 1600x1200, the paper's (quick: 320x240)
 };
 
@@ -75,6 +76,12 @@ struct PaperBenchResult {
     std::vector<TransparencyBenchRow> figure6; // empty without an OpenGL context
     TransparencyBenchSettings figure6_settings;
 };
+
+/// The frames of each path ordered through the gl oracle: settings.gl_frames when set (at most
+/// the path's frames); else 2 with quick, 3 on a GPU and none on a software renderer (llvmpipe:
+/// the plant's first frame at 1600x1200 takes more than ten minutes there); none without a
+/// context.
+int paperGlFrames(const PaperBenchSettings& settings);
 
 /// Progress: what is being measured, and steps done of the run's total.
 using PaperProgress = std::function<void(const std::string& what, int done, int total)>;
@@ -89,6 +96,7 @@ Result<PaperBenchResult> runPaperBench(const PaperBenchSettings& settings,
 enum class PaperMetric {
     cpu_order_ms,
     cpu_queries,
+    cpu_cycle_queries,
     gl_order_ms,
     gl_queries,
     render_ms,
@@ -100,7 +108,8 @@ std::optional<double> metricOf(const PaperFrame& frame, PaperMetric metric);
 /// A path's medians over the coherent frames (every frame but the first, which starts from the
 /// depth-key order); none where no coherent frame measured the value.
 struct PaperSummary {
-    std::optional<double> cpu_order_ms, cpu_queries, gl_order_ms, gl_queries, render_ms, collide_ms;
+    std::optional<double> cpu_order_ms, cpu_queries, cpu_cycle_queries, gl_order_ms, gl_queries,
+        render_ms, collide_ms;
     std::optional<double> cpu_queries_per_primitive, gl_queries_per_primitive;
 };
 PaperSummary summarize(const PaperPath& path);

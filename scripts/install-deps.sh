@@ -29,7 +29,8 @@ packages=(
   clang-format               # scripts/check-format.sh: clang-format 14, as .clang-format expects
   python3-dev pybind11-dev   # the Python module (python/, docs/python.md)
   python3-numpy              # its arrays
-  python3-venv python3-setuptools  # pip install . in a virtual environment (scripts/check-python-install.sh)
+  python3-venv python3-setuptools python3-wheel  # pip install . in a virtual environment
+                             # (scripts/check-python-install.sh; pip builds a wheel with it)
   python3-pytest             # tests only: the module's tests (python/tests)
   python3-pil                # tests only: reading the command line's PNGs to compare images
   python3-matplotlib         # tests only: docs/python.md's examples show images with it

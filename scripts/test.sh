@@ -22,8 +22,9 @@ if [ "${1:-}" = "--sanitize" ]; then
   # The slowest tests of the release suite (six times as long here) run there only: smaller
   # tests of the same code (the oracle passes on small viewports, collide on a few frames, bench
   # oracle with one GL frame, the every-frame check on the bunnies and the property scenes, the
-  # touching-faces scenes for the IFC house) run here, and CI stays under 45 minutes.
-  tests=(-E "FastCpuOracle.LargeViewportWithBigTriangles|FastCpuOracle.SpotMeshBothProjections|Cli.CollideMatchesBruteForceOver300FramesOfBunnies|Cli.BenchOracleMeasuresEveryOracleInOneRun|EveryFrame.EveryOrderMatchesItsFramesGroundTruth/powerplant_|RealModels.FzkHouseHasTheExactCyclesAndExactTransparency")
+  # touching-faces scenes for the IFC house, the coplanar faces for the boxes, walls and the gl
+  # oracle's touching faces) run here.
+  tests=(-E "TouchingFaces.BoxesSharingFacesMakeNoCycle|TouchingFaces.WallsOnASlabMakeNoCycle|GlTouchingFaces.CyclesContainTheExactOnes|GlTouchingFaces.APositiveToleranceMakesNoCycleOfTouchingFaces|FastCpuOracle.LargeViewportWithBigTriangles|FastCpuOracle.SpotMeshBothProjections|Cli.CollideMatchesBruteForceOver300FramesOfBunnies|Cli.BenchOracleMeasuresEveryOracleInOneRun|EveryFrame.EveryOrderMatchesItsFramesGroundTruth/powerplant_|RealModels.FzkHouseHasTheExactCyclesAndExactTransparency")
 elif [ "${1:-}" = "--tsan" ]; then
   # The threaded code: the rasterizer's banded passes (its tests run 1, 2 and 3 threads) and
   # the collision detector's shared refits and pairs.

@@ -22,8 +22,8 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options) {
                         "(transparency: 3), of each bunny count (collision: 30, after one "
                         "untimed) or of each path (paper: 60, quick 6); the first is not timed");
     command->add_option("--gl-frames", options.gl_frames,
-                        "Frames through the gl oracle, at most --frames (oracle: 5, paper: 3, "
-                        "quick 2)");
+                        "Frames through the gl oracle, at most --frames (oracle: 5; paper: 3 on "
+                        "a GPU, 0 on a software renderer, quick 2)");
     command->add_option("--size", options.size,
                         "Image size WxH (transparency: 1024x1024; paper: 1600x1200, the "
                         "paper's, quick 320x240)");

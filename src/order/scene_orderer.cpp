@@ -9,7 +9,6 @@
 #include <numeric>
 
 namespace vissort {
-namespace {} // namespace
 
 std::vector<PrimitiveRange> levelPrimitives(std::span<const PrimitiveRange> objects,
                                             uint32_t triangle_count, OrderLevel level) {

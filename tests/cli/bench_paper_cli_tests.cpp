@@ -52,6 +52,11 @@ TEST_F(Cli, BenchPaperQuickWritesEveryFigure) {
     const json doc = json::parse(readFile(out + "/paper.json"));
     EXPECT_EQ(doc["benchmark"], "paper");
     EXPECT_EQ(doc["quick"], true);
+#if VISSORT_WITH_GL
+    EXPECT_EQ(doc["gl_frames"], 2); // quick's default, on any renderer
+#else
+    EXPECT_EQ(doc["gl_frames"], 0);
+#endif
     ASSERT_EQ(doc["paths"].size(), 3u);
     std::size_t frames_seen = 0;
     for (const json& path : doc["paths"]) {
@@ -61,14 +66,19 @@ TEST_F(Cli, BenchPaperQuickWritesEveryFigure) {
         EXPECT_FALSE(path["paper"].empty()) << name;
         // Collisions do not depend on the camera: measured once, with the static viewer.
         const bool collides = name == "bunnies-static";
-        std::vector<double> order_ms, queries;
+        std::vector<double> order_ms, queries, cycle_queries;
         for (const json& frame : path["frames"]) {
             EXPECT_GT(frame["cpu_queries"].get<uint64_t>(), 0u) << name;
+            // The cycle search's share of the frame's queries.
+            EXPECT_LE(frame["cpu_cycle_queries"].get<uint64_t>(),
+                      frame["cpu_queries"].get<uint64_t>())
+                << name;
             EXPECT_GT(frame["cpu_order_ms"].get<double>(), 0.0) << name;
             EXPECT_EQ(frame["collide_ms"].is_number(), collides) << name;
             if (frame["frame"].get<int>() > 0) {
                 order_ms.push_back(frame["cpu_order_ms"].get<double>());
                 queries.push_back(double(frame["cpu_queries"].get<uint64_t>()));
+                cycle_queries.push_back(double(frame["cpu_cycle_queries"].get<uint64_t>()));
             }
 #if VISSORT_WITH_GL
             EXPECT_TRUE(frame["render_ms"].is_number()) << name;
@@ -83,6 +93,11 @@ TEST_F(Cli, BenchPaperQuickWritesEveryFigure) {
         // The medians are over the coherent frames (all but the first): recomputed here.
         EXPECT_DOUBLE_EQ(medians["cpu_order_ms"].get<double>(), median(order_ms)) << name;
         EXPECT_DOUBLE_EQ(medians["cpu_queries"].get<double>(), median(queries)) << name;
+        EXPECT_DOUBLE_EQ(medians["cpu_cycle_queries"].get<double>(), median(cycle_queries)) << name;
+        // The plant's walls and glass panes make cycles on every frame: the search asks something.
+        if (name == "plant-walkthrough") {
+            EXPECT_GT(path["frames"][0]["cpu_cycle_queries"].get<uint64_t>(), 0u);
+        }
         EXPECT_DOUBLE_EQ(medians["cpu_queries_per_primitive"].get<double>(),
                          median(queries) / path["primitives"].get<double>())
             << name;
@@ -123,8 +138,32 @@ TEST_F(Cli, BenchPaperQuickWritesEveryFigure) {
     }
 }
 
+#if VISSORT_WITH_GL
+// Without the gl oracle (as on a software renderer by default: minutes a frame there), every
+// frame is still ordered through the cpu oracle and rendered.
+TEST_F(Cli, BenchPaperGlFramesZeroLeavesTheGlOracleOut) {
+    const std::string out = path("paper");
+    const RunResult r =
+        run({"bench", "paper", "--quick", "--frames", "2", "--gl-frames", "0", "--out", out}, 60);
+    ASSERT_EQ(r.code, 0) << r;
+    EXPECT_NE(r.out.find("the gl oracle not measured (--gl-frames 0)"), std::string::npos) << r;
+    const json doc = json::parse(readFile(out + "/paper.json"));
+    EXPECT_EQ(doc["gl_frames"], 0);
+    for (const json& path : doc["paths"]) {
+        ASSERT_EQ(path["frames"].size(), 2u);
+        for (const json& frame : path["frames"]) {
+            EXPECT_TRUE(frame["gl_queries"].is_null()) << frame;
+            EXPECT_GT(frame["cpu_queries"].get<uint64_t>(), 0u) << frame;
+            EXPECT_TRUE(frame["render_ms"].is_number()) << frame;
+        }
+    }
+}
+#endif
+
 TEST_F(Cli, BenchPaperBadOptionsAreOneLineErrors) {
     expectError({"bench", "paper", "--frames", "1", "--out", path("p")}, kUsage, {"--frames"});
+    expectError({"bench", "paper", "--gl-frames", "-1", "--out", path("p")}, kUsage,
+                {"--gl-frames"});
     expectError({"bench", "paper", "--size", "0x5", "--out", path("p")}, kUsage, {"size"});
     std::ofstream(path("file")) << "x";
     expectError({"bench", "paper", "--quick", "--out", path("file") + "/below"}, kFailure,
