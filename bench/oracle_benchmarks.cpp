@@ -1,5 +1,5 @@
-// Occlusion oracle throughput: FastCpuOracle beside the reference CpuOracle, measured in the same
-// run on the same inputs.
+// Occlusion oracle throughput: CpuOracle beside the reference CpuReferenceOracle, measured in the
+// same run on the same inputs.
 //  - setup-bound: random right triangles with 10 px legs at 1920 x 1080, drawn back to front
 //    (every one passes the depth test), and queried against a far background (every answer
 //    false, so the reference visits every fragment): triangles per second (items_per_second);
@@ -19,7 +19,7 @@
 #include "support/oracle_workloads.h"
 #include "vissort/camera_path.h"
 #include "vissort/cpu_oracle.h"
-#include "vissort/fast_cpu_oracle.h"
+#include "vissort/cpu_reference_oracle.h"
 #include "vissort/frame_driver.h"
 #include "vissort/scene.h"
 #include "vissort/scene_orderer.h"
@@ -29,7 +29,7 @@ namespace {
 
 /// Covered pixels of one back-to-front draw of every random triangle, by the reference.
 uint64_t fieldPixels(const ScreenTriangleWorkload& field) {
-    CpuOracle oracle;
+    CpuReferenceOracle oracle;
     oracle.bind(field.positions, field.view, field.primitives);
     for (uint32_t i = 0; i < field.background; ++i)
         oracle.draw(i);
@@ -75,16 +75,16 @@ void queryAgainstBackground(benchmark::State& state, uint32_t count, double leg,
 
 // Setup-bound: 10 px legs at 1920 x 1080.
 void BM_SetupBoundDraw_Cpu(benchmark::State& s) {
-    drawBackToFront<CpuOracle>(s, 100000, 10, 1920, 1080);
+    drawBackToFront<CpuReferenceOracle>(s, 100000, 10, 1920, 1080);
 }
 void BM_SetupBoundDraw_Fast(benchmark::State& s) {
-    drawBackToFront<FastCpuOracle>(s, 100000, 10, 1920, 1080);
+    drawBackToFront<CpuOracle>(s, 100000, 10, 1920, 1080);
 }
 void BM_SetupBoundQuery_Cpu(benchmark::State& s) {
-    queryAgainstBackground<CpuOracle>(s, 100000, 10, 1920, 1080);
+    queryAgainstBackground<CpuReferenceOracle>(s, 100000, 10, 1920, 1080);
 }
 void BM_SetupBoundQuery_Fast(benchmark::State& s) {
-    queryAgainstBackground<FastCpuOracle>(s, 100000, 10, 1920, 1080);
+    queryAgainstBackground<CpuOracle>(s, 100000, 10, 1920, 1080);
 }
 BENCHMARK(BM_SetupBoundDraw_Cpu)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SetupBoundDraw_Fast)->Unit(benchmark::kMillisecond);
@@ -100,22 +100,22 @@ template <class Oracle> void fillQuery(benchmark::State& s) {
     const double leg = double(s.range(0));
     queryAgainstBackground<Oracle>(s, leg >= 500 ? 200 : 2000, leg, 1600, 1200);
 }
-BENCHMARK(fillDraw<CpuOracle>)
+BENCHMARK(fillDraw<CpuReferenceOracle>)
     ->Name("BM_FillBoundDraw_Cpu")
     ->Arg(100)
     ->Arg(500)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK(fillDraw<FastCpuOracle>)
+BENCHMARK(fillDraw<CpuOracle>)
     ->Name("BM_FillBoundDraw_Fast")
     ->Arg(100)
     ->Arg(500)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK(fillQuery<CpuOracle>)
+BENCHMARK(fillQuery<CpuReferenceOracle>)
     ->Name("BM_FillBoundQuery_Cpu")
     ->Arg(100)
     ->Arg(500)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK(fillQuery<FastCpuOracle>)
+BENCHMARK(fillQuery<CpuOracle>)
     ->Name("BM_FillBoundQuery_Fast")
     ->Arg(100)
     ->Arg(500)
@@ -165,11 +165,11 @@ template <class Oracle> void bunniesOrbit(benchmark::State& state) {
     state.counters["iterations_per_frame"] = double(iterations) / double(frames);
     state.counters["triangles"] = double(scene.triangleCount());
 }
-BENCHMARK(bunniesOrbit<CpuOracle>)
+BENCHMARK(bunniesOrbit<CpuReferenceOracle>)
     ->Name("BM_BunniesOrbitTriangles_Cpu")
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
-BENCHMARK(bunniesOrbit<FastCpuOracle>)
+BENCHMARK(bunniesOrbit<CpuOracle>)
     ->Name("BM_BunniesOrbitTriangles_Fast")
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);

@@ -24,15 +24,15 @@ if [ "${1:-}" = "--sanitize" ]; then
   # oracle with one GL frame, the every-frame check on the bunnies and the property scenes, the
   # touching-faces scenes for the IFC house, the coplanar faces for the boxes, walls and the gl
   # oracle's touching faces) run here.
-  tests=(-E "TouchingFaces.BoxesSharingFacesMakeNoCycle|TouchingFaces.WallsOnASlabMakeNoCycle|GlTouchingFaces.CyclesContainTheExactOnes|GlTouchingFaces.APositiveToleranceMakesNoCycleOfTouchingFaces|FastCpuOracle.LargeViewportWithBigTriangles|FastCpuOracle.SpotMeshBothProjections|Cli.CollideMatchesBruteForceOver300FramesOfBunnies|Cli.BenchOracleMeasuresEveryOracleInOneRun|EveryFrame.EveryOrderMatchesItsFramesGroundTruth/powerplant_|RealModels.FzkHouseHasTheExactCyclesAndExactTransparency")
+  tests=(-E "TouchingFaces.BoxesSharingFacesMakeNoCycle|TouchingFaces.WallsOnASlabMakeNoCycle|GlTouchingFaces.CyclesContainTheExactOnes|GlTouchingFaces.APositiveToleranceMakesNoCycleOfTouchingFaces|CpuOracle.LargeViewportWithBigTriangles|CpuOracle.SpotMeshBothProjections|Cli.CollideMatchesBruteForceOver300FramesOfBunnies|Cli.BenchOracleMeasuresEveryOracleInOneRun|EveryFrame.EveryOrderMatchesItsFramesGroundTruth/powerplant_|RealModels.FzkHouseHasTheExactCyclesAndExactTransparency")
 elif [ "${1:-}" = "--tsan" ]; then
   # The threaded code: the rasterizer's banded passes (its tests run 1, 2 and 3 threads) and
   # the collision detector's shared refits and pairs.
   build_dir=build-tsan
   flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DVISSORT_TSAN=ON)
   targets=(--target raster_tests collide_tests)
-  tests=(-R "FastCpuOracle|CollisionThreads")
-  # FastCpuOracle.SpotMeshBothProjections takes about 530 s alone under ThreadSanitizer (19 s
+  tests=(-R "CpuOracle|CollisionThreads")
+  # CpuOracle.SpotMeshBothProjections takes about 530 s alone under ThreadSanitizer (19 s
   # in the release build; its 640x480 queries of the whole mesh against itself arbitrate at
   # every pixel), so beside another test under ctest -j2 it passed 600 s once.
   timeout=1200

@@ -1,167 +1,161 @@
 #pragma once
-// The reference CPU depth rasterizer as an occlusion oracle. Plain rather than fast: a faster
-// rasterizer must give the same answers, and the same depth buffer, bit for bit. Its answers
-// under the default depth tolerance (0) are the exact fragment model's (docs/robustness.md, "The
-// exact model"), found with a float rasterizer whose every uncertain call goes to exact
-// arithmetic. The rules:
-//
-//  1. Transform, once per bind: clip = M (x, y, z, 1) in double, with M = projection_matrix * view
-//     (column-major; each entry and each clip coordinate summed in index order 0..3, no FMA).
-//  2. Clip in homogeneous space (Sutherland-Hodgman), planes in this order: z >= 0, z <= w,
-//     x >= -G w, x <= G w, y >= -G w, y <= G w with the guard band G = 32; keep a vertex when its
-//     signed distance is >= 0; cut an edge at p + t (q - p), t = dist(p) / (dist(p) - dist(q)),
-//     where p is the lexicographically smaller endpoint in (x, y, z, w), so shared edges are cut
-//     identically. Nothing is drawn when a coordinate is non-finite or a result has w <= 0.
-//  3. Fan the polygon out from its first vertex: triangles (p0, p_i, p_i+1), i = 1..n-2.
-//  4. Screen: sx = (x / w + 1) * 0.5 * width, sy = (1 - y / w) * 0.5 * height (row 0 on top),
-//     d = z / w. Snap sx and sy to 24.8 fixed point: llround(s * 256).
-//  5. Coverage: doubled area A = (x1 - x0)(y2 - y0) - (y1 - y0)(x2 - x0) in int64_t; A < 0 swaps
-//     vertices 1 and 2 (both windings are drawn). Edge i runs from vertex i to vertex
-//     (i + 1) % 3, E_i(p) = (xj - xi)(py - yi) - (yj - yi)(px - xi); pixel (px, py) is sampled at
-//     its centre (256 px + 128, 256 py + 128). The pixel range is the snapped box grown by one
-//     sub-pixel unit and the bind's screen error (screenErrorsOf in src/raster/cpu_rasterizer.h:
-//     the rounding of the transform, the divide and the pixel rays, from the coordinates' size
-//     against the near plane).
-//     - The exact rule (tolerance 0): a centre with every E_i > m is covered, m the set-up's
-//       margin (2 L + 4 plus the screen error's share, L the sum of |dx| + |dy| over its edges:
-//       more than snapping and that error can move an edge function), so it lies inside the
-//       unsnapped triangle; one with some E_i < -m is not; every other one (a band pixel, at
-//       most a few hundredths of a pixel from an edge) is covered when the exact model says the
-//       original triangle covers it. A triangle of no snapped area (A == 0) has only band pixels,
-//       near its longest edge. So each triangle's fragments are exactly the model's.
-//     - The blending rule (a negative tolerance) and the GPU: A == 0 draws nothing; covered when
-//       every E_i > 0, or == 0 on a top edge (dy == 0, dx > 0: horizontal, interior below) or a
-//       left edge (dy < 0: the interior to its right). Y points down. A mesh tiling a region
-//       covers each centre once.
-//  6. Depth: the plane through the fan triangle's unsnapped (sx, sy, d), vertices in the order of
-//     rule 5: e1 = v1 - v0, e2 = v2 - v0, det = e1x e2y - e2x e1y, ddx = (e1d e2y - e2d e1y) / det,
-//     ddy = (e2d e1x - e1d e2x) / det, its snap slack s = max(|ddx|, |ddy|) 2^-8 (snapping moves
-//     a vertex by at most 2^-9 pixels per axis: what the blending rule's extrapolation may add;
-//     s is what OpenGL's polygon offset applies: gl_oracle.h), and its error bound e
-//     (fragmentError: the plane's rounding, which grows with a sliver's conditioning, the screen
-//     error along the slopes, and the float rounding of rule 7, 2^-24). Where det == 0 or s is
-//     not finite: ddx = ddy = 0, d0 the middle of the vertex depths, s half their range, e
-//     infinite. The value at the centre (cx, cy) = (px + 0.5, py + 0.5):
-//     c = d0 + ddx (cx - x0) + ddy (cy - y0), all in double. No clamping.
-//  7. Fragments and the depth buffer: one float per pixel, row-major from the top row, cleared to
-//     +infinity. The exact rule: a fragment is float(c); draw writes it when frag < stored, and
-//     every draw raises the pixel's error to the largest e drawn there since the clear. anyBehind
-//     compares each fragment with the stored depth within the band B = e + the pixel's error
-//     (decisionBand, with the float sums' rounding): frag > stored + B is exactly behind (done),
-//     frag <= stored - B exactly not; in between, after every fragment of the query, the exact
-//     model decides: is some triangle drawn since the clear at that centre strictly nearer than
-//     the query's? (GeometryOracle's rule: strictly farther, ties never.)
-//     The blending rule: a draw's fragment is float(c - s) and a query's float(c + s)
-//     (exactFragmentOffset), and anyBehind is true when some fragment has frag > stored + t (float
-//     sum, t the negative tolerance), so near ties count both ways. docs/robustness.md, "Depth
-//     precision".
-//
-// Conservative mode (RasterMode::conservative) changes rules 5, 6 and 7 only, so that every pixel
-// square the unsnapped triangle touches is visited with a depth range holding the triangle's
-// depths there (collision culling must never miss a contact; docs/collision.md):
-//  - squares grow by m = 1 sub-pixel unit on every side (snapping moves a vertex by at most half
-//    a unit): pixel (px, py) is covered when its grown square meets the snapped bounding box and
-//    every edge function's maximum over it is >= 0, E_i(centre) + (128 + m)(|xj - xi| + |yj - yi|)
-//    >= 0, whatever the winding;
-//  - a draw writes float(c - s) and a query tests float(c + s), with c the double centre value of
-//    rule 6 and the spread s = |ddx| / 2 + |ddy| / 2;
-//  - where the plane is undefined (det == 0: the unsnapped triangle is edge-on) or not finite,
-//    c = (d_min + d_max) / 2 and s = (d_max - d_min) / 2 over the vertex depths; a triangle of
-//    zero snapped area covers every square its grown box meets, with that same range.
-// Both values are monotone in the exact mode's, so its "behind" answers are a superset. A query
-// there is behind when frag > stored + t, t the depth tolerance (float sum): callers that need
-// touching surfaces to count both ways set a negative one.
-//
-// Viewports up to kMaxViewportSize = 65536 on a side keep every edge function exact in int64_t.
+// A faster CPU depth rasterizer as an occlusion oracle. It gives the same answers as
+// CpuReferenceOracle (cpu_reference_oracle.h), and leaves the same depth buffer, bit for bit: the
+// same clipping, snapping, int64_t edge functions with the exact rule's margin (or the top-left
+// rule under the blending rule), the same band pixels decided by the exact model, and the same
+// double depth expression rounded to float (rules 1-7 of cpu_reference_oracle.h). Under the exact
+// rule its "undecided" fragments go to the exact model, which finds the triangles drawn at that
+// pixel through a per-tile index of the set-ups (built on first need, per bind) and each
+// primitive's drawing time. What differs from the reference is only how much work it takes:
+//  - every triangle is clipped, snapped and set up once per bind, not once per draw or query,
+//    four at a time with AVX2 where the CPU has it (the scalar set-up finishes the rest);
+//  - the depth buffer is divided into 8 x 8 pixel tiles, each with bounds on its stored depths,
+//    so that whole tiles are skipped (a query that cannot find a fragment behind, a draw that
+//    cannot pass the depth test) or accepted (a query that must find one) without per-pixel work;
+//  - tiles outside an edge are skipped, and tiles inside all three edges are walked without
+//    edge tests, decided exactly from the edge functions at the tile's corner pixels;
+//  - clears are lazy, per tile (a pass clears once but often touches few tiles);
+//  - queries stop at the first fragment behind; draws and queries allocate nothing;
+//  - the pixels of a tile are walked a row at a time, 8 lanes wide with AVX2 where the CPU has it
+//    (chosen once at run time; the scalar loop is the portable fallback, same bits);
+//  - a small triangle (pixel bounds within 3 x 3 tiles: most triangles of a detailed mesh) is
+//    walked whole, row by row in tile-aligned chunks of 8 pixels, its tiles cleared and culled
+//    before and their bounds updated after, without the per-tile set-up that costs more than
+//    the few pixels it has in each tile;
+//  - a primitive of many triangles (CpuOracleOptions::image_min_triangles: an object) is
+//    rasterized once per bind into a depth image of its nearest fragments and once into one of
+//    its farthest (src/raster/depth_images.h), each on first use: every later draw is a
+//    pixelwise minimum with the first over the tiles it covers, every query a comparison of the
+//    second with the stored depths, skipped per tile by the same bounds;
+//  - backToFrontPass and queryAgainst can split the tile rows into screen bands (one per thread,
+//    claimed in turn) on a WorkerPool (worker_pool.h): each band runs the whole sequence on its
+//    own tiles, and the answers are OR-ed across bands. Off by default
+//    (CpuOracleOptions::threads).
+// Conservative mode (CpuOracleOptions::mode, for collision culling) matches
+// CpuReferenceOracle(RasterMode::conservative) the same way: each edge's bias grows to its rise
+// over half a pixel and the snapping margin, the pixel range to every square the grown snapped box
+// touches, and each fragment moves by the set-up's depth spread over the pixel (nearer for draws,
+// farther for queries) before it is rounded; the tile shortcuts then hold unchanged.
 
 #include <cstdint>
 #include <memory>
 #include <span>
-#include <vector>
 
 #include "vissort/geometry_oracle.h"
 
-namespace vissort::detail {
-class DepthArbiter; // src/raster/depth_arbiter.h
-} // namespace vissort::detail
-
 namespace vissort {
+
+class WorkerPool; // worker_pool.h
 
 /// What the oracle did since bind (or resetStats), for benchmarks and tests.
 struct CpuOracleStats {
-    uint64_t draws = 0;            // draw calls
-    uint64_t queries = 0;          // anyBehind calls
-    uint64_t fragments_drawn = 0;  // covered pixel centres visited by draw
-    uint64_t fragments_tested = 0; // covered pixel centres visited by anyBehind (stops early)
-    uint64_t arbitrations = 0;     // (fragment, pixel) pairs the exact model decided (rule 7)
+    uint64_t draws = 0;          // draw calls
+    uint64_t queries = 0;        // anyBehind calls
+    uint64_t tiles_visited = 0;  // tiles of fan triangles' bounding boxes looked at
+    uint64_t tiles_culled = 0;   // ... decided without per-pixel work: outside an edge, or by
+                                 // depth bounds (query: nothing behind; draw: nothing passes)
+    uint64_t tiles_accepted = 0; // query tiles answered "behind" without per-pixel work
+    uint64_t images_built = 0;   // depth images made (CpuOracleOptions::image_min_triangles)
+    uint64_t band_pixels = 0;    // the exact rule's band pixels the last bind decided (all binds)
+    uint64_t arbitrations = 0;   // (fragment, pixel) pairs the exact model decided in queries
+};
+
+/// How CpuOracle may use the machine. The answers and the depth buffer never depend on it.
+struct CpuOracleOptions {
+    /// Exact or conservative sampling, with CpuReferenceOracle's rules for each
+    /// (cpu_reference_oracle.h): the same answers and depth buffer as CpuReferenceOracle(mode).
+    RasterMode mode = RasterMode::exact;
+    /// Walk rows 8 pixels at a time with AVX2 when the CPU supports it (checked once); false
+    /// forces the scalar fallback (for benchmarks of it).
+    bool allow_simd = true;
+    /// Threads for the pass-level batches (backToFrontPass, queryAgainst), the calling thread
+    /// included, clamped to [1, 256]: 1 (the default) = all work on the calling thread;
+    /// 0 = std::thread::hardware_concurrency(). Ignored when pool is given (its threads are used).
+    /// Why not every core by default: on the 2-core reference machine a banded pass 1 alone runs
+    /// 1.7x faster, but triangle-level Vis-sort of the bunnies got slower per frame (the set-ups
+    /// and tiles a worker touched migrate back to the calling thread's core for the next bind,
+    /// pass 2 and the group tests).
+    uint32_t threads = 1;
+    /// Passes with fewer primitives than this stay on the calling thread: waking the workers
+    /// costs more than a small pass (tests set 0 to exercise the bands on small inputs).
+    uint32_t parallel_threshold = 1024;
+    /// The workers for the bands; must outlive the oracle. Null = WorkerPool::shared(), grown to
+    /// threads on the first parallel pass (one pool per process, however many oracles).
+    WorkerPool* pool = nullptr;
+    /// A primitive of at least this many triangles (after clipping) is rasterized once per bind
+    /// into a depth image of its nearest fragments, on its first draw, and once into one of its
+    /// farthest, on its first query; its draws and queries then compare its image with the
+    /// stored depths, tile by tile, with the same answers and depths (src/raster/depth_images.h
+    /// says why). 0: never. Measured on builtin:bunnies at object level (3,674 triangles an
+    /// object, about 4 draws and 4 queries each a frame): docs/benchmarks.md.
+    uint32_t image_min_triangles = 32;
+    /// The images' memory at most (each covered 8 x 8 tile takes 264 bytes); a primitive whose
+    /// image would pass it is drawn and queried triangle by triangle.
+    std::size_t image_budget_bytes = std::size_t(256) << 20;
 };
 
 class CpuOracle final : public GeometryOracle {
 public:
-    explicit CpuOracle(RasterMode mode = RasterMode::exact);
-    ~CpuOracle() override;
+    /// Side of a depth tile in pixels; tiles are stored row-major, the last row and column may
+    /// be partial.
+    static constexpr uint32_t kTileSize = 8;
+    using Options = CpuOracleOptions;
 
-    /// See GeometryOracle::bind. Copies the primitives and the clip-space corners it needs.
+    CpuOracle();
+    explicit CpuOracle(const Options& options);
+    ~CpuOracle() override;
+    CpuOracle(const CpuOracle&) = delete;
+    CpuOracle& operator=(const CpuOracle&) = delete;
+
+    /// See GeometryOracle::bind. Sets up every triangle (clip, snap, edges, depth plane) once.
     /// The view's width and height must be in [1, 65536]; every range must lie within positions.
     void bind(PositionsView positions, const ViewProjection& view,
               std::span<const PrimitiveRange> primitives) override;
+    /// See GeometryOracle::rebind. Copies each triangle's set-ups from the last bind when it
+    /// made them all (same positions arrays, triangle count, view and size), else binds. Binds
+    /// after the first rebind keep where each triangle's set-ups are (8 bytes a triangle of
+    /// positions) and their set-ups while groups are rebound (about 130 bytes a set-up).
+    void rebind(PositionsView positions, const ViewProjection& view,
+                std::span<const PrimitiveRange> primitives) override;
 
-    uint32_t primitiveCount() const override { return uint32_t(primitives_.size()); }
+    uint32_t primitiveCount() const override;
     void clear() override;
     /// Depth test LESS, writes on. primitive must be < primitiveCount().
     void draw(uint32_t primitive) override;
-    /// True when a fragment lies behind the stored depth (rule 7). primitive must be <
-    /// primitiveCount(). Leaves the buffer unchanged.
+    /// True when a fragment lies behind the stored depth by more than depthTolerance().
+    /// primitive must be < primitiveCount(). Leaves the buffer unchanged.
     bool anyBehind(uint32_t primitive) override;
 
-    /// The depth buffer: width() * height() floats, row-major from the top row.
-    std::span<const float> depthBuffer() const { return depth_; }
-    uint32_t width() const { return width_; }
-    uint32_t height() const { return height_; }
+    /// Vis-sort's pass 1 (occlusion_oracle.h), split into screen bands over the threads; the same
+    /// answers and depth buffer as the sequential definition.
+    void backToFrontPass(std::span<const uint32_t> sequence, std::span<const uint8_t> query,
+                         std::span<uint8_t> behind) override;
+    /// The group test (occlusion_oracle.h), split into screen bands over the threads; the same
+    /// answers as the sequential definition. Occluders are drawn only over the tiles of the
+    /// targets' pixel bounds (a cycle search tests a few targets against much of the list), so
+    /// the depth buffer equals the definition's only there.
+    void queryAgainst(std::span<const uint32_t> occluders, std::span<const uint32_t> targets,
+                      std::span<uint8_t> behind) override;
 
-    const CpuOracleStats& stats() const { return stats_; }
-    void resetStats() { stats_ = {}; }
+    /// True when rows are walked with AVX2 (allowed, and the CPU has it).
+    bool usesSimd() const;
+    /// Threads the pass-level batches use (at least 1).
+    uint32_t threadCount() const;
+
+    /// The depth buffer: width() * height() floats, row-major from the top row; equal bit for bit
+    /// to CpuReferenceOracle's after the same clears, draws and passes (after queryAgainst: within
+    /// the targets' pixel bounds). (Clears are lazy, per tile: this writes out the tiles still
+    /// waiting for one.)
+    std::span<const float> depthBuffer() const;
+    uint32_t width() const;
+    uint32_t height() const;
+
+    const CpuOracleStats& stats() const;
+    void resetStats();
 
 private:
-    struct ClipCorner {
-        double x, y, z, w;
-    };
-
-    /// The exact rule's draw and query (rules 5-7).
-    void drawExact(uint32_t primitive);
-    bool anyBehindExact(uint32_t primitive);
-    /// Whether triangle's fragment at pixel (px, py) lies strictly behind one of a triangle
-    /// drawn since the clear, by the exact model; `candidates` are the drawn triangles whose
-    /// bounds meet the triangle's (arbitrationCandidates), thinned here of those never nearer.
-    bool behindSomethingDrawn(uint32_t triangle, uint32_t px, uint32_t py,
-                              std::vector<uint32_t>& candidates);
-    /// The triangles drawn since the clear, other than triangle, whose pixel bounds meet its own;
-    /// with drop_copies, one of each set of copies and none of triangle's own.
-    std::vector<uint32_t> arbitrationCandidates(uint32_t triangle, bool drop_copies);
-
-    RasterMode mode_;
-    uint32_t width_ = 0, height_ = 0;
-    std::vector<PrimitiveRange> primitives_;
-    std::vector<ClipCorner> corners_; // 3 per triangle, clip space
-    std::vector<float> depth_;
-    std::vector<float> error_; // per pixel, the largest error bound drawn there since the clear
-    // What the exact rule needs: the world corners (the bind's view of them), the exact model
-    // and its arbitration, the bind's screen errors, each triangle's pixel bounds (x_min > x_max
-    // when it has none; current where its stamp is the bind's number, made by boundsOf on first
-    // need), and the primitives drawn since the clear (each once).
-    PositionsView positions_;
-    std::unique_ptr<detail::DepthArbiter> arbiter_;
-    double screen_position_error_ = 0, screen_depth_error_ = 0; // detail::ScreenErrors
-    struct PixelBounds {
-        int32_t x_min, x_max, y_min, y_max;
-    };
-    std::vector<PixelBounds> triangle_bounds_;
-    std::vector<uint32_t> bounds_stamps_;
-    uint32_t bind_number_ = 0;
-    const PixelBounds& boundsOf(uint32_t triangle);
-    std::vector<uint32_t> drawn_;
-    std::vector<uint8_t> is_drawn_;
-    CpuOracleStats stats_;
+    struct Impl; // src/raster/cpu_oracle.cpp
+    std::unique_ptr<Impl> impl_;
 };
 
 } // namespace vissort

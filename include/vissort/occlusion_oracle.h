@@ -58,7 +58,7 @@ public:
     /// Group test: clears, draws every occluder, then behind[i] = anyBehind(targets[i]).
     /// Afterwards the depth buffer holds the occluders' depths wherever a target has a fragment;
     /// elsewhere an oracle may have left out occluders that cannot change an answer
-    /// (FastCpuOracle draws only those whose bounds meet the targets').
+    /// (CpuOracle draws only those whose bounds meet the targets').
     virtual void queryAgainst(std::span<const uint32_t> occluders,
                               std::span<const uint32_t> targets, std::span<uint8_t> behind);
 };

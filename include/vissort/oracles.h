@@ -15,9 +15,9 @@
 namespace vissort {
 
 enum class OracleKind {
-    cpu,           // "cpu": the tiled CPU rasterizer (fast_cpu_oracle.h), the default
+    cpu,           // "cpu": the tiled CPU rasterizer (cpu_oracle.h), the default
     cpu_reference, // "cpu-reference": the plain rasterizer that defines the cpu answers
-                   // (cpu_oracle.h); cpu gives identical answers, faster
+                   // (cpu_reference_oracle.h); cpu gives identical answers, faster
     exact,         // "exact": ray casting at pixel centres, decided by the exact fragment
                    // model (exact_oracle.h)
     gl,            // "gl": OpenGL occlusion queries through headless EGL (gl_oracle.h)
@@ -43,9 +43,9 @@ struct OracleOptions {
     /// Exact sampling, or conservative (collision culling; the cpu kinds only).
     RasterMode mode = RasterMode::exact;
     /// The cpu oracle's threads for pass-level batches, the calling thread included
-    /// (FastCpuOracleOptions::threads): 1 keeps all work on the calling thread; 0 = one per core.
+    /// (CpuOracleOptions::threads): 1 keeps all work on the calling thread; 0 = one per core.
     uint32_t threads = 1;
-    /// The cpu oracle walks rows with AVX2 where the CPU has it (FastCpuOracleOptions).
+    /// The cpu oracle walks rows with AVX2 where the CPU has it (CpuOracleOptions).
     bool allow_simd = true;
 
     friend bool operator==(const OracleOptions&, const OracleOptions&) = default;

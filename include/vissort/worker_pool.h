@@ -1,8 +1,8 @@
 #pragma once
-// A small persistent thread pool for pass-level work (FastCpuOracle's screen bands): threads
+// A small persistent thread pool for pass-level work (CpuOracle's screen bands): threads
 // started once, woken per run, no allocation per run. The calling thread runs task 0 itself.
 // One pool per process is the intent: WorkerPool::shared() is the one every oracle uses unless
-// its caller passes its own (FastCpuOracleOptions::pool), so that one oracle per view direction
+// its caller passes its own (CpuOracleOptions::pool), so that one oracle per view direction
 // does not multiply threads. Standard library only.
 
 #include <cstdint>

@@ -86,8 +86,8 @@ struct GlOracle::Impl {
             return;
         }
         glProgramUniform1f(program.get(), offset_location, query ? -tolerance : 0.0f);
-        // The snap slack (cpu_oracle.h, rule 7) as a slope-scaled polygon offset: towards "not
-        // behind" for a tolerance >= 0 (draws farther, queries nearer), else the other way.
+        // The snap slack (cpu_reference_oracle.h, rule 7) as a slope-scaled polygon offset: towards
+        // "not behind" for a tolerance >= 0 (draws farther, queries nearer), else the other way.
         glPolygonOffset(query == (tolerance >= 0) ? -slope_factor : slope_factor, 0.0f);
     }
 

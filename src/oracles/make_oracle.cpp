@@ -3,8 +3,8 @@
 #include <stdexcept>
 
 #include "vissort/cpu_oracle.h"
+#include "vissort/cpu_reference_oracle.h"
 #include "vissort/exact_oracle.h"
-#include "vissort/fast_cpu_oracle.h"
 
 #if VISSORT_WITH_GL
 #include "vissort/gl_context.h"
@@ -17,14 +17,14 @@ Result<std::unique_ptr<GeometryOracle>> makeOracle(OracleKind kind, const Oracle
     using Made = Result<std::unique_ptr<GeometryOracle>>;
     switch (kind) {
     case OracleKind::cpu: {
-        FastCpuOracleOptions fast;
+        CpuOracleOptions fast;
         fast.mode = options.mode;
         fast.threads = options.threads;
         fast.allow_simd = options.allow_simd;
-        return {std::make_unique<FastCpuOracle>(fast), {}};
+        return {std::make_unique<CpuOracle>(fast), {}};
     }
     case OracleKind::cpu_reference:
-        return {std::make_unique<CpuOracle>(options.mode), {}};
+        return {std::make_unique<CpuReferenceOracle>(options.mode), {}};
     case OracleKind::exact:
         if (options.mode != RasterMode::exact)
             throw std::invalid_argument("the exact oracle has no conservative mode (use cpu)");

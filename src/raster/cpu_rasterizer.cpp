@@ -282,8 +282,8 @@ bool setupTriangle(const ScreenVertex& a, const ScreenVertex& b, const ScreenVer
     return setupImpl(a, b, c, width, height, errors, setup);
 }
 
-// Conservative set-up (cpu_oracle.h, conservative mode). What it must guarantee: every pixel
-// whose square the unsnapped triangle touches is walked, with a depth range holding the
+// Conservative set-up (cpu_reference_oracle.h, conservative mode). What it must guarantee: every
+// pixel whose square the unsnapped triangle touches is walked, with a depth range holding the
 // triangle's depths there. Snapping moves each vertex by at most half a sub-pixel unit per axis,
 // so the unsnapped triangle lies within that of the snapped one: squares grown by
 // kConservativeMargin sub-pixel units catch it. The depth plane goes through the unsnapped

@@ -1,7 +1,8 @@
 #pragma once
-// The reference depth rasterizer behind CpuOracle: clip, snap, cover, interpolate depth. Plain and
-// exact rather than fast; a faster rasterizer must reproduce its coverage and depths bit for bit,
-// so every rule is fixed here (the full list is in include/vissort/cpu_oracle.h).
+// The reference depth rasterizer behind CpuReferenceOracle: clip, snap, cover, interpolate depth.
+// Plain and exact rather than fast; a faster rasterizer must reproduce its coverage and depths bit
+// for bit, so every rule is fixed here (the full list is in
+// include/vissort/cpu_reference_oracle.h).
 //
 // Number formats: clip and screen coordinates are double; snapped screen coordinates are 24.8
 // fixed point (kSubpixelBits) in int64_t; edge functions are exact int64_t products.
@@ -50,7 +51,7 @@ struct ScreenErrors {
 /// Column-major 4x4 matrix: element (row r, column c) at 4 c + r.
 using Matrix4 = std::array<double, 16>;
 
-/// Rule 1 (cpu_oracle.h): projection * view, summed in this order, once per bind.
+/// Rule 1 (cpu_reference_oracle.h): projection * view, summed in this order, once per bind.
 inline Matrix4 multiply(const Matrix4& a, const Matrix4& b) {
     Matrix4 out{};
     for (int c = 0; c < 4; ++c)
@@ -114,10 +115,11 @@ struct TriangleSetup {
     bool flat = false;
 };
 
-/// Exact mode's snap slack of a depth plane with slopes ddx and ddy (rule 6, cpu_oracle.h).
-/// Snapping moves each vertex by at most half a sub-pixel unit per axis, so the snapped triangle
-/// lies within the unsnapped one grown by that square: a covered centre is at most 2^-9 pixels
-/// per axis from a point of the unsnapped triangle, where the plane's value differs by at most
+/// Exact mode's snap slack of a depth plane with slopes ddx and ddy (rule 6,
+/// cpu_reference_oracle.h). Snapping moves each vertex by at most half a sub-pixel unit per axis,
+/// so the snapped triangle lies within the unsnapped one grown by that square: a covered centre is
+/// at most 2^-9 pixels per axis from a point of the unsnapped triangle, where the plane's value
+/// differs by at most
 /// (|ddx| + |ddy|) 2^-9 <= max(|ddx|, |ddy|) 2^-8. The latter is what OpenGL's polygon offset
 /// applies with factor 2^-8 (gl_oracle.h), so that both oracles move depths alike. Touching
 /// faces meet only where one of them is extrapolated like that.
@@ -221,8 +223,8 @@ bool setupTriangle(const ScreenVertex& a, const ScreenVertex& b, const ScreenVer
 /// work is the rows and the band pixels, not the area). Stops, returning true, when visit does.
 template <class Visit> bool forEachBandPixel(const TriangleSetup& s, Visit&& visit);
 
-/// setupTriangle for conservative mode (cpu_oracle.h): the same snapping and orientation; the
-/// pixel range is every square the snapped box grown by kConservativeMargin touches; the depth
+/// setupTriangle for conservative mode (cpu_reference_oracle.h): the same snapping and orientation;
+/// the pixel range is every square the snapped box grown by kConservativeMargin touches; the depth
 /// plane and its spread bound the triangle's depths over each square (a flat range of the vertex
 /// depths where there is no plane, or no snapped area: then every corner is the first, so every
 /// edge function is 0). Returns false only for out-of-range coordinates or off-screen bounds.
@@ -325,9 +327,9 @@ template <class Visit> bool forEachBandPixel(const TriangleSetup& s, Visit&& vis
     return false;
 }
 
-/// Conservative walk (cpu_oracle.h): calls visit(px, py, nearest, farthest) for every pixel
-/// whose square the set-up triangle may touch, with the plane's nearest and farthest depth over
-/// that square. Stops, returning true, as soon as visit returns true.
+/// Conservative walk (cpu_reference_oracle.h): calls visit(px, py, nearest, farthest) for every
+/// pixel whose square the set-up triangle may touch, with the plane's nearest and farthest depth
+/// over that square. Stops, returning true, as soon as visit returns true.
 template <class Visit> bool walkTriangleConservative(const TriangleSetup& s, Visit&& visit) {
     // An edge function's largest value over a pixel square grown by the margin.
     std::array<int64_t, 3> reach;

@@ -1,8 +1,8 @@
 #pragma once
-// The exact rule's arbitration (cpu_oracle.h, rule 7), shared by the rasterizing oracles: at one
-// pixel, whether a triangle drawn there lies strictly nearer than a query triangle, by the exact
-// fragment model (geometry/exact_fragments.h). What settles it for a whole pair of triangles is
-// kept for the bind: one triangle wholly on one side of the other's plane (or both in one plane)
+// The exact rule's arbitration (cpu_reference_oracle.h, rule 7), shared by the rasterizing oracles:
+// at one pixel, whether a triangle drawn there lies strictly nearer than a query triangle, by the
+// exact fragment model (geometry/exact_fragments.h). What settles it for a whole pair of triangles
+// is kept for the bind: one triangle wholly on one side of the other's plane (or both in one plane)
 // orders them the same way at every pixel they share, so touching and coplanar faces, whose
 // every shared pixel is a tie the floats cannot see, cost a hash lookup per pixel after the
 // first, not exact arithmetic.

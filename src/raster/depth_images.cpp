@@ -1,4 +1,4 @@
-// The per-primitive depth images of FastCpuOracle (depth_images.h).
+// The per-primitive depth images of CpuOracle (depth_images.h).
 
 #include "raster/depth_images.h"
 

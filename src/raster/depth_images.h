@@ -1,5 +1,5 @@
 #pragma once
-// Depth images of FastCpuOracle's large primitives (fast_cpu_oracle.h): what a primitive of many
+// Depth images of CpuOracle's large primitives (cpu_oracle.h): what a primitive of many
 // triangles leaves in an empty depth buffer, kept per bind so that each later draw or query of it
 // is one pass over its tiles instead of a rasterization of every triangle.
 //

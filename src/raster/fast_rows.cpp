@@ -1,4 +1,4 @@
-// The scalar per-tile walk of FastCpuOracle (fast_rows.h) and the run-time choice of the AVX2 one.
+// The scalar per-tile walk of CpuOracle (fast_rows.h) and the run-time choice of the AVX2 one.
 
 #include "raster/fast_rows.h"
 

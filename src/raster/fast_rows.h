@@ -1,5 +1,5 @@
 #pragma once
-// The per-pixel walk of one depth tile for FastCpuOracle (fast_cpu_oracle.h): edge tests, rule 6's
+// The per-pixel walk of one depth tile for CpuOracle (cpu_oracle.h): edge tests, rule 6's
 // depth expression and the depth test, a row of the tile at a time. Two implementations give the
 // same bits: a portable scalar loop, and 8 lanes with AVX2 (fast_rows_avx2.cpp) that is only ever
 // called where the CPU reports AVX2 (selectRowKernels).
@@ -30,8 +30,8 @@ struct TriangleWalk {
     double d0, ddx, ddy, x0, y0_plane; // the depth plane (TriangleSetup's d0, ddx, ddy, x0, y0)
     // Added to each fragment's double value before rounding: in conservative mode -spread for
     // draws and +spread for queries; under the blending rule the snap slack, moved as
-    // exactFragmentOffset says (cpu_rasterizer.h, cpu_oracle.h rule 7); -0.0 (nothing) under
-    // the exact rule.
+    // exactFragmentOffset says (cpu_rasterizer.h, cpu_reference_oracle.h rule 7); -0.0 (nothing)
+    // under the exact rule.
     double offset;
     // A query's thresholds: a fragment is behind when frag > stored + behind_above (float sum),
     // else undecided when frag > stored + undecided_above. The exact rule: +B and -B, B the

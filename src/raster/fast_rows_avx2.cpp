@@ -1,4 +1,4 @@
-// The AVX2 per-tile walk of FastCpuOracle (fast_rows.h): a row of 8 pixels per step, bit for bit
+// The AVX2 per-tile walk of CpuOracle (fast_rows.h): a row of 8 pixels per step, bit for bit
 // the scalar loop's results.
 //  - Edge tests: the three edge functions of 8 lanes as 8 x int32_t when every walked value fits
 //    (TileWalk::narrow: exact; almost always), else as int64_t in two 4-lane halves compared with

@@ -1,4 +1,4 @@
-// The scalar set-up of FastCpuOracle's fan triangles (fast_setup.h): the reference's clipping,
+// The scalar set-up of CpuOracle's fan triangles (fast_setup.h): the reference's clipping,
 // snapping and set-up (cpu_rasterizer.h), turned into the edge functions at pixel (0, 0) and
 // their steps, the form the tile walks use.
 
@@ -128,8 +128,8 @@ void appendFastSetups(const Matrix4& clip, PositionsView positions, std::size_t 
             const int j = (e + 1) % 3;
             const int64_t dx = ts.x[j] - ts.x[e], dy = ts.y[j] - ts.y[e];
             // Conservative: covered when E + reach >= 0, reach = the edge function's rise over
-            // half a pixel and the margin on each axis (cpu_oracle.h), i.e. E + reach + 1 > 0.
-            // Below 2^39. Otherwise the exact rule's: covered when E > margin.
+            // half a pixel and the margin on each axis (cpu_reference_oracle.h), i.e. E + reach + 1
+            // > 0. Below 2^39. Otherwise the exact rule's: covered when E > margin.
             const int64_t bias =
                 conservative ? (std::abs(dx) + std::abs(dy)) * (half + kConservativeMargin) + 1
                              : -ts.margin[e];

@@ -1,8 +1,8 @@
 #pragma once
-// Triangle set-up for FastCpuOracle (fast_cpu_oracle.h), once per bind: clip, snap, orient, and the
+// Triangle set-up for CpuOracle (cpu_oracle.h), once per bind: clip, snap, orient, and the
 // integer edge functions and depth plane that the tile walks step through. Two implementations
 // give the same bits: the scalar one, built on the reference's own functions (cpu_rasterizer.h,
-// rules 1-6 of cpu_oracle.h), and an AVX2 one (fast_setup_avx2.cpp) that sets up four
+// rules 1-6 of cpu_reference_oracle.h), and an AVX2 one (fast_setup_avx2.cpp) that sets up four
 // triangles at a time and hands back to the scalar one every triangle it does not finish.
 //
 // Number formats: edge functions are exact int64_t values in 24.8 fixed point; the depth plane
@@ -83,8 +83,9 @@ bool edgesFitInt32(const FastSetup& s);
 
 /// Clips, snaps and sets up triangle t of positions (corners 3t .. 3t + 2) for a width x height
 /// viewport, clip being projection * view (rule 1); appends its fan triangles to out (none when
-/// it covers no pixel). Conservative: CpuOracle's conservative rules (cpu_oracle.h); else the
-/// exact and blending rules' set-up with the bind's screen errors.
+/// it covers no pixel). Conservative: CpuReferenceOracle's conservative rules
+/// (cpu_reference_oracle.h); else the exact and blending rules' set-up with the bind's screen
+/// errors.
 void appendFastSetups(const Matrix4& clip, PositionsView positions, std::size_t t, uint32_t width,
                       uint32_t height, bool conservative, const ScreenErrors& errors,
                       std::vector<FastSetup>& out);

@@ -1,6 +1,6 @@
-// The AVX2 set-up of FastCpuOracle (fast_setup.h): four triangles at a time, one per 64-bit lane,
+// The AVX2 set-up of CpuOracle (fast_setup.h): four triangles at a time, one per 64-bit lane,
 // bit for bit what the scalar set-up computes, because every step is the reference's operation in
-// the reference's order (cpu_oracle.h, rules 1-6):
+// the reference's order (cpu_reference_oracle.h, rules 1-6):
 //  - rule 1 in double: ((((0 + m_r x) + m_r+4 y) + m_r+8 z) + m_r+12 * 1), no FMA (the file is
 //    compiled with -ffp-contract=off and the functions target AVX2 only);
 //  - rule 2 only as its shortcut: a triangle with every corner finite, inside every plane and at

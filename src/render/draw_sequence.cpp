@@ -93,7 +93,7 @@ PixelRect screenRectOf(PositionsView positions, std::span<const uint32_t> triang
             const std::array<double, 4> clip = view.toClip(positions.corner(c));
             if (!(clip[3] > 0))
                 return whole; // the projection wraps: no bound from corners
-            // Screen position as the rasterizers compute it (cpu_oracle.h, rule 4).
+            // Screen position as the rasterizers compute it (cpu_reference_oracle.h, rule 4).
             const double sx = (clip[0] / clip[3] + 1) * 0.5 * view.width;
             const double sy = (1 - clip[1] / clip[3]) * 0.5 * view.height;
             low_x = std::min(low_x, sx);

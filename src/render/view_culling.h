@@ -11,8 +11,8 @@
 
 namespace vissort::detail {
 
-/// World -> clip space of a view, the product in double (the oracles' transform, cpu_oracle.h,
-/// rule 1); the renderer rounds it once to float for its shaders.
+/// World -> clip space of a view, the product in double (the oracles' transform,
+/// cpu_reference_oracle.h, rule 1); the renderer rounds it once to float for its shaders.
 glm::dmat4 clipTransform(const ViewProjection& view);
 
 /// Whether every point of box is outside one plane of the clip volume of clip (the view's

@@ -23,8 +23,8 @@
 #include "gl_test_support.h"
 #include "ground_truth.h"
 #include "test_scene_loading.h"
+#include "vissort/cpu_oracle.h"
 #include "vissort/exact_oracle.h"
-#include "vissort/fast_cpu_oracle.h"
 #include "vissort/oracles.h"
 #include "vissort/scene_library.h"
 #include "vissort/scene_orderer.h"
@@ -227,7 +227,7 @@ TEST_P(GlOnScenes, ApproximateToleranceAnswersAsCpu) {
                 std::to_string(width) + "x" + std::to_string(height) +
                 (projection == Projection::perspective ? " perspective" : " orthographic"));
             const ViewProjection view = viewOf(scene, projection, width, height);
-            FastCpuOracle cpu;
+            CpuOracle cpu;
             GlOracle gl(context());
             cpu.setDepthTolerance(kApproximateTolerance);
             gl.setDepthTolerance(kApproximateTolerance);
@@ -257,7 +257,7 @@ TEST_P(GlOnScenes, ApproximateToleranceAnswersAsCpu) {
     for (float tolerance : {kApproximateTolerance, -kApproximateTolerance}) {
         SCOPED_TRACE("tolerance " + std::to_string(tolerance));
         const ViewProjection view = viewOf(scene, Projection::perspective, 203, 111);
-        FastCpuOracle cpu;
+        CpuOracle cpu;
         GlOracle gl(context());
         cpu.setDepthTolerance(tolerance);
         gl.setDepthTolerance(tolerance);
@@ -318,7 +318,7 @@ TEST_P(GlOnScenes, ApproximateToleranceAnswersAsCpu) {
         EXPECT_LE(differing * 100, answers) << differing << " of " << answers << " answers differ";
         if (tolerance < 0)
             continue; // near ties count both ways: one differing answer can change a cycle
-        FastCpuOracle cpu_ordering;
+        CpuOracle cpu_ordering;
         GlOracle gl_ordering(context());
         cpu_ordering.setDepthTolerance(tolerance);
         gl_ordering.setDepthTolerance(tolerance);

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "support/oracle_workloads.h"
-#include "vissort/cpu_oracle.h"
+#include "vissort/cpu_reference_oracle.h"
 
 namespace vissort {
 namespace {
@@ -34,7 +34,7 @@ TEST(OracleWorkloads, TrianglesLandOnTheirPixelsAtTheirDepth) {
 
 TEST(OracleWorkloads, DrawsPassInIdOrderAndQueriesFindNothingBehindTheBackground) {
     const ScreenTriangleWorkload w = makeRightTriangleWorkload(300, 10, 160, 90, 3);
-    CpuOracle oracle;
+    CpuReferenceOracle oracle;
     oracle.bind(w.positions, w.view, w.primitives);
     oracle.draw(w.background);
     for (uint32_t i = 0; i < 300; ++i)

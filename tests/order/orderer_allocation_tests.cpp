@@ -199,7 +199,7 @@ TEST_P(OrdererMemory, PeakBytesPerPrimitiveAreBounded) {
     std::cout << orderLevelName(GetParam()) << ": " << per_primitive
               << " bytes per primitive at the peak\n";
     // About 189 (multistage about 225: per triangle its object, last frame's order, its place
-    // in the groups' start lists and where its set-ups are (FastCpuOracle::rebind); per object
+    // in the groups' start lists and where its set-ups are (CpuOracle::rebind); per object
     // its cycle, its group and its first id in the group,
     // which this scene of one-triangle objects pays per primitive).
     EXPECT_LE(per_primitive, GetParam() == OrderLevel::multistage ? 230.0 : 192.0);

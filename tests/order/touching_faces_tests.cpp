@@ -13,7 +13,7 @@
 #include "ground_truth.h"
 #include "tarjan_scc.h"
 #include "touching_models.h"
-#include "vissort/cpu_oracle.h"
+#include "vissort/cpu_reference_oracle.h"
 #include "vissort/oracles.h"
 #include "vissort/scene_orderer.h"
 
@@ -102,7 +102,7 @@ TEST(TouchingFaces, ParallelFacesApartByMoreThanTheBoundAreBehind) {
             const double gap = gap_in_depth * 0.01 / dd;
             const Model m = scene(gap);
             for (RasterMode mode : {RasterMode::exact}) {
-                CpuOracle reference(mode);
+                CpuReferenceOracle reference(mode);
                 reference.bind(m.positions, view, m.objects);
                 reference.draw(0);
                 Result<std::unique_ptr<GeometryOracle>> fast = makeOracle(OracleKind::cpu);

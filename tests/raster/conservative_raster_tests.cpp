@@ -1,12 +1,13 @@
 // Conservative rasterization (RasterMode::conservative) may only add "behind" answers: on every
 // sequence of draws and queries, each answer the exact mode gives as "behind" is "behind" in
-// conservative mode too. Checked against the exact-mode CpuOracle run on the same operations.
+// conservative mode too. Checked against the exact-mode CpuReferenceOracle run on the same
+// operations.
 #include <random>
 
 #include <gtest/gtest.h>
 
 #include "raster/cpu_rasterizer.h"
-#include "vissort/cpu_oracle.h"
+#include "vissort/cpu_reference_oracle.h"
 #include "vissort/scene.h"
 
 namespace vissort {
@@ -46,7 +47,7 @@ Counts compareModes(const TrianglePositions& positions, const ViewProjection& vi
     std::vector<PrimitiveRange> primitives;
     for (uint32_t t = 0; t < positions.triangleCount(); ++t)
         primitives.push_back({t, 1});
-    CpuOracle exact(RasterMode::exact), conservative(RasterMode::conservative);
+    CpuReferenceOracle exact(RasterMode::exact), conservative(RasterMode::conservative);
     exact.bind(positions, view, primitives);
     conservative.bind(positions, view, primitives);
     std::mt19937 rng(seed);
@@ -118,8 +119,8 @@ TEST(ConservativeRaster, SubPixelTriangleCoversItsPixel) {
     camera.ortho_direction = {0, 0, -1};
     const ViewProjection view = frameCamera(camera, b, 20, 20);
     const std::vector<PrimitiveRange> primitives{{0, 1}, {1, 1}};
-    CpuOracle exact(RasterMode::exact), conservative(RasterMode::conservative);
-    for (CpuOracle* o : {&exact, &conservative}) {
+    CpuReferenceOracle exact(RasterMode::exact), conservative(RasterMode::conservative);
+    for (CpuReferenceOracle* o : {&exact, &conservative}) {
         o->bind(p, view, primitives);
         o->draw(0);
     }
@@ -127,10 +128,10 @@ TEST(ConservativeRaster, SubPixelTriangleCoversItsPixel) {
     EXPECT_TRUE(conservative.anyBehind(1));
 }
 
-// The guarantee collision culling rests on (cpu_oracle.h, conservative mode): every point of the
-// unsnapped triangle lies in a covered pixel whose depth range holds the point's depth. Checked
-// at random points of random triangles (slivers, sub-pixel ones, edge-on ones whose screen area
-// is zero, and points on their edges) against depths interpolated independently in double.
+// The guarantee collision culling rests on (cpu_reference_oracle.h, conservative mode): every point
+// of the unsnapped triangle lies in a covered pixel whose depth range holds the point's depth.
+// Checked at random points of random triangles (slivers, sub-pixel ones, edge-on ones whose screen
+// area is zero, and points on their edges) against depths interpolated independently in double.
 TEST(ConservativeRaster, EveryPointOfTheTriangleIsInACoveredPixelWithItsDepth) {
     constexpr uint32_t kWidth = 24, kHeight = 20;
     std::mt19937_64 rng(11);

@@ -1,7 +1,7 @@
 // The AVX2 tile walks against the portable ones (fast_rows.h), kernel by kernel, on random walks:
 // edge values small enough for the 32-bit lanes, right at the int32_t limit, and far beyond it
 // (the 64-bit lanes), partial and whole rows, both fill-rule outcomes. The portable loops are
-// themselves checked against the reference rasterizer in fast_cpu_oracle_tests.cpp.
+// themselves checked against the reference rasterizer in cpu_oracle_tests.cpp.
 
 #include "raster/fast_rows.h"
 

@@ -2,8 +2,8 @@
 // every kind: inside the view, crossing the near plane and the guard band, behind the eye,
 // sub-pixel, degenerate, with non-finite corners; both projections; viewports from 1 x 1 to the
 // largest allowed. The scalar set-up is itself the reference's (checked against ray casting in
-// cpu_rasterizer_tests.cpp), and FastCpuOracle's answers against CpuOracle's in
-// fast_cpu_oracle_tests.cpp.
+// cpu_rasterizer_tests.cpp), and CpuOracle's answers against CpuReferenceOracle's in
+// cpu_oracle_tests.cpp.
 
 #include "raster/fast_setup.h"
 
@@ -88,7 +88,7 @@ std::vector<std::pair<uint32_t, uint32_t>> bandPixels(const FastSetup& s) {
 
 TEST(FastSetup, Avx2QuadsMatchTheScalarSetup) {
     bool uses_simd = false;
-    selectRowKernels(true, uses_simd); // the same run-time check FastCpuOracle makes
+    selectRowKernels(true, uses_simd); // the same run-time check CpuOracle makes
     if (!uses_simd || avx2SetupQuad() == nullptr)
         GTEST_SKIP() << "this CPU has no AVX2: only the scalar set-up runs here";
     const SetupQuadFn quad = avx2SetupQuad();

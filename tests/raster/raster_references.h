@@ -1,7 +1,7 @@
 #pragma once
 // Independent references for the rasterizer tests: exact integer point-in-triangle on snapped
-// coordinates, and double-precision ray casting. Written from the definitions in cpu_oracle.h,
-// sharing no code with src/raster.
+// coordinates, and double-precision ray casting. Written from the definitions in
+// cpu_reference_oracle.h, sharing no code with src/raster.
 
 #include <array>
 #include <cmath>
@@ -12,7 +12,7 @@
 
 namespace vissort::test {
 
-/// Screen position in 24.8 fixed point of a clip-space point (cpu_oracle.h, rule 4).
+/// Screen position in 24.8 fixed point of a clip-space point (cpu_reference_oracle.h, rule 4).
 inline std::array<int64_t, 2> snappedScreen(const std::array<double, 4>& clip, uint32_t width,
                                             uint32_t height) {
     const double sx = (clip[0] / clip[3] + 1.0) * 0.5 * double(width);
