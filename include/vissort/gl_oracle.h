@@ -47,12 +47,11 @@
 //    in ten thousand on steep triangles;
 //  - a query's fragment moved nearer by t in the vertex shader (z -= t * w), so it passes when
 //    d - t > stored, the CPU's d > stored + t up to float rounding;
-//  - the snap slack of cpu_reference_oracle.h's rules 6 and 7 as glPolygonOffset(factor, 0), factor
-//  =
-//    2^-GL_SUBPIXEL_BITS: the driver moves a fragment by factor times the largest depth slope:
-//    for t > 0 draws move farther and queries nearer, so touching and coplanar faces never count
-//    as behind each other; for t < 0 the other way. Enabled only inside the oracle's calls (the
-//    renderer shares the context and draws without it).
+//  - the snap slack of cpu_reference_oracle.h's rules 6 and 7 as glPolygonOffset(factor, 0),
+//    factor = 2^-GL_SUBPIXEL_BITS: the driver moves a fragment by factor times the largest depth
+//    slope: for t > 0 draws move farther and queries nearer, so touching and coplanar faces never
+//    count as behind each other; for t < 0 the other way. Enabled only inside the oracle's calls
+//    (the renderer shares the context and draws without it).
 //
 // The passes (occlusion_oracle.h), with no CPU round trip per query:
 //  - pass 1 (backToFrontPass): every query is issued (GL_ANY_SAMPLES_PASSED, one query object per

@@ -15,12 +15,11 @@
 //    from it by at most a few units in the last place of |d0| + |ddx (cx - x0)| + |ddy (cy - y0)|:
 //    a margin of 2^-48 of that sum bounds v from both sides. Rounding to float is monotone, so
 //    bounds on v bound the fragments, and comparisons against float depths stay exact.
-//  - The exact rule's decisions (cpu_reference_oracle.h, rule 7) compare a fragment with the stored
-//  depth
-//    within a band made of the fragment's error bound and one for every fragment drawn into the
-//    tile since its clear (TileState::error, at least each pixel's): a wider band than the
-//    reference's per-pixel one decides fewer fragments by floats and sends more to the exact
-//    model, whose answers are the same.
+//  - The exact rule's decisions (cpu_reference_oracle.h, rule 7) compare a fragment with the
+//    stored depth within a band made of the fragment's error bound and one for every fragment drawn
+//    into the tile since its clear (TileState::error, at least each pixel's): a wider band than the
+//    reference's per-pixel one decides fewer fragments by floats and sends more to the exact model,
+//    whose answers are the same.
 
 #include "vissort/cpu_oracle.h"
 
