@@ -4,7 +4,7 @@
 # git), a clean clone of this repository's HEAD inside, both commands run as root in a chroot
 # (with /dev, /proc and /sys mounted and /etc/resolv.conf copied in), then the module installed
 # with pip in a virtual environment and imported. Run it before calling a change to packaging or
-# dependencies done. Needs root and Debian's mirror; takes about 40 minutes on two cores.
+# dependencies done. Needs root and Debian's mirror; took 13 minutes on the 2-core VM.
 #   bash scripts/check-fresh-debian.sh [DIR]     DIR: the new root (default /var/tmp/vissort-fresh,
 #                                                removed first)
 #   VISSORT_FRESH_SKIP_TESTS=1                   the demo and the pip install only

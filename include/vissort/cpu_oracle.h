@@ -154,7 +154,7 @@ public:
     void resetStats();
 
 private:
-    struct Impl; // src/raster/cpu_oracle.cpp
+    struct Impl; // src/raster/cpu_oracle_impl.h
     std::unique_ptr<Impl> impl_;
 };
 
