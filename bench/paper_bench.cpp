@@ -152,12 +152,7 @@ int paperGlFrames(const PaperBenchSettings& settings) {
         return std::min(settings.gl_frames, framesOf(settings));
     if (settings.quick)
         return std::min(2, framesOf(settings));
-    // Mesa's software renderers (llvmpipe, softpipe) and its software EGL device.
-    const GlContextInfo& info = settings.context->info();
-    const bool software = info.renderer.find("llvmpipe") != std::string::npos ||
-                          info.renderer.find("softpipe") != std::string::npos ||
-                          info.device == "Mesa software device";
-    return software ? 0 : std::min(3, framesOf(settings));
+    return settings.context->info().software ? 0 : std::min(3, framesOf(settings));
 #else
     (void)settings;
     return 0;

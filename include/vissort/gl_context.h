@@ -39,6 +39,9 @@ struct GlContextInfo {
     std::string vendor;   // GL_VENDOR
     std::string renderer; // GL_RENDERER
     std::string version;  // GL_VERSION
+    /// Whether OpenGL runs on the CPU: Mesa's software EGL device, or a software renderer
+    /// (llvmpipe, softpipe) on any platform. Benchmarks skip what takes minutes a frame there.
+    bool software = false;
 };
 
 class GlContext {

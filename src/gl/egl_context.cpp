@@ -58,7 +58,14 @@ std::string eglErrorName(EGLint error) {
 struct Display {
     EGLDisplay display = EGL_NO_DISPLAY;
     std::string platform, device;
+    bool software_device = false; // Mesa's software EGL device
 };
+
+// Mesa's renderers that draw on the CPU, as GL_RENDERER names them.
+bool softwareRenderer(const std::string& renderer) {
+    return renderer.find("llvmpipe") != std::string::npos ||
+           renderer.find("softpipe") != std::string::npos;
+}
 
 // The EGL devices, hardware ones first (Mesa lists its software device among them).
 Result<Display> deviceDisplay(const char* client_extensions, bool hardware_only) {
@@ -87,6 +94,7 @@ Result<Display> deviceDisplay(const char* client_extensions, bool hardware_only)
             if (d.display == EGL_NO_DISPLAY)
                 continue;
             d.platform = "device";
+            d.software_device = software;
             if (software) {
                 d.device = "Mesa software device";
             } else {
@@ -225,6 +233,7 @@ Result<std::shared_ptr<GlContext>> GlContext::create(GlPlatform platform) {
     impl->info.vendor = glString(GL_VENDOR);
     impl->info.renderer = glString(GL_RENDERER);
     impl->info.version = glString(GL_VERSION);
+    impl->info.software = chosen.value->software_device || softwareRenderer(impl->info.renderer);
     return {std::shared_ptr<GlContext>(new GlContext(std::move(impl))), ""};
 }
 

@@ -510,10 +510,8 @@ struct CpuOracle::Impl {
     std::vector<uint8_t> narrow_; // FastSetup::narrow, beside setups_
     std::vector<double> spreads_; // FastSetup::spread, beside setups_
     std::vector<float> errors_;   // FastSetup::error rounded up, beside setups_
-    // The exact rule's common error bound of the set-ups bound (setGlobalError): almost every
-    // fragment's is the float rounding, 2^-24, and a few steep or sliver triangles' more; only
-    // those write it into the tiles they draw, so that a draw need not touch every tile's state.
-    static constexpr float kCommonErrorCap = 0x1p-22f;
+    // The exact rule's common error bound of the set-ups bound (setGlobalError, at most
+    // kCommonErrorCap above).
     float global_error_ = 0;
     std::vector<detail::FastSetup> fan_; // bind's scratch: one triangle's fan set-ups
     // The exact rule's band pixels: at a set-up's band_first, their count, then each covered one
