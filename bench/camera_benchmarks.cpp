@@ -5,6 +5,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "scenes/scene_library.h"
 #include "vissort/camera.h"
 #include "vissort/scene.h"
 
@@ -12,7 +13,8 @@ namespace vissort {
 namespace {
 
 void BM_FramingCamera(benchmark::State& state) {
-    const Result<Scene> soup = loadScene("builtin:soup?n=" + std::to_string(state.range(0)));
+    const Result<Scene> soup =
+        samples::loadScene("builtin:soup?n=" + std::to_string(state.range(0)));
     if (!soup) {
         state.SkipWithError(soup.error.c_str());
         return;

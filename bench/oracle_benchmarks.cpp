@@ -16,7 +16,8 @@
 #include <memory>
 #include <vector>
 
-#include "support/oracle_workloads.h"
+#include "harnesses/oracle_workloads.h"
+#include "scenes/scene_library.h"
 #include "vissort/camera_path.h"
 #include "vissort/cpu_oracle.h"
 #include "vissort/cpu_reference_oracle.h"
@@ -123,7 +124,7 @@ BENCHMARK(fillQuery<CpuOracle>)
 
 // Real workload: triangle-level Vis-sort of the 18 bunnies along an orbit, 10 coherent frames.
 template <class Oracle> void bunniesOrbit(benchmark::State& state) {
-    const Result<Scene> loaded = loadScene("builtin:bunnies");
+    const Result<Scene> loaded = samples::loadScene("builtin:bunnies");
     if (!loaded) {
         state.SkipWithError(loaded.error.c_str());
         return;

@@ -30,7 +30,7 @@ rm -rf "$prefix"
 cmake --install "$build" --prefix "$prefix"
 
 for f in lib/cmake/vissort/vissortConfig.cmake lib/cmake/vissort/vissortConfigVersion.cmake \
-         lib/cmake/vissort/vissortTargets.cmake include/vissort/vis_sort.h bin/vissort; do
+         lib/cmake/vissort/vissort-order-targets.cmake lib/cmake/vissort/vissort-all-targets.cmake include/vissort/vis_sort.h bin/vissort; do
   [ -e "$prefix/$f" ] || { echo "check-install: $f was not installed" >&2; exit 1; }
 done
 # Nothing of the source or build tree may leak into the installed package.
@@ -69,17 +69,45 @@ run() {  # run OUTPUT_FILE PROGRAM ARGS...: runs one example, keeps its output a
   cut -c1-100 "$out"
 }
 bin=$work/examples
-run "$work/out.txt" "$bin/order_mesh/order_mesh"
+run "$work/out.txt" "$bin/order_mesh/order_mesh" examples/scenes/pinwheel_cycle.json
 check_permutation "$work/out.txt"
-grep -q '^builtin:slabs: 8 objects' "$work/out.txt"
+grep -q '^examples/scenes/pinwheel_cycle.json: 4 objects' "$work/out.txt"
+grep -qx 'cycles: 1, queries: [0-9]*' "$work/out.txt" ||
+  { echo "check-install: order_mesh: expected the pinwheel's one cycle" >&2; exit 1; }
 run "$work/out.txt" "$bin/order_mesh/order_mesh" assets/models/bunny-lowres.obj triangle
 check_permutation "$work/out.txt"
 run "$work/out.txt" "$bin/order_triangles/order_triangles"
 check_permutation "$work/out.txt"
 grep -qx 'order: 1 3 0 2 4' "$work/out.txt" || { echo "check-install: order_triangles: expected order: 1 3 0 2 4" >&2; exit 1; }
-# A bad file is one line on stderr and a non-zero exit.
+run "$work/out.txt" "$bin/order_frames/order_frames"
+grep -qx 'order: 0 1 2' "$work/out.txt" || { echo "check-install: order_frames: expected order: 0 1 2" >&2; exit 1; }
+# Each example found only the dependencies of the components it names: order_frames (order)
+# none of Embree, assimp, Bullet, FCL or OpenGL, order_triangles (oracles) no assimp or peers.
+forbidden_in() {  # forbidden_in EXAMPLE KEY...: fails if the example's cache has a KEY* entry
+  local cache=$work/examples/$1/CMakeCache.txt
+  shift
+  for key in "$@"; do
+    if grep -q "^$key" "$cache"; then
+      echo "check-install: the example $(basename "$(dirname "$cache")") found $key, which its components do not need" >&2
+      exit 1
+    fi
+  done
+}
+forbidden_in order_frames embree_DIR assimp_DIR fcl_DIR Bullet_DIR BULLET_ nlohmann_json_DIR OPENGL_
+forbidden_in order_triangles assimp_DIR fcl_DIR Bullet_DIR BULLET_ nlohmann_json_DIR
+# ... and a consumer of everything did find them (the check above can fail).
+grep -q '^embree_DIR' "$work/examples/order_mesh/CMakeCache.txt" ||
+  { echo "check-install: order_mesh did not find Embree" >&2; exit 1; }
+# A bad file is one line on stderr and a non-zero exit; so is a built-in scene, which is the
+# samples' (the vissort command's), not the installed library's.
 if "$bin/order_mesh/order_mesh" no-such-file.obj 2>/dev/null; then
   echo "check-install: order_mesh accepted a missing file" >&2
+  exit 1
+fi
+if "$bin/order_mesh/order_mesh" builtin:slabs 2>"$work/err.txt" ||
+   ! grep -q "no built-in scenes here" "$work/err.txt" || [ "$(wc -l <"$work/err.txt")" != 1 ]; then
+  echo "check-install: order_mesh: builtin:slabs is not one line saying the library has none:" >&2
+  cat "$work/err.txt" >&2
   exit 1
 fi
 echo "== check-install: the installed package builds and runs every example"

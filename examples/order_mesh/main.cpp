@@ -1,6 +1,7 @@
-// Loads a scene (a mesh file, a JSON scene or builtin:NAME) and prints the visibility order of
-// its objects (or triangles), front to back, seen from the scene's camera or the default one.
-//   order_mesh [SCENE [object|triangle|multistage]]     SCENE defaults to builtin:slabs
+// Loads a scene (a mesh file or a JSON scene) and prints the visibility order of its objects
+// (or triangles), front to back, seen from the scene's camera or the default one.
+//   order_mesh SCENE [object|triangle|multistage]
+// (The vissort command's builtin:NAME scenes are its samples', not the installed library's.)
 
 #include <cstdint>
 #include <cstdio>
@@ -12,7 +13,11 @@
 #include <vissort/scene_orderer.h>
 
 int main(int argc, char** argv) {
-    const std::string specification = argc > 1 ? argv[1] : "builtin:slabs";
+    if (argc < 2 || argc > 3) {
+        std::fprintf(stderr, "usage: order_mesh SCENE [object|triangle|multistage]\n");
+        return 2;
+    }
+    const std::string specification = argv[1];
     const vissort::Result<vissort::OrderLevel> level =
         vissort::parseOrderLevel(argc > 2 ? argv[2] : "object");
     if (!level) {

@@ -7,6 +7,8 @@
 //   perspective:  d = 1 - near / z       (infinite far plane; affine in screen space)
 //   orthographic: d = (z - near) / (far - near)
 // Pixel (px, py) has its centre at (px + 0.5, py + 0.5); row 0 is the top of the image.
+//
+// Layer: vissort::geometry (the package's `order` component; docs/architecture.md).
 
 #include <array>
 #include <cstdint>

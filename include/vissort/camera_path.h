@@ -1,5 +1,7 @@
 #pragma once
 // Camera paths for multi-frame runs, shared by every command.
+//
+// Layer: vissort::geometry (the package's `order` component; docs/architecture.md).
 
 #include <span>
 #include <string>

@@ -2,6 +2,8 @@
 // "Did you mean": the known name nearest to a mistyped one, so that one-line errors about an
 // unknown command, option, method or JSON key can point at the likely intent ('ordr' -> 'order',
 // 'color' -> 'colour', '--levle' -> '--level').
+//
+// Layer: vissort::core (the package's `order` component; docs/architecture.md).
 
 #include <algorithm>
 #include <cstddef>

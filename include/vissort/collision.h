@@ -8,6 +8,8 @@
 //
 // Triangles are closed: touching counts as intersecting (a shared point, an edge on a face, a
 // coplanar overlap). Pairs within one object (self-collision) are not reported.
+//
+// Layer: vissort::collide (the package's `collide` component; docs/architecture.md).
 
 #include <compare>
 #include <cstdint>
@@ -19,6 +21,7 @@
 #include "vissort/enum_names.h"
 #include "vissort/geometry.h"
 #include "vissort/result.h"
+#include "vissort/vertex_positions.h"
 
 namespace vissort {
 
@@ -127,6 +130,10 @@ public:
     /// nothing large.
     void collide(PositionsView positions, CollisionResult& result);
     CollisionResult collide(PositionsView positions);
+    /// The same from a vertex buffer (vertex_positions.h: a stride, optional indices), gathered
+    /// once into a buffer the detector keeps; std::invalid_argument when gatherPositions refuses
+    /// the view, as for positions above.
+    void collide(const VertexPositionsView& vertices, CollisionResult& result);
 
     const CollisionSettings& settings() const { return settings_; }
 
@@ -134,6 +141,7 @@ private:
     CollisionSettings settings_;
     uint64_t triangles_needed_ = 0; // one past the last triangle an object names
     std::unique_ptr<detail::Collider> collider_;
+    TrianglePositions gathered_; // the corners of the last vertex-buffer frame
 };
 
 /// The triangles that take part in some pair, each once, ascending (for highlighting).

@@ -31,11 +31,8 @@
 //    claimed in turn) on a WorkerPool (worker_pool.h): each band runs the whole sequence on its
 //    own tiles, and the answers are OR-ed across bands. Off by default
 //    (CpuOracleOptions::threads).
-// Conservative mode (CpuOracleOptions::mode, for collision culling) matches
-// CpuReferenceOracle(RasterMode::conservative) the same way: each edge's bias grows to its rise
-// over half a pixel and the snapping margin, the pixel range to every square the grown snapped box
-// touches, and each fragment moves by the set-up's depth spread over the pixel (nearer for draws,
-// farther for queries) before it is rounded; the tile shortcuts then hold unchanged.
+//
+// Layer: vissort::raster (the package's `order` component; docs/architecture.md).
 
 #include <cstdint>
 #include <memory>
@@ -62,9 +59,6 @@ struct CpuOracleStats {
 
 /// How CpuOracle may use the machine. The answers and the depth buffer never depend on it.
 struct CpuOracleOptions {
-    /// Exact or conservative sampling, with CpuReferenceOracle's rules for each
-    /// (cpu_reference_oracle.h): the same answers and depth buffer as CpuReferenceOracle(mode).
-    RasterMode mode = RasterMode::exact;
     /// Walk rows 8 pixels at a time with AVX2 when the CPU supports it (checked once); false
     /// forces the scalar fallback (for benchmarks of it).
     bool allow_simd = true;

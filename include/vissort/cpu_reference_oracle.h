@@ -56,23 +56,9 @@
 //     sum, t the negative tolerance), so near ties count both ways. docs/robustness.md, "Depth
 //     precision".
 //
-// Conservative mode (RasterMode::conservative) changes rules 5, 6 and 7 only, so that every pixel
-// square the unsnapped triangle touches is visited with a depth range holding the triangle's
-// depths there (collision culling must never miss a contact; docs/collision.md):
-//  - squares grow by m = 1 sub-pixel unit on every side (snapping moves a vertex by at most half
-//    a unit): pixel (px, py) is covered when its grown square meets the snapped bounding box and
-//    every edge function's maximum over it is >= 0, E_i(centre) + (128 + m)(|xj - xi| + |yj - yi|)
-//    >= 0, whatever the winding;
-//  - a draw writes float(c - s) and a query tests float(c + s), with c the double centre value of
-//    rule 6 and the spread s = |ddx| / 2 + |ddy| / 2;
-//  - where the plane is undefined (det == 0: the unsnapped triangle is edge-on) or not finite,
-//    c = (d_min + d_max) / 2 and s = (d_max - d_min) / 2 over the vertex depths; a triangle of
-//    zero snapped area covers every square its grown box meets, with that same range.
-// Both values are monotone in the exact mode's, so its "behind" answers are a superset. A query
-// there is behind when frag > stored + t, t the depth tolerance (float sum): callers that need
-// touching surfaces to count both ways set a negative one.
-//
 // Viewports up to kMaxViewportSize = 65536 on a side keep every edge function exact in int64_t.
+//
+// Layer: vissort::raster (the package's `order` component; docs/architecture.md).
 
 #include <cstdint>
 #include <memory>
@@ -98,7 +84,7 @@ struct CpuReferenceOracleStats {
 
 class CpuReferenceOracle final : public GeometryOracle {
 public:
-    explicit CpuReferenceOracle(RasterMode mode = RasterMode::exact);
+    CpuReferenceOracle();
     ~CpuReferenceOracle() override;
 
     /// See GeometryOracle::bind. Copies the primitives and the clip-space corners it needs.
@@ -139,7 +125,6 @@ private:
     /// with drop_copies, one of each set of copies and none of triangle's own.
     std::vector<uint32_t> arbitrationCandidates(uint32_t triangle, bool drop_copies);
 
-    RasterMode mode_;
     uint32_t width_ = 0, height_ = 0;
     std::vector<PrimitiveRange> primitives_;
     std::vector<ClipCorner> corners_; // 3 per triangle, clip space

@@ -1,6 +1,8 @@
 #pragma once
 // Depth complexity of a view: how many surfaces each pixel's ray crosses (the d of the paper's
 // transparency figures, and what bounds depth peeling's passes), by ray casting with Embree.
+//
+// Layer: vissort::exact (the package's `exact` component; docs/architecture.md).
 
 #include <cstdint>
 #include <vector>

@@ -1,6 +1,8 @@
 #pragma once
 // One table of names per enum: parsing, naming and the list for help text all come from it, so
 // a new value is added in one place and every "unknown name" message reads the same.
+//
+// Layer: vissort::core (the package's `order` component; docs/architecture.md).
 
 #include <span>
 #include <string>

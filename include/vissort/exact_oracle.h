@@ -16,6 +16,8 @@
 // drawn + t, so that a negative t (the renderer's blending rule, kBlendingDepthTolerance)
 // counts near ties both ways. Answers do not depend on any rasterizer.
 // After bind(), draw, anyBehind and clear allocate nothing.
+//
+// Layer: vissort::exact (the package's `exact` component; docs/architecture.md).
 
 #include <cstdint>
 #include <span>

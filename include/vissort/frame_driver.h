@@ -2,6 +2,8 @@
 // The frames of a multi-frame run, in one place for every command and benchmark: frame f of a
 // dynamic scene is at time t = f * kFrameInterval, and its camera is the base camera moved along a
 // path (turning about the first frame's bounds) and framed to the frame's own bounds.
+//
+// Layer: vissort::scene (the package's `scene` component; docs/architecture.md).
 
 #include <cstdint>
 

@@ -1,5 +1,7 @@
 #pragma once
 // Plain geometric value types shared by scenes, cameras and oracles. No external types here.
+//
+// Layer: vissort::geometry (the package's `order` component; docs/architecture.md).
 
 #include <cmath>
 #include <cstddef>
@@ -70,7 +72,9 @@ struct Bounds {
 /// World-space triangle corners as a structure of arrays, seen, not owned: what every oracle,
 /// the orderer, the renderer and the collision detector read, so that a caller's own buffers
 /// (a numpy array, a viewer's vertex arrays) are used without a copy. Triangle t has its corners
-/// at indices 3t, 3t+1, 3t+2 of x, y and z, which have the same size, a multiple of 3.
+/// at indices 3t, 3t+1, 3t+2 of x, y and z, which have the same size, a multiple of 3. Vertex
+/// buffers (a byte stride, interleaved attributes, indices) are gathered into this form by
+/// gatherPositions (vertex_positions.h).
 struct PositionsView {
     std::span<const float> x, y, z;
 

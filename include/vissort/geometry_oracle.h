@@ -1,5 +1,7 @@
 #pragma once
 // Occlusion oracles that answer from triangles seen through a camera: the backends.
+//
+// Layer: vissort::geometry (the package's `order` component; docs/architecture.md).
 
 #include <span>
 
@@ -15,17 +17,6 @@ namespace vissort {
 /// shared-edge surfaces never count as occluding each other, and nothing else is a tie. The
 /// `gl` oracle, which cannot decide inside the driver, counts what it cannot decide as behind.
 inline constexpr float kDepthTolerance = 0.0f;
-
-/// How a rasterizing oracle samples a triangle.
-enum class RasterMode {
-    /// Pixel centres, the top-left rule, the depth at the centre: answers that match the
-    /// exact ray-cast reference up to sampling. For visibility ordering and transparency.
-    exact,
-    /// Every pixel whose square the triangle touches; draws write the nearest depth the plane
-    /// takes over the square and queries test the farthest. It can only add "behind" answers,
-    /// never remove one: for collision culling, which must not miss a contact.
-    conservative,
-};
 
 class GeometryOracle : public OcclusionOracle {
 public:

@@ -4,6 +4,8 @@
 // device (EGL_EXT_platform_device, a GPU's driver) when the machine has one, else Mesa's
 // surfaceless platform (EGL_MESA_platform_surfaceless: llvmpipe, OpenGL on the CPU).
 // No EGL or GL type appears here.
+//
+// Layer: vissort::gl (the package's `gl` component; docs/architecture.md).
 
 #include <memory>
 #include <string>

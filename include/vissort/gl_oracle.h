@@ -63,6 +63,8 @@
 //  - the group test (queryAgainst): the occluders in one glMultiDrawArrays, then one query per
 //    target, answers read at the end;
 //  - single draw and anyBehind calls work too (anyBehind waits for its answer).
+//
+// Layer: vissort::gl (the package's `gl` component; docs/architecture.md).
 
 #include <cstdint>
 #include <memory>

@@ -2,6 +2,8 @@
 // Images of the renderer and the tools that judge them: the one conversion of a float frame to
 // 8 bits, the comparison of two 8-bit images, an error map and PNG output. No OpenGL: tools that
 // only compare or write images (and their tests) build without it.
+//
+// Layer: vissort::image (the package's `image` component; docs/architecture.md).
 
 #include <cstdint>
 #include <string>

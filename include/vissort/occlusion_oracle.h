@@ -13,6 +13,8 @@
 //    implementations call the three primitive operations in the order documented, so an
 //    override must give the same answers (it may reorder work that has no data dependency).
 // Only standard-library types appear here: the core depends on nothing else.
+//
+// Layer: vissort::core (the package's `order` component; docs/architecture.md).
 
 #include <cstdint>
 #include <span>

@@ -1,6 +1,8 @@
 #pragma once
 // Every occlusion oracle by kind: the one place that knows them all, so that the orderer, the
 // renderer and applications need only the GeometryOracle interface (geometry_oracle.h).
+//
+// Layer: vissort::oracles (the package's `oracles` component; docs/architecture.md).
 
 #include <cstdint>
 #include <memory>
@@ -40,8 +42,6 @@ inline const char* oracleName(OracleKind kind) {
 
 /// How an oracle samples and may use the machine. Its answers never depend on threads or SIMD.
 struct OracleOptions {
-    /// Exact sampling, or conservative (collision culling; the cpu kinds only).
-    RasterMode mode = RasterMode::exact;
     /// The cpu oracle's threads for pass-level batches, the calling thread included
     /// (CpuOracleOptions::threads): 1 keeps all work on the calling thread; 0 = one per core.
     uint32_t threads = 1;
@@ -51,8 +51,7 @@ struct OracleOptions {
     friend bool operator==(const OracleOptions&, const OracleOptions&) = default;
 };
 
-/// The oracle of that kind with those options. The exact and gl oracles have no conservative
-/// mode: asking for one throws std::invalid_argument (a caller's mistake). The gl oracle uses
+/// The oracle of that kind with those options. The gl oracle uses
 /// the process's shared context (GlContext::shared); when there is none, or vissort was built
 /// without OpenGL, the result is a one-line message naming what is missing.
 Result<std::unique_ptr<GeometryOracle>> makeOracle(OracleKind kind,

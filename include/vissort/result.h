@@ -7,6 +7,8 @@
 //    one-line message; the matching validate function lets a caller check first;
 //  - internal invariants are assertions.
 // Standard library only: the core depends on nothing else.
+//
+// Layer: vissort::core (the package's `order` component; docs/architecture.md).
 
 #include <optional>
 #include <string>

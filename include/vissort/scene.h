@@ -1,8 +1,13 @@
 #pragma once
 // A scene: objects made of triangles, with materials, world-space positions, an optional default
 // camera and an optional animation (dynamic scenes give positions at time t).
+//
+// Layer: vissort::scene (the package's `scene` component; docs/architecture.md).
 
+#include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -67,13 +72,27 @@ struct Scene {
     uint32_t objectOfTriangle(uint32_t triangle) const;
 };
 
+/// key=value parameters of a `builtin:NAME?key=value&...` specification.
+using SceneParameters = std::map<std::string, std::string>;
+/// Makes the named scene of a `builtin:NAME?key=value&...` specification, or a one-line error
+/// naming the problem. The library has no named scenes of its own: the samples' generators
+/// (samples/scenes/scene_library.h: bunnies, the power plant, ...) are one such maker.
+using BuiltinSceneMaker =
+    std::function<Result<Scene>(const std::string& name, const SceneParameters& parameters)>;
+
 /// Loads a scene from a specification:
-///   `builtin:NAME?key=value&...`  a named generated scene (see scene_library.h);
 ///   `PATH.json`                   a JSON scene composing mesh files (docs/scene-format.md);
+///   `builtin:NAME?key=value&...`  the scene builtins makes of that name (an error without one);
 ///   any other path                a mesh file read with assimp (OBJ, PLY, STL, glTF/GLB, ...):
 ///                                 each mesh of the file is one object, in file order.
-/// Rejects missing or unreadable files, empty geometry and non-finite coordinates.
-Result<Scene> loadScene(const std::string& specification);
+/// Rejects missing or unreadable files, empty geometry and non-finite coordinates, and checks
+/// what builtins makes the same way (validateScene).
+Result<Scene> loadScene(const std::string& specification, const BuiltinSceneMaker& builtins = {});
+
+/// A mesh file's bytes already in memory, read as loadScene reads the file: format_hint is its
+/// extension ("obj", "ply", ...), label names it in messages.
+Result<Scene> loadMeshFromMemory(const void* data, std::size_t size, const std::string& format_hint,
+                                 const std::string& label);
 
 /// The index in scene.cameras of the camera a mesh file's scene uses by default: the first that
 /// can be used; none when no stored camera can.

@@ -3,6 +3,8 @@
 // multi-stage scheme), the first-frame depth-key order, and coherence between frames. Inputs are
 // objects' triangle ranges and positions views: no Scene is needed (a Scene gives its objects'
 // ranges with Scene::objectPrimitives()).
+//
+// Layer: vissort::order (the package's `order` component; docs/architecture.md).
 
 #include <cstdint>
 #include <functional>
@@ -13,6 +15,7 @@
 #include "vissort/camera.h"
 #include "vissort/enum_names.h"
 #include "vissort/geometry_oracle.h"
+#include "vissort/vertex_positions.h"
 #include "vissort/vis_sort.h"
 
 namespace vissort {
@@ -82,6 +85,12 @@ public:
     void orderFrame(PositionsView positions, const ViewProjection& view, FrameOrder& out);
     /// The same, returning a new FrameOrder (allocates it every frame).
     FrameOrder orderFrame(PositionsView positions, const ViewProjection& view);
+    /// The same from a vertex buffer (vertex_positions.h: a stride, optional indices), gathered
+    /// once into a buffer the orderer keeps from frame to frame. std::invalid_argument, nothing
+    /// ordered, when gatherPositions refuses the view or it holds other than triangle_count
+    /// triangles.
+    void orderFrame(const VertexPositionsView& vertices, const ViewProjection& view,
+                    FrameOrder& out);
     /// Reports the share of the frame's primitives ordered so far (0 to 1), after each Vis-sort
     /// iteration, on the thread that orders; for a progress display of a long frame. Multistage
     /// reports its triangle stage. An empty function stops the reports.
@@ -139,6 +148,7 @@ private:
     std::vector<uint32_t> group_of_object_, first_local_; // object -> group, its first local id
     std::vector<uint32_t> starts_;          // every group's start list, one after another
     std::vector<uint32_t> group_starts_at_; // where each group's start list begins in starts_
+    TrianglePositions gathered_;            // the corners of the last vertex-buffer frame
 };
 
 } // namespace vissort

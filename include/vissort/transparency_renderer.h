@@ -20,6 +20,8 @@
 //   linked-list  per-pixel linked lists of every fragment, sorted per pixel (Yang et al. 2010),
 //                grown and drawn again until no fragment is dropped: the exact reference;
 //   weighted     weighted blended OIT (McGuire and Bavoil 2013): one pass, approximate.
+//
+// Layer: vissort::render (the package's `render` component; docs/architecture.md).
 
 #include <cstdint>
 #include <functional>

@@ -2,6 +2,8 @@
 // Vis-sort in 3D (Govindaraju, Henson, Lin, Manocha, I3D 2005, section 4): a front-to-back
 // visibility order of primitives computed with occlusion queries only, and the cycles that make
 // a strict order impossible. Depends on nothing but the standard library.
+//
+// Layer: vissort::core (the package's `order` component; docs/architecture.md).
 
 #include <cstdint>
 #include <functional>

@@ -3,6 +3,8 @@
 // and Transparency Computations among Geometric Primitives in Complex Environments", I3D 2005,
 // Algorithm 3.1. A sort that only ever compares an element with the running minimum of a subset,
 // which is what an occlusion query can do in 3D (vis_sort.h). Linear on nearly sorted input.
+//
+// Layer: vissort::core (the package's `order` component; docs/architecture.md).
 
 #include <cstddef>
 #include <cstdint>

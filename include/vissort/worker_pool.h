@@ -4,6 +4,8 @@
 // One pool per process is the intent: WorkerPool::shared() is the one every oracle uses unless
 // its caller passes its own (CpuOracleOptions::pool), so that one oracle per view direction
 // does not multiply threads. Standard library only.
+//
+// Layer: vissort::core (the package's `order` component; docs/architecture.md).
 
 #include <cstdint>
 #include <memory>

@@ -1,7 +1,10 @@
 #include "arrays.h"
 
 #include <cmath>
+#include <span>
 #include <sstream>
+
+#include "vissort/vertex_positions.h"
 
 namespace vissort::python {
 namespace {
@@ -75,6 +78,28 @@ void readIndexed(const py::array& a, const py::detail::unchecked_reference<int64
         }
 }
 
+// float32 coordinates with x, y and z adjacent, at a row stride gatherPositions takes: the
+// library reads the array where it is (no copy in Python).
+bool gatherable(const py::array& a) {
+    const py::ssize_t row = a.strides(a.ndim() == 3 ? 1 : 0);
+    return a.dtype().is(py::dtype::of<float>()) && a.strides(a.ndim() - 1) == sizeof(float) &&
+           row >= py::ssize_t(3 * sizeof(float)) && row % py::ssize_t(sizeof(float)) == 0 &&
+           row <= 1024 && (a.ndim() == 2 || a.strides(0) == 3 * row);
+}
+
+// The array's corners gathered by the library (indices as they are when uint32 and contiguous);
+// its refusals as ValueErrors naming `what`.
+void gatherArray(const py::array& a, std::span<const uint32_t> indices, TrianglePositions& out,
+                 const std::string& what) {
+    const py::ssize_t row = a.strides(a.ndim() == 3 ? 1 : 0);
+    const std::size_t vertices = std::size_t(a.ndim() == 3 ? 3 * a.shape(0) : a.shape(0));
+    const VertexPositionsView view{static_cast<const float*>(a.data()), vertices, std::size_t(row),
+                                   indices};
+    const Status gathered = gatherPositions(view, out);
+    if (!gathered)
+        throw py::value_error(what + ": " + gathered.error);
+}
+
 } // namespace
 
 void readPositions(const py::handle& positions, const py::handle& triangles, TrianglePositions& out,
@@ -100,6 +125,8 @@ void readPositions(const py::handle& positions, const py::handle& triangles, Tri
     const bool doubles = a.dtype().is(py::dtype::of<double>());
 
     py::array_t<int64_t> indices;
+    py::array_t<uint32_t> indices32; // uint32 indices as they are (the library's index type)
+    bool as_uint32 = false;          // (a default array_t is an empty array, not a null one)
     if (indexed) {
         const py::array index_array = asArray(triangles, "triangles");
         if (!(index_array.ndim() == 2 && index_array.shape(1) == 3))
@@ -109,23 +136,40 @@ void readPositions(const py::handle& positions, const py::handle& triangles, Tri
         if (kind != 'i' && kind != 'u')
             throw py::value_error("triangles must hold integer vertex indices, got dtype " +
                                   dtypeText(index_array));
-        indices = py::array_t<int64_t>::ensure(index_array);
-        if (!indices)
-            throw py::value_error("triangles: indices do not fit 64 bits");
+        if (index_array.dtype().is(py::dtype::of<uint32_t>()) &&
+            (index_array.flags() & py::array::c_style)) {
+            indices32 = py::array_t<uint32_t>::ensure(index_array);
+            as_uint32 = true;
+        } else {
+            indices = py::array_t<int64_t>::ensure(index_array);
+            if (!indices)
+                throw py::value_error("triangles: indices do not fit 64 bits");
+        }
     }
     const std::string counted = indexed ? "triangles" : what;
-    const uint64_t count = uint64_t(indexed ? indices.shape(0) : a.shape(0));
+    const uint64_t count = uint64_t(!indexed    ? a.shape(0)
+                                    : as_uint32 ? indices32.shape(0)
+                                                : indices.shape(0));
     if (count == 0)
         throw py::value_error(counted + ": no triangles (an empty array)");
     if (count > kMaxTriangles)
         throw py::value_error(counted + ": " + std::to_string(count) +
                               " triangles, more than the " + std::to_string(kMaxTriangles) +
                               " that 32-bit corner indices address");
+    if (gatherable(a) && (!indexed || as_uint32)) {
+        gatherArray(a,
+                    indexed ? std::span<const uint32_t>(indices32.data(), std::size_t(3 * count))
+                            : std::span<const uint32_t>(),
+                    out, what);
+        return;
+    }
     out.resize(count);
     if (!indexed) {
         doubles ? readCorners<double>(a, out, what) : readCorners<float>(a, out, what);
         return;
     }
+    if (as_uint32) // uint32 indices of float64 (or strided) vertices
+        indices = py::array_t<int64_t>::ensure(indices32);
     const auto ix = indices.unchecked<2>();
     doubles ? readIndexed<double>(a, ix, out, what) : readIndexed<float>(a, ix, out, what);
 }

@@ -10,6 +10,7 @@
 #include "bindings.h"
 #include "frame_input.h"
 #include "vissort/collision.h"
+#include "vissort/collision_peers.h"
 
 namespace vissort::python {
 namespace {
@@ -115,6 +116,8 @@ constexpr const char* kCollideDoc =
 } // namespace
 
 void bindCollide(py::module_& m) {
+    // method="bullet" and "fcl", as on the command line.
+    registerPeerColliders();
     py::class_<Detector>(m, "CollisionDetector",
                          "Finds the intersecting triangle pairs of the same objects frame after "
                          "frame, reusing what each frame learnt")

@@ -10,7 +10,7 @@
 #include "arrays.h"
 #include "bindings.h"
 #include "python_camera.h"
-#include "vissort/scene_library.h"
+#include "scenes/scene_library.h"
 
 namespace vissort::python {
 namespace {
@@ -145,7 +145,7 @@ void bindScene(py::module_& m) {
             if (!py::isinstance<py::str>(text))
                 throw py::value_error("path must be a str or an os.PathLike of one");
             const std::string specification = text.cast<std::string>();
-            return madeScene([&] { return loadScene(specification); });
+            return madeScene([&] { return samples::loadScene(specification); });
         },
         py::arg("path"),
         "A scene from a mesh file (OBJ, PLY, STL, glTF, Collada, ... through assimp), a JSON "
@@ -159,7 +159,7 @@ void bindScene(py::module_& m) {
                 const std::string k = py::str(key).cast<std::string>();
                 values[k] = parameterText(k, value);
             }
-            return madeScene([&] { return makeBuiltinScene(name, values); });
+            return madeScene([&] { return samples::makeBuiltinScene(name, values); });
         },
         py::arg("name"),
         "A built-in scene by name with its parameters: builtin('bunnies', n=18, seed=1); "
@@ -168,7 +168,7 @@ void bindScene(py::module_& m) {
         "builtin_scenes",
         [] {
             py::dict scenes;
-            for (const BuiltinSceneInfo& info : builtinScenes())
+            for (const samples::BuiltinSceneInfo& info : samples::builtinScenes())
                 scenes[py::str(info.name)] = info.summary;
             return scenes;
         },

@@ -44,6 +44,36 @@ def test_strides_dtypes_and_indexed_vertices_give_the_same_order():
     assert order_of(corners.tolist()) == expected
 
 
+def test_float32_vertex_buffers_are_read_where_they_are():
+    """float32 vertices with x, y, z adjacent and uint32 indices go to the library's gather
+    (vertex_positions.h) as they are: packed, interleaved with normals, or as corners."""
+    corners = overlapping_triangles()
+    expected = order_of(corners.astype(np.float64))  # the module's own reading
+    vertices = corners.reshape(-1, 3)[::-1].copy()
+    indices = (len(vertices) - 1 - np.arange(len(vertices))).reshape(-1, 3).astype(np.uint32)
+    assert order_of(vertices, triangles=indices) == expected
+    # Interleaved: position then a normal, the positions a view with a 24-byte row stride; the
+    # normals are NaN, so reading them would be an error.
+    interleaved = np.full((len(vertices), 6), np.nan, np.float32)
+    interleaved[:, :3] = vertices
+    positions = interleaved[:, :3]
+    assert positions.strides == (24, 4)
+    assert order_of(positions, triangles=indices) == expected
+    # Corners (T, 3, 3) interleaved the same way.
+    corner_buffer = np.full((len(corners), 3, 6), np.nan, np.float32)
+    corner_buffer[:, :, :3] = corners
+    assert order_of(corner_buffer[:, :, :3]) == expected
+    # The library's refusals are ValueErrors naming the array.
+    outside = indices.copy()
+    outside[3, 1] = len(vertices)
+    with pytest.raises(ValueError, match=f"names vertex {len(vertices)}, outside 0..{len(vertices) - 1}"):
+        order_of(vertices, triangles=outside)
+    broken = interleaved.copy()
+    broken[int(indices[5, 2]), 1] = np.inf
+    with pytest.raises(ValueError, match="positions: triangle 5, corner 2 is not finite"):
+        order_of(broken[:, :3], triangles=indices)
+
+
 BAD_POSITIONS = [
     (np.zeros((0, 3, 3), np.float32), "no triangles"),
     (np.zeros((4, 3), np.float32), r"shape \(T, 3, 3\)"),

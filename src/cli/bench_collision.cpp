@@ -10,8 +10,8 @@
 #include "cli/commands.h"
 #include "cli/json_output.h"
 #include "cli/line_plot.h"
-#include "collision_bench.h"
-#include "support/measurement.h"
+#include "harnesses/collision_bench.h"
+#include "harnesses/measurement.h"
 #if VISSORT_WITH_GL
 #include "vissort/transparency_renderer.h" // writePng
 #endif

@@ -8,8 +8,8 @@
 #include "cli/commands.h"
 #include "cli/environment.h"
 #include "cli/json_output.h"
-#include "oracle_bench.h"
-#include "support/measurement.h"
+#include "harnesses/measurement.h"
+#include "harnesses/oracle_bench.h"
 
 namespace vissort::cli {
 

@@ -18,8 +18,8 @@
 #include "cli/json_output.h"
 #include "cli/line_plot.h"
 #include "cli/progress.h"
-#include "paper_bench.h"
-#include "support/measurement.h"
+#include "harnesses/measurement.h"
+#include "harnesses/paper_bench.h"
 #include "vissort/image.h"
 #if VISSORT_WITH_GL
 #include "cli/transparency_records.h"

@@ -11,8 +11,8 @@
 #include "cli/commands.h"
 #include "cli/json_output.h"
 #include "cli/transparency_records.h"
-#include "support/measurement.h"
-#include "transparency_bench.h"
+#include "harnesses/measurement.h"
+#include "harnesses/transparency_bench.h"
 
 namespace vissort::cli {
 

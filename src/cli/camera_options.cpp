@@ -5,6 +5,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/text_output.h"
+#include "scenes/scene_library.h"
 
 namespace vissort::cli {
 namespace {
@@ -247,7 +248,7 @@ std::string cameraLine(const ResolvedView& view) {
 }
 
 std::optional<Scene> loadSceneOrReport(const std::string& specification) {
-    Result<Scene> loaded = loadScene(specification);
+    Result<Scene> loaded = samples::loadScene(specification);
     if (!loaded) {
         fail(kExitInput, loaded.error);
         return std::nullopt;

@@ -12,7 +12,7 @@
 #include "cli/obj_output.h"
 #include "cli/progress.h"
 #include "cli/text_output.h"
-#include "support/measurement.h"
+#include "harnesses/measurement.h"
 #include "vissort/collision.h"
 #include "vissort/frame_driver.h"
 

@@ -7,11 +7,14 @@
 #include "cli/environment.h"
 #include "cli/json_output.h"
 #include "cli/progress.h"
+#include "vissort/collision_peers.h"
 
 int main(int argc, char** argv) {
     using namespace vissort::cli;
     // Each line as it is printed, also into a pipe: long runs report as they go.
     std::cout << std::unitbuf;
+    // `collide --method bullet|fcl` and `bench collision` measure the peers beside vissort.
+    vissort::registerPeerColliders();
     CLI::App app{"vissort: visibility ordering of 3D geometry with occlusion queries (Vis-sort)",
                  "vissort"};
     app.require_subcommand(1);

@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "transparency_bench.h"
+#include "harnesses/transparency_bench.h"
 
 namespace vissort::cli {
 

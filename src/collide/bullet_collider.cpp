@@ -12,7 +12,7 @@
 
 #include <BulletCollision/BroadphaseCollision/btDbvt.h>
 
-#include "collide/collider.h"
+#include "collide/peer_colliders.h"
 #include "collide/triangle_boxes.h"
 #include "collide/triangle_intersection.h"
 

@@ -25,8 +25,13 @@ public:
 std::unique_ptr<Collider> makeBruteForceCollider(std::span<const PrimitiveRange> objects);
 std::unique_ptr<Collider> makeVisibilityCollider(std::span<const PrimitiveRange> objects,
                                                  const CollisionSettings& settings);
-std::unique_ptr<Collider> makeBulletCollider(std::span<const PrimitiveRange> objects);
-std::unique_ptr<Collider> makeFclCollider(std::span<const PrimitiveRange> objects);
+
+/// The peers (Bullet, FCL) are a library of their own, vissort_peers (the package's `peers`
+/// component), so that a consumer of the collision layer needs neither: it makes the bullet and
+/// fcl colliders once registerPeerColliders (collision_peers.h) has put its factory here.
+using PeerColliderFactory = std::unique_ptr<Collider> (*)(CollisionMethod method,
+                                                          std::span<const PrimitiveRange> objects);
+void setPeerColliderFactory(PeerColliderFactory factory);
 
 /// Milliseconds since construction or the last lap, for the stage timings.
 class StageClock {

@@ -2,6 +2,7 @@
 // and times the frame.
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -9,6 +10,16 @@
 #include "collide/collider.h"
 
 namespace vissort {
+namespace {
+
+// Set once by registerPeerColliders (the peers library); read by every detector made after.
+std::atomic<detail::PeerColliderFactory> peer_collider_factory{nullptr};
+
+} // namespace
+
+void detail::setPeerColliderFactory(PeerColliderFactory factory) {
+    peer_collider_factory.store(factory, std::memory_order_release);
+}
 
 std::vector<Vec3> defaultCollisionDirections() {
     return {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}, {1, 1, -1}, {1, -1, 1}, {-1, 1, 1}};
@@ -68,10 +79,15 @@ CollisionDetector::CollisionDetector(std::span<const PrimitiveRange> objects,
         collider_ = detail::makeBruteForceCollider(objects);
         break;
     case CollisionMethod::bullet:
-        collider_ = detail::makeBulletCollider(objects);
-        break;
     case CollisionMethod::fcl:
-        collider_ = detail::makeFclCollider(objects);
+        if (detail::PeerColliderFactory make_peer =
+                peer_collider_factory.load(std::memory_order_acquire))
+            collider_ = make_peer(settings_.method, objects);
+        else
+            throw std::invalid_argument(std::string("collision method '") +
+                                        collisionMethodName(settings_.method) +
+                                        "' is a peer: link vissort::peers (Bullet, FCL) and call "
+                                        "vissort::registerPeerColliders() first");
         break;
     }
 }
@@ -96,6 +112,12 @@ void CollisionDetector::collide(PositionsView positions, CollisionResult& result
     std::sort(result.pairs.begin(), result.pairs.end());
     result.stats.intersecting = result.pairs.size();
     result.stats.total_ms = clock.lap();
+}
+
+void CollisionDetector::collide(const VertexPositionsView& vertices, CollisionResult& result) {
+    if (Status gathered = gatherPositions(vertices, gathered_); !gathered)
+        throw std::invalid_argument("collision vertex positions: " + gathered.error);
+    collide(gathered_.view(), result);
 }
 
 CollisionResult CollisionDetector::collide(PositionsView positions) {

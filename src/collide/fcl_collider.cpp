@@ -18,7 +18,7 @@
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/collision_object.h>
 
-#include "collide/collider.h"
+#include "collide/peer_colliders.h"
 
 namespace vissort::detail {
 namespace {

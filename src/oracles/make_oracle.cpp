@@ -18,20 +18,15 @@ Result<std::unique_ptr<GeometryOracle>> makeOracle(OracleKind kind, const Oracle
     switch (kind) {
     case OracleKind::cpu: {
         CpuOracleOptions fast;
-        fast.mode = options.mode;
         fast.threads = options.threads;
         fast.allow_simd = options.allow_simd;
         return {std::make_unique<CpuOracle>(fast), {}};
     }
     case OracleKind::cpu_reference:
-        return {std::make_unique<CpuReferenceOracle>(options.mode), {}};
+        return {std::make_unique<CpuReferenceOracle>(), {}};
     case OracleKind::exact:
-        if (options.mode != RasterMode::exact)
-            throw std::invalid_argument("the exact oracle has no conservative mode (use cpu)");
         return {std::make_unique<ExactOracle>(), {}};
     case OracleKind::gl: {
-        if (options.mode != RasterMode::exact)
-            throw std::invalid_argument("the gl oracle has no conservative mode (use cpu)");
 #if VISSORT_WITH_GL
         Result<std::shared_ptr<GlContext>> context = GlContext::shared();
         if (!context)

@@ -5,6 +5,8 @@
 
 #include <cassert>
 #include <chrono>
+#include <stdexcept>
+#include <string>
 
 #include "vissort/scene_orderer.h"
 
@@ -62,6 +64,17 @@ FrameOrder SceneOrderer::orderFrame(PositionsView positions, const ViewProjectio
     FrameOrder frame;
     orderFrame(positions, view, frame);
     return frame;
+}
+
+void SceneOrderer::orderFrame(const VertexPositionsView& vertices, const ViewProjection& view,
+                              FrameOrder& out) {
+    if (Status gathered = gatherPositions(vertices, gathered_); !gathered)
+        throw std::invalid_argument("vertex positions: " + gathered.error);
+    if (gathered_.triangleCount() != triangle_count_)
+        throw std::invalid_argument(
+            "vertex positions hold " + std::to_string(gathered_.triangleCount()) +
+            " triangles; the orderer was made for " + std::to_string(triangle_count_));
+    orderFrame(gathered_.view(), view, out);
 }
 
 void SceneOrderer::setProgress(std::function<void(double fraction)> report) {

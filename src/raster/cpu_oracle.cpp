@@ -28,8 +28,7 @@
 
 namespace vissort {
 
-CpuOracle::Impl::Impl(const Options& options)
-    : conservative_(options.mode == RasterMode::conservative) {
+CpuOracle::Impl::Impl(const Options& options) {
     const detail::RowKernels kernels = detail::selectRowKernels(options.allow_simd, use_simd_);
     draw_tile_ = kernels.draw;
     query_tile_ = kernels.query;

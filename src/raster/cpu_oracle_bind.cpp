@@ -31,11 +31,9 @@ void CpuOracle::Impl::bind(PositionsView positions, const ViewProjection& view,
     }
     source_at_ = Source::none;
     positions_ = positions;
-    if (!conservative_) {
-        screen_errors_ = detail::screenErrorsOf(m, view, positions, primitives);
-        orthographic_ = view.projection == Projection::orthographic;
-        arbiter_.bind(view, positions);
-    }
+    screen_errors_ = detail::screenErrorsOf(m, view, positions, primitives);
+    orthographic_ = view.projection == Projection::orthographic;
+    arbiter_.bind(view, positions);
     band_pixels_.assign(1, 0); // entry 0: none
     if (keep_for_rebind_) {
         bound_x_ = positions.x.data();
@@ -68,7 +66,7 @@ void CpuOracle::Impl::bind(PositionsView positions, const ViewProjection& view,
             next_start += primitives[next_primitive++].triangle_count;
         }
     };
-    const bool batch = setup_quad_ != nullptr && !conservative_;
+    const bool batch = setup_quad_ != nullptr;
     uint32_t quad_triangles[4];
     std::size_t quad_size = 0, quad_first = 0; // quad_triangles[0] is at bind position quad_first
     const auto setUpQuad = [&] {
@@ -88,7 +86,7 @@ void CpuOracle::Impl::bind(PositionsView positions, const ViewProjection& view,
             } else if (lanes[l] == detail::LaneSetup::scalar) {
                 fan_.clear();
                 detail::appendFastSetups(m, positions, quad_triangles[l], width_, height_,
-                                         conservative_, screen_errors_, fan_);
+                                         screen_errors_, fan_);
                 store(fan_, quad_triangles[l]);
             }
             if (keep_for_rebind_) {
@@ -237,7 +235,7 @@ void CpuOracle::Impl::finishBind() {
 
 void CpuOracle::Impl::store(std::span<const detail::FastSetup> fan, uint32_t t) {
     for (const detail::FastSetup& s : fan) {
-        const uint32_t band = conservative_ ? 0 : bandPixelsOf(s, t);
+        const uint32_t band = bandPixelsOf(s, t);
         setups_.push_back(storedSetup(s, t, band));
         narrow_.push_back(s.narrow ? 1 : 0);
         spreads_.push_back(s.spread);

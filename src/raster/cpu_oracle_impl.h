@@ -47,14 +47,14 @@ constexpr double kDepthMargin = 0x1p-48;
 // A set-up as the oracle keeps it from bind to bind and the walks read it: FastSetup's values in
 // 128 bytes (two cache lines) instead of 176, since a large input keeps one per triangle. Pixel
 // bounds lie in a viewport of at most 2^16 pixels a side; the narrow flag (a byte, not 8 of
-// padding), the spread (the snap slack, or the conservative spread) and the exact rule's error
+// padding), the spread (the snap slack) and the exact rule's error
 // bound are kept beside them, and the margins are derived from the steps where the blending rule
 // needs them (marginsFromSteps). The edge steps stay int64_t: as int32_t quotients by
 // kSubpixelScale (snapped coordinates are at most 2^29) the set-up would take fewer bytes, but
 // widening them back in every draw and query cost 6% more instructions on builtin:bunnies at
 // object level.
 struct StoredSetup {
-    int64_t edge_at_origin[3]; // with the exact rule's bias (-margin), or conservative mode's
+    int64_t edge_at_origin[3]; // with the exact rule's bias (-margin)
     int64_t edge_step_x[3], edge_step_y[3];
     double x0, y0, d0, ddx, ddy;
     uint16_t px_min, px_max, py_min, py_max;
@@ -116,20 +116,17 @@ inline float bandOf(float error, float stored_error) {
 }
 
 // What a draw or a query adds to each fragment's double value before rounding (fast_rows.h):
-// conservative mode, the nearest depth over the pixel for a draw and the farthest for a query;
-// exact mode, the slack as the reference moves it (detail::exactFragmentOffset).
-template <bool kDraw> double fragmentOffset(double spread, bool conservative, float tolerance) {
-    return conservative ? (kDraw ? -spread : spread)
-                        : detail::exactFragmentOffset(spread, kDraw, tolerance);
+// the slack as the reference moves it (detail::exactFragmentOffset).
+template <bool kDraw> double fragmentOffset(double spread, float tolerance) {
+    return detail::exactFragmentOffset(spread, kDraw, tolerance);
 }
 
 // What every walk of s shares (fast_rows.h), for a draw or a query.
 template <bool kDraw>
 detail::TriangleWalk triangleWalk(const StoredSetup& s, bool narrow, double spread,
-                                  bool conservative, float tolerance) {
+                                  float tolerance) {
     detail::TriangleWalk walk;
-    // The blending rule's and conservative mode's thresholds; the exact rule sets its own per
-    // tile (decisionBand).
+    // The blending rule's threshold; the exact rule sets its own per tile (decisionBand).
     walk.behind_above = tolerance;
     walk.undecided_above = std::numeric_limits<float>::infinity();
     walk.narrow = narrow;
@@ -142,10 +139,8 @@ detail::TriangleWalk triangleWalk(const StoredSetup& s, bool narrow, double spre
     walk.ddy = s.ddy;
     walk.x0 = s.x0;
     walk.y0_plane = s.y0;
-    // The exact rule moves nothing (tolerance 0, not conservative).
-    walk.offset = !conservative && tolerance == 0
-                      ? -0.0
-                      : fragmentOffset<kDraw>(spread, conservative, tolerance);
+    // The exact rule moves nothing (tolerance 0).
+    walk.offset = tolerance == 0 ? -0.0 : fragmentOffset<kDraw>(spread, tolerance);
     return walk;
 }
 
@@ -211,7 +206,7 @@ struct CpuOracle::Impl {
 
     // The exact rule (depth tolerance 0, exact mode): its undecided fragments, collected by a
     // query's walks and decided by the exact model once the walks found nothing behind.
-    bool exactRule() const { return !conservative_ && depth_tolerance_ == 0; }
+    bool exactRule() const { return depth_tolerance_ == 0; }
     struct Undecided {
         enum class Kind : uint8_t {
             setup_tile,  // some fragment of set-up `what` in tile `where`
@@ -377,7 +372,7 @@ struct CpuOracle::Impl {
     void edgeOrigins(const StoredSetup& s, int64_t origin[3]) const {
         for (int e = 0; e < 3; ++e)
             origin[e] = s.edge_at_origin[e];
-        if (conservative_ || depth_tolerance_ == 0)
+        if (depth_tolerance_ == 0)
             return;
         const std::array<int64_t, 3> margins =
             detail::marginsFromSteps(s.edge_step_x, s.edge_step_y, screen_errors_);
@@ -390,12 +385,9 @@ struct CpuOracle::Impl {
     /// worse.)
     template <bool kDraw, bool kFarImage>
     detail::TriangleWalk walkOf(const StoredSetup& s, bool narrow, double spread) const {
-        detail::TriangleWalk walk =
-            triangleWalk<kDraw>(s, narrow, spread, conservative_, depth_tolerance_);
+        detail::TriangleWalk walk = triangleWalk<kDraw>(s, narrow, spread, depth_tolerance_);
         if constexpr (kFarImage)
-            walk.offset = exactRule()
-                              ? -0.0
-                              : -fragmentOffset<false>(spread, conservative_, depth_tolerance_);
+            walk.offset = exactRule() ? -0.0 : -fragmentOffset<false>(spread, depth_tolerance_);
         return walk;
     }
     /// rasterize for a triangle whose pixel bounds span at most detail::kSmallTiles tiles each
@@ -429,8 +421,7 @@ struct CpuOracle::Impl {
         std::fill_n(depth_.begin() + std::ptrdiff_t(tile * kTilePixels), kTilePixels, kInfinity);
         tiles_[tile] = {kInfinity, kInfinity, 0.0f, epoch_};
     }
-    /// Set-up k's FastSetup::spread: conservative mode, the spread over a pixel; exact mode,
-    /// the snap slack (cpu_rasterizer.h).
+    /// Set-up k's FastSetup::spread: the snap slack (cpu_rasterizer.h).
     double spreadOf(uint32_t k) const { return spreads_[k]; }
     /// Appends the set-ups of triangle t's fan triangles to setups_ (and narrow_, spreads_,
     /// errors_), with their band pixels under the exact rule.
@@ -596,7 +587,6 @@ struct CpuOracle::Impl {
     // The oracle's depthTolerance(), copied here by every draw, query and pass.
     float depth_tolerance_ = kDepthTolerance;
 
-    bool conservative_ = false;
     bool use_simd_ = false;
     // The pixel walks (src/raster/fast_rows.h): AVX2 or scalar, chosen at construction.
     void (*draw_tile_)(const detail::TileWalk&, detail::TileDraw&) = nullptr;

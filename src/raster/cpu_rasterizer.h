@@ -32,11 +32,6 @@ inline constexpr uint32_t kMaxViewportSize = 1u << 16;
 /// absurd input gets here: clipping keeps honest geometry far below it.
 inline constexpr int64_t kMaxSnapped = int64_t(1) << 29;
 
-/// Conservative mode grows each pixel square by this many sub-pixel units on every side: more
-/// than the half unit that snapping moves a vertex, so a square the unsnapped triangle touches
-/// is always walked.
-inline constexpr int64_t kConservativeMargin = 1;
-
 /// How far the rasterizer's own numbers may lie from the exact fragment model's
 /// (geometry/exact_fragments.h) for one bind, from rounding in the clip transform, the divide and
 /// the pixel rays, which grows with the coordinates' size against the nearest depth drawn
@@ -92,11 +87,9 @@ struct TriangleSetup {
     std::array<int64_t, 3> margin{};
     // Depth plane d(sx, sy) = d0 + ddx (sx - x0) + ddy (sy - y0), in double.
     double x0 = 0, y0 = 0, d0 = 0, ddx = 0, ddy = 0;
-    // Inclusive pixel range whose centres may be covered (conservative mode: whose squares may
-    // be touched), clamped to the viewport.
+    // Inclusive pixel range whose centres may be covered, clamped to the viewport.
     int64_t px_min = 0, px_max = -1, py_min = 0, py_max = -1;
-    // Conservative mode: half the range of depths over a pixel square about the plane's value at
-    // its centre. Exact mode: the snap slack (snapSlack), how far the plane's value at a covered
+    // The snap slack (snapSlack): how far the plane's value at a covered
     // centre may be from the depth of the nearest point of the unsnapped triangle (the blending
     // rule moves fragments by it).
     double spread = 0;
@@ -223,14 +216,6 @@ bool setupTriangle(const ScreenVertex& a, const ScreenVertex& b, const ScreenVer
 /// work is the rows and the band pixels, not the area). Stops, returning true, when visit does.
 template <class Visit> bool forEachBandPixel(const TriangleSetup& s, Visit&& visit);
 
-/// setupTriangle for conservative mode (cpu_reference_oracle.h): the same snapping and orientation;
-/// the pixel range is every square the snapped box grown by kConservativeMargin touches; the depth
-/// plane and its spread bound the triangle's depths over each square (a flat range of the vertex
-/// depths where there is no plane, or no snapped area: then every corner is the first, so every
-/// edge function is 0). Returns false only for out-of-range coordinates or off-screen bounds.
-bool setupConservative(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
-                       uint32_t width, uint32_t height, TriangleSetup& setup);
-
 /// The edge function of edge i at a 24.8 fixed-point point: positive inside.
 inline int64_t edgeFunction(const TriangleSetup& s, int i, int64_t px, int64_t py) {
     const int j = (i + 1) % 3;
@@ -327,43 +312,12 @@ template <class Visit> bool forEachBandPixel(const TriangleSetup& s, Visit&& vis
     return false;
 }
 
-/// Conservative walk (cpu_reference_oracle.h): calls visit(px, py, nearest, farthest) for every
-/// pixel whose square the set-up triangle may touch, with the plane's nearest and farthest depth
-/// over that square. Stops, returning true, as soon as visit returns true.
-template <class Visit> bool walkTriangleConservative(const TriangleSetup& s, Visit&& visit) {
-    // An edge function's largest value over a pixel square grown by the margin.
-    std::array<int64_t, 3> reach;
-    for (int i = 0; i < 3; ++i) {
-        const int j = (i + 1) % 3;
-        reach[i] = (std::abs(s.x[j] - s.x[i]) + std::abs(s.y[j] - s.y[i])) *
-                   (kSubpixelScale / 2 + kConservativeMargin);
-    }
-    for (int64_t py = s.py_min; py <= s.py_max; ++py) {
-        const int64_t cy = py * kSubpixelScale + kSubpixelScale / 2;
-        for (int64_t px = s.px_min; px <= s.px_max; ++px) {
-            const int64_t cx = px * kSubpixelScale + kSubpixelScale / 2;
-            if (edgeFunction(s, 0, cx, cy) + reach[0] < 0)
-                continue;
-            if (edgeFunction(s, 1, cx, cy) + reach[1] < 0)
-                continue;
-            if (edgeFunction(s, 2, cx, cy) + reach[2] < 0)
-                continue;
-            const double centre =
-                s.d0 + s.ddx * ((double(px) + 0.5) - s.x0) + s.ddy * ((double(py) + 0.5) - s.y0);
-            if (visit(uint32_t(px), uint32_t(py), float(centre - s.spread),
-                      float(centre + s.spread)))
-                return true;
-        }
-    }
-    return false;
-}
-
 /// Clips a clip-space triangle, fans the polygon out from its first vertex as (p0, p_i, p_i+1)
-/// and calls walk(setup) for each fan triangle that set up (setupTriangle with errors, or
-/// setupConservative when conservative). Returns true as soon as walk does.
+/// and calls walk(setup) for each fan triangle that set up (setupTriangle with errors). Returns
+/// true as soon as walk does.
 template <class Walk>
 bool forEachFanTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
-                        uint32_t width, uint32_t height, bool conservative, Walk&& walk,
+                        uint32_t width, uint32_t height, Walk&& walk,
                         const ScreenErrors& errors = {}) {
     std::array<ClipVertex, kMaxPolygonVertices> polygon;
     const int count = clipTriangle(a, b, c, polygon);
@@ -374,11 +328,8 @@ bool forEachFanTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVert
         screen[i] = toScreen(polygon[i], width, height);
     TriangleSetup setup;
     for (int i = 1; i + 1 < count; ++i) {
-        const bool ok =
-            conservative
-                ? setupConservative(screen[0], screen[i], screen[i + 1], width, height, setup)
-                : setupTriangle(screen[0], screen[i], screen[i + 1], width, height, errors, setup);
-        if (ok && walk(setup))
+        if (setupTriangle(screen[0], screen[i], screen[i + 1], width, height, errors, setup) &&
+            walk(setup))
             return true;
     }
     return false;
@@ -390,7 +341,7 @@ bool forEachFanTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVert
 template <class Visit>
 bool rasterizeTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
                        uint32_t width, uint32_t height, Visit&& visit) {
-    return forEachFanTriangle(a, b, c, width, height, false,
+    return forEachFanTriangle(a, b, c, width, height,
                               [&](const TriangleSetup& s) { return walkTriangle(s, visit); });
 }
 
@@ -400,7 +351,7 @@ template <class Visit>
 bool rasterizeTriangleBlending(bool draw, float tolerance, const ClipVertex& a, const ClipVertex& b,
                                const ClipVertex& c, uint32_t width, uint32_t height,
                                Visit&& visit) {
-    return forEachFanTriangle(a, b, c, width, height, false, [&](const TriangleSetup& s) {
+    return forEachFanTriangle(a, b, c, width, height, [&](const TriangleSetup& s) {
         return walkTriangle(s, visit, exactFragmentOffset(s.spread, draw, tolerance));
     });
 }
@@ -415,7 +366,7 @@ bool rasterizeTriangleExact(const ClipVertex& a, const ClipVertex& b, const Clip
                             uint32_t width, uint32_t height, const ScreenErrors& errors,
                             Covered&& covered, Visit&& visit) {
     return forEachFanTriangle(
-        a, b, c, width, height, false,
+        a, b, c, width, height,
         [&](const TriangleSetup& s) {
             const auto certain = [&](uint32_t px, uint32_t py, float depth) {
                 return visit(px, py, depth, s.error);
@@ -427,15 +378,6 @@ bool rasterizeTriangleExact(const ClipVertex& a, const ClipVertex& b, const Clip
             });
         },
         errors);
-}
-
-/// rasterizeTriangle in conservative mode: visit(px, py, nearest, farthest).
-template <class Visit>
-bool rasterizeTriangleConservative(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
-                                   uint32_t width, uint32_t height, Visit&& visit) {
-    return forEachFanTriangle(a, b, c, width, height, true, [&](const TriangleSetup& s) {
-        return walkTriangleConservative(s, visit);
-    });
 }
 
 } // namespace vissort::detail

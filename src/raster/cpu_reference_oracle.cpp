@@ -22,8 +22,7 @@ template <class Corner> detail::ClipVertex toClipVertex(const Corner& corner) {
 
 } // namespace
 
-CpuReferenceOracle::CpuReferenceOracle(RasterMode mode)
-    : mode_(mode), arbiter_(std::make_unique<detail::DepthArbiter>()) {}
+CpuReferenceOracle::CpuReferenceOracle() : arbiter_(std::make_unique<detail::DepthArbiter>()) {}
 
 CpuReferenceOracle::~CpuReferenceOracle() = default;
 
@@ -78,7 +77,7 @@ void CpuReferenceOracle::clear() {
 void CpuReferenceOracle::draw(uint32_t primitive) {
     assert(primitive < primitives_.size());
     ++stats_.draws;
-    if (mode_ == RasterMode::exact && depth_tolerance_ == 0) {
+    if (depth_tolerance_ == 0) {
         drawExact(primitive);
         return;
     }
@@ -95,14 +94,7 @@ void CpuReferenceOracle::draw(uint32_t primitive) {
         const std::size_t c = std::size_t(t) * 3;
         const auto a = toClipVertex(corners_[c]), b = toClipVertex(corners_[c + 1]),
                    d = toClipVertex(corners_[c + 2]);
-        if (mode_ == RasterMode::exact) {
-            detail::rasterizeTriangleBlending(true, depth_tolerance_, a, b, d, width_, height_,
-                                              write);
-        } else {
-            detail::rasterizeTriangleConservative(a, b, d, width_, height_,
-                                                  [&](uint32_t px, uint32_t py, float nearest,
-                                                      float) { return write(px, py, nearest); });
-        }
+        detail::rasterizeTriangleBlending(true, depth_tolerance_, a, b, d, width_, height_, write);
     }
     stats_.fragments_drawn += fragments;
 }
@@ -110,7 +102,7 @@ void CpuReferenceOracle::draw(uint32_t primitive) {
 bool CpuReferenceOracle::anyBehind(uint32_t primitive) {
     assert(primitive < primitives_.size());
     ++stats_.queries;
-    if (mode_ == RasterMode::exact && depth_tolerance_ == 0)
+    if (depth_tolerance_ == 0)
         return anyBehindExact(primitive);
     const PrimitiveRange range = primitives_[primitive];
     uint64_t fragments = 0;
@@ -124,15 +116,8 @@ bool CpuReferenceOracle::anyBehind(uint32_t primitive) {
         const std::size_t c = std::size_t(t) * 3;
         const auto a = toClipVertex(corners_[c]), b = toClipVertex(corners_[c + 1]),
                    d = toClipVertex(corners_[c + 2]);
-        if (mode_ == RasterMode::exact) {
-            behind = detail::rasterizeTriangleBlending(false, depth_tolerance_, a, b, d, width_,
-                                                       height_, test);
-        } else {
-            behind = detail::rasterizeTriangleConservative(
-                a, b, d, width_, height_, [&](uint32_t px, uint32_t py, float, float farthest) {
-                    return test(px, py, farthest);
-                });
-        }
+        behind = detail::rasterizeTriangleBlending(false, depth_tolerance_, a, b, d, width_,
+                                                   height_, test);
     }
     stats_.fragments_tested += fragments;
     return behind;
@@ -271,7 +256,7 @@ const CpuReferenceOracle::PixelBounds& CpuReferenceOracle::boundsOf(uint32_t t) 
     const detail::ScreenErrors errors{screen_position_error_, screen_depth_error_};
     detail::forEachFanTriangle(
         toClipVertex(corners_[3 * t]), toClipVertex(corners_[3 * t + 1]),
-        toClipVertex(corners_[3 * t + 2]), width_, height_, false,
+        toClipVertex(corners_[3 * t + 2]), width_, height_,
         [&](const detail::TriangleSetup& s) {
             b.x_min = std::min(b.x_min, int32_t(s.px_min));
             b.x_max = std::max(b.x_max, int32_t(s.px_max));

@@ -28,15 +28,15 @@ struct TriangleWalk {
     int64_t step_x[3]; // change of E_e from column px to px + 1
     int64_t step_y[3]; // change of E_e from row py to py + 1
     double d0, ddx, ddy, x0, y0_plane; // the depth plane (TriangleSetup's d0, ddx, ddy, x0, y0)
-    // Added to each fragment's double value before rounding: in conservative mode -spread for
-    // draws and +spread for queries; under the blending rule the snap slack, moved as
+    // Added to each fragment's double value before rounding: under the blending rule the snap
+    // slack, moved as
     // exactFragmentOffset says (cpu_rasterizer.h, cpu_reference_oracle.h rule 7); -0.0 (nothing)
     // under the exact rule.
     double offset;
     // A query's thresholds: a fragment is behind when frag > stored + behind_above (float sum),
     // else undecided when frag > stored + undecided_above. The exact rule: +B and -B, B the
-    // decision band (cpu_rasterizer.h); the blending rule and conservative mode: the depth
-    // tolerance and +infinity (never undecided).
+    // decision band (cpu_rasterizer.h); the blending rule: the depth tolerance and +infinity
+    // (never undecided).
     float behind_above, undecided_above;
 };
 

@@ -92,8 +92,7 @@ int bandAlongEdge(int64_t start, int64_t along, int64_t cross, int64_t m, int64_
 }
 
 void appendFastSetups(const Matrix4& clip, PositionsView positions, std::size_t t, uint32_t width,
-                      uint32_t height, bool conservative, const ScreenErrors& errors,
-                      std::vector<FastSetup>& out) {
+                      uint32_t height, const ScreenErrors& errors, std::vector<FastSetup>& out) {
     std::array<ClipVertex, 3> corners;
     std::array<ClipVertex, kMaxPolygonVertices> polygon;
     std::array<ScreenVertex, kMaxPolygonVertices> screen;
@@ -118,21 +117,15 @@ void appendFastSetups(const Matrix4& clip, PositionsView positions, std::size_t 
         const ScreenVertex& a = screen[0];
         const ScreenVertex& b = screen[i];
         const ScreenVertex& c = screen[i + 1];
-        const bool set_up = conservative ? setupConservative(a, b, c, width, height, ts)
-                                         : setupTriangle(a, b, c, width, height, errors, ts);
-        if (!set_up)
+        if (!setupTriangle(a, b, c, width, height, errors, ts))
             continue;
         FastSetup s;
         constexpr int64_t half = kSubpixelScale / 2;
         for (int e = 0; e < 3; ++e) {
             const int j = (e + 1) % 3;
             const int64_t dx = ts.x[j] - ts.x[e], dy = ts.y[j] - ts.y[e];
-            // Conservative: covered when E + reach >= 0, reach = the edge function's rise over
-            // half a pixel and the margin on each axis (cpu_reference_oracle.h), i.e. E + reach + 1
-            // > 0. Below 2^39. Otherwise the exact rule's: covered when E > margin.
-            const int64_t bias =
-                conservative ? (std::abs(dx) + std::abs(dy)) * (half + kConservativeMargin) + 1
-                             : -ts.margin[e];
+            // The exact rule's: covered when E > margin.
+            const int64_t bias = -ts.margin[e];
             // E_e at the centre of pixel (0, 0), (128, 128) in 24.8 fixed point: below 2^61.
             s.edge_at_origin[e] = dx * (half - ts.y[e]) - dy * (half - ts.x[e]) + bias;
             s.edge_step_x[e] = -dy * kSubpixelScale;
@@ -153,11 +146,10 @@ void appendFastSetups(const Matrix4& clip, PositionsView positions, std::size_t 
         s.d_min = std::min({a.d, b.d, c.d});
         s.d_max = std::max({a.d, b.d, c.d});
         for (int e = 0; e < 3; ++e)
-            s.margin[e] = conservative ? 0 : ts.margin[e];
+            s.margin[e] = ts.margin[e];
         s.flat = ts.flat;
         s.band_walk = 7;
         s.screen_hit_count = 0;
-        // Conservative: every square the grown box touches, as setupConservative computed.
         s.px_min = int32_t(ts.px_min);
         s.px_max = int32_t(ts.px_max);
         s.py_min = int32_t(ts.py_min);

@@ -19,16 +19,16 @@
 namespace vissort::detail {
 
 /// One fan triangle, ready to walk: covered iff edge + bias > 0 for all three edges (the bias is
-/// folded into edge_at_origin: the exact rule's -margin, or in conservative mode the edge's rise
-/// over half a pixel and the margin, plus 1; the blending rule adds blendingBias at walk time).
+/// folded into edge_at_origin: the exact rule's -margin; the blending rule adds blendingBias at
+/// walk time).
 struct FastSetup {
     int64_t edge_at_origin[3];   // E_i + bias_i at the centre of pixel (0, 0)
     int64_t edge_step_x[3];      // change of E_i from pixel px to px + 1
     int64_t edge_step_y[3];      // change of E_i from row py to py + 1
     double x0, y0, d0, ddx, ddy; // depth plane, as in TriangleSetup
-    double spread;               // TriangleSetup::spread: conservative spread or exact snap slack
-    double error;                // TriangleSetup::error: the exact rule's bound (not conservative)
-    int64_t margin[3];           // TriangleSetup::margin (0 in conservative mode)
+    double spread;               // TriangleSetup::spread: the snap slack
+    double error;                // TriangleSetup::error: the exact rule's bound
+    int64_t margin[3];           // TriangleSetup::margin
     bool flat;                   // TriangleSetup::flat
     // The exact rule's band, as forEachFastBandPixel finds it: the edges it walks (bit e: edge
     // e), and the centres within the margin of the others (every one of them), which the batch
@@ -83,12 +83,10 @@ bool edgesFitInt32(const FastSetup& s);
 
 /// Clips, snaps and sets up triangle t of positions (corners 3t .. 3t + 2) for a width x height
 /// viewport, clip being projection * view (rule 1); appends its fan triangles to out (none when
-/// it covers no pixel). Conservative: CpuReferenceOracle's conservative rules
-/// (cpu_reference_oracle.h); else the exact and blending rules' set-up with the bind's screen
-/// errors.
+/// it covers no pixel): the exact and blending rules' set-up (cpu_reference_oracle.h) with the
+/// bind's screen errors.
 void appendFastSetups(const Matrix4& clip, PositionsView positions, std::size_t t, uint32_t width,
-                      uint32_t height, bool conservative, const ScreenErrors& errors,
-                      std::vector<FastSetup>& out);
+                      uint32_t height, const ScreenErrors& errors, std::vector<FastSetup>& out);
 
 /// What a batch set-up did with each of its triangles.
 enum class LaneSetup : uint8_t {

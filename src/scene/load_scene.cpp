@@ -7,7 +7,6 @@
 #include "scene/json_scene.h"
 #include "scene/mesh_loader.h"
 #include "vissort/scene.h"
-#include "vissort/scene_library.h"
 
 namespace vissort {
 namespace {
@@ -74,7 +73,7 @@ std::string oneLine(const std::string& message) {
     return line;
 }
 
-Result<Scene> loadBuiltin(const std::string& specification) {
+Result<Scene> loadBuiltin(const std::string& specification, const BuiltinSceneMaker& builtins) {
     const std::string rest = specification.substr(kBuiltinPrefix.size());
     const std::size_t question = rest.find('?');
     const std::string name = rest.substr(0, question);
@@ -84,15 +83,21 @@ Result<Scene> loadBuiltin(const std::string& specification) {
         question == std::string::npos ? std::string() : rest.substr(question + 1), specification);
     if (!parameters)
         return Result<Scene>::failure(parameters.error);
+    if (!builtins)
+        return Result<Scene>::failure(
+            specification + ": no built-in scenes here: the library loads files; the vissort "
+                            "command and the Python module have the samples' scenes");
     // Its messages name the scene and the parameter.
-    return makeBuiltinScene(name, *parameters.value);
+    return builtins(name, *parameters.value);
 }
 
-Result<Scene> loadSpecification(const std::string& specification) {
+Result<Scene> loadSpecification(const std::string& specification,
+                                const BuiltinSceneMaker& builtins) {
     if (specification.empty())
         return Result<Scene>::failure("empty scene specification");
     try {
-        Result<Scene> scene = specification.starts_with(kBuiltinPrefix) ? loadBuiltin(specification)
+        Result<Scene> scene = specification.starts_with(kBuiltinPrefix)
+                                  ? loadBuiltin(specification, builtins)
                               : endsWithJson(specification) ? detail::loadJsonScene(specification)
                                                             : detail::loadMeshFile(specification);
         if (!scene)
@@ -108,11 +113,26 @@ Result<Scene> loadSpecification(const std::string& specification) {
 
 } // namespace
 
-Result<Scene> loadScene(const std::string& specification) {
-    Result<Scene> scene = loadSpecification(specification);
+Result<Scene> loadScene(const std::string& specification, const BuiltinSceneMaker& builtins) {
+    Result<Scene> scene = loadSpecification(specification, builtins);
     if (!scene)
         scene.error = oneLine(scene.error);
     return scene;
+}
+
+Result<Scene> loadMeshFromMemory(const void* data, std::size_t size, const std::string& format_hint,
+                                 const std::string& label) {
+    try {
+        Result<Scene> scene = detail::loadMeshMemory(data, size, format_hint, label);
+        if (scene)
+            if (Status valid = validateScene(*scene.value); !valid)
+                scene = Result<Scene>::failure(label + ": " + valid.error);
+        if (!scene)
+            scene.error = oneLine(scene.error);
+        return scene;
+    } catch (const std::exception& e) {
+        return Result<Scene>::failure(oneLine(label + ": " + e.what()));
+    }
 }
 
 } // namespace vissort

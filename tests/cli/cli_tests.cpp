@@ -25,6 +25,7 @@
 
 #include "cli_fixture.h"
 #include "ground_truth.h"
+#include "scenes/scene_library.h"
 #include "vissort/camera.h"
 #include "vissort/scene.h"
 
@@ -105,7 +106,7 @@ void expectFrameRecord(const json& record, std::size_t n, const std::string& lev
 }
 
 Scene loadOrDie(const std::string& spec) {
-    Result<Scene> loaded = loadScene(spec);
+    Result<Scene> loaded = samples::loadScene(spec);
     EXPECT_TRUE(loaded) << loaded.error;
     return loaded ? std::move(*loaded.value) : Scene{};
 }
@@ -426,7 +427,7 @@ TEST_F(Cli, InfoWritesTheFactsAsJson) {
     const RunResult r = run({"info", plant, "--json", path("info.json")});
     ASSERT_EQ(r.code, 0) << r;
     const json doc = json::parse(readFile(path("info.json")));
-    const Result<Scene> scene = loadScene(plant);
+    const Result<Scene> scene = samples::loadScene(plant);
     ASSERT_TRUE(scene) << scene.error;
     uint64_t transparent = 0, transparent_triangles = 0;
     for (const SceneObject& o : scene.value->objects) {

@@ -13,6 +13,7 @@
 #include "a_buffer.h"
 #include "cli_fixture.h"
 #include "png_reading.h"
+#include "scenes/scene_library.h"
 #include "vissort/camera.h"
 #include "vissort/scene.h"
 
@@ -66,7 +67,7 @@ std::vector<Rgba> coloursAtAlpha(const Scene& scene, float alpha) {
 
 // The tool's flat-shaded output against the ray-cast A-buffer, for every exact method.
 TEST_F(Cli, FlatRenderOfEveryExactMethodMatchesTheRayCastABuffer) {
-    Result<Scene> loaded = loadScene(kSticks);
+    Result<Scene> loaded = samples::loadScene(kSticks);
     ASSERT_TRUE(loaded) << loaded.error;
     const Scene& scene = *loaded.value;
     const ViewProjection view = frameCamera(*scene.camera, scene.positions.bounds(), 96, 72);
@@ -140,7 +141,7 @@ TEST_F(Cli, RenderFramesWriteASequence) {
 // --samples 4: each pixel the mean of a 2 x 2 grid of samples, against the A-buffer cast at the
 // samples and averaged the same way; the header says so.
 TEST_F(Cli, RenderAtFourSamplesMatchesTheSupersampledABuffer) {
-    Result<Scene> loaded = loadScene(kSticks);
+    Result<Scene> loaded = samples::loadScene(kSticks);
     ASSERT_TRUE(loaded) << loaded.error;
     const Scene& scene = *loaded.value;
     const ViewProjection samples = frameCamera(*scene.camera, scene.positions.bounds(), 192, 144);
@@ -244,8 +245,9 @@ TEST_F(Cli, BenchTransparencyMeasuresSamplesNextToOne) {
         ++records[samples];
         EXPECT_EQ(row.contains("ms_over_one_sample"), samples == 2) << row.dump();
         const std::string method = row["method"];
-        if (method == "vissort" || method == "peel")
+        if (method == "vissort" || method == "peel") {
             EXPECT_LE(row["error"]["max_abs"].get<int>(), 1) << row.dump();
+        }
     }
     // Two families at one depth, six methods, at each count.
     EXPECT_EQ(records, (std::map<int, int>{{1, 12}, {2, 12}}));

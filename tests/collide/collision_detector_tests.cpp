@@ -12,6 +12,7 @@
 
 #include "collide/interval_oracle.h"
 #include "collide/triangle_intersection.h"
+#include "scenes/scene_library.h"
 #include "vissort/collision.h"
 #include "vissort/scene.h"
 
@@ -67,7 +68,7 @@ CollisionSettings method(CollisionMethod m) {
 }
 
 TEST(CollisionDetector, BunniesMatchBruteForceFrameByFrame) {
-    const Result<Scene> scene = loadScene("builtin:bunnies?n=18");
+    const Result<Scene> scene = samples::loadScene("builtin:bunnies?n=18");
     ASSERT_TRUE(scene) << scene.error;
     const auto objects = scene.value->objectPrimitives();
     CollisionDetector brute(objects, method(CollisionMethod::brute));
@@ -90,10 +91,47 @@ TEST(CollisionDetector, BunniesMatchBruteForceFrameByFrame) {
     EXPECT_GT(total, 45u * 500) << "the bunnies collide many times a frame";
 }
 
+TEST(CollisionDetector, VertexBufferFramesGiveBruteForcesPairs) {
+    // Frames of the bunnies as an interleaved buffer (position, then a normal-sized gap that is
+    // not finite) with indices running backwards over it: the vissort method's pairs from the
+    // buffer are brute force's from the arrays.
+    const Result<Scene> scene = samples::loadScene("builtin:bunnies?n=6");
+    ASSERT_TRUE(scene) << scene.error;
+    const auto objects = scene.value->objectPrimitives();
+    CollisionDetector brute(objects, method(CollisionMethod::brute));
+    CollisionDetector vissort(objects, method(CollisionMethod::vissort));
+    TrianglePositions positions;
+    std::vector<float> interleaved;
+    std::vector<uint32_t> indices;
+    CollisionResult expected, actual;
+    std::size_t total = 0;
+    for (int f = 0; f < 4; ++f) {
+        scene.value->frame(f / 10.0, positions);
+        const std::size_t corners = positions.x.size();
+        interleaved.assign(6 * corners, std::nanf(""));
+        indices.resize(corners);
+        for (std::size_t c = 0; c < corners; ++c) {
+            const std::size_t v = corners - 1 - c; // the buffer holds the corners backwards
+            interleaved[6 * v] = positions.x[c];
+            interleaved[6 * v + 1] = positions.y[c];
+            interleaved[6 * v + 2] = positions.z[c];
+            indices[c] = uint32_t(v);
+        }
+        brute.collide(positions, expected);
+        vissort.collide({interleaved.data(), corners, 6 * sizeof(float), indices}, actual);
+        expectSamePairs(expected, actual, "frame " + std::to_string(f));
+        total += expected.pairs.size();
+    }
+    EXPECT_GT(total, 0u) << "no frame has a pair to compare";
+    indices[5] = uint32_t(interleaved.size()); // outside the buffer
+    EXPECT_THROW(vissort.collide({interleaved.data(), indices.size(), 24, indices}, actual),
+                 std::invalid_argument);
+}
+
 // The threads share the refits and the pairs: the answer must not depend on how many there are,
 // or on which finished first (run under ThreadSanitizer by CI).
 TEST(CollisionThreads, EveryThreadCountGivesThePairsOfOne) {
-    const Result<Scene> scene = loadScene("builtin:bunnies?n=12");
+    const Result<Scene> scene = samples::loadScene("builtin:bunnies?n=12");
     ASSERT_TRUE(scene) << scene.error;
     const auto objects = scene.value->objectPrimitives();
     std::vector<std::unique_ptr<CollisionDetector>> detectors;
@@ -120,7 +158,7 @@ TEST(CollisionThreads, EveryThreadCountGivesThePairsOfOne) {
 }
 
 TEST(CollisionDetector, VisibilityCullsObjectPairsThatBoxesKeep) {
-    const Result<Scene> scene = loadScene("builtin:bunnies?n=36");
+    const Result<Scene> scene = samples::loadScene("builtin:bunnies?n=36");
     ASSERT_TRUE(scene) << scene.error;
     const auto objects = scene.value->objectPrimitives();
     const TrianglePositions positions = scene.value->frame(1.0);
@@ -132,8 +170,8 @@ TEST(CollisionDetector, VisibilityCullsObjectPairsThatBoxesKeep) {
 }
 
 TEST(CollisionDetector, RealMeshesThatInterpenetrate) {
-    const Result<Scene> scene =
-        loadScene(std::string(VISSORT_SOURCE_DIR) + "/tests/data/scenes/interpenetrating.json");
+    const Result<Scene> scene = samples::loadScene(std::string(VISSORT_SOURCE_DIR) +
+                                                   "/tests/data/scenes/interpenetrating.json");
     ASSERT_TRUE(scene) << scene.error;
     const auto objects = scene.value->objectPrimitives();
     const CollisionResult brute =

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "scenes/scene_library.h"
 #include "vissort/collision.h"
 #include "vissort/scene.h"
 
@@ -23,7 +24,7 @@ CollisionSettings settingsFor(CollisionMethod method) {
 }
 
 Scene loadBunnies(int n) {
-    Result<Scene> loaded = loadScene("builtin:bunnies?n=" + std::to_string(n));
+    Result<Scene> loaded = samples::loadScene("builtin:bunnies?n=" + std::to_string(n));
     EXPECT_TRUE(loaded) << loaded.error;
     return loaded ? std::move(*loaded.value) : Scene{};
 }

@@ -9,6 +9,7 @@
 #include "vissort/oracles.h"
 #include "vissort/scene.h"
 #if VISSORT_WITH_GL
+#include "scenes/scene_library.h"
 #include "vissort/transparency_renderer.h"
 #endif
 
@@ -110,7 +111,7 @@ namespace {
 
 // Fills report; what it found stays there if a later step throws.
 void runChecks(const std::string& path, const CorpusSettings& settings, CorpusReport& report) {
-    Result<Scene> loaded = loadScene(path);
+    Result<Scene> loaded = samples::loadScene(path);
     if (!loaded) {
         report.load_error = loaded.error;
         if (const std::string problem = refusalProblem(path, loaded.error); !problem.empty())

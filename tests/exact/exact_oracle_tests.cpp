@@ -8,6 +8,7 @@
 
 #include "vissort/scene.h"
 
+#include "scenes/scene_library.h"
 #include "test_scenes.h"
 
 namespace vissort {
@@ -254,7 +255,7 @@ TEST(ExactOracle, MatchesBruteForceOnOneTrianglePerPrimitive) {
 }
 
 TEST(ExactOracle, MatchesBruteForceOnSpotMesh) {
-    const Result<Scene> loaded = loadScene(VISSORT_SOURCE_DIR "/assets/models/spot.obj");
+    const Result<Scene> loaded = samples::loadScene(VISSORT_SOURCE_DIR "/assets/models/spot.obj");
     ASSERT_TRUE(loaded) << loaded.error;
     const TrianglePositions& positions = loaded.value->positions;
     ASSERT_GT(positions.triangleCount(), 1000u);

@@ -12,6 +12,7 @@
 #include <iterator>
 #include <string_view>
 
+#include "scenes/scene_library.h"
 #include "vissort/scene.h"
 
 namespace vissort::fuzz {
@@ -73,7 +74,7 @@ void jsonScene(const uint8_t* data, std::size_t size) {
     if (namesOtherFiles(text))
         return;
     const std::string path = writeInput("scene.json", data, size);
-    checkResult(loadScene(path), path);
+    checkResult(samples::loadScene(path), path);
 }
 
 void sceneParameters(const uint8_t* data, std::size_t size) {
@@ -118,7 +119,7 @@ void sceneParameters(const uint8_t* data, std::size_t size) {
                 !(std::strtod(specification.c_str() + at + 2, nullptr) * triangles_each <= 1e6))
                 return;
         }
-    checkResult(loadScene(specification), "");
+    checkResult(samples::loadScene(specification), "");
 }
 
 void meshFile(const uint8_t* data, std::size_t size) {
@@ -130,7 +131,7 @@ void meshFile(const uint8_t* data, std::size_t size) {
         return;
     const char* extension = kExtensions[data[0] % std::size(kExtensions)];
     const std::string path = writeInput(std::string("mesh.") + extension, data + 1, size - 1);
-    checkResult(loadScene(path), path);
+    checkResult(samples::loadScene(path), path);
 }
 
 const std::vector<Target>& targets() {

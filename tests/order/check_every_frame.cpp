@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include "every_frame_check.h"
+#include "scenes/scene_library.h"
 #include "vissort/camera_path.h"
 #include "vissort/frame_driver.h"
 #include "vissort/scene.h"
@@ -111,7 +112,7 @@ std::string parse(int argc, char** argv) {
 
 TEST(CheckEveryFrame, EveryOrderMatchesItsFramesGroundTruth) {
     const Settings& s = g_settings;
-    Result<Scene> loaded = loadScene(s.scene);
+    Result<Scene> loaded = samples::loadScene(s.scene);
     ASSERT_TRUE(loaded) << loaded.error;
     const Scene& scene = *loaded.value;
     CameraSpec camera =

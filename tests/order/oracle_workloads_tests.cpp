@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "support/oracle_workloads.h"
+#include "harnesses/oracle_workloads.h"
 #include "vissort/cpu_reference_oracle.h"
 
 namespace vissort {

@@ -2,17 +2,20 @@
 // against the ray-cast ground truth (tests/support): no pixel where a primitive in front comes
 // after one behind it, except inside a reported cycle.
 #include <algorithm>
+#include <array>
+#include <limits>
+#include <map>
 #include <set>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "ground_truth.h"
+#include "scenes/scene_library.h"
 #include "tarjan_scc.h"
 #include "test_scene_loading.h"
 #include "vissort/camera_path.h"
 #include "vissort/oracles.h"
-#include "vissort/scene_library.h"
 #include "vissort/scene_orderer.h"
 
 namespace vissort {
@@ -178,6 +181,49 @@ TEST(SceneOrderer, StackHasDepthComplexityOver30) {
     EXPECT_TRUE(frame.cycles.empty());
 }
 
+TEST(SceneOrderer, VertexBufferFramesAreOrderedAsTheirCorners) {
+    // The stack as an indexed, interleaved vertex buffer (each distinct corner once, then a
+    // padding float that is not finite, so reading it would be refused): the order is checked
+    // against ground truth and equals the order of the same corners as arrays.
+    const Scene scene = test::loadTestScene("tests/data/scenes/stack.json");
+    std::vector<float> interleaved;
+    std::vector<uint32_t> indices;
+    std::map<std::array<float, 3>, uint32_t> vertex_of;
+    for (std::size_t c = 0; c < scene.positions.x.size(); ++c) {
+        const std::array<float, 3> p = {scene.positions.x[c], scene.positions.y[c],
+                                        scene.positions.z[c]};
+        const auto [at, added] = vertex_of.emplace(p, uint32_t(vertex_of.size()));
+        if (added)
+            interleaved.insert(interleaved.end(),
+                               {p[0], p[1], p[2], std::numeric_limits<float>::quiet_NaN()});
+        indices.push_back(at->second);
+    }
+    ASSERT_LT(vertex_of.size(), scene.positions.x.size()); // corners are shared
+    const VertexPositionsView vertices{interleaved.data(), vertex_of.size(), 4 * sizeof(float),
+                                       indices};
+    const ViewProjection view = frameCamera(*scene.camera, scene.positions.bounds(), 64, 64);
+    const auto primitives = primitivesOf(scene, OrderLevel::object);
+    auto oracle = oracleOf(OracleKind::cpu);
+    ASSERT_TRUE(oracle);
+    SceneOrderer from_buffer = ordererOf(scene, OrderLevel::object, *oracle);
+    FrameOrder frame;
+    from_buffer.orderFrame(vertices, view, frame);
+    EXPECT_EQ(test::checkVisibilityOrder(scene.positions, view, primitives, frame.order, {})
+                  .violation_count,
+              0u);
+    auto other_oracle = oracleOf(OracleKind::cpu);
+    SceneOrderer from_arrays = ordererOf(scene, OrderLevel::object, *other_oracle);
+    EXPECT_EQ(frame.order, from_arrays.orderFrame(scene.positions, view).order);
+    // A buffer of another size, or one gatherPositions refuses, orders nothing.
+    const std::span<const uint32_t> fewer(indices.data(), indices.size() - 3);
+    EXPECT_THROW(
+        from_buffer.orderFrame({interleaved.data(), vertex_of.size(), 16, fewer}, view, frame),
+        std::invalid_argument);
+    EXPECT_THROW(
+        from_buffer.orderFrame({interleaved.data(), vertex_of.size(), 10, indices}, view, frame),
+        std::invalid_argument);
+}
+
 TEST(SceneOrderer, ThreeSticksFormOneCycleOfThree) {
     const Scene scene = test::loadTestScene("tests/data/scenes/three_sticks.json");
     const ViewProjection view = frameCamera(*scene.camera, scene.positions.bounds(), 128, 128);
@@ -284,39 +330,6 @@ TEST(SceneOrderer, MultistageWithRebindsMatchesTheReferenceOnMovingFrames) {
         EXPECT_EQ(got.cycles, expected.cycles) << "frame " << f;
         ASSERT_EQ(got.order.size(), scene.triangleCount());
     }
-}
-
-TEST(MakeOracle, ConservativeModeAddsBehindAnswersAndExactOracleRefusesIt) {
-    // Every pair of the 36 tilted slabs: the conservative cpu oracles answer "behind" wherever
-    // the exact ones do, and more often (a pixel's farthest depth on a sloped face lies behind
-    // the nearest depth drawn there, and edges reach every pixel they touch).
-    const Scene scene = test::loadTestScene("tests/data/scenes/stack.json");
-    const ViewProjection view = frameCamera(*scene.camera, scene.positions.bounds(), 64, 64);
-    const auto primitives = primitivesOf(scene, OrderLevel::object);
-    for (OracleKind kind : {OracleKind::cpu, OracleKind::cpu_reference}) {
-        SCOPED_TRACE(oracleName(kind));
-        auto exact = oracleOf(kind);
-        auto conservative = oracleOf(kind, {.mode = RasterMode::conservative});
-        ASSERT_TRUE(exact && conservative);
-        exact->bind(scene.positions, view, primitives);
-        conservative->bind(scene.positions, view, primitives);
-        uint32_t exact_behind = 0, conservative_behind = 0;
-        for (uint32_t a = 0; a < primitives.size(); ++a) {
-            exact->clear();
-            conservative->clear();
-            exact->draw(a);
-            conservative->draw(a);
-            for (uint32_t b = 0; b < primitives.size(); ++b) {
-                const bool e = exact->anyBehind(b), c = conservative->anyBehind(b);
-                EXPECT_TRUE(!e || c) << a << " then " << b; // a superset
-                exact_behind += e;
-                conservative_behind += c;
-            }
-        }
-        EXPECT_GT(conservative_behind, exact_behind);
-    }
-    EXPECT_THROW(makeOracle(OracleKind::exact, {.mode = RasterMode::conservative}),
-                 std::invalid_argument);
 }
 
 } // namespace

@@ -101,8 +101,8 @@ TEST(TouchingFaces, ParallelFacesApartByMoreThanTheBoundAreBehind) {
             const double dd = view.depthOf({0, -0.01, 0}) - view.depthOf({0, 0, 0});
             const double gap = gap_in_depth * 0.01 / dd;
             const Model m = scene(gap);
-            for (RasterMode mode : {RasterMode::exact}) {
-                CpuReferenceOracle reference(mode);
+            {
+                CpuReferenceOracle reference;
                 reference.bind(m.positions, view, m.objects);
                 reference.draw(0);
                 Result<std::unique_ptr<GeometryOracle>> fast = makeOracle(OracleKind::cpu);

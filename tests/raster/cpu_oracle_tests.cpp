@@ -18,6 +18,7 @@
 #include <thread>
 #include <vector>
 
+#include "scenes/scene_library.h"
 #include "vissort/cpu_reference_oracle.h"
 #include "vissort/scene.h"
 #include "vissort/vis_sort.h"
@@ -34,21 +35,19 @@ bool sameBits(std::span<const float> a, std::span<const float> b) {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
 }
 
-// The row walks: SIMD allowed (AVX2 where the CPU has it), and the scalar fallback; each in
-// exact and in conservative mode (compared with CpuReferenceOracle in the same mode), each drawing
-// and querying triangle by triangle and through depth images of every primitive (however small).
+// The row walks: SIMD allowed (AVX2 where the CPU has it), and the scalar fallback (compared
+// with CpuReferenceOracle), each drawing and querying triangle by triangle and through depth
+// images of every primitive (however small).
 std::vector<CpuOracleOptions> rowWalks() {
     std::vector<CpuOracleOptions> all;
-    for (RasterMode mode : {RasterMode::exact, RasterMode::conservative})
-        for (bool simd : {true, false})
-            for (uint32_t image_min_triangles : {0u, 1u}) {
-                CpuOracleOptions options;
-                options.allow_simd = simd;
-                options.threads = 1;
-                options.mode = mode;
-                options.image_min_triangles = image_min_triangles;
-                all.push_back(options);
-            }
+    for (bool simd : {true, false})
+        for (uint32_t image_min_triangles : {0u, 1u}) {
+            CpuOracleOptions options;
+            options.allow_simd = simd;
+            options.threads = 1;
+            options.image_min_triangles = image_min_triangles;
+            all.push_back(options);
+        }
     return all;
 }
 
@@ -65,9 +64,9 @@ std::vector<CpuOracleOptions> rowWalksAndThreads() {
 }
 
 std::string describe(const CpuOracleOptions& options) {
-    return std::string(options.mode == RasterMode::exact ? "exact, " : "conservative, ") +
-           (options.allow_simd ? "simd" : "scalar") + ", " + std::to_string(options.threads) +
-           " threads, images from " + std::to_string(options.image_min_triangles) + " triangles";
+    return std::string(options.allow_simd ? "simd" : "scalar") + ", " +
+           std::to_string(options.threads) + " threads, images from " +
+           std::to_string(options.image_min_triangles) + " triangles";
 }
 
 // Random clears, draws and queries, in the same order on both oracles; every answer and, after
@@ -122,7 +121,7 @@ std::size_t compareInterleavingWith(const CpuOracleOptions& options, const Trian
                                     int operations, CpuOracleStats* totals,
                                     float tolerance = kDepthTolerance) {
     SCOPED_TRACE(describe(options) + ", tolerance " + std::to_string(tolerance));
-    CpuReferenceOracle reference(options.mode);
+    CpuReferenceOracle reference;
     CpuOracle fast(options);
     reference.setDepthTolerance(tolerance);
     fast.setDepthTolerance(tolerance);
@@ -159,9 +158,9 @@ std::size_t compareInterleaving(const TrianglePositions& p, const ViewProjection
 // The pixels where any of targets has a fragment: where a group test's depth buffer is defined
 // (occlusion_oracle.h).
 std::vector<uint8_t> pixelsOf(const TrianglePositions& p, const ViewProjection& view,
-                              std::span<const PrimitiveRange> primitives, RasterMode mode,
+                              std::span<const PrimitiveRange> primitives,
                               std::span<const uint32_t> targets) {
-    CpuReferenceOracle oracle(mode);
+    CpuReferenceOracle oracle;
     oracle.bind(p, view, primitives);
     oracle.clear();
     for (uint32_t t : targets)
@@ -192,7 +191,7 @@ void comparePasses(const TrianglePositions& p, const ViewProjection& view,
         return;
     for (const CpuOracleOptions& options : rowWalksAndThreads()) {
         SCOPED_TRACE(describe(options));
-        CpuReferenceOracle reference(options.mode);
+        CpuReferenceOracle reference;
         reference.bind(p, view, primitives);
         CpuOracle fast(options);
         fast.bind(p, view, primitives);
@@ -227,7 +226,7 @@ void comparePasses(const TrianglePositions& p, const ViewProjection& view,
                 // The buffer is defined where the targets have fragments; elsewhere the fast
                 // oracle leaves out occluders that cannot change an answer.
                 ASSERT_TRUE(sameBitsWhere(fast.depthBuffer(), reference.depthBuffer(),
-                                          pixelsOf(p, view, primitives, options.mode, targets)))
+                                          pixelsOf(p, view, primitives, targets)))
                     << "group test, round " << round;
                 continue;
             }
@@ -244,7 +243,7 @@ void compareDrawAllThenQueryAll(const TrianglePositions& p, const ViewProjection
                                 std::span<const PrimitiveRange> primitives) {
     for (const CpuOracleOptions& options : rowWalks()) {
         SCOPED_TRACE(describe(options));
-        CpuReferenceOracle reference(options.mode);
+        CpuReferenceOracle reference;
         CpuOracle fast(options);
         reference.bind(p, view, primitives);
         fast.bind(p, view, primitives);
@@ -371,7 +370,7 @@ TEST_P(CpuOracleMatches, SharedEdgeGridLayers) {
 TEST_P(CpuOracleMatches, BuiltinSlabsAndSoup) {
     const Case c = GetParam();
     for (const char* spec : {"builtin:slabs?layers=6", "builtin:soup?n=300"}) {
-        const Result<Scene> loaded = loadScene(spec);
+        const Result<Scene> loaded = samples::loadScene(spec);
         ASSERT_TRUE(loaded) << loaded.error;
         const Scene& scene = *loaded.value;
         const ViewProjection view = frameCamera(
@@ -400,7 +399,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(CpuOracle, SpotMeshBothProjections) {
     const Result<Scene> loaded =
-        loadScene(std::string(VISSORT_SOURCE_DIR) + "/assets/models/spot.obj");
+        samples::loadScene(std::string(VISSORT_SOURCE_DIR) + "/assets/models/spot.obj");
     ASSERT_TRUE(loaded) << loaded.error;
     const TrianglePositions& p = loaded.value->positions;
     std::vector<PrimitiveRange> triangles;
@@ -469,7 +468,7 @@ TEST(CpuOracle, WholeTilesAreCulledAndAcceptedWithTheReferenceAnswers) {
         if (options.image_min_triangles != 0)
             continue; // the triangle-by-triangle walk's tile shortcuts are the subject here
         SCOPED_TRACE(describe(options));
-        CpuReferenceOracle reference(options.mode);
+        CpuReferenceOracle reference;
         CpuOracle fast(options);
         reference.bind(p, view, primitives);
         fast.bind(p, view, primitives);
@@ -485,13 +484,10 @@ TEST(CpuOracle, WholeTilesAreCulledAndAcceptedWithTheReferenceAnswers) {
             return expected;
         };
 
-        // The view is tilted, so the squares are sloped in depth: in conservative mode a
-        // primitive's farthest depth over a pixel lies behind its own nearest, and a self-query
-        // answers "behind".
-        const bool self_behind = options.mode == RasterMode::conservative;
+        // The view is tilted, so the squares are sloped in depth.
         both_draw(0);
         EXPECT_TRUE(both_query(1));
-        EXPECT_EQ(both_query(0), self_behind); // itself: coplanar tiles culled by depth bounds
+        EXPECT_FALSE(both_query(0)); // itself: coplanar tiles culled by depth bounds
         EXPECT_GT(fast.stats().tiles_culled, 0u);
         fast.resetStats();
         both_draw(1); // entirely behind: the tiles inside square 0 culled by depth bounds
@@ -505,8 +501,8 @@ TEST(CpuOracle, WholeTilesAreCulledAndAcceptedWithTheReferenceAnswers) {
         fast.resetStats();
         EXPECT_TRUE(both_query(3));
         EXPECT_EQ(fast.stats().tiles_accepted, 1u);
-        EXPECT_EQ(both_query(2), self_behind);
-        EXPECT_EQ(both_query(0), self_behind); // on the plane of 2
+        EXPECT_FALSE(both_query(2));
+        EXPECT_FALSE(both_query(0)); // on the plane of 2
         EXPECT_TRUE(both_query(1));
         both_draw(3);
         both_draw(1);
@@ -548,51 +544,48 @@ TEST(CpuOracle, RebindReusesTheSetUpsOfTheBindWithTheReferenceAnswers) {
         std::shuffle(group.begin(), group.end(), rng);
         return group;
     };
-    for (RasterMode mode : {RasterMode::exact, RasterMode::conservative})
-        for (const CpuOracleOptions& base : rowWalks()) {
-            CpuOracleOptions options = base;
-            options.mode = mode;
-            SCOPED_TRACE(describe(options));
-            CpuOracle fast(options);
-            CpuReferenceOracle reference(mode);
-            fast.bind(p, view, objects);
-            reference.bind(p, view, objects);
-            interleave(reference, fast, 1, 300);
-            // Groups of the bound triangles, one after another, and a group of two objects.
-            // The whole group also with empty ranges, one where the positions end.
-            std::vector<PrimitiveRange> with_empty = shuffledTriangles(0, 290);
-            with_empty.insert(with_empty.begin() + 20, PrimitiveRange{300, 0});
-            with_empty.push_back({7, 0});
-            const std::vector<std::vector<PrimitiveRange>> groups{shuffledTriangles(0, 40),
-                                                                  shuffledTriangles(120, 150),
-                                                                  with_empty,
-                                                                  {{40, 10}, {10, 10}}};
-            for (std::size_t g = 0; g < groups.size(); ++g) {
-                SCOPED_TRACE("group " + std::to_string(g));
-                fast.rebind(p, view, groups[g]);
-                reference.bind(p, view, groups[g]);
-                EXPECT_GT(interleave(reference, fast, uint32_t(10 + g), 400), 0u);
-            }
-            // Triangles the bind did not set up; another view: each binds afresh.
-            const std::vector<PrimitiveRange> unbound = shuffledTriangles(280, 300);
-            fast.rebind(p, view, unbound);
-            reference.bind(p, view, unbound);
-            interleave(reference, fast, 20, 300);
-            const ViewProjection other =
-                viewOf(p.bounds(), Projection::orthographic, 31, 52, {0.3, -0.2, 0.1});
-            fast.rebind(p, other, groups[2]);
-            reference.bind(p, other, groups[2]);
-            interleave(reference, fast, 21, 300);
-            // Positions changed in place and bound again: the rebind after it sees them.
-            const TrianglePositions original = p;
-            for (float& x : p.x)
-                x = x * 0.5f + 0.1f;
-            fast.bind(p, view, objects);
-            fast.rebind(p, view, groups[1]);
-            reference.bind(p, view, groups[1]);
-            interleave(reference, fast, 22, 300);
-            p = original; // the same arrays, as a dynamic scene's frames are
+    for (const CpuOracleOptions& options : rowWalks()) {
+        SCOPED_TRACE(describe(options));
+        CpuOracle fast(options);
+        CpuReferenceOracle reference;
+        fast.bind(p, view, objects);
+        reference.bind(p, view, objects);
+        interleave(reference, fast, 1, 300);
+        // Groups of the bound triangles, one after another, and a group of two objects.
+        // The whole group also with empty ranges, one where the positions end.
+        std::vector<PrimitiveRange> with_empty = shuffledTriangles(0, 290);
+        with_empty.insert(with_empty.begin() + 20, PrimitiveRange{300, 0});
+        with_empty.push_back({7, 0});
+        const std::vector<std::vector<PrimitiveRange>> groups{shuffledTriangles(0, 40),
+                                                              shuffledTriangles(120, 150),
+                                                              with_empty,
+                                                              {{40, 10}, {10, 10}}};
+        for (std::size_t g = 0; g < groups.size(); ++g) {
+            SCOPED_TRACE("group " + std::to_string(g));
+            fast.rebind(p, view, groups[g]);
+            reference.bind(p, view, groups[g]);
+            EXPECT_GT(interleave(reference, fast, uint32_t(10 + g), 400), 0u);
         }
+        // Triangles the bind did not set up; another view: each binds afresh.
+        const std::vector<PrimitiveRange> unbound = shuffledTriangles(280, 300);
+        fast.rebind(p, view, unbound);
+        reference.bind(p, view, unbound);
+        interleave(reference, fast, 20, 300);
+        const ViewProjection other =
+            viewOf(p.bounds(), Projection::orthographic, 31, 52, {0.3, -0.2, 0.1});
+        fast.rebind(p, other, groups[2]);
+        reference.bind(p, other, groups[2]);
+        interleave(reference, fast, 21, 300);
+        // Positions changed in place and bound again: the rebind after it sees them.
+        const TrianglePositions original = p;
+        for (float& x : p.x)
+            x = x * 0.5f + 0.1f;
+        fast.bind(p, view, objects);
+        fast.rebind(p, view, groups[1]);
+        reference.bind(p, view, groups[1]);
+        interleave(reference, fast, 22, 300);
+        p = original; // the same arrays, as a dynamic scene's frames are
+    }
 }
 
 // Primitives of many overlapping triangles (a primitive then occludes itself: its image must
@@ -620,7 +613,7 @@ TEST(CpuOracle, DepthImagesOfPrimitivesOfManyTriangles) {
 }
 
 TEST(CpuOracle, DepthImagesAreMadeOncePerBindWithinTheirBudget) {
-    const Result<Scene> loaded = loadScene("builtin:bunnies?n=4");
+    const Result<Scene> loaded = samples::loadScene("builtin:bunnies?n=4");
     ASSERT_TRUE(loaded) << loaded.error;
     const Scene& scene = *loaded.value;
     const auto objects = scene.objectPrimitives();
@@ -691,24 +684,19 @@ TEST(CpuOracle, PassesOnALargeViewportMatchWithEveryBandCount) {
 }
 
 TEST(CpuOracle, VisSortOrderMatchesReferenceOnBunnies) {
-    const Result<Scene> loaded = loadScene("builtin:bunnies?n=6");
+    const Result<Scene> loaded = samples::loadScene("builtin:bunnies?n=6");
     ASSERT_TRUE(loaded) << loaded.error;
     const Scene& scene = *loaded.value;
-    // Exact mode orders triangles. Conservative mode orders objects, as collision culling does:
-    // at triangle level every mesh triangle is "behind" its neighbours over their shared pixels,
-    // so each bunny is one cycle of a thousand triangles, which tests nothing more.
-    const auto triangles = scene.trianglePrimitives();
-    const auto objects = scene.objectPrimitives();
+    const auto primitives = scene.trianglePrimitives();
     for (Projection projection : {Projection::perspective, Projection::orthographic}) {
         CameraSpec spec = scene.camera ? *scene.camera : defaultCamera(scene.positions.bounds());
         spec.projection = projection;
         const ViewProjection view = frameCamera(spec, scene.positions.bounds(), 256, 192);
-        for (RasterMode mode : {RasterMode::exact, RasterMode::conservative}) {
-            const auto& primitives = mode == RasterMode::exact ? triangles : objects;
+        {
             std::vector<uint32_t> start(primitives.size());
             for (uint32_t i = 0; i < start.size(); ++i)
                 start[i] = uint32_t(start.size()) - 1 - i;
-            CpuReferenceOracle reference(mode);
+            CpuReferenceOracle reference;
             reference.bind(scene.positions, view, primitives);
             const VisibilityOrder expected = visSort(reference, start);
             // Determinism: the same order, cycles and counts for every row walk and thread count.
@@ -716,8 +704,6 @@ TEST(CpuOracle, VisSortOrderMatchesReferenceOnBunnies) {
             // test, whose buffer is defined only where its targets are; comparePasses checks
             // the buffers.)
             for (const CpuOracleOptions& options : rowWalksAndThreads()) {
-                if (options.mode != mode)
-                    continue;
                 SCOPED_TRACE(describe(options));
                 CpuOracle fast(options);
                 fast.bind(scene.positions, view, primitives);
@@ -766,7 +752,7 @@ void expectSameRun(const SortRun& got, const SortRun& expected) {
 // WorkerPool::shared(), whose runs take turns): the same orders, counts and depth buffers as the
 // same sorts one after the other. Run under ThreadSanitizer in CI (scripts/test.sh --tsan).
 TEST(CpuOracleThreads, TwoOraclesOnTwoThreadsMatchSequentialRuns) {
-    const Result<Scene> loaded = loadScene("builtin:bunnies?n=2");
+    const Result<Scene> loaded = samples::loadScene("builtin:bunnies?n=2");
     ASSERT_TRUE(loaded) << loaded.error;
     const Scene& scene = *loaded.value;
     const auto primitives = scene.trianglePrimitives();

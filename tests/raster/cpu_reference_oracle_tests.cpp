@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "raster_references.h"
+#include "scenes/scene_library.h"
 #include "vissort/scene.h"
 
 namespace vissort {
@@ -264,7 +265,7 @@ TEST(CpuReferenceOracle, RebindAndDegenerateGeometry) {
 // there (draws write the plane's depth moved farther by it: cpu_reference_oracle.h, rule 7).
 TEST(CpuReferenceOracle, SpotDepthBufferMatchesRayCast) {
     const Result<Scene> loaded =
-        loadScene(std::string(VISSORT_SOURCE_DIR) + "/assets/models/spot.obj");
+        samples::loadScene(std::string(VISSORT_SOURCE_DIR) + "/assets/models/spot.obj");
     ASSERT_TRUE(loaded) << loaded.error;
     const Scene& scene = *loaded.value;
     const TrianglePositions& p = scene.positions;

@@ -125,7 +125,7 @@ TEST(FastSetup, Avx2QuadsMatchTheScalarSetup) {
                     SCOPED_TRACE("triangle " + std::to_string(triangles[l]) + ", " +
                                  std::to_string(size[0]) + "x" + std::to_string(size[1]));
                     std::vector<FastSetup> expected;
-                    appendFastSetups(m, p, triangles[l], size[0], size[1], false, errors, expected);
+                    appendFastSetups(m, p, triangles[l], size[0], size[1], errors, expected);
                     switch (lanes[l]) {
                     case LaneSetup::ready:
                         ++ready;

@@ -8,6 +8,7 @@
 
 #include <string>
 
+#include "scenes/scene_library.h"
 #include "vissort/camera.h"
 #include "vissort/camera_path.h"
 #include "vissort/scene.h"
@@ -18,7 +19,7 @@ namespace {
 constexpr uint32_t kWidth = 64, kHeight = 48;
 
 Scene load(const std::string& specification) {
-    Result<Scene> loaded = loadScene(specification);
+    Result<Scene> loaded = samples::loadScene(specification);
     EXPECT_TRUE(loaded) << specification << ": " << loaded.error;
     return loaded ? std::move(*loaded.value) : Scene{};
 }

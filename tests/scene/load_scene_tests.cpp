@@ -1,5 +1,7 @@
-// Scene specifications (loadScene), the Scene queries and validateScene.
+// Scene specifications (loadScene), the Scene queries and validateScene; the samples' built-in
+// scenes through samples::loadScene.
 
+#include "scenes/scene_library.h"
 #include "vissort/scene.h"
 
 #include <gtest/gtest.h>
@@ -148,10 +150,10 @@ TEST(ValidateScene, RejectsBrokenInvariants) {
 // --- loadScene ---
 
 TEST(LoadScene, MeshFilesAndJsonScenesByPath) {
-    const Result<Scene> mesh = loadScene(kSource + "/assets/models/spot.obj");
+    const Result<Scene> mesh = samples::loadScene(kSource + "/assets/models/spot.obj");
     ASSERT_TRUE(mesh) << mesh.error;
     EXPECT_EQ(mesh.value->triangleCount(), 5856u);
-    const Result<Scene> json = loadScene(kSource + "/tests/data/scenes/three_sticks.json");
+    const Result<Scene> json = samples::loadScene(kSource + "/tests/data/scenes/three_sticks.json");
     ASSERT_TRUE(json) << json.error;
     EXPECT_EQ(json.value->objects.size(), 3u);
     EXPECT_EQ(json.value->triangleCount(), 36u);
@@ -162,7 +164,7 @@ TEST(LoadScene, JsonExtensionIsCaseInsensitive) {
         fs::temp_directory_path() / ("vissort_load_" + std::to_string(::getpid()) + ".JSON");
     std::ofstream(file)
         << R"({"objects": [{"shape": "box"}, {"shape": "box", "translate": [2, 0, 0]}]})";
-    const Result<Scene> loaded = loadScene(file.string());
+    const Result<Scene> loaded = samples::loadScene(file.string());
     fs::remove(file);
     ASSERT_TRUE(loaded) << loaded.error;
     EXPECT_EQ(loaded.value->objects.size(), 2u);
@@ -186,34 +188,84 @@ TEST(LoadScene, MalformedSpecifications) {
 
 TEST(LoadScene, ControlCharactersInMessagesAreEscapedToKeepOneLine) {
     // Found by the scene_parameters fuzzer: the specification is quoted in the message as is.
-    expectFailure(loadScene("builtin:soup?&\n\n"), "builtin:soup?&\\x0a\\x0a: empty parameter");
-    expectFailure(loadScene("builtin:soup?n\r=1"), "unknown parameter 'n\\x0d'");
-    expectFailure(loadScene("builtin:soup?n=1\t"), "'1\\x09' is not an integer");
+    expectFailure(samples::loadScene("builtin:soup?&\n\n"),
+                  "builtin:soup?&\\x0a\\x0a: empty parameter");
+    expectFailure(samples::loadScene("builtin:soup?n\r=1"), "unknown parameter 'n\\x0d'");
+    expectFailure(samples::loadScene("builtin:soup?n=1\t"), "'1\\x09' is not an integer");
     expectFailure(loadScene("/nonexistent/a\nb.obj"), "/nonexistent/a\\x0ab.obj: file not found");
 }
 
+TEST(LoadScene, BuiltinWithoutAMakerSaysWhereTheScenesAre) {
+    expectFailure(loadScene("builtin:slabs"), "no built-in scenes here");
+    expectFailure(loadScene("builtin:slabs?layers=3"),
+                  "the Python module have the samples' scenes");
+}
+
+TEST(LoadScene, BuiltinMakerGetsTheNameAndParametersAndItsSceneIsChecked) {
+    std::string asked_name;
+    SceneParameters asked_parameters;
+    const BuiltinSceneMaker maker = [&](const std::string& name, const SceneParameters& p) {
+        asked_name = name;
+        asked_parameters = p;
+        if (name == "broken") {
+            Scene scene = handMadeScene();
+            scene.positions.x[4] = std::numeric_limits<float>::quiet_NaN();
+            return Result<Scene>{std::move(scene), {}};
+        }
+        if (name != "hand")
+            return Result<Scene>::failure("no scene '" + name + "'");
+        return Result<Scene>{handMadeScene(), {}};
+    };
+    const Result<Scene> made = loadScene("builtin:hand?size=3&seed=7", maker);
+    ASSERT_TRUE(made) << made.error;
+    EXPECT_EQ(made.value->triangleCount(), 6u);
+    EXPECT_EQ(asked_name, "hand");
+    EXPECT_EQ(asked_parameters, (SceneParameters{{"seed", "7"}, {"size", "3"}}));
+    expectFailure(loadScene("builtin:other", maker), "no scene 'other'");
+    // What the maker makes is checked as a file's scene is.
+    expectFailure(loadScene("builtin:broken", maker), "builtin:broken: ");
+    expectFailure(loadScene("builtin:broken", maker), "finite");
+    // The syntax is the library's: the maker is not asked for a malformed specification.
+    asked_name.clear();
+    expectFailure(loadScene("builtin:hand?size", maker), "'size' needs a value");
+    EXPECT_EQ(asked_name, "");
+}
+
+TEST(LoadMeshFromMemory, ReadsBytesAsTheFileAndRejectsGarbage) {
+    const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\n";
+    const Result<Scene> loaded = loadMeshFromMemory(obj.data(), obj.size(), "obj", "two.obj");
+    ASSERT_TRUE(loaded) << loaded.error;
+    EXPECT_EQ(loaded.value->triangleCount(), 2u);
+    const std::string garbage = "this is not a mesh\n";
+    expectFailure(loadMeshFromMemory(garbage.data(), garbage.size(), "ply", "garbage.ply"),
+                  "garbage.ply");
+    const std::string nan_corner = "v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n";
+    expectFailure(loadMeshFromMemory(nan_corner.data(), nan_corner.size(), "obj", "nan.obj"),
+                  "nan.obj");
+}
+
 TEST(LoadScene, BuiltinScenesGetTheirParameters) {
-    const Result<Scene> plain = loadScene("builtin:slabs");
+    const Result<Scene> plain = samples::loadScene("builtin:slabs");
     ASSERT_TRUE(plain) << plain.error;
     EXPECT_EQ(validateScene(*plain.value).error, "");
-    const Result<Scene> empty_query = loadScene("builtin:slabs?");
+    const Result<Scene> empty_query = samples::loadScene("builtin:slabs?");
     ASSERT_TRUE(empty_query) << empty_query.error;
     EXPECT_EQ(empty_query.value->positions.x, plain.value->positions.x);
 
-    const Result<Scene> three = loadScene("builtin:slabs?layers=3&seed=2");
-    const Result<Scene> five = loadScene("builtin:slabs?seed=2&layers=5");
+    const Result<Scene> three = samples::loadScene("builtin:slabs?layers=3&seed=2");
+    const Result<Scene> five = samples::loadScene("builtin:slabs?seed=2&layers=5");
     ASSERT_TRUE(three) << three.error;
     ASSERT_TRUE(five) << five.error;
     EXPECT_LT(three.value->triangleCount(), five.value->triangleCount());
-    const Result<Scene> again = loadScene("builtin:slabs?seed=2&layers=3");
+    const Result<Scene> again = samples::loadScene("builtin:slabs?seed=2&layers=3");
     ASSERT_TRUE(again) << again.error;
     EXPECT_EQ(again.value->positions.x, three.value->positions.x); // key order does not matter
 }
 
 TEST(LoadScene, BuiltinErrorsNameTheSpecification) {
-    expectFailure(loadScene("builtin:no_such_scene"), "builtin:no_such_scene");
-    expectFailure(loadScene("builtin:slabs?bogus_key=1"), "bogus_key");
-    expectFailure(loadScene("builtin:slabs?layers=-4"), "layers");
+    expectFailure(samples::loadScene("builtin:no_such_scene"), "builtin:no_such_scene");
+    expectFailure(samples::loadScene("builtin:slabs?bogus_key=1"), "bogus_key");
+    expectFailure(samples::loadScene("builtin:slabs?layers=-4"), "layers");
 }
 
 } // namespace

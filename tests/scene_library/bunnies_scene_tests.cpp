@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "scene/builtin_scenes.h"
-#include "vissort/scene_library.h"
+#include "scenes/builtin_scenes.h"
+#include "scenes/scene_library.h"
 
 namespace vissort {
 namespace {
@@ -57,7 +57,7 @@ std::vector<Vec3> referenceBunnyCorners() {
 }
 
 Scene makeBunnies(const std::string& n, const std::string& seed = "1") {
-    Result<Scene> scene = makeBuiltinScene("bunnies", {{"n", n}, {"seed", seed}});
+    Result<Scene> scene = samples::makeBuiltinScene("bunnies", {{"n", n}, {"seed", seed}});
     EXPECT_TRUE(scene) << scene.error;
     return scene ? std::move(*scene.value) : Scene{};
 }
@@ -94,7 +94,7 @@ TEST(BunniesScene, CountsObjectsAndMaterials) {
     const Rgba a = scene.objects[0].colour, b = scene.objects[1].colour;
     EXPECT_GT(std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b), 0.1f);
 
-    const Result<Scene> defaults = makeBuiltinScene("bunnies", {});
+    const Result<Scene> defaults = samples::makeBuiltinScene("bunnies", {});
     ASSERT_TRUE(defaults);
     EXPECT_EQ(defaults.value->objects.size(), 18u);
     EXPECT_EQ(defaults.value->triangleCount(), 18 * kTrianglesPerBunny);

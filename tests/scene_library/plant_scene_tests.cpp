@@ -15,8 +15,8 @@
 
 #include "exact/ray_caster.h"
 #include "scene_checks.h"
+#include "scenes/scene_library.h"
 #include "solid_checks.h"
-#include "vissort/scene_library.h"
 
 namespace vissort {
 namespace {
@@ -29,7 +29,7 @@ constexpr std::size_t kObjectsPerRow = 22; // 4 pipes, 8 columns, 8 beams, a pum
 constexpr double kSmallestGap = 0.05; // the scene's gap between the floor and what stands on it
 
 Scene makePlant(int layers, int seed = 1) {
-    Result<Scene> scene = makeBuiltinScene(
+    Result<Scene> scene = samples::makeBuiltinScene(
         "plant", {{"layers", std::to_string(layers)}, {"seed", std::to_string(seed)}});
     EXPECT_TRUE(scene) << scene.error;
     return scene ? std::move(*scene.value) : Scene{};
@@ -58,7 +58,7 @@ bool rayHits(const Vec3& o, const Vec3& d, const Triangle& t) {
 }
 
 TEST(PlantScene, DefaultsAreEightLayersAndSeedOne) {
-    const Result<Scene> defaults = makeBuiltinScene("plant", {});
+    const Result<Scene> defaults = samples::makeBuiltinScene("plant", {});
     ASSERT_TRUE(defaults) << defaults.error;
     const Scene explicit_scene = makePlant(8, 1);
     EXPECT_EQ(defaults.value->name, "builtin:plant");
@@ -80,7 +80,8 @@ TEST(PlantScene, BadParametersAreOneLineErrorsNamingTheKey) {
         {{{"n", "3"}}, "builtin:plant: unknown parameter 'n' (accepted: layers, seed)"},
     };
     test::expectParameterErrors("plant", cases);
-    EXPECT_TRUE(makeBuiltinScene("plant", {{"layers", "1000"}, {"seed", "18446744073709551615"}}));
+    EXPECT_TRUE(
+        samples::makeBuiltinScene("plant", {{"layers", "1000"}, {"seed", "18446744073709551615"}}));
 }
 
 TEST(PlantScene, SameSeedSameBitsOtherSeedOtherPlant) {

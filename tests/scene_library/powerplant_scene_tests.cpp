@@ -14,10 +14,10 @@
 #include <gtest/gtest.h>
 
 #include "scene_checks.h"
+#include "scenes/scene_library.h"
 #include "solid_checks.h"
 #include "vissort/camera_path.h"
 #include "vissort/depth_complexity.h"
-#include "vissort/scene_library.h"
 
 namespace vissort {
 namespace {
@@ -30,7 +30,7 @@ constexpr double kStoreyHeight = 6.0;
 
 Scene makePowerplant(const std::string& scale, int seed = 1) {
     Result<Scene> scene =
-        makeBuiltinScene("powerplant", {{"scale", scale}, {"seed", std::to_string(seed)}});
+        samples::makeBuiltinScene("powerplant", {{"scale", scale}, {"seed", std::to_string(seed)}});
     EXPECT_TRUE(scene) << scene.error;
     return scene ? std::move(*scene.value) : Scene{};
 }
@@ -43,7 +43,7 @@ std::size_t transparentTriangles(const Scene& scene) {
 }
 
 TEST(PowerplantScene, DefaultsAreScaleOneAndSeedOne) {
-    const Result<Scene> defaults = makeBuiltinScene("powerplant", {});
+    const Result<Scene> defaults = samples::makeBuiltinScene("powerplant", {});
     ASSERT_TRUE(defaults) << defaults.error;
     const Scene explicit_scene = makePowerplant("1", 1);
     EXPECT_EQ(defaults.value->name, "builtin:powerplant");
@@ -102,9 +102,9 @@ TEST(PowerplantScene, BadParametersAreOneLineErrorsNamingTheKey) {
         {{{"layers", "3"}}, "unknown parameter 'layers' (accepted: scale, seed)"},
     };
     test::expectParameterErrors("powerplant", cases);
-    EXPECT_TRUE(makeBuiltinScene("powerplant", {{"scale", "0.05"}}));
-    EXPECT_TRUE(makeBuiltinScene("powerplant", {{"scale", "0.5"}}));
-    EXPECT_TRUE(makeBuiltinScene("powerplant", {{"scale", "3."}}));
+    EXPECT_TRUE(samples::makeBuiltinScene("powerplant", {{"scale", "0.05"}}));
+    EXPECT_TRUE(samples::makeBuiltinScene("powerplant", {{"scale", "0.5"}}));
+    EXPECT_TRUE(samples::makeBuiltinScene("powerplant", {{"scale", "3."}}));
 }
 
 TEST(PowerplantScene, SameSeedSameBitsOtherSeedOtherPlant) {

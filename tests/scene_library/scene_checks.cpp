@@ -1,6 +1,7 @@
 // The generator checks of scene_checks.h.
 
 #include "scene_checks.h"
+#include "scenes/scene_library.h"
 
 #include <gtest/gtest.h>
 
@@ -20,7 +21,7 @@ void expectSameCamera(const CameraSpec& a, const CameraSpec& b) {
 
 void expectParameterErrors(const std::string& scene, std::span<const ParameterErrorCase> cases) {
     for (const ParameterErrorCase& c : cases) {
-        const Result<Scene> made = makeBuiltinScene(scene, c.parameters);
+        const Result<Scene> made = samples::makeBuiltinScene(scene, c.parameters);
         EXPECT_FALSE(made) << c.expected;
         EXPECT_NE(made.error.find(c.expected), std::string::npos) << made.error;
         EXPECT_EQ(made.error.find('\n'), std::string::npos) << made.error;

@@ -5,8 +5,8 @@
 #include <span>
 #include <string>
 
+#include "scenes/scene_library.h"
 #include "vissort/scene.h"
-#include "vissort/scene_library.h"
 
 namespace vissort::test {
 
@@ -16,7 +16,7 @@ struct ParameterErrorCase {
     const char* expected;
 };
 
-/// Each case refused by makeBuiltinScene(scene, ...) with one line containing its text.
+/// Each case refused by samples::makeBuiltinScene(scene, ...) with one line containing its text.
 void expectParameterErrors(const std::string& scene, std::span<const ParameterErrorCase> cases);
 
 /// The same positions (bit for bit), objects (names, ranges, every colour channel, transparency),

@@ -1,4 +1,4 @@
-#include "vissort/scene_library.h"
+#include "scenes/scene_library.h"
 
 #include <set>
 
@@ -14,20 +14,20 @@ namespace {
 }
 
 TEST(SceneLibrary, ListsTheFourScenesWithTheirParameters) {
-    const std::vector<BuiltinSceneInfo> scenes = builtinScenes();
+    const std::vector<samples::BuiltinSceneInfo> scenes = samples::builtinScenes();
     std::set<std::string> names;
-    for (const BuiltinSceneInfo& info : scenes)
+    for (const samples::BuiltinSceneInfo& info : scenes)
         names.insert(info.name);
     EXPECT_EQ(names, (std::set<std::string>{"bunnies", "plant", "powerplant", "slabs", "soup"}));
-    for (const BuiltinSceneInfo& info : scenes) {
+    for (const samples::BuiltinSceneInfo& info : scenes) {
         EXPECT_TRUE(contains(info.summary, "seed (1)"));
         EXPECT_EQ(info.summary.find('\n'), std::string::npos);
     }
 }
 
 TEST(SceneLibrary, EveryListedSceneBuildsWithDefaultsAndIsValid) {
-    for (const BuiltinSceneInfo& info : builtinScenes()) {
-        const Result<Scene> scene = makeBuiltinScene(info.name, {});
+    for (const samples::BuiltinSceneInfo& info : samples::builtinScenes()) {
+        const Result<Scene> scene = samples::makeBuiltinScene(info.name, {});
         ASSERT_TRUE(scene) << info.name << ": " << scene.error;
         EXPECT_EQ(scene.value->name, "builtin:" + info.name);
         EXPECT_EQ(validateScene(*scene.value).error, "") << info.name;
@@ -45,7 +45,7 @@ TEST(SceneLibrary, EveryListedSceneBuildsWithDefaultsAndIsValid) {
 }
 
 TEST(SceneLibrary, UnknownNamesAreErrorsListingTheKnownOnes) {
-    const Result<Scene> scene = makeBuiltinScene("teapot", {});
+    const Result<Scene> scene = samples::makeBuiltinScene("teapot", {});
     EXPECT_FALSE(scene);
     EXPECT_TRUE(contains(scene.error, "'builtin:teapot'"));
     EXPECT_TRUE(contains(scene.error, "bunnies, plant, powerplant, slabs, soup"));
@@ -70,7 +70,7 @@ TEST(SceneLibrary, ParameterErrorsNameTheSceneAndTheKey) {
         {"soup", {{"n", "1e6"}}, "parameter n='1e6' is not an integer"},
     };
     for (const auto& c : cases) {
-        const Result<Scene> scene = makeBuiltinScene(c.scene, c.parameters);
+        const Result<Scene> scene = samples::makeBuiltinScene(c.scene, c.parameters);
         EXPECT_FALSE(scene) << c.expected;
         EXPECT_TRUE(contains(scene.error, c.expected));
     }
@@ -78,7 +78,7 @@ TEST(SceneLibrary, ParameterErrorsNameTheSceneAndTheKey) {
 
 TEST(SceneLibrary, BunniesAboveTheTriangleLimitAreRefused) {
     // 2722 bunnies of 3674 triangles are 10,000,628 triangles: over the 10 million limit.
-    const Result<Scene> scene = makeBuiltinScene("bunnies", {{"n", "2722"}});
+    const Result<Scene> scene = samples::makeBuiltinScene("bunnies", {{"n", "2722"}});
     EXPECT_FALSE(scene);
     EXPECT_TRUE(
         contains(scene.error, "builtin:bunnies: parameter n=2722 gives 10000628 triangles"));

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "scene_checks.h"
-#include "vissort/scene_library.h"
+#include "scenes/scene_library.h"
 
 namespace vissort_test {
 using Triangle = std::array<vissort::Vec3, 3>;
@@ -18,7 +18,7 @@ namespace {
 using vissort_test::Triangle;
 
 Scene makeSlabs(const std::string& layers, const std::string& seed = "1") {
-    Result<Scene> scene = makeBuiltinScene("slabs", {{"layers", layers}, {"seed", seed}});
+    Result<Scene> scene = samples::makeBuiltinScene("slabs", {{"layers", layers}, {"seed", seed}});
     EXPECT_TRUE(scene) << scene.error;
     return scene ? std::move(*scene.value) : Scene{};
 }
@@ -56,7 +56,7 @@ TEST(SlabsScene, CountsAndObjects) {
         }
         EXPECT_FALSE(scene.isDynamic());
     }
-    const Result<Scene> defaults = makeBuiltinScene("slabs", {});
+    const Result<Scene> defaults = samples::makeBuiltinScene("slabs", {});
     ASSERT_TRUE(defaults);
     EXPECT_EQ(defaults.value->triangleCount(), 16u);
 }

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "scene_checks.h"
-#include "vissort/scene_library.h"
+#include "scenes/scene_library.h"
 
 namespace vissort_test {
 using Triangle = std::array<vissort::Vec3, 3>;
@@ -18,7 +18,7 @@ namespace {
 using vissort_test::Triangle;
 
 Scene makeSoup(const std::string& n, const std::string& seed = "1") {
-    Result<Scene> scene = makeBuiltinScene("soup", {{"n", n}, {"seed", seed}});
+    Result<Scene> scene = samples::makeBuiltinScene("soup", {{"n", n}, {"seed", seed}});
     EXPECT_TRUE(scene) << scene.error;
     return scene ? std::move(*scene.value) : Scene{};
 }
@@ -44,7 +44,7 @@ TEST(SoupScene, OneObjectPerTriangle) {
         }
         EXPECT_FALSE(scene.isDynamic());
     }
-    const Result<Scene> defaults = makeBuiltinScene("soup", {});
+    const Result<Scene> defaults = samples::makeBuiltinScene("soup", {});
     ASSERT_TRUE(defaults);
     EXPECT_EQ(defaults.value->triangleCount(), 1000u);
 }

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "scenes/scene_library.h"
 #include "vissort/scene.h"
 
 namespace vissort::test {
@@ -13,7 +14,7 @@ namespace vissort::test {
 inline Scene loadTestScene(const std::string& spec) {
     const std::string path =
         spec.rfind("builtin:", 0) == 0 ? spec : std::string(VISSORT_SOURCE_DIR) + "/" + spec;
-    Result<Scene> loaded = loadScene(path);
+    Result<Scene> loaded = samples::loadScene(path);
     EXPECT_TRUE(loaded) << loaded.error;
     return loaded ? std::move(*loaded.value) : Scene{};
 }

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "transparency_bench.h"
+#include "harnesses/transparency_bench.h"
 #include "vissort/camera_path.h"
 #include "vissort/result.h"
 #include "vissort/scene_orderer.h"

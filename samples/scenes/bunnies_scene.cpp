@@ -16,10 +16,9 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include "scene/builtin_scenes.h"
-#include "scene/embedded_meshes.h"
-#include "scene/mesh_loader.h"
-#include "scene/scene_parameters.h"
+#include "scenes/builtin_scenes.h"
+#include "scenes/embedded_meshes.h"
+#include "scenes/scene_parameters.h"
 
 namespace vissort::detail {
 namespace {
@@ -121,8 +120,8 @@ struct RestMesh {
 };
 
 Result<RestMesh> loadRestBunny() {
-    Result<Scene> loaded = loadMeshMemory(kBunnyLowresObj, kBunnyLowresObjSize, "obj",
-                                          "built-in mesh bunny-lowres.obj");
+    Result<Scene> loaded = loadMeshFromMemory(kBunnyLowresObj, kBunnyLowresObjSize, "obj",
+                                              "built-in mesh bunny-lowres.obj");
     if (!loaded)
         return Result<RestMesh>::failure(loaded.error);
     const TrianglePositions& positions = loaded.value->positions;

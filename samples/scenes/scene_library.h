@@ -1,17 +1,14 @@
 #pragma once
-// Named, generated scenes used alike by tests, benchmarks and the command line.
-// Every scene is deterministic for a given `seed`.
+// The samples' named, generated scenes (`builtin:NAME?key=value&...`), used alike by tests,
+// benchmarks, the command line and the Python module; not part of the installed library, which
+// loads files (vissort::loadScene). Every scene is deterministic for a given `seed`.
 
-#include <map>
 #include <string>
 #include <vector>
 
 #include "vissort/scene.h"
 
-namespace vissort {
-
-/// key=value parameters of a `builtin:NAME?key=value&...` specification.
-using SceneParameters = std::map<std::string, std::string>;
+namespace vissort::samples {
 
 struct BuiltinSceneInfo {
     std::string name;
@@ -31,4 +28,8 @@ std::vector<BuiltinSceneInfo> builtinScenes();
 ///            transparent; depth complexity about 2 layers.
 Result<Scene> makeBuiltinScene(const std::string& name, const SceneParameters& parameters);
 
-} // namespace vissort
+/// vissort::loadScene with these scenes as its `builtin:` ones: a file, a JSON scene or
+/// `builtin:NAME?key=value&...`.
+Result<Scene> loadScene(const std::string& specification);
+
+} // namespace vissort::samples

@@ -1,4 +1,4 @@
-#include "scene/scene_parameters.h"
+#include "scenes/scene_parameters.h"
 
 #include <charconv>
 #include <sstream>

@@ -27,9 +27,9 @@
 
 #include <glm/glm.hpp>
 
-#include "scene/builtin_scenes.h"
-#include "scene/scene_parameters.h"
-#include "scene/solid_shapes.h"
+#include "scenes/builtin_scenes.h"
+#include "scenes/scene_parameters.h"
+#include "scenes/solid_shapes.h"
 
 namespace vissort::detail {
 namespace {

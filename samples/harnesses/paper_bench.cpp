@@ -1,15 +1,16 @@
 // `vissort bench paper`'s measurements (paper_bench.h).
 
-#include "paper_bench.h"
+#include "harnesses/paper_bench.h"
 
 #include <algorithm>
 
-#include "support/measurement.h"
+#include "harnesses/measurement.h"
 #include "vissort/collision.h"
 #include "vissort/frame_driver.h"
 #include "vissort/oracles.h"
 #include "vissort/scene.h"
 #if VISSORT_WITH_GL
+#include "scenes/scene_library.h"
 #include "vissort/gl_context.h"
 #include "vissort/transparency_renderer.h"
 #endif
@@ -37,7 +38,7 @@ TransparencyBenchSettings figure6Settings(const PaperBenchSettings& settings) {
 // Measures one path frame by frame into path.frames.
 Status measurePath(const PaperBenchSettings& settings, PaperPath& path,
                    const std::function<void(int frame)>& on_frame) {
-    Result<Scene> loaded = loadScene(path.specification);
+    Result<Scene> loaded = samples::loadScene(path.specification);
     if (!loaded)
         return Status::failure(loaded.error);
     const Scene& scene = *loaded.value;

@@ -1,6 +1,6 @@
 // Closed meshes of simple solids for the built-in CAD-like scenes (solid_shapes.h).
 
-#include "scene/solid_shapes.h"
+#include "scenes/solid_shapes.h"
 
 #include <cassert>
 #include <cmath>

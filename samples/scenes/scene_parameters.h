@@ -7,7 +7,7 @@
 #include <set>
 #include <string>
 
-#include "vissort/scene_library.h"
+#include "scenes/scene_library.h"
 
 namespace vissort::detail {
 

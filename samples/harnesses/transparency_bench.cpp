@@ -1,11 +1,12 @@
 // `vissort bench transparency`'s measurements (transparency_bench.h).
 
-#include "transparency_bench.h"
+#include "harnesses/transparency_bench.h"
 
 #include <algorithm>
 #include <memory>
 
-#include "support/measurement.h"
+#include "harnesses/measurement.h"
+#include "scenes/scene_library.h"
 #include "vissort/frame_driver.h"
 
 namespace vissort::bench {
@@ -99,7 +100,7 @@ runTransparencyBench(const TransparencyBenchSettings& settings,
             row.family = family.name;
             row.specification = family.scene(depth);
             row.depth = depth;
-            Result<Scene> loaded = loadScene(row.specification);
+            Result<Scene> loaded = samples::loadScene(row.specification);
             if (!loaded)
                 return Rows::failure(loaded.error);
             const Scene& scene = *loaded.value;

@@ -1,7 +1,7 @@
 #pragma once
 // Internal declarations of the built-in scenes (scene_library.h) and the random numbers they share.
 
-#include "vissort/scene_library.h"
+#include "scenes/scene_library.h"
 #include <algorithm>
 #include <array>
 #include <cmath>

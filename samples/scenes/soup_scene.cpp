@@ -11,8 +11,8 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include "scene/builtin_scenes.h"
-#include "scene/scene_parameters.h"
+#include "scenes/builtin_scenes.h"
+#include "scenes/scene_parameters.h"
 
 namespace vissort::detail {
 namespace {

@@ -1,10 +1,11 @@
-// The registry of built-in scenes: names, summaries and dispatch to their generators.
+// The registry of built-in scenes: names, summaries and dispatch to their generators, and the
+// loader that knows them.
 
-#include "vissort/scene_library.h"
+#include "scenes/scene_library.h"
 
-#include "scene/builtin_scenes.h"
+#include "scenes/builtin_scenes.h"
 
-namespace vissort {
+namespace vissort::samples {
 namespace {
 
 struct BuiltinScene {
@@ -64,4 +65,8 @@ Result<Scene> makeBuiltinScene(const std::string& name, const SceneParameters& p
                                   ")");
 }
 
-} // namespace vissort
+Result<Scene> loadScene(const std::string& specification) {
+    return vissort::loadScene(specification, makeBuiltinScene);
+}
+
+} // namespace vissort::samples

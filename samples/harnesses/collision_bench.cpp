@@ -1,11 +1,13 @@
 // `vissort bench collision`'s measurements (collision_bench.h).
 
-#include "collision_bench.h"
+#include "harnesses/collision_bench.h"
 
 #include <memory>
 #include <stdexcept>
 
-#include "support/measurement.h"
+#include "harnesses/measurement.h"
+#include "scenes/scene_library.h"
+#include "vissort/collision_peers.h"
 #include "vissort/frame_driver.h"
 #include "vissort/scene.h"
 
@@ -34,7 +36,7 @@ uint64_t pairsMissing(const std::vector<TrianglePair>& from, const std::vector<T
 // order so that none always runs on a cold cache.
 std::vector<Measured> measure(const std::vector<CollisionContender>& methods, uint32_t bunnies,
                               int frames, std::size_t& triangles) {
-    const Result<Scene> scene = loadScene("builtin:bunnies?n=" + std::to_string(bunnies));
+    const Result<Scene> scene = samples::loadScene("builtin:bunnies?n=" + std::to_string(bunnies));
     if (!scene)
         throw std::runtime_error(scene.error);
     triangles = scene.value->triangleCount();
@@ -94,6 +96,7 @@ std::vector<CollisionBenchRow>
 runCollisionBench(const CollisionBenchSettings& settings,
                   const std::function<void(uint32_t)>& on_count,
                   const std::function<void(const CollisionBenchRow&)>& on_row) {
+    registerPeerColliders(); // Bullet and FCL are among the contenders
     const std::vector<CollisionContender> methods = collisionContenders();
     std::vector<CollisionBenchRow> rows;
     for (uint32_t n : settings.counts) {

@@ -1,4 +1,4 @@
-#include "support/measurement.h"
+#include "harnesses/measurement.h"
 
 #include <algorithm>
 #include <fstream>

@@ -5,8 +5,8 @@
 #include <numbers>
 #include <string>
 
-#include "scene/builtin_scenes.h"
-#include "scene/scene_parameters.h"
+#include "scenes/builtin_scenes.h"
+#include "scenes/scene_parameters.h"
 
 namespace vissort::detail {
 namespace {

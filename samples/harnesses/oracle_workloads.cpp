@@ -1,4 +1,4 @@
-#include "support/oracle_workloads.h"
+#include "harnesses/oracle_workloads.h"
 
 #include <algorithm>
 #include <random>

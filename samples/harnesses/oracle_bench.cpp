@@ -1,17 +1,18 @@
 // `vissort bench oracle`'s measurements (oracle_bench.h).
 
-#include "oracle_bench.h"
+#include "harnesses/oracle_bench.h"
 
 #include <algorithm>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
 
-#include "support/measurement.h"
-#include "support/oracle_workloads.h"
+#include "harnesses/measurement.h"
+#include "harnesses/oracle_workloads.h"
 #include "vissort/frame_driver.h"
 #include "vissort/scene_orderer.h"
 #if VISSORT_WITH_GL
+#include "scenes/scene_library.h"
 #include "vissort/gl_context.h"
 #endif
 
@@ -135,7 +136,7 @@ Result<OracleBenchResult> runOracleBench(const OracleBenchSettings& settings) {
                                  {"slabs (64), object level, orbit, 1024x768",
                                   "builtin:slabs?layers=64", OrderLevel::object}};
     for (const RealWorkload& workload : real) {
-        Result<Scene> loaded = loadScene(workload.scene);
+        Result<Scene> loaded = samples::loadScene(workload.scene);
         if (!loaded)
             return Failed::failure(loaded.error);
         const Scene& scene = *loaded.value;

@@ -1,0 +1,14 @@
+#pragma once
+// The peers' colliders (vissort_peers), one file each. Internal.
+
+#include <memory>
+#include <span>
+
+#include "collide/collider.h"
+
+namespace vissort::detail {
+
+std::unique_ptr<Collider> makeBulletCollider(std::span<const PrimitiveRange> objects);
+std::unique_ptr<Collider> makeFclCollider(std::span<const PrimitiveRange> objects);
+
+} // namespace vissort::detail

@@ -1,0 +1,60 @@
+// The collision layer on its own (vissort_collide, without vissort_peers): its methods work,
+// and a peer method is a clear error until registerPeerColliders is called. The process-wide
+// registration is why this is a test program of its own.
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "vissort/collision.h"
+
+namespace vissort {
+namespace {
+
+// Two unit cubes' worth of triangles is more than needed: two triangles that cross.
+TrianglePositions twoCrossingTriangles() {
+    TrianglePositions p;
+    const float corners[6][3] = {{-1, 0, -1}, {1, 0, -1}, {0, 0, 1},     // in the plane y = 0
+                                 {0, -1, 0},  {0, 1, 0},  {0.2f, 1, 0}}; // through it
+    for (const auto& c : corners) {
+        p.x.push_back(c[0]);
+        p.y.push_back(c[1]);
+        p.z.push_back(c[2]);
+    }
+    return p;
+}
+
+const std::vector<PrimitiveRange> kTwoObjects = {{0, 1}, {1, 1}};
+
+TEST(CollisionCore, VissortAndBruteNeedNoPeers) {
+    const TrianglePositions positions = twoCrossingTriangles();
+    for (CollisionMethod method : {CollisionMethod::vissort, CollisionMethod::brute}) {
+        CollisionSettings settings;
+        settings.method = method;
+        CollisionDetector detector(kTwoObjects, settings);
+        const CollisionResult result = detector.collide(positions.view());
+        ASSERT_EQ(result.pairs.size(), 1u) << collisionMethodName(method);
+        EXPECT_EQ(result.pairs[0], (TrianglePair{0, 1}));
+    }
+}
+
+TEST(CollisionCore, PeerMethodsSayHowToGetThem) {
+    for (CollisionMethod method : {CollisionMethod::bullet, CollisionMethod::fcl}) {
+        CollisionSettings settings;
+        settings.method = method;
+        try {
+            CollisionDetector detector(kTwoObjects, settings);
+            ADD_FAILURE() << collisionMethodName(method) << " was made without the peers";
+        } catch (const std::invalid_argument& e) {
+            const std::string message = e.what();
+            EXPECT_NE(message.find(collisionMethodName(method)), std::string::npos) << message;
+            EXPECT_NE(message.find("vissort::peers"), std::string::npos) << message;
+            EXPECT_NE(message.find("registerPeerColliders"), std::string::npos) << message;
+        }
+    }
+}
+
+} // namespace
+} // namespace vissort
