@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs everything vissort needs to build and test on Debian 12, from Debian's packages.
-# Idempotent; run as root. Each package and why: README.md, "Dependencies".
+# Idempotent; run as root. Each package and why: docs/development.md, "Dependencies".
 set -euo pipefail
 
 packages=(
