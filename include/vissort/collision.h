@@ -97,6 +97,23 @@ struct CollisionStats {
     double total_ms = 0;             // everything after the positions exist
 };
 
+/// Every field of CollisionStats by name, in one list (see forEachStat in vis_sort.h): the
+/// command line's JSON and CSV and the Python module's dict are written from it. Times end in _ms.
+template <class Visit> void forEachStat(const CollisionStats& s, Visit&& visit) {
+    visit("box_object_pairs", s.box_object_pairs);
+    visit("object_pairs", s.object_pairs);
+    visit("box_triangle_pairs", s.box_triangle_pairs);
+    visit("triangle_pairs", s.triangle_pairs);
+    visit("intersecting", s.intersecting);
+    visit("colliding_objects", s.colliding_objects);
+    visit("directions", s.directions);
+    visit("queries", s.queries);
+    visit("update_ms", s.update_ms);
+    visit("cull_ms", s.cull_ms);
+    visit("exact_ms", s.exact_ms);
+    visit("total_ms", s.total_ms);
+}
+
 struct CollisionResult {
     std::vector<TrianglePair> pairs; // ascending, no duplicates
     CollisionStats stats;

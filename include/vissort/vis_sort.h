@@ -39,6 +39,20 @@ struct VisSortStats {
     }
 };
 
+/// Every count of VisSortStats by name, in one list: the command line's JSON and CSV and the
+/// Python module's dicts are written from it, so a count added here reaches each of them (as the
+/// tables of enum_names.h do for enums). Calls visit(name, value) per field, in this order.
+template <class Visit> void forEachStat(const VisSortStats& s, Visit&& visit) {
+    visit("queries", s.queries);
+    visit("draws", s.draws);
+    visit("clears", s.clears);
+    visit("iterations", s.iterations);
+    visit("stuck_iterations", s.stuck_iterations);
+    visit("cycle_queries", s.cycle_queries);
+    visit("cycle_draws", s.cycle_draws);
+    visit("hinted_cycles", s.hinted_cycles);
+}
+
 /// An edge of the occlusion graph: `front` lies in front of `back` at some pixel.
 struct Occlusion {
     uint32_t front = 0, back = 0;

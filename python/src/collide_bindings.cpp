@@ -9,6 +9,7 @@
 #include "arrays.h"
 #include "bindings.h"
 #include "frame_input.h"
+#include "stats_dict.h"
 #include "vissort/collision.h"
 #include "vissort/collision_peers.h"
 
@@ -17,18 +18,7 @@ namespace {
 
 py::dict statsDict(const CollisionStats& s) {
     py::dict d;
-    d["box_object_pairs"] = s.box_object_pairs;
-    d["object_pairs"] = s.object_pairs;
-    d["box_triangle_pairs"] = s.box_triangle_pairs;
-    d["triangle_pairs"] = s.triangle_pairs;
-    d["intersecting"] = s.intersecting;
-    d["colliding_objects"] = s.colliding_objects;
-    d["directions"] = s.directions;
-    d["queries"] = s.queries;
-    d["update_ms"] = s.update_ms;
-    d["cull_ms"] = s.cull_ms;
-    d["exact_ms"] = s.exact_ms;
-    d["total_ms"] = s.total_ms;
+    addStats(d, s);
     return d;
 }
 

@@ -11,6 +11,7 @@
 #include "frame_input.h"
 #include "gl_turn.h"
 #include "python_camera.h"
+#include "stats_dict.h"
 #include "vissort/oracles.h"
 #include "vissort/scene_orderer.h"
 
@@ -30,15 +31,7 @@ OrderResult resultOf(FrameOrder&& frame, const PythonCamera& camera) {
     result.order = toArray(std::move(frame.order));
     for (std::vector<uint32_t>& cycle : frame.cycles)
         result.cycles.append(toArray(std::move(cycle)));
-    const VisSortStats& s = frame.stats;
-    result.stats["queries"] = s.queries;
-    result.stats["draws"] = s.draws;
-    result.stats["clears"] = s.clears;
-    result.stats["iterations"] = s.iterations;
-    result.stats["stuck_iterations"] = s.stuck_iterations;
-    result.stats["cycle_queries"] = s.cycle_queries;
-    result.stats["hinted_cycles"] = s.hinted_cycles;
-    result.stats["cycle_draws"] = s.cycle_draws;
+    addStats(result.stats, frame.stats);
     result.stats["ms"] = frame.milliseconds;
     result.level = orderLevelName(frame.level);
     result.camera = camera;

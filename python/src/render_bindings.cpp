@@ -11,6 +11,7 @@
 #include "frame_input.h"
 #include "gl_turn.h"
 #include "python_camera.h"
+#include "stats_dict.h"
 
 #if VISSORT_WITH_GL
 #include "vissort/transparency_renderer.h"
@@ -71,9 +72,7 @@ py::dict statsDict(const RenderStats& stats) {
     d["fragments"] = stats.fragments;
     d["groups"] = stats.groups;
     d["repaired_pixels"] = stats.repaired_pixels;
-    d["queries"] = stats.order.queries;
-    d["draws"] = stats.order.draws;
-    d["iterations"] = stats.order.iterations;
+    addStats(d, stats.order); // the ordering's counts, as Orderer.order's stats
     return d;
 }
 

@@ -65,6 +65,9 @@ def test_exact_against_linked_list_over_coherent_frames():
         assert np.abs(a - b).max() <= 1
     assert renderer.stats["iterations"] >= 1
     assert reference.stats["fragments"] > 0
+    # The ordering's counts, under the names an order's stats has (one field table for both).
+    order_stats = vissort.order(scene, size=(64, 64)).stats
+    assert set(order_stats) - {"ms"} <= set(renderer.stats)
 
 
 def test_positions_of_another_count_are_refused():

@@ -89,7 +89,12 @@ _RenderStats = TypedDict(
         "repaired_pixels": int,
         "queries": int,
         "draws": int,
+        "clears": int,
         "iterations": int,
+        "stuck_iterations": int,
+        "cycle_queries": int,
+        "cycle_draws": int,
+        "hinted_cycles": int,
     },
     total=False,
 )

@@ -9,10 +9,10 @@
 
 #include "harnesses/measurement.h"
 #include "harnesses/oracle_workloads.h"
+#include "scenes/scene_library.h"
 #include "vissort/frame_driver.h"
 #include "vissort/scene_orderer.h"
 #if VISSORT_WITH_GL
-#include "scenes/scene_library.h"
 #include "vissort/gl_context.h"
 #endif
 

@@ -5,12 +5,12 @@
 #include <algorithm>
 
 #include "harnesses/measurement.h"
+#include "scenes/scene_library.h"
 #include "vissort/collision.h"
 #include "vissort/frame_driver.h"
 #include "vissort/oracles.h"
 #include "vissort/scene.h"
 #if VISSORT_WITH_GL
-#include "scenes/scene_library.h"
 #include "vissort/gl_context.h"
 #include "vissort/transparency_renderer.h"
 #endif

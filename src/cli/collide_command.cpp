@@ -11,6 +11,7 @@
 #include "cli/json_output.h"
 #include "cli/obj_output.h"
 #include "cli/progress.h"
+#include "cli/stats_output.h"
 #include "cli/text_output.h"
 #include "harnesses/measurement.h"
 #include "vissort/collision.h"
@@ -20,20 +21,9 @@ namespace vissort::cli {
 namespace {
 
 nlohmann::json frameRecord(int frame, const CollisionStats& stats) {
-    return {{"frame", frame},
-            {"box_object_pairs", stats.box_object_pairs},
-            {"object_pairs", stats.object_pairs},
-            {"box_triangle_pairs", stats.box_triangle_pairs},
-            {"triangle_pairs", stats.triangle_pairs},
-            {"intersecting", stats.intersecting},
-            {"colliding_objects", stats.colliding_objects},
-            {"directions", stats.directions},
-            {"queries", stats.queries},
-            {"ms",
-             {{"update", stats.update_ms},
-              {"cull", stats.cull_ms},
-              {"exact", stats.exact_ms},
-              {"total", stats.total_ms}}}};
+    nlohmann::json record = statsJson(stats);
+    record["frame"] = frame;
+    return record;
 }
 
 } // namespace
@@ -75,8 +65,7 @@ CLI::App* addCollideCommand(CLI::App& app, CollideOptions& options) {
         ->capture_default_str();
     addJsonOptions(*command, options.json, "Write per-frame statistics as JSON");
     addCsvOption(*command, options.csv,
-                 "frame, time_s, intersecting, object_pairs, triangle_pairs, colliding_objects, "
-                 "directions, queries, update_ms, cull_ms, exact_ms, ms");
+                 columnList(withStatColumns<CollisionStats>({"frame", "time_s"})));
     command->add_option("--pairs-out", options.pairs_path,
                         "Write 'FRAME A B' per intersecting pair (triangle ids, A < B, sorted)");
     command->add_option("--dump-primitives", options.dump_path,
@@ -115,9 +104,7 @@ int runCollide(const CollideOptions& options) {
     nlohmann::json frames = nlohmann::json::array();
     std::vector<double> total_ms;
     uint64_t pair_sum = 0;
-    CsvTable csv({"frame", "time_s", "intersecting", "object_pairs", "triangle_pairs",
-                  "colliding_objects", "directions", "queries", "update_ms", "cull_ms", "exact_ms",
-                  "ms"});
+    CsvTable csv(withStatColumns<CollisionStats>({"frame", "time_s"}));
     std::cout << options.scene << ": " << counted(scene->objects.size(), "object") << ", "
               << counted(scene->triangleCount(), "triangle") << "; method " << options.method
               << ", " << counted(options.frames, "frame") << '\n';
@@ -127,9 +114,7 @@ int runCollide(const CollideOptions& options) {
         detector.collide(driver.positions(), result);
         progress.clear();
         const CollisionStats& s = result.stats;
-        csv.addRow({double(f), driver.time(), double(result.pairs.size()), double(s.object_pairs),
-                    double(s.triangle_pairs), double(s.colliding_objects), double(s.directions),
-                    double(s.queries), s.update_ms, s.cull_ms, s.exact_ms, s.total_ms});
+        csv.addRow(withStatValues({double(f), driver.time()}, s));
         total_ms.push_back(result.stats.total_ms);
         pair_sum += result.pairs.size();
         if (!options.json.path.empty())

@@ -10,6 +10,7 @@
 #include "cli/json_output.h"
 #include "cli/obj_output.h"
 #include "cli/progress.h"
+#include "cli/stats_output.h"
 #include "cli/text_output.h"
 #include "vissort/frame_driver.h"
 #include "vissort/oracles.h"
@@ -18,6 +19,21 @@
 namespace vissort::cli {
 namespace {
 
+// --csv's columns: the frame, its primitives and cycles, Vis-sort's counts, its wall time.
+std::vector<std::string> orderCsvColumns() {
+    std::vector<std::string> columns =
+        withStatColumns<VisSortStats>({"frame", "time_s", "primitives", "cycles"});
+    columns.push_back("ms");
+    return columns;
+}
+
+// A frame's statistics: Vis-sort's counts (forEachStat) and the frame's wall time.
+nlohmann::json frameStatsJson(const FrameOrder& frame) {
+    nlohmann::json stats = statsJson(frame.stats);
+    stats["ms"] = frame.milliseconds;
+    return stats;
+}
+
 // A frame's JSON record; its order is lists' placeholder `order_list` (writeJsonFile).
 nlohmann::json frameRecord(const FrameOrder& frame, std::size_t order_list,
                            const CameraSpec& camera) {
@@ -25,16 +41,7 @@ nlohmann::json frameRecord(const FrameOrder& frame, std::size_t order_list,
             {"camera", cameraJson(camera)},
             {"level", orderLevelName(frame.level)},
             {"cycles", frame.cycles},
-            {"stats",
-             {{"queries", frame.stats.queries},
-              {"draws", frame.stats.draws},
-              {"clears", frame.stats.clears},
-              {"iterations", frame.stats.iterations},
-              {"stuck_iterations", frame.stats.stuck_iterations},
-              {"cycle_queries", frame.stats.cycle_queries},
-              {"hinted_cycles", frame.stats.hinted_cycles},
-              {"cycle_draws", frame.stats.cycle_draws},
-              {"ms", frame.milliseconds}}}};
+            {"stats", frameStatsJson(frame)}};
 }
 
 void printFrame(int index, const FrameOrder& frame) {
@@ -85,9 +92,7 @@ CLI::App* addOrderCommand(CLI::App& app, OrderOptions& options) {
     command->add_flag("--back-to-front", options.back_to_front,
                       "Output back to front (default front to back)");
     addJsonOptions(*command, options.json, "Write the order and statistics as JSON");
-    addCsvOption(*command, options.csv,
-                 "frame, time_s, primitives, cycles, iterations, stuck_iterations, queries, "
-                 "draws, ms");
+    addCsvOption(*command, options.csv, columnList(orderCsvColumns()));
     command->add_option("--dump-primitives", options.dump_path,
                         "Write the last frame's primitives as OBJ, one group per id");
     return command;
@@ -134,8 +139,7 @@ int runOrder(const OrderOptions& options) {
     std::vector<std::vector<uint32_t>> frame_orders; // for --json, when there are several frames
     FrameOrder last;
     double total_ms = 0;
-    CsvTable csv({"frame", "time_s", "primitives", "cycles", "iterations", "stuck_iterations",
-                  "queries", "draws", "ms"});
+    CsvTable csv(orderCsvColumns());
     Progress progress("order", uint64_t(view.frames), "frame");
     int frame = 0;
     orderer.setProgress([&](double share) { progress.update(frame + share); });
@@ -145,9 +149,11 @@ int runOrder(const OrderOptions& options) {
         orderer.orderFrame(driver.positions(), driver.view(), last);
         progress.update(f + 1);
         total_ms += last.milliseconds;
-        csv.addRow({double(f), driver.time(), double(last.order.size()), double(last.cycles.size()),
-                    double(last.stats.iterations), double(last.stats.stuck_iterations),
-                    double(last.stats.queries), double(last.stats.draws), last.milliseconds});
+        std::vector<double> row = withStatValues(
+            {double(f), driver.time(), double(last.order.size()), double(last.cycles.size())},
+            last.stats);
+        row.push_back(last.milliseconds);
+        csv.addRow(row);
         if (view.frames > 1) {
             progress.clear();
             printFrame(f, last);

@@ -4,8 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "vissort/collision.h"
@@ -38,6 +40,40 @@ TEST(CollisionCore, VissortAndBruteNeedNoPeers) {
         ASSERT_EQ(result.pairs.size(), 1u) << collisionMethodName(method);
         EXPECT_EQ(result.pairs[0], (TrianglePair{0, 1}));
     }
+}
+
+TEST(CollisionStats, FieldTableNamesEveryFieldOnce) {
+    CollisionStats s;
+    s.box_object_pairs = 1;
+    s.object_pairs = 2;
+    s.box_triangle_pairs = 3;
+    s.triangle_pairs = 4;
+    s.intersecting = 5;
+    s.colliding_objects = 6;
+    s.directions = 7;
+    s.queries = 8;
+    s.update_ms = 9.5;
+    s.cull_ms = 10.5;
+    s.exact_ms = 11.5;
+    s.total_ms = 12.5;
+    std::map<std::string, double> seen;
+    forEachStat(s, [&](std::string_view name, auto value) {
+        EXPECT_TRUE(seen.emplace(std::string(name), double(value)).second) << name;
+    });
+    EXPECT_EQ(seen, (std::map<std::string, double>{{"box_object_pairs", 1},
+                                                   {"object_pairs", 2},
+                                                   {"box_triangle_pairs", 3},
+                                                   {"triangle_pairs", 4},
+                                                   {"intersecting", 5},
+                                                   {"colliding_objects", 6},
+                                                   {"directions", 7},
+                                                   {"queries", 8},
+                                                   {"update_ms", 9.5},
+                                                   {"cull_ms", 10.5},
+                                                   {"exact_ms", 11.5},
+                                                   {"total_ms", 12.5}}));
+    EXPECT_EQ(sizeof(CollisionStats),
+              5 * sizeof(uint64_t) + 2 * sizeof(uint32_t) + sizeof(uint64_t) + 4 * sizeof(double));
 }
 
 TEST(CollisionCore, PeerMethodsSayHowToGetThem) {

@@ -5,9 +5,12 @@
 #include "vissort/vis_sort.h"
 
 #include <algorithm>
+#include <map>
 #include <numeric>
 #include <random>
 #include <set>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -16,6 +19,34 @@
 
 namespace vissort {
 namespace {
+
+// The field table that every writer (JSON, CSV, Python) lists from: each field once, under its
+// own name, with its own value (each set to a different number here).
+TEST(VisSortStats, FieldTableNamesEveryFieldOnce) {
+    VisSortStats s;
+    s.queries = 1;
+    s.draws = 2;
+    s.clears = 3;
+    s.iterations = 4;
+    s.stuck_iterations = 5;
+    s.cycle_queries = 6;
+    s.cycle_draws = 7;
+    s.hinted_cycles = 8;
+    std::map<std::string, uint64_t> seen;
+    forEachStat(s, [&](std::string_view name, auto value) {
+        EXPECT_TRUE(seen.emplace(std::string(name), uint64_t(value)).second) << name;
+    });
+    EXPECT_EQ(seen, (std::map<std::string, uint64_t>{{"queries", 1},
+                                                     {"draws", 2},
+                                                     {"clears", 3},
+                                                     {"iterations", 4},
+                                                     {"stuck_iterations", 5},
+                                                     {"cycle_queries", 6},
+                                                     {"cycle_draws", 7},
+                                                     {"hinted_cycles", 8}}));
+    // The size: a field added to the struct without a line in the table shows here too.
+    EXPECT_EQ(sizeof(VisSortStats), 5 * sizeof(uint64_t) + 3 * sizeof(uint32_t) + 4); // + padding
+}
 
 TEST(VisSort, EmptyAndSingle) {
     GraphOracle none(0);

@@ -6,10 +6,10 @@
 #include <sstream>
 
 #include "ground_truth.h"
+#include "scenes/scene_library.h"
 #include "vissort/oracles.h"
 #include "vissort/scene.h"
 #if VISSORT_WITH_GL
-#include "scenes/scene_library.h"
 #include "vissort/transparency_renderer.h"
 #endif
 
