@@ -4,18 +4,14 @@
 
 #include <gtest/gtest.h>
 
+#include "reference_triangles.h"
 #include "scene_checks.h"
 #include "scenes/scene_library.h"
-
-namespace vissort_test {
-using Triangle = std::array<vissort::Vec3, 3>;
-bool trianglesIntersect(const Triangle& a, const Triangle& b); // triangle_intersection_tests.cpp
-} // namespace vissort_test
 
 namespace vissort {
 namespace {
 
-using vissort_test::Triangle;
+using Triangle = std::array<Vec3, 3>;
 
 Scene makeSlabs(const std::string& layers, const std::string& seed = "1") {
     Result<Scene> scene = samples::makeBuiltinScene("slabs", {{"layers", layers}, {"seed", seed}});
@@ -91,8 +87,7 @@ TEST(SlabsScene, QuadsNeverIntersectAndPlanesSeparateTheLayers) {
     const std::size_t triangles = scene.triangleCount();
     for (std::size_t a = 0; a < triangles; ++a) {
         for (std::size_t b = (a / 2 + 1) * 2; b < triangles; ++b) { // triangles of later quads
-            EXPECT_FALSE(
-                vissort_test::trianglesIntersect(triangleOf(scene, a), triangleOf(scene, b)))
+            EXPECT_FALSE(test::closedTrianglesMeet(triangleOf(scene, a), triangleOf(scene, b)))
                 << a << " " << b;
         }
     }

@@ -4,18 +4,14 @@
 
 #include <gtest/gtest.h>
 
+#include "reference_triangles.h"
 #include "scene_checks.h"
 #include "scenes/scene_library.h"
-
-namespace vissort_test {
-using Triangle = std::array<vissort::Vec3, 3>;
-bool trianglesIntersect(const Triangle& a, const Triangle& b); // triangle_intersection_tests.cpp
-} // namespace vissort_test
 
 namespace vissort {
 namespace {
 
-using vissort_test::Triangle;
+using Triangle = std::array<Vec3, 3>;
 
 Scene makeSoup(const std::string& n, const std::string& seed = "1") {
     Result<Scene> scene = samples::makeBuiltinScene("soup", {{"n", n}, {"seed", seed}});
@@ -61,8 +57,7 @@ TEST(SoupScene, NoTwoTrianglesIntersect) {
     std::size_t intersecting = 0;
     for (std::size_t a = 0; a < n; ++a)
         for (std::size_t b = a + 1; b < n; ++b)
-            intersecting +=
-                vissort_test::trianglesIntersect(triangleOf(scene, a), triangleOf(scene, b));
+            intersecting += test::closedTrianglesMeet(triangleOf(scene, a), triangleOf(scene, b));
     EXPECT_EQ(intersecting, 0u);
 }
 
