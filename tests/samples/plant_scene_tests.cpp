@@ -22,6 +22,7 @@ namespace vissort {
 namespace {
 
 using test::boundsOf;
+using test::rayHits;
 using test::Triangle;
 using test::triangleOf;
 
@@ -41,20 +42,6 @@ bool hasPart(const std::string& name, const std::string& part) {
 
 Bounds boundsOf(const Scene& scene, const SceneObject& object) {
     return test::boundsOf(scene, object.first_triangle, object.triangle_count);
-}
-
-// Moeller-Trumbore, both sides, hits at distance > 0.
-bool rayHits(const Vec3& o, const Vec3& d, const Triangle& t) {
-    const Vec3 e1 = t[1] - t[0], e2 = t[2] - t[0];
-    const Vec3 p = cross(d, e2);
-    const double det = dot(e1, p);
-    if (std::abs(det) < 1e-15)
-        return false;
-    const Vec3 s = o - t[0];
-    const double u = dot(s, p) / det;
-    const Vec3 q = cross(s, e1);
-    const double v = dot(d, q) / det;
-    return u >= 0 && v >= 0 && u + v <= 1 && dot(e2, q) / det > 0;
 }
 
 TEST(PlantScene, DefaultsAreEightLayersAndSeedOne) {

@@ -7,36 +7,19 @@
 #include "reference_triangles.h"
 #include "scene_checks.h"
 #include "scenes/scene_library.h"
+#include "solid_checks.h"
 
 namespace vissort {
 namespace {
 
-using Triangle = std::array<Vec3, 3>;
+using test::rayHits;
+using test::Triangle;
+using test::triangleOf;
 
 Scene makeSlabs(const std::string& layers, const std::string& seed = "1") {
     Result<Scene> scene = samples::makeBuiltinScene("slabs", {{"layers", layers}, {"seed", seed}});
     EXPECT_TRUE(scene) << scene.error;
     return scene ? std::move(*scene.value) : Scene{};
-}
-
-Triangle triangleOf(const Scene& scene, std::size_t t) {
-    return {scene.positions.corner(3 * t), scene.positions.corner(3 * t + 1),
-            scene.positions.corner(3 * t + 2)};
-}
-
-// Moeller-Trumbore, both sides, hits at distance > 0.
-bool rayHits(const Vec3& o, const Vec3& d, const Triangle& t) {
-    const Vec3 e1 = t[1] - t[0], e2 = t[2] - t[0];
-    const Vec3 p = cross(d, e2);
-    const double det = dot(e1, p);
-    if (std::abs(det) < 1e-15)
-        return false;
-    const Vec3 s = o - t[0];
-    const double u = dot(s, p) / det;
-    const Vec3 q = cross(s, e1);
-    const double v = dot(d, q) / det;
-    const double distance = dot(e2, q) / det;
-    return u >= 0 && v >= 0 && u + v <= 1 && distance > 0;
 }
 
 TEST(SlabsScene, CountsAndObjects) {

@@ -55,6 +55,19 @@ Triangle triangleOf(const Scene& scene, std::size_t t) {
             scene.positions.corner(3 * t + 2)};
 }
 
+bool rayHits(const Vec3& o, const Vec3& d, const Triangle& t) {
+    const Vec3 e1 = t[1] - t[0], e2 = t[2] - t[0];
+    const Vec3 p = cross(d, e2);
+    const double det = dot(e1, p);
+    if (std::abs(det) < 1e-15)
+        return false;
+    const Vec3 s = o - t[0];
+    const double u = dot(s, p) / det;
+    const Vec3 q = cross(s, e1);
+    const double v = dot(d, q) / det;
+    return u >= 0 && v >= 0 && u + v <= 1 && dot(e2, q) / det > 0;
+}
+
 Bounds boundsOf(const Scene& scene, uint32_t first, uint32_t count) {
     Bounds bounds;
     for (uint32_t t = first; t < first + count; ++t)

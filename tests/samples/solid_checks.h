@@ -15,6 +15,8 @@ namespace vissort::test {
 using Triangle = std::array<Vec3, 3>;
 
 Triangle triangleOf(const Scene& scene, std::size_t triangle);
+/// Whether the ray from o along d hits t at a distance > 0, from either side (Moeller-Trumbore).
+bool rayHits(const Vec3& o, const Vec3& d, const Triangle& t);
 /// The bounds of triangles [first, first + count).
 Bounds boundsOf(const Scene& scene, uint32_t first, uint32_t count);
 /// Distance between boxes: a lower bound of the distance between anything inside them.

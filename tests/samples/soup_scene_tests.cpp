@@ -7,21 +7,18 @@
 #include "reference_triangles.h"
 #include "scene_checks.h"
 #include "scenes/scene_library.h"
+#include "solid_checks.h"
 
 namespace vissort {
 namespace {
 
-using Triangle = std::array<Vec3, 3>;
+using test::Triangle;
+using test::triangleOf;
 
 Scene makeSoup(const std::string& n, const std::string& seed = "1") {
     Result<Scene> scene = samples::makeBuiltinScene("soup", {{"n", n}, {"seed", seed}});
     EXPECT_TRUE(scene) << scene.error;
     return scene ? std::move(*scene.value) : Scene{};
-}
-
-Triangle triangleOf(const Scene& scene, std::size_t t) {
-    return {scene.positions.corner(3 * t), scene.positions.corner(3 * t + 1),
-            scene.positions.corner(3 * t + 2)};
 }
 
 double area(const Triangle& t) {
