@@ -72,4 +72,8 @@ in_root "python3 -m venv --system-site-packages .venv &&
   .venv/bin/pip install --no-build-isolation . &&
   cd / && /root/vissort/.venv/bin/python -c 'import vissort; print(vissort.__version__)'" ||
   fail "docs/python.md's pip install failed in the fresh root"
-say "both README commands and the pip install passed on a fresh Debian 12 ($root)"
+if [ -z "${VISSORT_FRESH_SKIP_TESTS:-}" ]; then
+  say "both README commands and the pip install passed on a fresh Debian 12 ($root)"
+else
+  say "the README's first command and the pip install passed on a fresh Debian 12 ($root; tests skipped)"
+fi
