@@ -11,6 +11,7 @@
 //
 // Layer: vissort::collide (the package's `collide` component; docs/architecture.md).
 
+#include <chrono>
 #include <compare>
 #include <cstdint>
 #include <memory>
@@ -159,6 +160,13 @@ private:
     uint64_t triangles_needed_ = 0; // one past the last triangle an object names
     std::unique_ptr<detail::Collider> collider_;
     TrianglePositions gathered_; // the corners of the last vertex-buffer frame
+
+    /// std::invalid_argument when positions are not three equal arrays of whole triangles, or
+    /// hold fewer triangles than the objects name.
+    void checkTriangleCount(PositionsView positions) const;
+    /// The frame at checked positions; total_ms counts from start.
+    void run(PositionsView positions, std::chrono::steady_clock::time_point start,
+             CollisionResult& result);
 };
 
 /// The triangles that take part in some pair, each once, ascending (for highlighting).

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -95,29 +96,42 @@ CollisionDetector::CollisionDetector(std::span<const PrimitiveRange> objects,
 CollisionDetector::~CollisionDetector() = default;
 
 void CollisionDetector::collide(PositionsView positions, CollisionResult& result) {
-    detail::StageClock clock;
+    const auto start = std::chrono::steady_clock::now();
+    checkTriangleCount(positions);
     // Cheap next to the frame, and what makes bad input an error instead of a wrong answer.
+    for (std::span<const float> axis : {positions.x, positions.y, positions.z})
+        for (float v : axis)
+            if (!std::isfinite(v))
+                throw std::invalid_argument("collision positions must be finite");
+    run(positions, start, result);
+}
+
+void CollisionDetector::collide(const VertexPositionsView& vertices, CollisionResult& result) {
+    const auto start = std::chrono::steady_clock::now();
+    // The gather refuses coordinates that are not finite, so they are not looked at again.
+    if (Status gathered = gatherPositions(vertices, gathered_); !gathered)
+        throw std::invalid_argument("collision vertex positions: " + gathered.error);
+    checkTriangleCount(gathered_.view());
+    run(gathered_.view(), start, result);
+}
+
+void CollisionDetector::checkTriangleCount(PositionsView positions) const {
     if (positions.y.size() != positions.x.size() || positions.z.size() != positions.x.size() ||
         positions.x.size() % 3 != 0 || positions.triangleCount() < triangles_needed_)
         throw std::invalid_argument(
             "collision positions hold " + std::to_string(positions.triangleCount()) +
             " triangles; the objects need " + std::to_string(triangles_needed_));
-    for (std::span<const float> axis : {positions.x, positions.y, positions.z})
-        for (float v : axis)
-            if (!std::isfinite(v))
-                throw std::invalid_argument("collision positions must be finite");
+}
+
+void CollisionDetector::run(PositionsView positions, std::chrono::steady_clock::time_point start,
+                            CollisionResult& result) {
     result.pairs.clear();
     result.stats = {};
     collider_->collide(positions, result);
     std::sort(result.pairs.begin(), result.pairs.end());
     result.stats.intersecting = result.pairs.size();
-    result.stats.total_ms = clock.lap();
-}
-
-void CollisionDetector::collide(const VertexPositionsView& vertices, CollisionResult& result) {
-    if (Status gathered = gatherPositions(vertices, gathered_); !gathered)
-        throw std::invalid_argument("collision vertex positions: " + gathered.error);
-    collide(gathered_.view(), result);
+    result.stats.total_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 CollisionResult CollisionDetector::collide(PositionsView positions) {
