@@ -1,5 +1,6 @@
 #include "arrays.h"
 
+#include <algorithm>
 #include <cmath>
 #include <span>
 #include <sstream>
@@ -32,54 +33,8 @@ py::array asArray(const py::handle& value, const std::string& what) {
     return a;
 }
 
-// Corner k of triangle t, as float32, into out's arrays; ValueError naming them when it is not
-// finite there.
-template <class T>
-void storeCorner(TrianglePositions& out, std::size_t t, int k, T x, T y, T z,
-                 const std::string& what) {
-    const float fx = float(x), fy = float(y), fz = float(z);
-    if (!std::isfinite(fx) || !std::isfinite(fy) || !std::isfinite(fz)) {
-        std::ostringstream text;
-        text << what << ": triangle " << t << ", corner " << k << " is not finite (" << fx << ", "
-             << fy << ", " << fz << ")";
-        throw py::value_error(text.str());
-    }
-    out.x[3 * t + k] = fx;
-    out.y[3 * t + k] = fy;
-    out.z[3 * t + k] = fz;
-}
-
-// Corners (T, 3, 3) of element type T into out, read where they are (any strides).
-template <class T>
-void readCorners(const py::array& a, TrianglePositions& out, const std::string& what) {
-    const auto corners = py::array_t<T>::ensure(a);
-    const auto c = corners.template unchecked<3>();
-    for (py::ssize_t t = 0; t < c.shape(0); ++t)
-        for (int k = 0; k < 3; ++k) {
-            storeCorner(out, std::size_t(t), k, c(t, k, 0), c(t, k, 1), c(t, k, 2), what);
-        }
-}
-
-// Vertices (V, 3) of element type T, picked by (T, 3) indices, into out.
-template <class T>
-void readIndexed(const py::array& a, const py::detail::unchecked_reference<int64_t, 2>& ix,
-                 TrianglePositions& out, const std::string& what) {
-    const auto vertices = py::array_t<T>::ensure(a);
-    const auto v = vertices.template unchecked<2>();
-    const int64_t count = v.shape(0);
-    for (py::ssize_t t = 0; t < ix.shape(0); ++t)
-        for (int k = 0; k < 3; ++k) {
-            const int64_t i = ix(t, k);
-            if (i < 0 || i >= count)
-                throw py::value_error("triangles: triangle " + std::to_string(t) +
-                                      " names vertex " + std::to_string(i) + ", outside 0.." +
-                                      std::to_string(count - 1) + " of " + what);
-            storeCorner(out, std::size_t(t), k, v(i, 0), v(i, 1), v(i, 2), what);
-        }
-}
-
 // float32 coordinates with x, y and z adjacent, at a row stride gatherPositions takes: the
-// library reads the array where it is (no copy in Python).
+// library reads such an array where it is.
 bool gatherable(const py::array& a) {
     const py::ssize_t row = a.strides(a.ndim() == 3 ? 1 : 0);
     return a.dtype().is(py::dtype::of<float>()) && a.strides(a.ndim() - 1) == sizeof(float) &&
@@ -87,10 +42,14 @@ bool gatherable(const py::array& a) {
            row <= 1024 && (a.ndim() == 2 || a.strides(0) == 3 * row);
 }
 
-// The array's corners gathered by the library (indices as they are when uint32 and contiguous);
-// its refusals as ValueErrors naming `what`.
-void gatherArray(const py::array& a, std::span<const uint32_t> indices, TrianglePositions& out,
-                 const std::string& what) {
+// The corners of a gatherable array, gathered by the library (the one reading of positions: its
+// checks and messages); its refusals as ValueErrors naming `what`.
+void gatherArray(const py::array& a, const py::array_t<uint32_t>& index_array, uint64_t count,
+                 TrianglePositions& out, const std::string& what) {
+    const std::span<const uint32_t> indices =
+        index_array.size() > 0
+            ? std::span<const uint32_t>(index_array.data(), std::size_t(3 * count))
+            : std::span<const uint32_t>();
     const py::ssize_t row = a.strides(a.ndim() == 3 ? 1 : 0);
     const std::size_t vertices = std::size_t(a.ndim() == 3 ? 3 * a.shape(0) : a.shape(0));
     const VertexPositionsView view{static_cast<const float*>(a.data()), vertices, std::size_t(row),
@@ -115,18 +74,15 @@ void readPositions(const py::handle& positions, const py::handle& triangles, Tri
     if (indexed && !(a.ndim() == 2 && a.shape(1) == 3))
         throw py::value_error("with triangles given, " + what +
                               " must have shape (V, 3) (vertices, xyz); got shape " + shapeText(a));
-    // float32 and float64 are read where they are; other float types (half, long double) are
-    // converted to float32 once.
     if (a.dtype().kind() != 'f')
         throw py::value_error(what +
                               " must hold floating-point coordinates (float32, or another "
                               "float type), got dtype " +
                               dtypeText(a));
-    const bool doubles = a.dtype().is(py::dtype::of<double>());
 
-    py::array_t<int64_t> indices;
-    py::array_t<uint32_t> indices32; // uint32 indices as they are (the library's index type)
-    bool as_uint32 = false;          // (a default array_t is an empty array, not a null one)
+    // Indices: uint32 in C order are the library's as they are; other integer types are checked
+    // for what uint32 cannot hold (negative, 2^32 and above) and converted once.
+    py::array_t<uint32_t> indices;
     if (indexed) {
         const py::array index_array = asArray(triangles, "triangles");
         if (!(index_array.ndim() == 2 && index_array.shape(1) == 3))
@@ -138,40 +94,46 @@ void readPositions(const py::handle& positions, const py::handle& triangles, Tri
                                   dtypeText(index_array));
         if (index_array.dtype().is(py::dtype::of<uint32_t>()) &&
             (index_array.flags() & py::array::c_style)) {
-            indices32 = py::array_t<uint32_t>::ensure(index_array);
-            as_uint32 = true;
+            indices = py::array_t<uint32_t>::ensure(index_array);
         } else {
-            indices = py::array_t<int64_t>::ensure(index_array);
-            if (!indices)
+            const auto wide = py::array_t<int64_t>::ensure(index_array);
+            if (!wide)
                 throw py::value_error("triangles: indices do not fit 64 bits");
+            const auto ix = wide.unchecked<2>();
+            indices = py::array_t<uint32_t>({ix.shape(0), py::ssize_t(3)});
+            uint32_t* narrow = indices.mutable_data();
+            for (py::ssize_t t = 0; t < ix.shape(0); ++t)
+                for (int k = 0; k < 3; ++k) {
+                    const int64_t v = ix(t, k);
+                    if (v < 0 || v > int64_t(UINT32_MAX))
+                        throw py::value_error("triangles: triangle " + std::to_string(t) +
+                                              " names vertex " + std::to_string(v) +
+                                              ", outside 0.." + std::to_string(a.shape(0) - 1) +
+                                              " of " + what);
+                    narrow[3 * t + k] = uint32_t(v);
+                }
         }
     }
     const std::string counted = indexed ? "triangles" : what;
-    const uint64_t count = uint64_t(!indexed    ? a.shape(0)
-                                    : as_uint32 ? indices32.shape(0)
-                                                : indices.shape(0));
+    const uint64_t count = uint64_t(indexed ? indices.shape(0) : a.shape(0));
     if (count == 0)
         throw py::value_error(counted + ": no triangles (an empty array)");
     if (count > kMaxTriangles)
         throw py::value_error(counted + ": " + std::to_string(count) +
                               " triangles, more than the " + std::to_string(kMaxTriangles) +
                               " that 32-bit corner indices address");
-    if (gatherable(a) && (!indexed || as_uint32)) {
-        gatherArray(a,
-                    indexed ? std::span<const uint32_t>(indices32.data(), std::size_t(3 * count))
-                            : std::span<const uint32_t>(),
-                    out, what);
+    if (gatherable(a)) {
+        gatherArray(a, indices, count, out, what);
         return;
     }
-    out.resize(count);
-    if (!indexed) {
-        doubles ? readCorners<double>(a, out, what) : readCorners<float>(a, out, what);
-        return;
-    }
-    if (as_uint32) // uint32 indices of float64 (or strided) vertices
-        indices = py::array_t<int64_t>::ensure(indices32);
-    const auto ix = indices.unchecked<2>();
-    doubles ? readIndexed<double>(a, ix, out, what) : readIndexed<float>(a, ix, out, what);
+    // Other layouts and float types (float64, half, long double): a C-ordered float32 copy first,
+    // rounded as float(double) rounds (a value beyond float32's range becomes infinite, which the
+    // gather refuses; numpy's own cast would also warn).
+    const auto wide = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+    py::array_t<float> narrow(std::vector<py::ssize_t>(a.shape(), a.shape() + a.ndim()));
+    std::transform(wide.data(), wide.data() + wide.size(), narrow.mutable_data(),
+                   [](double v) { return float(v); });
+    gatherArray(narrow, indices, count, out, what);
 }
 
 std::vector<PrimitiveRange> readObjects(const py::handle& objects, uint32_t triangle_count) {

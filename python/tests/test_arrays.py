@@ -46,11 +46,13 @@ def test_strides_dtypes_and_indexed_vertices_give_the_same_order():
 
 def test_float32_vertex_buffers_are_read_where_they_are():
     """float32 vertices with x, y, z adjacent and uint32 indices go to the library's gather
-    (vertex_positions.h) as they are: packed, interleaved with normals, or as corners."""
+    (vertex_positions.h) as they are: packed, interleaved with normals, or as corners. Each
+    layout must order as the same corners written out plainly, triangle by triangle."""
     corners = overlapping_triangles()
-    expected = order_of(corners.astype(np.float64))  # the module's own reading
+    expected = order_of(corners)
     vertices = corners.reshape(-1, 3)[::-1].copy()
     indices = (len(vertices) - 1 - np.arange(len(vertices))).reshape(-1, 3).astype(np.uint32)
+    assert np.array_equal(vertices[indices], corners)  # numpy's gather: the same corners
     assert order_of(vertices, triangles=indices) == expected
     # Interleaved: position then a normal, the positions a view with a 24-byte row stride; the
     # normals are NaN, so reading them would be an error.
