@@ -18,7 +18,11 @@ tests=()
 timeout=600
 if [ "${1:-}" = "--sanitize" ]; then
   build_dir=build-sanitize
-  flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DVISSORT_SANITIZE=ON)
+  # Line tables only (-g1): the sanitizers' reports still name files and lines, and the build
+  # links far less debug information. No Google Benchmarks: they measure, the suite checks.
+  flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DVISSORT_SANITIZE=ON
+         "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG")
+  benchmarks=OFF
   # The slowest tests of the release suite (six times as long here) run there only: smaller
   # tests of the same code (the oracle passes on small viewports, collide on a few frames, bench
   # oracle with one GL frame, the every-frame check on the bunnies and the property scenes, the
@@ -31,11 +35,12 @@ elif [ "${1:-}" = "--tsan" ]; then
   build_dir=build-tsan
   flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DVISSORT_TSAN=ON)
   targets=(--target raster_tests collide_tests)
-  tests=(-R "CpuOracle|CollisionThreads")
-  # CpuOracle.SpotMeshBothProjections takes about 530 s alone under ThreadSanitizer (19 s
+  # CpuOracle.SpotMeshBothProjections takes about 300 to 530 s alone under ThreadSanitizer (19 s
   # in the release build; its 640x480 queries of the whole mesh against itself arbitrate at
-  # every pixel), so beside another test under ctest -j2 it passed 600 s once.
-  timeout=1200
+  # every pixel): the same banded passes run in the other CpuOracle tests at 1, 2 and 3 threads,
+  # so it runs in the release suite only, as under the other sanitizers.
+  tests=(-R "CpuOracle|CollisionThreads" -E "CpuOracle.SpotMeshBothProjections")
+  timeout=600
 elif [ "${1:-}" = "--no-gl" ]; then
   build_dir=build-nogl
   flags=(-DCMAKE_BUILD_TYPE=Release -DVISSORT_WITH_GL=OFF)

@@ -2,7 +2,9 @@
 `vissort order --json` (its per-frame orderFrame time) and by vissort.Orderer from Python: the
 whole call (with time=t: the scene's deformed frame, which the command line computes outside
 its timing; with an array: reading the corners), the orderFrame inside it (stats["ms"]), and
-the difference, the binding's own cost. Runs alternated, medians over the coherent frames (the
+the difference, the binding's own cost. Arrays are passed as the scene gives them (float32) and
+as float64, which the module first copies to float32 before the gather reads it (the cost of
+that second copy is the difference between the two rows). Runs alternated, medians over the coherent frames (the
 first frame of each run left out); the orders must equal the command line's.
 
   PYTHONPATH=build/python python3 bench/python/order_overhead.py build/vissort [runs]
@@ -54,11 +56,13 @@ def main():
     scene = vissort.load(SCENE)
     arrays = [scene.frame(f / 30) for f in range(FRAMES)]
     cli_ms = []
-    calls = {"time": ([], []), "array": ([], [])}  # whole calls, and orderFrame inside them
+    arrays64 = [a.astype("float64") for a in arrays]
+    # whole calls, and orderFrame inside them
+    calls = {"time": ([], []), "array": ([], []), "array64": ([], [])}
     for _ in range(runs):
         ms, cli_orders = cli_run(cli)
         cli_ms += ms
-        for name, source in (("time", None), ("array", arrays)):
+        for name, source in (("time", None), ("array", arrays), ("array64", arrays64)):
             whole, inside, orders = python_run(scene, source)
             calls[name][0].extend(whole)
             calls[name][1].extend(inside)
@@ -68,7 +72,8 @@ def main():
           "medians of the coherent frames; orders identical to the command line's")
     print(f"  vissort order: orderFrame                  {base:8.2f} ms")
     for name, label in (("time", "Orderer.order(time=t)"),
-                        ("array", "Orderer.order(numpy (T, 3, 3))")):
+                        ("array", "Orderer.order(float32 (T, 3, 3))"),
+                        ("array64", "Orderer.order(float64 (T, 3, 3))")):
         whole, inside = calls[name]
         call, order = statistics.median(whole), statistics.median(inside)
         overhead = statistics.median(w - i for w, i in zip(whole, inside))

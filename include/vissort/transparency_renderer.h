@@ -169,6 +169,18 @@ struct RenderStats {
     VisSortStats order;           // vissort: the ordering's statistics
 };
 
+/// Every field of RenderStats but `order` (whose own table is vis_sort.h's) by name, in one
+/// list: the command line's JSON and CSV and the Python module's dicts are written from it.
+template <class Visit> void forEachStat(const RenderStats& s, Visit&& visit) {
+    visit("order_ms", s.order_ms);
+    visit("render_ms", s.render_ms);
+    visit("total_ms", s.total_ms);
+    visit("passes", s.passes);
+    visit("fragments", s.fragments);
+    visit("groups", s.groups);
+    visit("repaired_pixels", s.repaired_pixels);
+}
+
 class TransparencyRenderer {
 public:
     /// A renderer of scene through context. Throws std::invalid_argument for bad settings (alpha

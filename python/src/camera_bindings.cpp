@@ -1,16 +1,32 @@
 // vissort.Camera: perspective and orthographic cameras with the command line's conventions
 // (--eye/--target/--up/--fov and --ortho-dir).
 
+#include <tuple>
+
 #include <pybind11/stl.h>
 
 #include "arrays.h"
 #include "bindings.h"
 #include "python_camera.h"
+#include "vissort/view_choice.h"
 
 namespace vissort::python {
 
-PythonCamera defaultCameraOf(const Scene& scene, double aspect, int frames) {
-    return {scene.camera ? *scene.camera : framingCameraOf(scene, aspect, frames), std::nullopt};
+PythonCamera cameraOfScene(const Scene& scene, const ViewDef& def) {
+    Result<ChosenView> chosen = chooseView(def, scene);
+    if (!chosen)
+        throw py::value_error(chosen.error);
+    // Framing each call's positions, as the command line frames each frame's.
+    return {chosen.value->camera, std::nullopt};
+}
+
+PythonCamera defaultCameraOf(const Scene& scene, uint32_t width, uint32_t height, int frames) {
+    ViewDef def;
+    def.width = width;
+    def.height = height;
+    def.frames = frames;
+    def.names = OptionNames::python;
+    return cameraOfScene(scene, def);
 }
 
 ViewProjection viewOf(const PythonCamera& camera, PositionsView positions, uint32_t width,
@@ -30,7 +46,7 @@ PythonCamera CameraChoice::choose(const py::handle& camera, const std::shared_pt
     if (!scene)
         return {framingCamera(positions, double(width) / height), std::nullopt};
     if (scene != scene_ || std::pair(width, height) != size_) {
-        camera_ = defaultCameraOf(*scene, double(width) / height);
+        camera_ = defaultCameraOf(*scene, width, height);
         scene_ = scene;
         size_ = {width, height};
     }
@@ -96,13 +112,52 @@ void bindCamera(py::module_& m) {
             "default",
             [](const Scene& scene, const py::handle& size, int frames) {
                 const auto [width, height] = readSize(size);
-                if (frames < 1)
-                    throw py::value_error("frames must be at least 1");
-                return defaultCameraOf(scene, double(width) / height, frames);
+                return defaultCameraOf(scene, width, height, frames);
             },
             py::arg("scene"), py::arg("size") = py::make_tuple(1024, 1024), py::arg("frames") = 1,
             "The command line's camera when none is given: the scene's own, else its geometry "
             "framed for an image of that size (a dynamic scene over max(frames, 300) frames)")
+        .def_static(
+            "of_scene",
+            [](const Scene& scene, const py::object& camera, const py::object& eye,
+               const py::object& target, const py::object& up, std::optional<double> fov_deg,
+               const py::object& ortho_dir, std::optional<double> azimuth,
+               std::optional<double> elevation, std::optional<double> distance,
+               const py::handle& size, int frames) {
+                ViewDef def;
+                def.names = OptionNames::python;
+                std::tie(def.width, def.height) = readSize(size);
+                def.frames = frames;
+                const std::pair<const py::object*, std::optional<Vec3>*> vectors[] = {
+                    {&eye, &def.eye},
+                    {&target, &def.target},
+                    {&up, &def.up},
+                    {&ortho_dir, &def.ortho_direction}};
+                const char* names[] = {"eye", "target", "up", "ortho_dir"};
+                for (std::size_t i = 0; i < std::size(vectors); ++i)
+                    if (!vectors[i].first->is_none())
+                        *vectors[i].second = readVec3(*vectors[i].first, names[i]);
+                if (!camera.is_none()) {
+                    if (!py::isinstance<py::str>(camera) && !py::isinstance<py::int_>(camera))
+                        throw py::value_error("camera must be a stored camera's name or index");
+                    def.stored_camera = py::str(camera);
+                }
+                def.fov_degrees = fov_deg;
+                def.azimuth_degrees = azimuth;
+                def.elevation_degrees = elevation;
+                def.distance = distance;
+                return cameraOfScene(scene, def);
+            },
+            py::arg("scene"), py::kw_only(), py::arg("camera") = py::none(),
+            py::arg("eye") = py::none(), py::arg("target") = py::none(), py::arg("up") = py::none(),
+            py::arg("fov_deg") = py::none(), py::arg("ortho_dir") = py::none(),
+            py::arg("azimuth") = py::none(), py::arg("elevation") = py::none(),
+            py::arg("distance") = py::none(), py::arg("size") = py::make_tuple(1024, 1024),
+            py::arg("frames") = 1,
+            "The camera the command line chooses for these options (--camera, --eye, --target, "
+            "--up, --fov, --ortho-dir, --azimuth, --elevation, --distance, --size, --frames): "
+            "the same policy and the same errors, named as these keywords. camera: a camera "
+            "the file stores, by name or index (Scene.cameras)")
         .def_property_readonly("projection",
                                [](const PythonCamera& c) {
                                    return c.spec.projection == Projection::perspective

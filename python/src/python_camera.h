@@ -20,10 +20,10 @@ struct PythonCamera {
     std::optional<Bounds> framed_bounds;
 };
 
-/// The camera the command line uses when none is asked for: the scene's own (a mesh file's
-/// first usable camera), else its geometry framed for that aspect ratio (width / height) over
-/// `frames` frames (framingCameraOf).
-PythonCamera defaultCameraOf(const Scene& scene, double aspect, int frames = 1);
+/// The camera the command line uses when none is asked for (chooseView with nothing asked):
+/// the scene's own (a mesh file's first usable camera), else its geometry framed for a width x
+/// height image over `frames` frames. ValueError for frames out of range.
+PythonCamera defaultCameraOf(const Scene& scene, uint32_t width, uint32_t height, int frames = 1);
 
 /// The camera a call uses: `camera` (a vissort.Camera; ValueError for anything else but None),
 /// else the scene's default camera (kept for the next call of the same scene and size: a

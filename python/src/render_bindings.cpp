@@ -14,18 +14,20 @@
 #include "stats_dict.h"
 
 #if VISSORT_WITH_GL
-#include "vissort/transparency_renderer.h"
+#include "vissort/frame_pipeline.h"
 #endif
 
 namespace vissort::python {
 namespace {
 
 #if VISSORT_WITH_GL
-RenderSettings settingsOf(const std::string& method, const std::string& level,
-                          const std::string& oracle, bool all_transparent, double alpha,
-                          const std::string& shading, int samples, const std::string& check,
-                          const py::handle& background) {
-    RenderSettings settings;
+FramePipelineDef pipelineDefOf(const std::string& method, const std::string& level,
+                               const std::string& oracle, bool all_transparent, double alpha,
+                               const std::string& shading, int samples, const std::string& check,
+                               const py::handle& background, bool highlight_collisions) {
+    FramePipelineDef def;
+    def.highlight_collisions = highlight_collisions;
+    RenderSettings& settings = def.settings;
     const Result<BlendMethod> parsed_method = parseBlendMethod(method);
     if (!parsed_method)
         throw py::value_error(parsed_method.error);
@@ -60,35 +62,34 @@ RenderSettings settingsOf(const std::string& method, const std::string& level,
             throw py::value_error("background must be (r, g, b) or (r, g, b, a), each in [0, 1]");
     settings.background = {float(c(0)), float(c(1)), float(c(2)),
                            colour.shape(0) == 4 ? float(c(3)) : 1.0f};
-    return settings;
+    return def;
 }
 
-py::dict statsDict(const RenderStats& stats) {
+// The frame's statistics (the same table as the command line's) and the ordering's counts,
+// as Orderer.order's stats; with highlights, the collisions'.
+py::dict statsDict(const PipelineFrame& frame, bool highlighting) {
     py::dict d;
-    d["order_ms"] = stats.order_ms;
-    d["render_ms"] = stats.render_ms;
-    d["total_ms"] = stats.total_ms;
-    d["passes"] = stats.passes;
-    d["fragments"] = stats.fragments;
-    d["groups"] = stats.groups;
-    d["repaired_pixels"] = stats.repaired_pixels;
-    addStats(d, stats.order); // the ordering's counts, as Orderer.order's stats
+    addStats(d, frame.stats);
+    addStats(d, frame.stats.order);
+    if (highlighting) {
+        d["colliding_pairs"] = frame.colliding_pairs;
+        d["colliding_triangles"] = frame.colliding_triangles;
+        d["collision_ms"] = frame.collision_ms;
+    }
     return d;
 }
 
-// A TransparencyRenderer of one scene: successive frames reuse the last order (coherence).
+// A FramePipeline of one scene: successive frames reuse the last order (coherence).
 class Renderer {
 public:
-    Renderer(std::shared_ptr<Scene> scene, const RenderSettings& settings)
-        : scene_(std::move(scene)) {
+    Renderer(std::shared_ptr<Scene> scene, const FramePipelineDef& def) : scene_(std::move(scene)) {
         Result<std::shared_ptr<GlContext>> context;
         {
             py::gil_scoped_release unlocked;
             context = sharedGlContext();
             if (context) {
                 GlTurn turn(*context.value);
-                renderer_ =
-                    std::make_unique<TransparencyRenderer>(*context.value, *scene_, settings);
+                renderer_ = std::make_unique<FramePipeline>(*context.value, *scene_, def);
             }
         }
         if (!context)
@@ -110,16 +111,14 @@ public:
         const PositionsView frame =
             readFrame(positions, triangles, time, scene_, buffer_, used_scene);
         const PythonCamera used_camera = cameras_.choose(camera, scene_, frame, width, height);
-        std::vector<uint8_t> pixels;
-        RenderStats stats;
+        PipelineFrame rendered;
         {
             py::gil_scoped_release unlocked;
             GlTurn turn(context_);
-            pixels = renderer_->render(frame, viewOf(used_camera, frame, width, height), stats)
-                         .toRgba8();
+            renderer_->render(frame, viewOf(used_camera, frame, width, height), rendered);
         }
-        stats_ = statsDict(stats);
-        return toArray(std::move(pixels))
+        stats_ = statsDict(rendered, renderer_->def().highlight_collisions);
+        return toArray(std::move(rendered.rgba))
             .reshape(std::vector<py::ssize_t>{py::ssize_t(height), py::ssize_t(width), 4});
     }
 
@@ -128,7 +127,7 @@ public:
 private:
     std::shared_ptr<Scene> scene_; // kept alive while the renderer is
     std::shared_ptr<GlContext> context_;
-    std::unique_ptr<TransparencyRenderer> renderer_;
+    std::unique_ptr<FramePipeline> renderer_;
     TrianglePositions buffer_;
     CameraChoice cameras_;
     py::dict stats_;
@@ -146,7 +145,9 @@ constexpr const char* kSettingsDoc =
     "oracle: vissort's ordering (centroid's unit). all_transparent with alpha: every object "
     "transparent. shading: lit, flat or membrane. samples: 1, 2, 4 or 8 a pixel, averaged "
     "(anti-aliasing). check: auto, on or off (vissort's per-pixel check and repair). "
-    "background: (r, g, b[, a]) in [0, 1]. As the command line's render options.";
+    "background: (r, g, b[, a]) in [0, 1]. highlight_collisions: the triangles that intersect "
+    "another object's in magenta, each frame (stats then count the collisions). As the command "
+    "line's render options.";
 
 } // namespace
 
@@ -155,12 +156,13 @@ void bindRender(py::module_& m) {
     const auto make = [](const std::shared_ptr<Scene>& scene, const std::string& method,
                          const std::string& level, const std::string& oracle, bool all_transparent,
                          double alpha, const std::string& shading, int samples,
-                         const std::string& check, const py::object& background) {
+                         const std::string& check, const py::object& background,
+                         bool highlight_collisions) {
         if (!scene)
             throw py::value_error("render needs a Scene (vissort.load or vissort.builtin)");
-        return std::make_unique<Renderer>(scene,
-                                          settingsOf(method, level, oracle, all_transparent, alpha,
-                                                     shading, samples, check, background));
+        return std::make_unique<Renderer>(
+            scene, pipelineDefOf(method, level, oracle, all_transparent, alpha, shading, samples,
+                                 check, background, highlight_collisions));
     };
     py::class_<Renderer>(m, "Renderer",
                          "Renders frames of one scene with transparency; each frame starts "
@@ -169,7 +171,8 @@ void bindRender(py::module_& m) {
              py::arg("level") = "object", py::arg("oracle") = "cpu",
              py::arg("all_transparent") = false, py::arg("alpha") = 0.5, py::arg("shading") = "lit",
              py::arg("samples") = 1, py::arg("check") = "auto",
-             py::arg("background") = py::make_tuple(1.0, 1.0, 1.0, 1.0), kSettingsDoc)
+             py::arg("background") = py::make_tuple(1.0, 1.0, 1.0, 1.0),
+             py::arg("highlight_collisions") = false, kSettingsDoc)
         .def("render", &Renderer::render, py::arg("camera") = py::none(),
              py::arg("size") = py::make_tuple(1024, 1024), py::kw_only(),
              py::arg("time") = py::none(), py::arg("positions") = py::none(),
@@ -184,10 +187,10 @@ void bindRender(py::module_& m) {
                const py::object& size, const std::string& method, const std::string& level,
                const std::string& oracle, bool all_transparent, double alpha,
                const std::string& shading, int samples, const std::string& check,
-               const py::object& background, const py::object& time, const py::object& positions,
-               const py::object& triangles) {
+               const py::object& background, bool highlight_collisions, const py::object& time,
+               const py::object& positions, const py::object& triangles) {
             auto renderer = make(scene, method, level, oracle, all_transparent, alpha, shading,
-                                 samples, check, background);
+                                 samples, check, background, highlight_collisions);
             return renderer->render(camera, size, time, positions, triangles);
         },
         py::arg("scene"), py::arg("camera") = py::none(),
@@ -195,8 +198,8 @@ void bindRender(py::module_& m) {
         py::arg("level") = "object", py::arg("oracle") = "cpu", py::arg("all_transparent") = false,
         py::arg("alpha") = 0.5, py::arg("shading") = "lit", py::arg("samples") = 1,
         py::arg("check") = "auto", py::arg("background") = py::make_tuple(1.0, 1.0, 1.0, 1.0),
-        py::arg("time") = py::none(), py::arg("positions") = py::none(),
-        py::arg("triangles") = py::none(),
+        py::arg("highlight_collisions") = false, py::arg("time") = py::none(),
+        py::arg("positions") = py::none(), py::arg("triangles") = py::none(),
         ("One frame as an (H, W, 4) uint8 RGBA image (Renderer renders many). " +
          std::string(kSettingsDoc))
             .c_str());

@@ -5,6 +5,8 @@ import numpy as np
 import pytest
 from PIL import Image
 
+from conftest import source_file
+
 import vissort
 
 
@@ -83,3 +85,42 @@ def test_background_fills_empty_pixels():
     assert image[0, 0].tolist() == [0, 0, 255, 255]
     with pytest.raises(ValueError, match="background"):
         vissort.render(scene, size=(8, 8), background=(2, 0, 0))
+
+
+def test_camera_of_scene_is_the_cli_camera(cli, tmp_path):
+    # The command line's camera policy, by the same options: the same picture.
+    scene = vissort.builtin("bunnies", n=4, seed=2)
+    camera = vissort.Camera.of_scene(scene, azimuth=120, elevation=-15, size=(80, 60))
+    image = vissort.render(scene, camera, (80, 60))
+    expected = cli_image(cli, tmp_path, "builtin:bunnies?n=4&seed=2", "--size", "80x60",
+                         "--azimuth", "120", "--elevation", "-15")
+    np.testing.assert_array_equal(image, expected)
+    # Nothing asked is the default camera.
+    default = vissort.Camera.default(scene, size=(80, 60))
+    assert vissort.Camera.of_scene(scene, size=(80, 60)).eye == default.eye
+
+
+def test_camera_of_scene_names_its_keywords_in_errors():
+    scene = vissort.builtin("bunnies", n=2)
+    with pytest.raises(ValueError, match="ortho_dir cannot be combined with eye, target, up "
+                                         "or fov_deg"):
+        vissort.Camera.of_scene(scene, ortho_dir=(0, 0, -1), fov_deg=30)
+    with pytest.raises(ValueError, match="azimuth, elevation and distance place the eye"):
+        vissort.Camera.of_scene(scene, azimuth=10, eye=(0, 0, 5))
+    with pytest.raises(ValueError, match="frames must be between 1 and 100000"):
+        vissort.Camera.of_scene(scene, frames=0)
+
+
+def test_highlighted_collisions_equal_the_cli(cli, tmp_path):
+    path = source_file("tests/data/scenes/crossed_bars.json")
+    scene = vissort.load(path)
+    renderer = vissort.Renderer(scene, highlight_collisions=True)
+    image = renderer.render(size=(96, 72))
+    expected = cli_image(cli, tmp_path, path, "--size", "96x72", "--highlight-collisions")
+    np.testing.assert_array_equal(image, expected)
+    stats = renderer.stats
+    assert stats["colliding_pairs"] > 0 and stats["colliding_triangles"] > 0
+    # The highlight shows: without it, another picture, and no collision counts.
+    plain = vissort.Renderer(scene)
+    assert np.abs(plain.render(size=(96, 72)).astype(int) - image.astype(int)).max() > 1
+    assert "colliding_pairs" not in plain.stats

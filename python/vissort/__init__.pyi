@@ -95,6 +95,10 @@ _RenderStats = TypedDict(
         "cycle_queries": int,
         "cycle_draws": int,
         "hinted_cycles": int,
+        # With highlight_collisions only.
+        "colliding_pairs": int,
+        "colliding_triangles": int,
+        "collision_ms": float,
     },
     total=False,
 )
@@ -205,7 +209,28 @@ class Camera:
     @staticmethod
     def default(scene: Scene, size: _Size = (1024, 1024), frames: int = 1) -> Camera:
         """The command line's camera when none is given: the scene's own, else its geometry
-        framed for an image of that size (a dynamic scene over max(frames, 300) frames)."""
+        framed for an image of that size (a dynamic scene over max(frames, 300) frames).
+        ValueError for frames outside 1 to 100000."""
+    @staticmethod
+    def of_scene(
+        scene: Scene,
+        *,
+        camera: Union[str, int, None] = None,
+        eye: Optional[_Vec3] = None,
+        target: Optional[_Vec3] = None,
+        up: Optional[_Vec3] = None,
+        fov_deg: Optional[float] = None,
+        ortho_dir: Optional[_Vec3] = None,
+        azimuth: Optional[float] = None,
+        elevation: Optional[float] = None,
+        distance: Optional[float] = None,
+        size: _Size = (1024, 1024),
+        frames: int = 1,
+    ) -> Camera:
+        """The camera the command line chooses for these options (--camera, --eye, --target,
+        --up, --fov, --ortho-dir, --azimuth, --elevation, --distance, --size, --frames): the
+        same policy and the same errors (ValueError), named as these keywords. camera: a
+        camera the file stores, by name or index (Scene.cameras)."""
     @property
     def projection(self) -> Literal["perspective", "orthographic"]: ...
     @property
@@ -311,12 +336,15 @@ class Renderer:
         samples: _Samples = 1,
         check: _Check = "auto",
         background: npt.ArrayLike = (1.0, 1.0, 1.0, 1.0),
+        highlight_collisions: bool = False,
     ) -> None:
         """method: vissort, unsorted, centroid, peel, dual-peel, linked-list or weighted. level
         and oracle: vissort's ordering (centroid's unit). all_transparent with alpha: every
         object transparent. shading: lit, flat or membrane. samples: 1, 2, 4 or 8 a pixel,
-        averaged (anti-aliasing). check: auto, on or off (vissort's per-pixel check and repair). background: (r, g, b[, a]) in [0, 1]. As the command line's render
-        options."""
+        averaged (anti-aliasing). check: auto, on or off (vissort's per-pixel check and repair).
+        background: (r, g, b[, a]) in [0, 1]. highlight_collisions: the triangles that
+        intersect another object's in magenta, each frame (stats then count the collisions).
+        As the command line's render options."""
     def render(
         self,
         camera: Optional[Camera] = None,
@@ -348,6 +376,7 @@ def render(
     samples: _Samples = 1,
     check: _Check = "auto",
     background: npt.ArrayLike = (1.0, 1.0, 1.0, 1.0),
+    highlight_collisions: bool = False,
     time: Optional[_Seconds] = None,
     positions: Optional[npt.ArrayLike] = None,
     triangles: Optional[npt.ArrayLike] = None,

@@ -9,7 +9,7 @@
 #include "cli/bench_common.h"
 #include "cli/commands.h"
 #include "cli/json_output.h"
-#include "cli/line_plot.h"
+#include "figures/line_plot.h"
 #include "harnesses/collision_bench.h"
 #include "harnesses/measurement.h"
 #if VISSORT_WITH_GL
@@ -40,7 +40,7 @@ int runCollisionBench(const BenchOptions& options) {
               << std::setw(13) << "intersecting" << std::setw(8) << "missed" << std::setw(10)
               << "invented" << '\n';
     nlohmann::json rows = nlohmann::json::array();
-    std::vector<PlotSeries> series(methods.size());
+    std::vector<samples::PlotSeries> series(methods.size());
     for (std::size_t i = 0; i < methods.size(); ++i)
         series[i].name = methods[i].name;
     std::size_t method_index = 0;
@@ -63,7 +63,7 @@ int runCollisionBench(const BenchOptions& options) {
                             {"intersecting", m.intersecting},
                             {"missed", m.missed},
                             {"invented", m.invented}});
-            PlotSeries& line = series[method_index++ % methods.size()];
+            samples::PlotSeries& line = series[method_index++ % methods.size()];
             line.x.push_back(m.bunnies);
             line.y.push_back(m.median_ms);
         });
@@ -81,7 +81,7 @@ int runCollisionBench(const BenchOptions& options) {
         return fail(kExitFailure, "--plot: this vissort was built without OpenGL "
                                   "(VISSORT_WITH_GL=OFF) and writes no PNG");
 #else
-        const Strip plot = plotLines(
+        const samples::Strip plot = samples::plotLines(
             series, "collision: ms per frame, deforming bunnies (" + bench::machineName() + ")",
             "bunnies N (builtin:bunnies?n=N)", "ms per frame", 900, 560);
         if (Status error = writeImage(options.plot_path, plot.width, plot.height, plot.rgba);

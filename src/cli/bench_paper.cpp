@@ -16,8 +16,8 @@
 
 #include "cli/commands.h"
 #include "cli/json_output.h"
-#include "cli/line_plot.h"
 #include "cli/progress.h"
+#include "figures/line_plot.h"
 #include "harnesses/measurement.h"
 #include "harnesses/paper_bench.h"
 #include "vissort/image.h"
@@ -120,8 +120,9 @@ std::string pathsCsv(const std::vector<PaperPath>& paths) {
 
 // A series of a per-frame value, frames without it (or with a value a log axis cannot show) left
 // out.
-PlotSeries frameSeries(const std::string& name, const PaperPath& path, PaperMetric metric) {
-    PlotSeries series{name, {}, {}};
+samples::PlotSeries frameSeries(const std::string& name, const PaperPath& path,
+                                PaperMetric metric) {
+    samples::PlotSeries series{name, {}, {}};
     for (const PaperFrame& frame : path.frames)
         if (const std::optional<double> value = bench::metricOf(frame, metric);
             value && *value > 0) {
@@ -132,7 +133,7 @@ PlotSeries frameSeries(const std::string& name, const PaperPath& path, PaperMetr
 }
 
 // The paper's reported frame times as flat lines across the frames.
-void addReported(std::vector<PlotSeries>& series, const PaperPath& path) {
+void addReported(std::vector<samples::PlotSeries>& series, const PaperPath& path) {
     const double last = path.frames.empty() ? 1 : path.frames.back().frame;
     for (const bench::PaperReported& r : path.reported) {
         std::vector<double> levels = {r.low_ms};
@@ -146,12 +147,12 @@ void addReported(std::vector<PlotSeries>& series, const PaperPath& path) {
     }
 }
 
-Status writePlot(const std::filesystem::path& file, std::vector<PlotSeries> series,
+Status writePlot(const std::filesystem::path& file, std::vector<samples::PlotSeries> series,
                  const std::string& title, const std::string& x_label, const std::string& y_label) {
-    std::erase_if(series, [](const PlotSeries& s) { return s.x.empty(); });
+    std::erase_if(series, [](const samples::PlotSeries& s) { return s.x.empty(); });
     if (series.empty())
         return {};
-    const Strip plot = plotLines(series, title, x_label, y_label, 1000, 600);
+    const samples::Strip plot = samples::plotLines(series, title, x_label, y_label, 1000, 600);
     return writePng(file.string(), plot.width, plot.height, plot.rgba);
 }
 
@@ -159,9 +160,10 @@ Status writePlots(const std::filesystem::path& out, const bench::PaperBenchResul
     const std::string machine = " (" + bench::machineName() + ")";
     const PaperPath& plant = result.paths[0];
     using enum PaperMetric;
-    std::vector<PlotSeries> plant_ms = {frameSeries("ordering, cpu oracle", plant, cpu_order_ms),
-                                        frameSeries("ordering, gl oracle", plant, gl_order_ms),
-                                        frameSeries("frame with transparency", plant, render_ms)};
+    std::vector<samples::PlotSeries> plant_ms = {
+        frameSeries("ordering, cpu oracle", plant, cpu_order_ms),
+        frameSeries("ordering, gl oracle", plant, gl_order_ms),
+        frameSeries("frame with transparency", plant, render_ms)};
     addReported(plant_ms, plant);
     const std::string plant_what = "figure 5 (left): " + plant.specification + " walkthrough, " +
                                    std::to_string(plant.width) + "x" + std::to_string(plant.height);
@@ -177,7 +179,7 @@ Status writePlots(const std::filesystem::path& out, const bench::PaperBenchResul
             plant_what, "frame", "occlusion queries per frame");
         !s)
         return s;
-    std::vector<PlotSeries> bunnies_ms, bunnies_queries;
+    std::vector<samples::PlotSeries> bunnies_ms, bunnies_queries;
     for (std::size_t i = 1; i < result.paths.size(); ++i) {
         const PaperPath& path = result.paths[i];
         const std::string viewer = path.path == CameraPath::fixed ? "static" : "moving";
@@ -200,14 +202,14 @@ Status writePlots(const std::filesystem::path& out, const bench::PaperBenchResul
         !s)
         return s;
 #if VISSORT_WITH_GL
-    std::vector<PlotSeries> figure6;
+    std::vector<samples::PlotSeries> figure6;
     for (const char* family : {"slabs", "plant"})
         for (const std::size_t m : {bench::kTransparencyVissort, bench::kTransparencyPeel,
                                     bench::kTransparencyDualPeel, bench::kTransparencyLinkedList}) {
-            PlotSeries series{std::string(family) + ": " +
-                                  blendMethodName(bench::kTransparencyMethods[m]),
-                              {},
-                              {}};
+            samples::PlotSeries series{std::string(family) + ": " +
+                                           blendMethodName(bench::kTransparencyMethods[m]),
+                                       {},
+                                       {}};
             for (const bench::TransparencyBenchRow& row : result.figure6)
                 if (row.family == family && row.methods[m].ms > 0) {
                     series.x.push_back(row.depth);

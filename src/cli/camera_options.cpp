@@ -10,8 +10,6 @@
 namespace vissort::cli {
 namespace {
 
-constexpr int kMaxFrames = 100000;
-
 bool parseDouble(std::string_view text, double& value) {
     if (text.empty())
         return false;
@@ -100,148 +98,44 @@ void addViewOptions(CLI::App& command, ViewOptions& options, bool with_frames) {
         ->capture_default_str();
 }
 
-std::string resolveView(const ViewOptions& options, const Scene& scene, ResolvedView& view) {
-    if (auto error = parseSize(options.size, view.width, view.height); !error.empty())
+std::string resolveView(const ViewOptions& options, const Scene& scene, ChosenView& view) {
+    ViewDef def;
+    if (auto error = parseSize(options.size, def.width, def.height); !error.empty())
         return error;
-    if (options.frames < 1 || options.frames > kMaxFrames)
-        return "--frames must be between 1 and " + std::to_string(kMaxFrames);
-    view.frames = options.frames;
     const Result<CameraPath> path = parseCameraPath(options.path);
     if (!path)
         return "--path: " + path.error;
-    view.path = *path.value;
-
-    const bool perspective_given =
-        !options.eye.empty() || !options.target.empty() || !options.up.empty() || options.fov;
-    const bool orbit_given = options.azimuth || options.elevation || options.distance;
-    if (orbit_given) {
-        if (!options.eye.empty() || !options.target.empty() || !options.up.empty() ||
-            !options.ortho_dir.empty() || !options.camera.empty())
-            return "--azimuth, --elevation and --distance place the eye around the scene's centre: "
-                   "they cannot be combined with --eye, --target, --up, --ortho-dir or --camera";
-        if (options.azimuth && !std::isfinite(*options.azimuth))
-            return "--azimuth must be a finite number of degrees";
-        if (options.elevation && !(std::abs(*options.elevation) <= 90))
-            return "--elevation must be between -90 and 90 degrees";
-        if (options.distance && !(*options.distance > 0 && *options.distance < 1e30))
-            return "--distance must be positive and below 1e30";
-    }
-    if (view.path == CameraPath::scene) {
-        if (scene.camera_path.empty())
-            return "--path scene: the scene has no camera path (a JSON scene's \"camera_path\": "
-                   "docs/scene-format.md)";
-        if (perspective_given || orbit_given || !options.ortho_dir.empty() ||
-            !options.camera.empty())
-            return "--path scene takes every frame's camera from the scene: it cannot be combined "
-                   "with the camera options (--eye, --azimuth, --ortho-dir, --camera, ...)";
-        // Between two valid key frames the mix can still be unusable (eye on target, up along
-        // the view): say which frame.
-        for (int frame = 0; frame < view.frames; ++frame) {
-            const double time = frame * kFrameInterval;
-            if (auto e = validateCamera(cameraAtTime(scene.camera_path, time)).error; !e.empty()) {
-                std::ostringstream seconds;
-                seconds << time;
-                return "--path scene: frame " + std::to_string(frame) + " (" + seconds.str() +
-                       " s into the scene's camera path): " + e;
-            }
-        }
-    }
-    // The scene's own camera: the one --camera picks, else its default one (a file's first).
-    std::optional<CameraSpec> scene_camera = scene.camera;
-    std::string scene_camera_source = "the scene's camera";
-    const auto fileCamera = [&](std::size_t index) {
-        return "the file's camera " + std::to_string(index) + " '" + scene.cameras[index].name +
-               "'";
-    };
-    if (const std::optional<std::size_t> first = defaultStoredCamera(scene))
-        scene_camera_source = fileCamera(*first);
-    if (!options.camera.empty()) {
-        if (!options.ortho_dir.empty())
-            return "--camera cannot be combined with --ortho-dir";
-        Result<std::size_t> picked = findStoredCamera(scene, options.camera);
-        if (!picked)
-            return "--camera: " + picked.error;
-        scene_camera = scene.cameras[*picked.value].camera;
-        scene_camera_source = fileCamera(*picked.value);
-        if (perspective_given && scene_camera->projection == Projection::orthographic)
-            return "--camera " + options.camera +
-                   " is orthographic: --eye, --target, --up and --fov do not apply to it";
-    }
-    if (view.path == CameraPath::scene)
-        view.camera_source = "the scene's camera path";
-    else if (!options.ortho_dir.empty())
-        view.camera_source = "--ortho-dir";
-    if (!options.ortho_dir.empty()) {
-        if (perspective_given)
-            return "--ortho-dir cannot be combined with --eye, --target, --up or --fov";
-        view.camera.projection = Projection::orthographic;
-        if (auto e = parseVec3("--ortho-dir", options.ortho_dir, view.camera.ortho_direction);
-            !e.empty())
+    def.path = *path.value;
+    def.frames = options.frames;
+    // The vectors as numbers; which of them may be combined is chooseView's policy.
+    const std::pair<const std::string*, std::optional<Vec3>*> vectors[] = {
+        {&options.eye, &def.eye},
+        {&options.target, &def.target},
+        {&options.up, &def.up},
+        {&options.ortho_dir, &def.ortho_direction}};
+    const char* names[] = {"--eye", "--target", "--up", "--ortho-dir"};
+    for (std::size_t i = 0; i < std::size(vectors); ++i) {
+        if (vectors[i].first->empty())
+            continue;
+        Vec3 value;
+        if (auto e = parseVec3(names[i], *vectors[i].first, value); !e.empty())
             return e;
-    } else {
-        const Bounds bounds = scene.positions.bounds();
-        const double aspect = double(view.width) / view.height;
-        // Without a camera of the scene's own, the geometry framed as mesh viewers frame it; an
-        // eye given alone still looks at the scene's centre, as documented.
-        const bool framed =
-            !scene_camera || orbit_given ||
-            (perspective_given && scene_camera->projection == Projection::orthographic);
-        CameraSpec orientation = defaultOrientation();
-        if (orbit_given) {
-            // Unset angles stay the default view's (0.6, 0.5, 1): azimuth 31, elevation 24.
-            const Vec3 d = normalized(orientation.eye);
-            orientation = orbitOrientation(
-                options.azimuth.value_or(std::atan2(d.x, d.z) * 180 / std::numbers::pi),
-                options.elevation.value_or(std::asin(d.y) * 180 / std::numbers::pi));
-        }
-        // A field of view for a framed view is framed with, so the framing stays tight.
-        if (options.fov && options.eye.empty() && options.target.empty())
-            orientation.fov_degrees = *options.fov;
-        view.camera =
-            framed ? framingCameraOf(scene, aspect, view.frames, orientation) : *scene_camera;
-        if (view.path != CameraPath::scene)
-            view.camera_source = orbit_given
-                                     ? (options.distance ? "--azimuth/--elevation/--distance"
-                                                         : "--azimuth/--elevation, framed")
-                                 : framed ? "framed to the geometry"
-                                          : scene_camera_source;
-        if (perspective_given && !orbit_given)
-            view.camera_source += ", changed by the options";
-        if (framed && !options.eye.empty())
-            view.camera.target = bounds.centre();
-        if (options.distance) {
-            view.camera.target = bounds.centre();
-            view.camera.eye = bounds.centre() + normalized(orientation.eye) * *options.distance;
-        }
-        if (!options.eye.empty())
-            if (auto e = parseVec3("--eye", options.eye, view.camera.eye); !e.empty())
-                return e;
-        if (!options.target.empty())
-            if (auto e = parseVec3("--target", options.target, view.camera.target); !e.empty())
-                return e;
-        if (!options.up.empty())
-            if (auto e = parseVec3("--up", options.up, view.camera.up); !e.empty())
-                return e;
-        if (options.fov)
-            view.camera.fov_degrees = *options.fov;
+        *vectors[i].second = value;
     }
-    if (auto e = validateCamera(view.camera).error; !e.empty()) {
-        // Name where the bad camera came from: the user's options, or the scene file.
-        if (!options.ortho_dir.empty())
-            return "--ortho-dir: " + e;
-        if (orbit_given)
-            return "--azimuth/--elevation/--distance/--fov: " + e;
-        if (perspective_given)
-            return "--eye/--target/--up/--fov: " + e;
-        if (!options.camera.empty())
-            return "--camera " + options.camera + ": " + e;
-        return "the scene's camera: " + e;
-    }
+    def.fov_degrees = options.fov;
+    def.stored_camera = options.camera;
+    def.azimuth_degrees = options.azimuth;
+    def.elevation_degrees = options.elevation;
+    def.distance = options.distance;
+    Result<ChosenView> chosen = chooseView(def, scene);
+    if (!chosen)
+        return chosen.error;
+    view = std::move(*chosen.value);
     return {};
 }
 
-std::string cameraLine(const ResolvedView& view) {
-    std::string line = "camera: " + describeCamera(view.camera) + " (" + view.camera_source + ")";
+std::string cameraLine(const ChosenView& view) {
+    std::string line = "camera: " + describeCamera(view.camera) + " (" + view.source + ")";
     if (view.frames > 1 && view.path != CameraPath::fixed)
         line += std::string("; --path ") + cameraPathName(view.path) + " moves it every frame";
     return line;
@@ -257,7 +151,7 @@ std::optional<Scene> loadSceneOrReport(const std::string& specification) {
 }
 
 int loadSceneAndView(const std::string& specification, const ViewOptions& options,
-                     std::optional<Scene>& scene, ResolvedView& view) {
+                     std::optional<Scene>& scene, ChosenView& view) {
     scene = loadSceneOrReport(specification);
     if (!scene)
         return kExitInput;

@@ -10,6 +10,7 @@
 #include "vissort/camera.h"
 #include "vissort/camera_path.h"
 #include "vissort/scene.h"
+#include "vissort/view_choice.h"
 
 namespace vissort::cli {
 
@@ -40,22 +41,11 @@ std::string parseSize(const std::string& text, uint32_t& width, uint32_t& height
 /// about one view, like info, takes no frames).
 void addViewOptions(CLI::App& command, ViewOptions& options, bool with_frames = true);
 
-/// A camera, image size and path resolved from the options and the scene.
-struct ResolvedView {
-    CameraSpec camera;
-    uint32_t width = 0, height = 0;
-    CameraPath path = CameraPath::fixed;
-    int frames = 1;
-    /// Where the camera came from, for people: "framed to the geometry", "the scene's camera",
-    /// "the file's camera 1 'Camera.002'", "the options".
-    std::string camera_source;
-};
-
 /// "camera: perspective from ... (framed to the geometry)", plus what --path does to it.
-std::string cameraLine(const ResolvedView& view);
+std::string cameraLine(const ChosenView& view);
 
 /// Empty on success, else a one-line message naming the bad option.
-std::string resolveView(const ViewOptions& options, const Scene& scene, ResolvedView& view);
+std::string resolveView(const ViewOptions& options, const Scene& scene, ChosenView& view);
 
 /// Loads a scene, printing the error and returning nullopt on failure.
 std::optional<Scene> loadSceneOrReport(const std::string& specification);
@@ -63,6 +53,6 @@ std::optional<Scene> loadSceneOrReport(const std::string& specification);
 /// loadSceneOrReport, then resolveView: kExitOk with both set, else the exit code after the
 /// error is printed (kExitInput for the scene, kExitUsage for the view).
 int loadSceneAndView(const std::string& specification, const ViewOptions& options,
-                     std::optional<Scene>& scene, ResolvedView& view);
+                     std::optional<Scene>& scene, ChosenView& view);
 
 } // namespace vissort::cli

@@ -97,7 +97,7 @@ std::string resolveRendererOptions(const RendererOptions& options, bool allow_al
 /// The line before a render: the scene, its transparent objects, the method and the view; a
 /// note when nothing is transparent, a warning when transparent objects have alpha 0 (unseen).
 void printRenderHeader(const std::string& specification, const Scene& scene,
-                       const RenderSettings& settings, const ResolvedView& view);
+                       const RenderSettings& settings, const ChosenView& view);
 
 struct RenderOptions {
     std::string scene;

@@ -84,7 +84,7 @@ int runInfo(const InfoOptions& options) {
         return fail(kExitUsage, "info needs a scene, or --gl (run 'vissort info --help')");
     }
     std::optional<Scene> scene;
-    ResolvedView view;
+    ChosenView view;
     if (const int code = loadSceneAndView(options.scene, options.view, scene, view);
         code != kExitOk)
         return code;

@@ -108,7 +108,7 @@ int runOrder(const OrderOptions& options) {
         return fail(kExitUsage, "--oracle: " + parsed_oracle.error);
     const OracleKind oracle_kind = *parsed_oracle.value;
     std::optional<Scene> scene;
-    ResolvedView view;
+    ChosenView view;
     if (const int code = loadSceneAndView(options.scene, options.view, scene, view);
         code != kExitOk)
         return code;

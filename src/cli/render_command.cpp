@@ -12,17 +12,37 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
-#include "cli/comparison_strip.h"
 #include "cli/csv_output.h"
 #include "cli/environment.h"
 #include "cli/json_output.h"
 #include "cli/progress.h"
+#include "cli/stats_output.h"
 #include "cli/text_output.h"
-#include "vissort/collision.h"
 #include "vissort/frame_driver.h"
+#include "vissort/frame_pipeline.h"
 #include "vissort/transparency_renderer.h"
 
+#if VISSORT_WITH_GL
+#include "harnesses/method_comparison.h"
+#endif
+
 namespace vissort::cli {
+namespace {
+
+// --csv's columns: the frame, the method's statistics and the order's counts, the highlights,
+// the reference's error.
+std::vector<std::string> renderCsvColumns(bool highlight, bool reference) {
+    std::vector<std::string> columns =
+        withStatColumns<VisSortStats>(withStatColumns<RenderStats>({"frame", "time_s"}));
+    if (highlight)
+        columns.push_back("colliding_triangles");
+    if (reference)
+        columns.insert(columns.end(), {"max_abs", "rmse", "pixels_over_one"});
+    return columns;
+}
+
+} // namespace
+
 #if VISSORT_WITH_GL
 namespace {
 
@@ -47,61 +67,38 @@ nlohmann::json errorJson(const ImageError& error, const std::string& reference) 
         {"reference", reference}};
 }
 
-nlohmann::json statsJson(BlendMethod method, const RenderStats& stats) {
-    return {
-        {"method", blendMethodName(method)},
-        {"ms", {{"order", stats.order_ms}, {"render", stats.render_ms}, {"total", stats.total_ms}}},
-        {"passes", stats.passes},
-        {"fragments", stats.fragments},
-        {"groups", stats.groups},
-        {"repaired", stats.repaired_pixels}};
+// A method's statistics: its fields (forEachStat), times under "ms", the order's counts under
+// "order".
+nlohmann::json methodStatsJson(BlendMethod method, const RenderStats& stats) {
+    nlohmann::json record = {{"method", blendMethodName(method)}};
+    record.update(statsJson(stats));
+    record["order"] = statsJson(stats.order);
+    return record;
 }
 
-// Every method on the same frame, side by side with its error map against linked-list, as one
-// PNG; each method's time from a second render (the first compiles its programs).
-int renderEveryMethod(const RenderOptions& options, RenderSettings settings, const Scene& scene,
-                      const ResolvedView& view, const std::shared_ptr<GlContext>& context) {
-    constexpr BlendMethod kShown[] = {
-        BlendMethod::vissort,   BlendMethod::unsorted,    BlendMethod::centroid, BlendMethod::peel,
-        BlendMethod::dual_peel, BlendMethod::linked_list, BlendMethod::weighted};
-    const ViewProjection vp =
-        frameCamera(view.camera, scene.positions.bounds(), view.width, view.height);
-    std::vector<std::vector<uint8_t>> images;
-    std::vector<RenderStats> all_stats;
-    for (BlendMethod method : kShown) {
-        settings.method = method;
-        TransparencyRenderer renderer(context, scene, settings);
-        RenderStats stats;
-        renderer.render(scene.positions, vp, stats);
-        images.push_back(renderer.render(scene.positions, vp, stats).toRgba8());
-        all_stats.push_back(stats);
-    }
-    const std::vector<uint8_t>& reference = images[5];
-    std::vector<StripTile> tiles;
+// --method all: every method on the same frame beside its error map against linked-list, as
+// one PNG (the samples' compareEveryMethod), each method's line printed and its record in the
+// JSON.
+int renderEveryMethod(const RenderOptions& options, const RenderSettings& settings,
+                      const Scene& scene, const ChosenView& view,
+                      const std::shared_ptr<GlContext>& context) {
+    const bench::MethodComparison comparison = bench::compareEveryMethod(
+        context, scene, settings,
+        frameCamera(view.camera, scene.positions.bounds(), view.width, view.height));
     nlohmann::json methods = nlohmann::json::array();
-    std::vector<StripTile> maps;
-    for (std::size_t i = 0; i < std::size(kShown); ++i) {
-        const RenderStats& stats = all_stats[i];
-        const ImageError error = compareImages(images[i], reference);
-        std::ostringstream caption, map_caption, line;
-        caption << blendMethodName(kShown[i]) << '\n'
-                << std::fixed << std::setprecision(1) << stats.total_ms << " ms, " << stats.passes
-                << (stats.passes == 1 ? " pass" : " passes");
-        map_caption << "against linked-list:\nmax " << error.max_abs << "/255, "
-                    << error.pixels_over_one << " px > 1";
-        tiles.push_back({images[i], caption.str()});
-        maps.push_back({errorMap(images[i], reference), map_caption.str()});
-        std::cout << std::left << std::setw(12) << blendMethodName(kShown[i]) << std::right
+    for (const bench::MethodPicture& picture : comparison.methods) {
+        const RenderStats& stats = picture.stats;
+        const ImageError& error = picture.error;
+        std::cout << std::left << std::setw(12) << blendMethodName(picture.method) << std::right
                   << std::fixed << std::setprecision(1) << std::setw(9) << stats.total_ms << " ms, "
                   << stats.passes << " passes, against linked-list: max " << error.max_abs
                   << "/255, RMSE " << std::setprecision(3) << error.rmse << ", "
                   << error.pixels_over_one << " pixels off by more than 1\n";
-        nlohmann::json record = statsJson(kShown[i], stats);
+        nlohmann::json record = methodStatsJson(picture.method, stats);
         record["error"] = errorJson(error, "linked-list");
         methods.push_back(std::move(record));
     }
-    tiles.insert(tiles.end(), maps.begin(), maps.end());
-    const Strip strip = composeStrip(tiles, view.width, view.height, uint32_t(std::size(kShown)));
+    const samples::Strip& strip = comparison.strip;
     if (Status error = writeImage(options.output, strip.width, strip.height, strip.rgba); !error)
         return fail(kExitFailure, error.error);
     std::cout << options.output << ": every method (top) and its error against linked-list "
@@ -144,8 +141,9 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
         ->required(kWithGl);
     addJsonOptions(*command, options.json, "Write the statistics (and error) as JSON");
     addCsvOption(*command, options.csv,
-                 "frame, time_s, ms, order_ms, render_ms, passes, fragments, groups, "
-                 "repaired_pixels, and with --reference max_abs, rmse, pixels_over_one");
+                 columnList(renderCsvColumns(false, false)) +
+                     ", then colliding_triangles with --highlight-collisions, and max_abs, rmse, "
+                     "pixels_over_one with --reference");
     command->add_option("--reference", options.reference,
                         "Also render this method and print RMSE, PSNR and the largest channel "
                         "error against it");
@@ -201,7 +199,7 @@ int runRender(const RenderOptions& options) {
                                 "error_%04d.png), got '" +
                                     options.error_map + "'");
     std::optional<Scene> scene;
-    ResolvedView view;
+    ChosenView view;
     if (const int code = loadSceneAndView(options.scene, options.view, scene, view);
         code != kExitOk)
         return code;
@@ -211,57 +209,32 @@ int runRender(const RenderOptions& options) {
     if (all_methods)
         return renderEveryMethod(options, settings, *scene, view, *context.value);
 
-    TransparencyRenderer renderer(*context.value, *scene, settings);
-    std::unique_ptr<TransparencyRenderer> reference;
-    if (!options.reference.empty()) {
-        RenderSettings reference_settings = settings;
-        reference_settings.method = reference_method;
-        reference =
-            std::make_unique<TransparencyRenderer>(*context.value, *scene, reference_settings);
-    }
-    std::unique_ptr<CollisionDetector> collisions;
-    CollisionResult collided;
-    if (options.highlight_collisions) {
-        CollisionSettings collision_settings;
-        collision_settings.threads = 0;
-        collisions =
-            std::make_unique<CollisionDetector>(scene->objectPrimitives(), collision_settings);
-    }
+    FramePipelineDef def;
+    def.settings = settings;
+    def.highlight_collisions = options.highlight_collisions;
+    if (!options.reference.empty())
+        def.reference = reference_method;
+    FramePipeline pipeline(*context.value, *scene, def);
     printRenderHeader(options.scene, *scene, settings, view);
     FrameDriver driver(*scene, view.camera, view.path, view.width, view.height);
     nlohmann::json frames = nlohmann::json::array();
     std::vector<double> total_ms;
-    std::vector<std::string> columns = {"frame",     "time_s",    "ms",
-                                        "order_ms",  "render_ms", "passes",
-                                        "fragments", "groups",    "repaired_pixels"};
-    if (reference)
-        columns.insert(columns.end(), {"max_abs", "rmse", "pixels_over_one"});
-    CsvTable csv(columns);
+    CsvTable csv(renderCsvColumns(def.highlight_collisions, def.reference.has_value()));
     Progress progress("render", uint64_t(view.frames), "frame");
     int frame = 0;
-    renderer.setOrderProgress([&](double share) { progress.update(frame + share); });
+    pipeline.setOrderProgress([&](double share) { progress.update(frame + share); });
+    PipelineFrame rendered;
     for (int f = 0; f < view.frames; ++f) {
         frame = f;
         driver.seek(f);
-        const PositionsView positions = driver.positions();
-        const ViewProjection& vp = driver.view();
-        std::size_t highlighted = 0;
-        if (collisions) {
-            collisions->collide(positions, collided);
-            const std::vector<uint32_t> triangles = collidingTriangles(collided.pairs);
-            highlighted = triangles.size();
-            renderer.setHighlightedTriangles(triangles);
-            if (reference)
-                reference->setHighlightedTriangles(triangles);
-        }
-        RenderStats stats;
-        const std::vector<uint8_t> pixels = renderer.render(positions, vp, stats).toRgba8();
+        pipeline.render(driver.positions(), driver.view(), rendered);
+        const RenderStats& stats = rendered.stats;
         // A pattern names every frame, the first too when it is the only one.
         const std::string path =
             isFramePattern(options.output) ? framePath(options.output, f) : options.output;
-        if (Status error = writeImage(path, view.width, view.height, pixels); !error)
+        if (Status error = writeImage(path, view.width, view.height, rendered.rgba); !error)
             return fail(kExitFailure, error.error);
-        nlohmann::json record = statsJson(settings.method, stats);
+        nlohmann::json record = methodStatsJson(settings.method, stats);
         progress.clear();
         std::cout << path << ": " << milliseconds(stats.total_ms) << " (order "
                   << milliseconds(stats.order_ms) << ", render " << milliseconds(stats.render_ms)
@@ -273,31 +246,23 @@ int runRender(const RenderOptions& options) {
         if (stats.repaired_pixels > 0)
             std::cout << ", " << counted(stats.repaired_pixels, "pixel") << " repaired";
         total_ms.push_back(stats.total_ms);
-        if (collisions) {
-            std::cout << ", " << counted(highlighted, "colliding triangle") << " highlighted";
-            record["colliding_triangles"] = highlighted;
+        std::vector<double> row =
+            withStatValues(withStatValues({double(f), driver.time()}, stats), stats.order);
+        if (def.highlight_collisions) {
+            std::cout << ", " << counted(rendered.colliding_triangles, "colliding triangle")
+                      << " highlighted";
+            record["colliding_triangles"] = rendered.colliding_triangles;
+            row.push_back(double(rendered.colliding_triangles));
         }
         std::cout << '\n';
-        std::vector<double> row = {double(f),
-                                   driver.time(),
-                                   stats.total_ms,
-                                   stats.order_ms,
-                                   stats.render_ms,
-                                   double(stats.passes),
-                                   double(stats.fragments),
-                                   double(stats.groups),
-                                   double(stats.repaired_pixels)};
-        if (reference) {
-            RenderStats reference_stats;
-            const std::vector<uint8_t> reference_pixels =
-                reference->render(positions, vp, reference_stats).toRgba8();
-            const ImageError error = compareImages(pixels, reference_pixels);
+        if (rendered.error) {
+            const ImageError& error = *rendered.error;
             if (!options.error_map.empty()) {
                 const std::string map_path = isFramePattern(options.error_map)
                                                  ? framePath(options.error_map, f)
                                                  : options.error_map;
                 if (Status e = writeImage(map_path, view.width, view.height,
-                                          errorMap(pixels, reference_pixels));
+                                          errorMap(rendered.rgba, rendered.reference_rgba));
                     !e)
                     return fail(kExitFailure, e.error);
             }

@@ -51,7 +51,7 @@ void addRendererOptions(CLI::App& command, RendererOptions& options,
 
 #if VISSORT_WITH_GL
 void printRenderHeader(const std::string& specification, const Scene& scene,
-                       const RenderSettings& settings, const ResolvedView& view) {
+                       const RenderSettings& settings, const ChosenView& view) {
     std::size_t transparent = 0, invisible = 0;
     for (const SceneObject& object : scene.objects) {
         if (!settings.all_transparent && !(object.transparent && object.colour.a < 1.0f))

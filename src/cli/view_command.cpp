@@ -84,7 +84,7 @@ int runView(const ViewerOptions& options) {
     if (Status display = viewer::checkDisplay(); !display)
         return fail(kExitFailure, display.error);
     std::optional<Scene> scene;
-    ResolvedView view;
+    ChosenView view;
     if (const int code = loadSceneAndView(options.scene, options.view, scene, view);
         code != kExitOk)
         return code;

@@ -74,26 +74,8 @@ void RenderWorker::run() {
         }
         changed_.notify_all();
     }
-    // Their GL objects go with the context current on this thread.
-    picture_ = {};
-    reference_ = {};
-}
-
-TransparencyRenderer& RenderWorker::prepare(Slot& slot, const RenderSettings& settings) {
-    if (!slot.renderer || slot.settings != settings) {
-        slot.renderer.reset();
-        Result<std::shared_ptr<GlContext>> context = GlContext::shared();
-        if (!context)
-            throw std::runtime_error(context.error);
-        slot.renderer = std::make_unique<TransparencyRenderer>(*context.value, scene_, settings);
-        slot.settings = settings;
-        slot.highlighting = false;
-    }
-    if (!highlighted_.empty() || slot.highlighting) {
-        slot.renderer->setHighlightedTriangles(highlighted_);
-        slot.highlighting = !highlighted_.empty();
-    }
-    return *slot.renderer;
+    // Its GL objects go with the context current on this thread.
+    pipeline_.reset();
 }
 
 RenderedFrame RenderWorker::render(const RenderRequest& request) {
@@ -105,35 +87,25 @@ RenderedFrame RenderWorker::render(const RenderRequest& request) {
         const PositionsView positions = frames_.positions();
         const ViewProjection view =
             frameCamera(request.camera, positions.bounds(), request.width, request.height);
-        highlighted_.clear();
-        if (request.overlays.highlight_collisions) {
-            if (!collisions_) {
-                CollisionSettings settings;
-                settings.threads = 0; // every core
-                collisions_ =
-                    std::make_unique<CollisionDetector>(scene_.objectPrimitives(), settings);
-            }
-            collisions_->collide(positions, collided_);
-            highlighted_ = collidingTriangles(collided_.pairs);
-            frame.colliding_pairs = collided_.pairs.size();
-            frame.colliding_triangles = highlighted_.size();
-            frame.collision_ms = collided_.stats.total_ms;
-        }
-        RenderSettings settings = request.settings;
-        if (request.overlays.error_map)
-            settings.colour_cycles = false;
-        frame.rgba = prepare(picture_, settings).render(positions, view, frame.stats).toRgba8();
+        FramePipelineDef def;
+        def.settings = request.settings;
+        def.highlight_collisions = request.overlays.highlight_collisions;
         if (request.overlays.error_map) {
-            settings.method = BlendMethod::linked_list;
-            RenderStats reference_stats;
-            const std::vector<uint8_t> reference =
-                prepare(reference_, settings).render(positions, view, reference_stats).toRgba8();
-            frame.difference = compareImages(frame.rgba, reference);
-            frame.rgba = errorMap(frame.rgba, reference);
+            def.settings.colour_cycles = false; // its colours would all be errors
+            def.reference = BlendMethod::linked_list;
         }
+        if (!pipeline_) {
+            Result<std::shared_ptr<GlContext>> context = GlContext::shared();
+            if (!context)
+                throw std::runtime_error(context.error);
+            pipeline_ = std::make_unique<FramePipeline>(*context.value, scene_, def);
+        }
+        pipeline_->configure(def);
+        pipeline_->render(positions, view, frame.frame);
+        if (request.overlays.error_map)
+            frame.frame.rgba = errorMap(frame.frame.rgba, frame.frame.reference_rgba);
     } catch (const std::exception& error) {
-        picture_ = {};
-        reference_ = {};
+        pipeline_.reset();
         frame.error = error.what();
     }
     return frame;

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "vissort/camera.h"
-#include "vissort/collision.h"
 #include "vissort/frame_driver.h"
+#include "vissort/frame_pipeline.h"
 #include "vissort/image.h"
 #include "vissort/scene.h"
 #include "vissort/transparency_renderer.h"
@@ -43,18 +43,12 @@ struct RenderRequest {
     uint32_t width = 0, height = 0;
 };
 
-/// A finished request: 8-bit RGBA rows from the top (the picture or its error map), or the
-/// one-line error that stopped it.
+/// A finished request: the pipeline's frame (its picture replaced by the error map with
+/// overlays.error_map), or the one-line error that stopped it.
 struct RenderedFrame {
     RenderRequest request;
-    std::vector<uint8_t> rgba;
-    RenderStats stats;
+    PipelineFrame frame;
     std::string error;
-    // With highlight_collisions: the intersecting triangle pairs and the detector's time.
-    uint64_t colliding_pairs = 0;
-    uint64_t colliding_triangles = 0;
-    double collision_ms = 0;
-    std::optional<ImageError> difference; // with error_map: the picture against linked-list's
 };
 
 class RenderWorker {
@@ -78,13 +72,6 @@ public:
 private:
     void run();
     RenderedFrame render(const RenderRequest& request);
-    // A renderer with these settings, remade when they change; its highlights follow the frame's.
-    struct Slot {
-        std::unique_ptr<TransparencyRenderer> renderer;
-        RenderSettings settings;
-        bool highlighting = false;
-    };
-    TransparencyRenderer& prepare(Slot& slot, const RenderSettings& settings);
 
     const Scene& scene_;
     mutable std::mutex mutex_;
@@ -92,13 +79,10 @@ private:
     std::optional<RenderRequest> pending_;
     std::optional<RenderedFrame> done_;
     bool busy_ = false, stopping_ = false;
-    // The worker thread's own: made on the first request, remade when the settings change.
-    Slot picture_, reference_; // the method's, and linked-list's for the error map
-    std::unique_ptr<CollisionDetector> collisions_; // made when first asked for
-    CollisionResult collided_;
-    std::vector<uint32_t> highlighted_; // this frame's colliding triangles
-    FrameDriver frames_;                // positions only: the camera comes with each request
-    std::thread thread_;                // last: started once everything above exists
+    // The worker thread's own: made on the first request, reconfigured by each.
+    std::unique_ptr<FramePipeline> pipeline_;
+    FrameDriver frames_; // positions only: the camera comes with each request
+    std::thread thread_; // last: started once everything above exists
 };
 
 } // namespace vissort::viewer

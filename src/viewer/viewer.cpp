@@ -369,8 +369,9 @@ void Viewer::show(RenderedFrame frame) {
     glBindTexture(GL_TEXTURE_2D, texture_.get());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, GLsizei(frame.request.width),
-                 GLsizei(frame.request.height), 0, GL_RGBA, GL_UNSIGNED_BYTE, frame.rgba.data());
-    const float ms = float(frame.stats.total_ms);
+                 GLsizei(frame.request.height), 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 frame.frame.rgba.data());
+    const float ms = float(frame.frame.stats.total_ms);
     if (frame_ms_.size() == kPlotted)
         frame_ms_.erase(frame_ms_.begin());
     frame_ms_.push_back(ms);
@@ -385,8 +386,8 @@ void Viewer::show(RenderedFrame frame) {
     summary_.width = frame.request.width;
     summary_.height = frame.request.height;
     summary_.overlays = frame.request.overlays;
-    summary_.colliding_pairs = frame.colliding_pairs;
-    summary_.difference = frame.difference;
+    summary_.colliding_pairs = frame.frame.colliding_pairs;
+    summary_.difference = frame.frame.error;
     shown_ = std::move(frame);
     if (playing_ && animated_)
         ++frame_;

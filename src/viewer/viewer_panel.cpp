@@ -116,7 +116,7 @@ PanelActions drawPanel(const PanelState& state, RenderSettings& settings, Overla
     if (ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::Text("%.1f frames/s", state.fps);
         if (state.last != nullptr && state.last->error.empty()) {
-            const RenderStats& stats = state.last->stats;
+            const RenderStats& stats = state.last->frame.stats;
             ImGui::Text("frame %.1f ms: order %.1f, render %.1f", stats.total_ms, stats.order_ms,
                         stats.render_ms);
             ImGui::Text("%llu queries, %u iterations",
@@ -128,13 +128,13 @@ PanelActions drawPanel(const PanelState& state, RenderSettings& settings, Overla
             const RenderedFrame& last = *state.last;
             if (last.request.overlays.highlight_collisions)
                 ImGui::Text("collisions: %llu pairs, %llu triangles, %.1f ms",
-                            static_cast<unsigned long long>(last.colliding_pairs),
-                            static_cast<unsigned long long>(last.colliding_triangles),
-                            last.collision_ms);
-            if (last.difference)
+                            static_cast<unsigned long long>(last.frame.colliding_pairs),
+                            static_cast<unsigned long long>(last.frame.colliding_triangles),
+                            last.frame.collision_ms);
+            if (last.frame.error)
                 ImGui::Text("vs linked-list: max %d/255, %llu pixels over 1/255",
-                            last.difference->max_abs,
-                            static_cast<unsigned long long>(last.difference->pixels_over_one));
+                            last.frame.error->max_abs,
+                            static_cast<unsigned long long>(last.frame.error->pixels_over_one));
         }
         if (!state.frame_ms.empty()) {
             const float top = *std::max_element(state.frame_ms.begin(), state.frame_ms.end());

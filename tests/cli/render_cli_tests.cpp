@@ -42,9 +42,13 @@ TEST_F(Cli, RenderWritesThePngTheJsonAndTheErrorMap) {
     }
     EXPECT_GE(stats["ms"]["total"].get<double>(), stats["ms"]["render"].get<double>());
     EXPECT_EQ(stats.value("passes", 0), 1);
-    EXPECT_EQ(stats.value("groups", -1), 0);   // the slabs order cleanly
-    EXPECT_EQ(stats.value("repaired", -1), 0); // and the order is right on every pixel
+    EXPECT_EQ(stats.value("groups", -1), 0);          // the slabs order cleanly
+    EXPECT_EQ(stats.value("repaired_pixels", -1), 0); // and the order is right on every pixel
     EXPECT_TRUE(stats.contains("fragments"));
+    // The ordering's counts under "order": each of six slabs but the last queried.
+    ASSERT_TRUE(stats.contains("order")) << stats.dump();
+    EXPECT_GE(stats["order"].value("queries", 0), 5) << stats.dump();
+    EXPECT_EQ(stats["order"].value("stuck_iterations", -1), 0) << stats.dump();
     ASSERT_TRUE(stats.contains("error")) << stats.dump();
     EXPECT_LE(stats["error"]["max_abs"].get<int>(), 1);
     EXPECT_TRUE(stats["error"].contains("rmse"));
@@ -454,8 +458,9 @@ TEST_F(Cli, RenderCsvAndCamera) {
     EXPECT_NE(r.out.find("camera: perspective from"), std::string::npos) << r;
     const std::vector<std::string> rows = lines(readFile(path("r.csv")));
     ASSERT_EQ(rows.size(), 3u);
-    EXPECT_EQ(rows[0], "frame,time_s,ms,order_ms,render_ms,passes,fragments,groups,"
-                       "repaired_pixels,max_abs,rmse,pixels_over_one");
+    EXPECT_EQ(rows[0], "frame,time_s,order_ms,render_ms,total_ms,passes,fragments,groups,"
+                       "repaired_pixels,queries,draws,clears,iterations,stuck_iterations,"
+                       "cycle_queries,cycle_draws,hinted_cycles,max_abs,rmse,pixels_over_one");
     EXPECT_EQ(rows[2].substr(0, 2), "1,");
     const json doc = json::parse(readFile(path("r.json")));
     EXPECT_EQ(doc["frames"][1]["camera"]["projection"], "perspective");

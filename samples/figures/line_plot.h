@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/comparison_strip.h"
+#include "figures/comparison_strip.h"
 
-namespace vissort::cli {
+namespace vissort::samples {
 
 struct PlotSeries {
     std::string name;
@@ -22,4 +22,4 @@ Strip plotLines(const std::vector<PlotSeries>& series, const std::string& title,
                 const std::string& x_label, const std::string& y_label, uint32_t width,
                 uint32_t height);
 
-} // namespace vissort::cli
+} // namespace vissort::samples

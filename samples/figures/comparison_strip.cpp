@@ -1,11 +1,11 @@
-#include "cli/comparison_strip.h"
+#include "figures/comparison_strip.h"
 
 #include <algorithm>
 #include <cassert>
 
 #include <stb/stb_easy_font.h>
 
-namespace vissort::cli {
+namespace vissort::samples {
 namespace {
 
 constexpr uint32_t kMargin = 8;       // pixels around each tile
@@ -72,4 +72,4 @@ Strip composeStrip(const std::vector<StripTile>& tiles, uint32_t tile_width, uin
     return strip;
 }
 
-} // namespace vissort::cli
+} // namespace vissort::samples

@@ -1,10 +1,10 @@
-#include "cli/line_plot.h"
+#include "figures/line_plot.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-namespace vissort::cli {
+namespace vissort::samples {
 namespace {
 
 constexpr uint8_t kInk[3] = {30, 30, 30};
@@ -142,4 +142,4 @@ Strip plotLines(const std::vector<PlotSeries>& series, const std::string& title,
     return s;
 }
 
-} // namespace vissort::cli
+} // namespace vissort::samples

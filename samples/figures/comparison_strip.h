@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace vissort::cli {
+namespace vissort::samples {
 
 struct StripTile {
     std::vector<uint8_t> rgba; // tile_width * tile_height RGBA pixels
@@ -28,4 +28,4 @@ void drawText(Strip& strip, uint32_t left, uint32_t top, const std::string& text
 Strip composeStrip(const std::vector<StripTile>& tiles, uint32_t tile_width, uint32_t tile_height,
                    uint32_t columns);
 
-} // namespace vissort::cli
+} // namespace vissort::samples

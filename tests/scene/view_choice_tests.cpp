@@ -1,0 +1,150 @@
+// chooseView (view_choice.h), the camera policy of the command line, the viewer and Python:
+// what nothing asked gives (the file's camera, else the geometry framed: every corner checked
+// in the image), where the orbit options put the eye (computed here from the angles), and the
+// errors, named as each caller names its options.
+
+#include "vissort/view_choice.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "scenes/scene_library.h"
+
+namespace vissort {
+namespace {
+
+Scene load(const std::string& specification) {
+    const std::string path = specification.rfind("builtin:", 0) == 0
+                                 ? specification
+                                 : std::string(VISSORT_SOURCE_DIR) + "/" + specification;
+    Result<Scene> loaded = samples::loadScene(path);
+    EXPECT_TRUE(loaded) << specification << ": " << loaded.error;
+    return loaded ? std::move(*loaded.value) : Scene{};
+}
+
+const char* kCameras = "tests/data/meshes/cameras.gltf"; // cameras 'front' and 'top'
+const char* kNoCamera = "tests/data/meshes/groups.obj";  // an OBJ: no camera
+
+std::string errorOf(const ViewDef& def, const Scene& scene) {
+    const Result<ChosenView> chosen = chooseView(def, scene);
+    EXPECT_FALSE(chosen) << "no error";
+    return chosen.error;
+}
+
+void expectNear(Vec3 a, Vec3 b) {
+    EXPECT_NEAR(a.x, b.x, 1e-9);
+    EXPECT_NEAR(a.y, b.y, 1e-9);
+    EXPECT_NEAR(a.z, b.z, 1e-9);
+}
+
+TEST(ChooseView, NothingAskedIsTheFilesFirstCamera) {
+    const Scene scene = load(kCameras);
+    ASSERT_TRUE(scene.camera);
+    const Result<ChosenView> chosen = chooseView({}, scene);
+    ASSERT_TRUE(chosen) << chosen.error;
+    expectNear(chosen.value->camera.eye, scene.camera->eye);
+    expectNear(chosen.value->camera.target, scene.camera->target);
+    EXPECT_EQ(chosen.value->source, "the file's camera 0 'front'");
+}
+
+TEST(ChooseView, NothingAskedOfASceneWithoutACameraFramesEveryCorner) {
+    const Scene scene = load(kNoCamera);
+    ASSERT_FALSE(scene.camera);
+    ViewDef def;
+    def.width = 64;
+    def.height = 48;
+    const Result<ChosenView> chosen = chooseView(def, scene);
+    ASSERT_TRUE(chosen) << chosen.error;
+    EXPECT_EQ(chosen.value->source, "framed to the geometry");
+    const ViewProjection view =
+        frameCamera(chosen.value->camera, scene.positions.bounds(), def.width, def.height);
+    for (std::size_t i = 0; i < scene.positions.x.size(); ++i) {
+        const auto c = view.toClip(scene.positions.corner(i));
+        ASSERT_GT(c[3], 0.0) << "corner " << i << " behind the eye";
+        EXPECT_LE(std::abs(c[0]), c[3]) << "corner " << i;
+        EXPECT_LE(std::abs(c[1]), c[3]) << "corner " << i;
+    }
+}
+
+TEST(ChooseView, AzimuthElevationAndDistancePlaceTheEyeAroundTheCentre) {
+    const Scene scene = load(kNoCamera);
+    const Vec3 centre = scene.positions.bounds().centre();
+    ViewDef def;
+    def.azimuth_degrees = 90; // looks along -x: the eye on +x
+    def.elevation_degrees = 30;
+    def.distance = 10;
+    const Result<ChosenView> chosen = chooseView(def, scene);
+    ASSERT_TRUE(chosen) << chosen.error;
+    const double rad = 30 * std::acos(-1.0) / 180;
+    expectNear(chosen.value->camera.eye, centre + Vec3{10 * std::cos(rad), 10 * std::sin(rad), 0});
+    expectNear(chosen.value->camera.target, centre);
+    EXPECT_EQ(chosen.value->source, "--azimuth/--elevation/--distance");
+}
+
+TEST(ChooseView, ConflictsAreNamedAsTheCallerNamesItsOptions) {
+    const Scene scene = load(kNoCamera);
+    ViewDef def;
+    def.eye = Vec3{0, 0, 5};
+    def.azimuth_degrees = 10;
+    EXPECT_EQ(errorOf(def, scene),
+              "--azimuth, --elevation and --distance place the eye around the scene's centre: "
+              "they cannot be combined with --eye, --target, --up, --ortho-dir or --camera");
+    def.names = OptionNames::python;
+    EXPECT_EQ(errorOf(def, scene),
+              "azimuth, elevation and distance place the eye around the scene's centre: "
+              "they cannot be combined with eye, target, up, ortho_dir or camera");
+
+    ViewDef ortho;
+    ortho.names = OptionNames::python;
+    ortho.ortho_direction = Vec3{0, 0, -1};
+    ortho.fov_degrees = 30;
+    EXPECT_EQ(errorOf(ortho, scene),
+              "ortho_dir cannot be combined with eye, target, up or fov_deg");
+    ortho.names = OptionNames::command_line;
+    EXPECT_EQ(errorOf(ortho, scene), "--ortho-dir cannot be combined with --eye, --target, "
+                                     "--up or --fov");
+}
+
+TEST(ChooseView, ValuesOutOfRangeAreRefused) {
+    const Scene scene = load(kNoCamera);
+    ViewDef def;
+    def.frames = 0;
+    EXPECT_EQ(errorOf(def, scene), "--frames must be between 1 and 100000");
+    def.frames = kMaxFrames + 1;
+    def.names = OptionNames::python;
+    EXPECT_EQ(errorOf(def, scene), "frames must be between 1 and 100000");
+    def = {};
+    def.elevation_degrees = 91;
+    EXPECT_EQ(errorOf(def, scene), "--elevation must be between -90 and 90 degrees");
+    def = {};
+    def.distance = -1;
+    EXPECT_EQ(errorOf(def, scene), "--distance must be positive and below 1e30");
+    def = {};
+    def.eye = def.target = Vec3{1, 2, 3}; // the eye on its target
+    EXPECT_NE(errorOf(def, scene).find("--eye/--target/--up/--fov: "), std::string::npos);
+    def = {};
+    def.path = CameraPath::scene;
+    EXPECT_NE(errorOf(def, scene).find("--path scene: the scene has no camera path"),
+              std::string::npos);
+}
+
+TEST(ChooseView, StoredCamerasByNameOrIndexAndTheirNamesAsWritten) {
+    const Scene scene = load(kCameras);
+    ViewDef def;
+    def.stored_camera = "1";
+    const Result<ChosenView> top = chooseView(def, scene);
+    ASSERT_TRUE(top) << top.error;
+    EXPECT_EQ(top.value->source, "the file's camera 1 'top'");
+    EXPECT_EQ(top.value->camera.projection, scene.cameras[1].camera.projection);
+    // A name the file does not have is quoted as given, braces and all.
+    def.stored_camera = "{eye}";
+    const std::string error = errorOf(def, scene);
+    EXPECT_EQ(error.rfind("--camera: ", 0), 0u) << error;
+    EXPECT_NE(error.find("{eye}"), std::string::npos) << error;
+    EXPECT_EQ(error.find("--eye"), std::string::npos) << error;
+}
+
+} // namespace
+} // namespace vissort
