@@ -52,7 +52,7 @@ public:
     /// calling thread. Fails with a one-line message naming what is missing: EGL, the platform,
     /// a device, or OpenGL 4.5. The library reads no environment variable; on Mesa's llvmpipe,
     /// set LP_NUM_THREADS=0 before the first context (the vissort command does): llvmpipe then
-    /// rasterizes on the calling thread, 4 times faster for the oracle's many small draws and
+    /// rasterizes on the calling thread, 6 times faster for the oracle's many small draws and
     /// queries than with its worker threads (docs/benchmarks.md).
     static Result<std::shared_ptr<GlContext>> create(GlPlatform platform = GlPlatform::automatic);
 

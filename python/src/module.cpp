@@ -12,7 +12,7 @@ PYBIND11_MODULE(_vissort, m) {
     m.attr("__version__") = VISSORT_VERSION;
     m.attr("has_gl") = bool(VISSORT_WITH_GL);
     // As the vissort command does: Mesa's llvmpipe, read when the first context opens, then
-    // rasterizes on the calling thread, 4 times faster for the oracle's many small draws
+    // rasterizes on the calling thread, 6 times faster for the oracle's many small draws
     // (docs/benchmarks.md). A value the user set stays.
     setenv("LP_NUM_THREADS", "0", 0);
     vissort::python::bindScene(m);
