@@ -33,11 +33,14 @@ inline std::size_t editDistance(std::string_view a, std::string_view b) {
 }
 
 /// The name of `names` nearest to text, if it is near enough to be a typing mistake (at most a
-/// third of text's letters changed, at least one allowed); empty otherwise. Ties: the first.
+/// third of text's letters changed, at least one allowed); else the name that shares the
+/// longest beginning with text, if that beginning is at least 4 letters and two thirds of text
+/// (a singular for a plural: 'bunny' for 'bunnies'); empty otherwise. Ties: the first.
 template <class Names> std::string closestName(std::string_view text, const Names& names) {
     const std::size_t allowed = std::max<std::size_t>(1, text.size() / 3);
-    std::string best;
+    std::string best, best_prefix;
     std::size_t best_distance = allowed + 1;
+    std::size_t longest_prefix = std::max<std::size_t>(3, (2 * text.size() + 2) / 3 - 1);
     for (const auto& name : names) {
         const std::string_view candidate(name);
         const std::size_t distance = editDistance(text, candidate);
@@ -45,8 +48,16 @@ template <class Names> std::string closestName(std::string_view text, const Name
             best = std::string(candidate);
             best_distance = distance;
         }
+        std::size_t prefix = 0;
+        while (prefix < text.size() && prefix < candidate.size() &&
+               text[prefix] == candidate[prefix])
+            ++prefix;
+        if (prefix > longest_prefix && candidate != text) {
+            best_prefix = std::string(candidate);
+            longest_prefix = prefix;
+        }
     }
-    return best;
+    return best.empty() ? best_prefix : best;
 }
 
 /// " (did you mean 'NAME'?)" for closestName's answer, or "" when there is none.

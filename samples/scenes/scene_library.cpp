@@ -3,6 +3,10 @@
 
 #include "scenes/scene_library.h"
 
+#include <vector>
+
+#include "vissort/closest_name.h"
+
 #include "scenes/builtin_scenes.h"
 
 namespace vissort::samples {
@@ -49,6 +53,7 @@ std::vector<BuiltinSceneInfo> builtinScenes() {
 
 Result<Scene> makeBuiltinScene(const std::string& name, const SceneParameters& parameters) {
     std::string known;
+    std::vector<std::string> names;
     for (const BuiltinScene& scene : kBuiltinScenes) {
         if (name == scene.name) {
             // Checked as loadScene checks what a file holds, for the callers that make a scene
@@ -60,9 +65,13 @@ Result<Scene> makeBuiltinScene(const std::string& name, const SceneParameters& p
             return made;
         }
         known += (known.empty() ? "" : ", ") + std::string(scene.name);
+        names.emplace_back(scene.name);
     }
-    return Result<Scene>::failure("unknown built-in scene 'builtin:" + name + "' (known: " + known +
-                                  ")");
+    const std::string suggestion = closestName(name, names);
+    return Result<Scene>::failure(
+        "unknown built-in scene 'builtin:" + name + "' (" +
+        (suggestion.empty() ? "" : "did you mean 'builtin:" + suggestion + "'? ") +
+        "known: " + known + ")");
 }
 
 Result<Scene> loadScene(const std::string& specification) {

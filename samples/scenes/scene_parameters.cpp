@@ -1,5 +1,7 @@
 #include "scenes/scene_parameters.h"
 
+#include "vissort/closest_name.h"
+
 #include <charconv>
 #include <sstream>
 #include <system_error>
@@ -110,7 +112,10 @@ std::string ParameterReader::error() const {
         std::string accepted;
         for (const std::string& known : known_keys_)
             accepted += (accepted.empty() ? "" : ", ") + known;
-        return scene_ + ": unknown parameter '" + key + "' (accepted: " + accepted + ")";
+        const std::string suggestion = closestName(key, known_keys_);
+        return scene_ + ": unknown parameter '" + key + "' (" +
+               (suggestion.empty() ? "" : "did you mean '" + suggestion + "'? ") +
+               "accepted: " + accepted + ")";
     }
     return {};
 }

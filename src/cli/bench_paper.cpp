@@ -2,6 +2,7 @@
 // as files under --out: paper.json, paper.csv, figure6.csv and PNG plots with the paper's
 // reported values marked.
 
+#include <cerrno>
 #include <unistd.h>
 
 #include <cmath>
@@ -16,6 +17,7 @@
 
 #include "cli/commands.h"
 #include "cli/json_output.h"
+#include "cli/output_paths.h"
 #include "cli/progress.h"
 #include "figures/line_plot.h"
 #include "harnesses/measurement.h"
@@ -93,11 +95,12 @@ nlohmann::json pathJson(const PaperPath& path) {
 }
 
 Status writeText(const std::filesystem::path& file, const std::string& text) {
+    errno = 0;
     std::ofstream out(file);
     out << text;
     out.close();
     if (!out)
-        return Status::failure("cannot write " + file.string());
+        return Status::failure("cannot write " + file.string() + withReason(lastSystemError()));
     return {};
 }
 

@@ -1,6 +1,7 @@
 // vissort collide: every intersecting pair of triangles of different objects, frame by frame.
 
 #include <algorithm>
+#include <cerrno>
 #include <fstream>
 #include <iostream>
 
@@ -10,6 +11,7 @@
 #include "cli/csv_output.h"
 #include "cli/json_output.h"
 #include "cli/obj_output.h"
+#include "cli/output_paths.h"
 #include "cli/progress.h"
 #include "cli/stats_output.h"
 #include "cli/text_output.h"
@@ -37,7 +39,6 @@ CLI::App* addCollideCommand(CLI::App& app, CollideOptions& options) {
     command
         ->add_option("--frames", options.frames,
                      "Frames to run; dynamic scenes advance 1/30 s a frame")
-        ->check(CLI::Range(1, 1000000))
         ->capture_default_str();
     command
         ->add_option("--method", options.method,
@@ -74,6 +75,9 @@ CLI::App* addCollideCommand(CLI::App& app, CollideOptions& options) {
 }
 
 int runCollide(const CollideOptions& options) {
+    // The limit and the words of every command's --frames (view_choice.h).
+    if (options.frames < 1 || options.frames > kMaxFrames)
+        return fail(kExitUsage, "--frames must be between 1 and " + std::to_string(kMaxFrames));
     CollisionSettings settings;
     const Result<CollisionMethod> method = parseCollisionMethod(options.method);
     if (!method)
@@ -93,9 +97,11 @@ int runCollide(const CollideOptions& options) {
 
     std::ofstream pairs_out;
     if (!options.pairs_path.empty()) {
+        errno = 0;
         pairs_out.open(options.pairs_path);
         if (!pairs_out)
-            return fail(kExitFailure, "cannot write " + options.pairs_path);
+            return fail(kExitFailure,
+                        "cannot write " + options.pairs_path + withReason(lastSystemError()));
     }
     const std::vector<PrimitiveRange> objects = scene->objectPrimitives();
     CollisionDetector detector(objects, settings);
@@ -129,8 +135,10 @@ int runCollide(const CollideOptions& options) {
         progress.update(f + 1);
     }
     progress.clear();
+    errno = 0;
     if (pairs_out.is_open() && !pairs_out.flush())
-        return fail(kExitFailure, "cannot write " + options.pairs_path);
+        return fail(kExitFailure,
+                    "cannot write " + options.pairs_path + withReason(lastSystemError()));
 
     double mean = 0;
     for (double ms : total_ms)
@@ -154,11 +162,13 @@ int runCollide(const CollideOptions& options) {
         if (const int code = writeJsonFile(options.json, document); code != kExitOk)
             return code;
     }
+    errno = 0;
     if (!options.dump_path.empty() &&
         !writePrimitivesObj(options.dump_path,
                             "vissort collide: one group per object id; face i is triangle i",
                             driver.positions(), objects))
-        return fail(kExitFailure, "cannot write " + options.dump_path);
+        return fail(kExitFailure,
+                    "cannot write " + options.dump_path + withReason(lastSystemError()));
     return kExitOk;
 }
 

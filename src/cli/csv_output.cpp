@@ -1,12 +1,14 @@
 #include "cli/csv_output.h"
 
 #include <cassert>
+#include <cerrno>
 #include <charconv>
 #include <fstream>
 #include <iostream>
 
 #include "cli/cli_common.h"
 #include "cli/json_output.h"
+#include "cli/output_paths.h"
 
 namespace vissort::cli {
 
@@ -23,6 +25,7 @@ void CsvTable::addRow(const std::vector<double>& values) {
 
 int CsvTable::write(const std::string& path) const {
     std::ofstream file;
+    errno = 0;
     if (path != "-")
         file.open(path);
     std::ostream out(path == "-" ? standardOutputBuffer() : file.rdbuf());
@@ -39,7 +42,7 @@ int CsvTable::write(const std::string& path) const {
     }
     out.flush();
     if (!out || (path != "-" && !file))
-        return fail(kExitFailure, "cannot write " + path);
+        return fail(kExitFailure, "cannot write " + path + withReason(lastSystemError()));
     return kExitOk;
 }
 

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cerrno>
 #include <charconv>
 #include <fstream>
 #include <iostream>
 #include <vector>
 
 #include "cli/cli_common.h"
+#include "cli/output_paths.h"
 
 namespace vissort::cli {
 namespace {
@@ -96,6 +98,7 @@ int writeJsonFile(const JsonOutput& output, const nlohmann::json& document,
                   std::span<const JsonIdList> lists) {
     const bool to_standard_output = output.path == "-";
     std::ofstream file;
+    errno = 0;
     if (!to_standard_output)
         file.open(output.path);
     std::ostream out(to_standard_output ? standardOutputBuffer() : file.rdbuf());
@@ -130,7 +133,8 @@ int writeJsonFile(const JsonOutput& output, const nlohmann::json& document,
     if (!out || (!to_standard_output && !file))
         return fail(kExitFailure,
                     "cannot write " +
-                        (to_standard_output ? std::string("standard output") : output.path));
+                        (to_standard_output ? std::string("standard output") : output.path) +
+                        withReason(lastSystemError()));
     return kExitOk;
 }
 

@@ -6,6 +6,7 @@
 #include "cli/commands.h"
 #include "cli/environment.h"
 #include "cli/json_output.h"
+#include "cli/output_paths.h"
 #include "cli/progress.h"
 #include "vissort/collision_peers.h"
 
@@ -31,21 +32,23 @@ int main(int argc, char** argv) {
     CLI::App* collide_command = addCollideCommand(app, collide);
     ViewerOptions view;
     CLI::App* view_command = addViewCommand(app, view);
-    for (CLI::App* command :
-         {order_command, info_command, bench_command, render_command, collide_command})
+    for (CLI::App* command : {order_command, info_command, bench_command, render_command,
+                              collide_command, view_command})
         addQuietOption(*command);
     // After the commands: each would inherit it, and it speaks of them all.
     app.footer("Run 'vissort COMMAND --help' for a command's options. docs/cli.md documents\n"
                "every command, option, output and exit code; README.md and docs/ explain the\n"
                "algorithm and the scene formats.");
     // `vissort help [COMMAND]`: what people type after git and cargo.
-    if (argc >= 2 && std::string(argv[1]) == "help") {
-        if (argc == 2) {
+    // `vissort` alone: the help, as `vissort help` and `vissort --help` print it.
+    if (argc == 1 || (argc >= 2 && std::string(argv[1]) == "help")) {
+        if (argc <= 2) {
             std::cout << app.help();
             return kExitOk;
         }
         try {
-            std::cout << app.get_subcommand(argv[2])->help();
+            // Named as `vissort order --help` names it: "Usage: vissort order ...".
+            std::cout << app.get_subcommand(argv[2])->help(app.get_name());
             return kExitOk;
         } catch (const CLI::OptionNotFound&) {
             // Reported below, as any unknown command.
@@ -73,6 +76,30 @@ int main(int argc, char** argv) {
         if (json->path == "-" && *csv == "-")
             return fail(kExitUsage, "--json - and --csv - both want standard output: send one of "
                                     "them to a file");
+    // Every file the command will write, checked before any work.
+    const struct {
+        const CLI::App* command;
+        const char* option;
+        const std::string* path;
+    } outputs[] = {{order_command, "--json", &order.json.path},
+                   {order_command, "--csv", &order.csv},
+                   {order_command, "--dump-primitives", &order.dump_path},
+                   {info_command, "--json", &info.json.path},
+                   {bench_command, "--json", &bench.json.path},
+                   {bench_command, "--plot", &bench.plot_path},
+                   {render_command, "-o", &render.output},
+                   {render_command, "--json", &render.json.path},
+                   {render_command, "--csv", &render.csv},
+                   {render_command, "--error-map", &render.error_map},
+                   {collide_command, "--json", &collide.json.path},
+                   {collide_command, "--csv", &collide.csv},
+                   {collide_command, "--pairs-out", &collide.pairs_path},
+                   {collide_command, "--dump-primitives", &collide.dump_path},
+                   {view_command, "--screenshot", &view.screenshot}};
+    for (const auto& output : outputs)
+        if (output.command->parsed())
+            if (const std::string reason = unwritableReason(*output.path); !reason.empty())
+                return fail(kExitFailure, std::string(output.option) + ": " + reason);
     for (const JsonOutput* json :
          {&order.json, &info.json, &bench.json, &render.json, &collide.json})
         reserveStandardOutputFor(*json);

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cerrno>
 #include <iostream>
 #include <numeric>
 
@@ -9,6 +10,7 @@
 #include "cli/environment.h"
 #include "cli/json_output.h"
 #include "cli/obj_output.h"
+#include "cli/output_paths.h"
 #include "cli/progress.h"
 #include "cli/stats_output.h"
 #include "cli/text_output.h"
@@ -201,10 +203,12 @@ int runOrder(const OrderOptions& options) {
             return code;
     if (!options.dump_path.empty()) {
         const auto primitives = primitivesOf(*scene, level);
+        errno = 0;
         if (!writePrimitivesObj(options.dump_path,
                                 "vissort primitives: one group per primitive id, world space",
                                 driver.positions(), primitives))
-            return fail(kExitFailure, "cannot write " + options.dump_path);
+            return fail(kExitFailure,
+                        "cannot write " + options.dump_path + withReason(lastSystemError()));
     }
     return kExitOk;
 }

@@ -91,8 +91,8 @@ int renderEveryMethod(const RenderOptions& options, const RenderSettings& settin
         const ImageError& error = picture.error;
         std::cout << std::left << std::setw(12) << blendMethodName(picture.method) << std::right
                   << std::fixed << std::setprecision(1) << std::setw(9) << stats.total_ms << " ms, "
-                  << stats.passes << " passes, against linked-list: max " << error.max_abs
-                  << "/255, RMSE " << std::setprecision(3) << error.rmse << ", "
+                  << counted(stats.passes, "pass", "passes") << ", against linked-list: max "
+                  << error.max_abs << "/255, RMSE " << std::setprecision(3) << error.rmse << ", "
                   << error.pixels_over_one << " pixels off by more than 1\n";
         nlohmann::json record = methodStatsJson(picture.method, stats);
         record["error"] = errorJson(error, "linked-list");

@@ -83,10 +83,18 @@ std::string resolveRendererOptions(const RendererOptions& options, bool allow_al
                                    RenderSettings& settings) {
     if (!(allow_all && options.method == "all")) {
         const Result<BlendMethod> method = parseBlendMethod(options.method);
+        if (!method && allow_all) {
+            // "all" is the command's word, not a method's: suggested among the methods' names.
+            std::vector<std::string> names = {"all"};
+            for (const auto& entry : kBlendMethodNames)
+                names.emplace_back(entry.name);
+            const std::string suggestion = closestName(options.method, names);
+            return "--method: unknown method '" + options.method + "' (" +
+                   (suggestion.empty() ? "" : "did you mean '" + suggestion + "'? ") + "expected " +
+                   blendMethodNames() + "; or all)";
+        }
         if (!method)
-            return "--method: " +
-                   (allow_all ? method.error.substr(0, method.error.size() - 1) + "; or all)"
-                              : method.error);
+            return "--method: " + method.error;
         settings.method = *method.value;
     }
     const Result<OrderLevel> level = parseOrderLevel(options.level);

@@ -17,13 +17,21 @@ namespace vissort::cli {
 CLI::App* addViewCommand(CLI::App& app, ViewerOptions& options) {
     CLI::App* command = app.add_subcommand(
         "view", "Open a window on a scene: move around it, switch methods, watch the statistics");
-    command->add_option("scene", options.scene,
-                        "Mesh file, JSON scene, or builtin:NAME?key=value&...");
+#if VISSORT_WITH_VIEWER
+    constexpr bool kWithViewer = true;
+#else
+    constexpr bool kWithViewer = false;
+#endif
+    // Without a viewer nothing is required: any `view ...` reaches runView's one-line error.
+    command
+        ->add_option("scene", options.scene, "Mesh file, JSON scene, or builtin:NAME?key=value&...")
+        ->required(kWithViewer);
     options.view.size = "1024x768";
     addViewOptions(*command, options.view);
     addRendererOptions(*command, options.renderer, "The method shown first (1-7 switch)");
     command->add_option("--screenshot", options.screenshot,
-                        "With --frames N: save the window after the last frame (PNG) and exit");
+                        "Save the window after the last frame (PNG) and exit: after --frames N, "
+                        "or after the first frame without --frames");
     command->add_flag("--hide-ui", options.hide_ui, "No panel or overlay (nor in screenshots)");
     command->add_flag("--highlight-collisions", options.highlight_collisions,
                       "Draw the triangles that intersect another object's in magenta (K)");
@@ -34,8 +42,9 @@ CLI::App* addViewCommand(CLI::App& app, ViewerOptions& options) {
                         "Replay input from a file: key presses, drags, wheel steps and resizes "
                         "at given frames (docs/viewer.md)");
     command->footer(
-        "Without --frames the window stays until closed; with --frames N it renders N frames\n"
-        "(each before the next is asked for, the script's events between them) and exits.\n"
+        "Without --frames (or --screenshot) the window stays until closed; with --frames N it\n"
+        "renders N frames (each before the next is asked for, the script's events between\n"
+        "them) and exits.\n"
         "Controls:\n"
         "  left drag        orbit about the target     right/middle drag  pan\n"
         "  wheel            zoom                       W/S  fly forward/back\n"
@@ -70,8 +79,6 @@ int runView(const ViewerOptions& options) {
     if (std::string error = resolveRendererOptions(options.renderer, false, settings.render);
         !error.empty())
         return fail(kExitUsage, error);
-    if (!options.screenshot.empty() && !options.frames_given)
-        return fail(kExitUsage, "--screenshot needs --frames N");
     if (!options.screenshot.empty())
         if (const Result<ImageFormat> format = imageFormatOf(options.screenshot); !format)
             return fail(kExitUsage, "--screenshot: " + format.error);
@@ -94,7 +101,8 @@ int runView(const ViewerOptions& options) {
     settings.path = view.path;
     settings.width = view.width;
     settings.height = view.height;
-    settings.frames = options.frames_given ? view.frames : 0;
+    // A screenshot is taken after the last frame: without --frames, its default one.
+    settings.frames = options.frames_given || !options.screenshot.empty() ? view.frames : 0;
     settings.screenshot = options.screenshot;
     settings.hide_ui = options.hide_ui;
     settings.overlays.highlight_collisions = options.highlight_collisions;

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include <stb/stb_image_write.h>
@@ -19,6 +21,11 @@ int largestChannelDifference(const std::vector<uint8_t>& a, const std::vector<ui
     for (std::size_t c = 0; c < 3; ++c)
         worst = std::max(worst, std::abs(int(a[p + c]) - int(b[p + c])));
     return worst;
+}
+
+// ": the system's reason" for a write that failed, when the system gave one.
+std::string systemReason() {
+    return errno == 0 ? std::string() : ": " + std::string(std::strerror(errno));
 }
 
 } // namespace
@@ -84,8 +91,9 @@ Status writePng(const std::string& path, uint32_t width, uint32_t height,
                 const std::vector<uint8_t>& rgba8) {
     if (rgba8.size() != std::size_t(width) * height * 4 || width == 0 || height == 0)
         return Status::failure("no image to write to " + path);
+    errno = 0;
     if (!stbi_write_png(path.c_str(), int(width), int(height), 4, rgba8.data(), int(width) * 4))
-        return Status::failure("cannot write " + path);
+        return Status::failure("cannot write " + path + systemReason());
     return Status::ok();
 }
 
@@ -111,8 +119,9 @@ Status writeImage(const std::string& path, uint32_t width, uint32_t height,
         return writePng(path, width, height, rgba8);
     if (rgba8.size() != std::size_t(width) * height * 4 || width == 0 || height == 0)
         return Status::failure("no image to write to " + path);
+    errno = 0;
     if (!stbi_write_jpg(path.c_str(), int(width), int(height), 4, rgba8.data(), 95))
-        return Status::failure("cannot write " + path);
+        return Status::failure("cannot write " + path + systemReason());
     return Status::ok();
 }
 

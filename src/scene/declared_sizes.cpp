@@ -335,11 +335,11 @@ std::string plyProblem(std::string_view head, uint64_t file_size) {
         } else if (keyword == "element") {
             return "the PLY header has an element line PLY does not have (element NAME COUNT): " +
                    quotedLine(text);
-        } else {
-            return "the PLY header has a line PLY does not have (its lines start with format, "
-                   "comment, obj_info, element, property or end_header): " +
-                   quotedLine(text);
         }
+        // Any other line is skipped, as assimp skips it: exporters write lines of their own
+        // (Blender 2.47: "Created by Blender3D 247 - www.blender.org, source file: ..."). The
+        // lines that can make assimp allocate without bound are the element and property
+        // lines, checked above.
     }
     if (!has_format || elements.empty())
         return {};

@@ -211,16 +211,32 @@ Result<Scene> convertScene(const aiScene& ai_scene, const std::string& label,
 // rejects malformed data structures (indices out of range, empty meshes).
 constexpr unsigned kImportFlags = aiProcess_ValidateDataStructure;
 
+// Before a reason assimp gave: the file passed vissort's own checks, and assimp refused it.
+constexpr const char* kAssimpFailed = "assimp could not read it: ";
+
+// Runs an assimp read: most readers report failures through GetErrorString, but some throw;
+// what they throw is assimp's reason (running out of memory aside, which callers report).
+template <class Read> Status readWithAssimp(Read&& read) {
+    try {
+        read();
+    } catch (const std::bad_alloc&) {
+        throw;
+    } catch (const std::exception& e) {
+        return Status::failure(kAssimpFailed + oneLine(e.what()));
+    }
+    return Status::ok();
+}
+
 Result<Scene> finishImport(Assimp::Importer& importer, const aiScene* ai_scene,
                            const std::string& label, const std::string& scene_name,
                            const std::string& extension) {
     if (!ai_scene) {
-        std::string reason = oneLine(importer.GetErrorString());
-        if (reason.empty())
-            reason = "unreadable or unsupported file";
-        else if (reason == "std::bad_alloc") // assimp catches it and keeps its what()
-            reason = kOutOfMemory;
-        return Result<Scene>::failure(label + ": " + reason);
+        // assimp's own reason, said to be assimp's: a user then knows whom to ask.
+        const std::string reason = oneLine(importer.GetErrorString());
+        if (reason == "std::bad_alloc") // assimp catches it and keeps its what()
+            return Result<Scene>::failure(label + ": " + kOutOfMemory);
+        return Result<Scene>::failure(label + ": " + kAssimpFailed +
+                                      (reason.empty() ? "it gave no reason" : reason));
     }
     return convertScene(*ai_scene, label, scene_name, extension);
 }
@@ -283,7 +299,10 @@ Result<Scene> loadMeshFile(const std::string& path) {
             !problem.empty())
             return Result<Scene>::failure(path + ": " + problem);
         Assimp::Importer importer;
-        const aiScene* ai_scene = importer.ReadFile(path, kImportFlags);
+        const aiScene* ai_scene = nullptr;
+        if (Status read = readWithAssimp([&] { ai_scene = importer.ReadFile(path, kImportFlags); });
+            !read)
+            return Result<Scene>::failure(path + ": " + read.error);
         Result<Scene> scene =
             finishImport(importer, ai_scene, path, file.stem().string(), lowerCase(extension));
         if (!isOff(extension))
@@ -293,7 +312,6 @@ Result<Scene> loadMeshFile(const std::string& path) {
     } catch (const std::bad_alloc&) {
         return Result<Scene>::failure(path + ": " + kOutOfMemory);
     } catch (const std::exception& e) {
-        // assimp reports most failures through GetErrorString, but some readers throw.
         return Result<Scene>::failure(path + ": " + oneLine(e.what()));
     }
 }
@@ -312,8 +330,13 @@ Result<Scene> loadMeshMemory(const void* data, std::size_t size, const std::stri
             !problem.empty())
             return Result<Scene>::failure(label + ": " + problem);
         Assimp::Importer importer;
-        const aiScene* ai_scene =
-            importer.ReadFileFromMemory(data, size, kImportFlags, format_hint.c_str());
+        const aiScene* ai_scene = nullptr;
+        if (Status read = readWithAssimp([&] {
+                ai_scene =
+                    importer.ReadFileFromMemory(data, size, kImportFlags, format_hint.c_str());
+            });
+            !read)
+            return Result<Scene>::failure(label + ": " + read.error);
         Result<Scene> scene =
             finishImport(importer, ai_scene, label, std::filesystem::path(label).stem().string(),
                          lowerCase(format_hint));

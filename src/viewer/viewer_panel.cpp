@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <iterator>
 #include <numeric>
 #include <string>
@@ -122,7 +123,9 @@ PanelActions drawPanel(const PanelState& state, RenderSettings& settings, Overla
             ImGui::Text("%llu queries, %u iterations",
                         static_cast<unsigned long long>(stats.order.queries),
                         stats.order.iterations);
-            ImGui::Text("%u passes, %u groups per pixel (cycles)", stats.passes, stats.groups);
+            ImGui::Text("%u %s, %u %s per pixel (cycles)", stats.passes,
+                        stats.passes == 1 ? "pass" : "passes", stats.groups,
+                        stats.groups == 1 ? "group" : "groups");
             ImGui::Text("%llu pixels repaired",
                         static_cast<unsigned long long>(stats.repaired_pixels));
             const RenderedFrame& last = *state.last;
@@ -138,8 +141,13 @@ PanelActions drawPanel(const PanelState& state, RenderSettings& settings, Overla
         }
         if (!state.frame_ms.empty()) {
             const float top = *std::max_element(state.frame_ms.begin(), state.frame_ms.end());
-            ImGui::PlotLines("ms", state.frame_ms.data(), int(state.frame_ms.size()), 0, nullptr,
-                             0.0f, std::max(1.0f, top * 1.1f), ImVec2(0, 60));
+            const float scale = std::max(1.0f, top * 1.1f);
+            // The plot's scale on it: the axis runs from 0 at the bottom to `scale` at the top.
+            char overlay[64];
+            std::snprintf(overlay, sizeof overlay, "0 to %.0f ms; last %.1f ms", scale,
+                          state.frame_ms.back());
+            ImGui::PlotLines("ms", state.frame_ms.data(), int(state.frame_ms.size()), 0, overlay,
+                             0.0f, scale, ImVec2(0, 60));
         }
     }
     ImGui::TextDisabled("H: help");

@@ -637,8 +637,18 @@ TEST_F(Cli, ErrorUnknownOption) {
     expectError({"order", kBunnies, "--no-such-option"}, kUsage, {"--no-such-option"});
 }
 
-TEST_F(Cli, ErrorNoSubcommand) {
-    expectError({}, kUsage, {"a command is required", "order", "render"});
+// `vissort` alone prints the help, as `vissort --help` and `vissort help` do; `vissort help
+// COMMAND` names the tool as `vissort COMMAND --help` does.
+TEST_F(Cli, NoCommandPrintsTheHelp) {
+    const RunResult alone = run({});
+    EXPECT_EQ(alone.code, 0) << alone;
+    EXPECT_TRUE(alone.err.empty()) << alone;
+    EXPECT_EQ(alone.out, run({"--help"}).out);
+    EXPECT_NE(alone.out.find("order"), std::string::npos) << alone;
+    const RunResult help = run({"help", "order"});
+    EXPECT_EQ(help.code, 0) << help;
+    EXPECT_NE(help.out.find("vissort order"), std::string::npos) << help;
+    EXPECT_EQ(help.out, run({"order", "--help"}).out);
 }
 
 TEST_F(Cli, ErrorJsonIntoMissingFolder) {

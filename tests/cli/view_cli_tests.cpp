@@ -311,8 +311,22 @@ TEST_F(View, BadScriptsAndOptionsAreOneLineErrors) {
     expectError({"view", "builtin:bunnies", "--script", path("missing.txt")}, kUsage,
                 {"missing.txt"});
     expectError({"view", "builtin:bunnies", "--method", "magic"}, kUsage, {"--method", "magic"});
-    expectError({"view", "builtin:bunnies", "--screenshot", path("x.png")}, kUsage,
-                {"--screenshot", "--frames"});
+    expectError({"view", "builtin:bunnies", "--screenshot", path("x.bmp")}, kUsage,
+                {"--screenshot", "x.bmp"});
+}
+
+// --screenshot without --frames takes its default one frame, as the help says; -q is accepted
+// as by every other command and keeps standard output empty.
+TEST_F(View, ScreenshotWithoutFramesAndQuiet) {
+    const RunResult r = run({"view", "builtin:bunnies?n=2", "--size", "96x72", "--hide-ui",
+                             "--screenshot", path("one.png"), "-q"},
+                            120, kXvfb);
+    ASSERT_EQ(r.code, 0) << r;
+    EXPECT_TRUE(r.out.empty()) << r;
+    const Png shot = readPng(path("one.png"));
+    EXPECT_EQ(shot.width, 96);
+    EXPECT_EQ(shot.height, 72);
+    EXPECT_EQ(maxDifference(shot, render({"builtin:bunnies?n=2", "--size", "96x72"}, 1)), 0);
 }
 
 } // namespace

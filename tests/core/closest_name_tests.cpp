@@ -32,6 +32,17 @@ TEST(ClosestName, SuggestsOnlyNamesNearEnough) {
     EXPECT_EQ(didYouMean("zzzz", commands), "");
 }
 
+// A name that begins as the text does, for most of it, is suggested when no name is a few edits
+// away: a singular for a plural. Short or mostly different beginnings are not.
+TEST(ClosestName, SuggestsANameThatBeginsAsTheTextDoes) {
+    const std::vector<std::string> scenes = {"bunnies", "plant", "powerplant", "slabs", "soup"};
+    EXPECT_EQ(closestName("bunny", scenes), "bunnies");    // 'bunn': 4 of 5 letters
+    EXPECT_EQ(closestName("power", scenes), "powerplant"); // 5 of 5
+    EXPECT_EQ(closestName("plants", scenes), "plant");     // one edit: the nearest name
+    EXPECT_EQ(closestName("bunker", scenes), "");          // 'bun': under 4 letters
+    EXPECT_EQ(closestName("bunnyhop", scenes), "");        // 'bunn': half of 8 letters
+}
+
 TEST(ClosestName, EnumErrorsSuggestTheNearestName) {
     const Result<BlendMethod> typo = parseBlendMethod("vissrot");
     ASSERT_FALSE(typo);

@@ -335,3 +335,38 @@ TEST(MeshLoader, RejectsNonFiniteCoordinates) {
 
 } // namespace
 } // namespace vissort
+
+namespace vissort {
+namespace {
+
+// A file that passes vissort's own checks but that assimp cannot read says so, with assimp's
+// reason, from a file and from memory: a user then knows whom to ask. (A binary FBX whose first
+// block ends past the file, as assimp's FBX/transparentTest.fbx does.)
+TEST(MeshLoader, WhatAssimpRefusesIsSaidToBeAssimps) {
+    std::string fbx = std::string("Kaydara FBX Binary  ") + '\0' + '\x1a' + '\0';
+    const auto put32 = [&](uint32_t v) {
+        for (int i = 0; i < 4; ++i)
+            fbx += char((v >> (8 * i)) & 0xff);
+    };
+    put32(7400);       // version
+    put32(0x7fffffff); // the first block's end: far past the file
+    put32(0);
+    put32(0);
+    fbx += "\x03"
+           "abc" +
+           std::string(40, '\0');
+    TempDir dir;
+    const std::string path = dir.write("broken.fbx", fbx);
+    const Result<Scene> from_file = loadMeshFile(path);
+    ASSERT_FALSE(from_file);
+    EXPECT_EQ(from_file.error.rfind(path + ": assimp could not read it: ", 0), 0u)
+        << from_file.error;
+    EXPECT_NE(from_file.error.find("FBX"), std::string::npos) << from_file.error;
+    const Result<Scene> from_memory = loadMeshMemory(fbx.data(), fbx.size(), "fbx", "memory.fbx");
+    ASSERT_FALSE(from_memory);
+    EXPECT_EQ(from_memory.error.rfind("memory.fbx: assimp could not read it: ", 0), 0u)
+        << from_memory.error;
+}
+
+} // namespace
+} // namespace vissort
