@@ -84,18 +84,19 @@ struct CollisionSettings {
 
 /// What one frame cost and how much each stage culled.
 struct CollisionStats {
-    uint64_t box_object_pairs = 0;   // object pairs whose boxes overlap (every method's start)
-    uint64_t object_pairs = 0;       // candidate object pairs that reached the triangle stage
-    uint64_t box_triangle_pairs = 0; // of their triangle pairs, those whose boxes overlap
-    uint64_t triangle_pairs = 0;     // candidate triangle pairs that reached the exact test
-    uint64_t intersecting = 0;       // intersecting triangle pairs found
-    uint32_t colliding_objects = 0;  // objects in some candidate object pair (the paper's C)
-    uint32_t directions = 0;         // vissort: object-stage directions used this frame
-    uint64_t queries = 0;            // vissort: occlusion queries of the object stage
-    double update_ms = 0;            // per-frame structures from the positions (boxes, refits)
-    double cull_ms = 0;              // every culling stage
-    double exact_ms = 0;             // exact triangle tests
-    double total_ms = 0;             // everything after the positions exist
+    uint64_t box_object_pairs = 0;       // object pairs whose boxes overlap (every method's start)
+    uint64_t object_pairs = 0;           // candidate object pairs that reached the triangle stage
+    uint64_t box_triangle_pairs = 0;     // of their triangle pairs, those whose boxes overlap
+    uint64_t triangle_pairs = 0;         // candidate triangle pairs that reached the exact test
+    uint64_t intersecting = 0;           // intersecting triangle pairs found
+    uint64_t colliding_object_pairs = 0; // object pairs with some intersecting triangle pair
+    uint32_t candidate_objects = 0;      // objects in some candidate object pair (the paper's C)
+    uint32_t directions = 0;             // vissort: object-stage directions used this frame
+    uint64_t queries = 0;                // vissort: occlusion queries of the object stage
+    double update_ms = 0;                // per-frame structures from the positions (boxes, refits)
+    double cull_ms = 0;                  // every culling stage
+    double exact_ms = 0;                 // exact triangle tests
+    double total_ms = 0;                 // everything after the positions exist
 };
 
 /// Every field of CollisionStats by name, in one list (see forEachStat in vis_sort.h): the
@@ -106,7 +107,8 @@ template <class Visit> void forEachStat(const CollisionStats& s, Visit&& visit) 
     visit("box_triangle_pairs", s.box_triangle_pairs);
     visit("triangle_pairs", s.triangle_pairs);
     visit("intersecting", s.intersecting);
-    visit("colliding_objects", s.colliding_objects);
+    visit("colliding_object_pairs", s.colliding_object_pairs);
+    visit("candidate_objects", s.candidate_objects);
     visit("directions", s.directions);
     visit("queries", s.queries);
     visit("update_ms", s.update_ms);
@@ -115,8 +117,18 @@ template <class Visit> void forEachStat(const CollisionStats& s, Visit&& visit) 
     visit("total_ms", s.total_ms);
 }
 
+/// Two objects by their index in the detector's object list, first < second.
+struct ObjectPair {
+    uint32_t first = 0, second = 0;
+    friend bool operator==(const ObjectPair&, const ObjectPair&) = default;
+    friend auto operator<=>(const ObjectPair&, const ObjectPair&) = default;
+};
+
 struct CollisionResult {
     std::vector<TrianglePair> pairs; // ascending, no duplicates
+    /// The objects that collide: each pair of objects with some pair above between them,
+    /// ascending, no duplicates.
+    std::vector<ObjectPair> object_pairs;
     CollisionStats stats;
 };
 
@@ -158,6 +170,8 @@ public:
 private:
     CollisionSettings settings_;
     uint64_t triangles_needed_ = 0; // one past the last triangle an object names
+    // The objects by their first triangle (non-empty ones): the object of a triangle.
+    std::vector<std::pair<uint32_t, uint32_t>> object_starts_; // (first triangle, object)
     std::unique_ptr<detail::Collider> collider_;
     TrianglePositions gathered_; // the corners of the last vertex-buffer frame
 

@@ -32,7 +32,8 @@ struct ViewDef {
     std::optional<double> fov_degrees;
     /// An orthographic view along this direction, framing the scene.
     std::optional<Vec3> ortho_direction;
-    /// A camera the mesh file stores, by name or index (findStoredCamera).
+    /// A camera the mesh file stores, by name or index (findStoredCamera); "framed": none of
+    /// them, the geometry framed as for a scene without a camera.
     std::string stored_camera;
     /// The eye around the scene's centre: degrees about the vertical axis (0 looks along -z),
     /// degrees above the horizontal, and the distance (default: framed).
@@ -52,7 +53,15 @@ struct ChosenView {
     /// Where the camera came from, for people: "framed to the geometry", "the scene's camera",
     /// "the file's camera 1 'Camera.002'", "--azimuth/--elevation, framed", ...
     std::string source;
+    /// The share of the scene's surface at t = 0 in the view (of points spread over it by
+    /// area), 0 to 1: a file's camera that sees a few percent of the scene (inside a mesh
+    /// scaled 100x) is worth a warning.
+    double share_in_view = 1;
 };
+
+/// Below this share in view, a camera of the scene's own is worth a warning that says how to
+/// frame the scene instead (--camera framed); below kMostInView, a note that it crops the scene.
+inline constexpr double kFewInView = 0.05, kMostInView = 0.95;
 
 /// The view `def` asks for of `scene`, or a one-line error naming the fields that cannot be
 /// combined or the camera that cannot be used (and where it came from: the request, the file,

@@ -22,12 +22,13 @@ py::dict statsDict(const CollisionStats& s) {
     return d;
 }
 
-// The pairs as a (K, 2) uint32 array over their own memory (a TrianglePair is two uint32s).
-py::array_t<uint32_t> pairsArray(std::vector<TrianglePair>&& pairs) {
-    static_assert(sizeof(TrianglePair) == 2 * sizeof(uint32_t));
+// Pairs as a (K, 2) uint32 array over their own memory (a TrianglePair or an ObjectPair is two
+// uint32s).
+template <class Pair> py::array_t<uint32_t> pairsArray(std::vector<Pair>&& pairs) {
+    static_assert(sizeof(Pair) == 2 * sizeof(uint32_t));
     const py::ssize_t count = py::ssize_t(pairs.size());
     return ownedArray<uint32_t>(std::move(pairs), {count, 2},
-                                {py::ssize_t(sizeof(TrianglePair)), py::ssize_t(sizeof(uint32_t))});
+                                {py::ssize_t(sizeof(Pair)), py::ssize_t(sizeof(uint32_t))});
 }
 
 // A CollisionDetector of one set of objects: successive frames reuse what the last one learnt.
@@ -74,10 +75,12 @@ public:
             detector_->collide(frame, result_);
         }
         stats_ = statsDict(result_.stats);
+        object_pairs_ = pairsArray(std::move(result_.object_pairs));
         return pairsArray(std::move(result_.pairs));
     }
 
     py::dict stats() const { return stats_; }
+    py::object objectPairs() const { return object_pairs_; }
 
 private:
     std::shared_ptr<Scene> scene_; // kept alive while the detector is
@@ -88,6 +91,7 @@ private:
     CollisionResult result_;
     TrianglePositions buffer_;
     py::dict stats_;
+    py::object object_pairs_ = py::none();
     std::mutex mutex_;
 };
 
@@ -118,7 +122,11 @@ void bindCollide(py::module_& m) {
         .def("collide", &Detector::collide, py::arg("positions") = py::none(),
              py::arg("triangles") = py::none(), py::kw_only(), py::arg("time") = py::none(),
              kCollideDoc)
-        .def_property_readonly("stats", &Detector::stats, "The last frame's costs and culling");
+        .def_property_readonly("stats", &Detector::stats, "The last frame's costs and culling")
+        .def_property_readonly("object_pairs", &Detector::objectPairs,
+                               "The last frame's colliding objects: a (M, 2) uint32 array of "
+                               "object indices (first < second, ascending) with some "
+                               "intersecting triangle pair between them; None before a frame");
     m.def(
         "collide",
         [](const py::object& positions, const py::object& objects, const std::string& method,

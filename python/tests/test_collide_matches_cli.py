@@ -60,3 +60,22 @@ def test_collide_needs_objects_for_arrays():
         vissort.collide(np.zeros((2, 3, 3), np.float32))
     with pytest.raises(ValueError, match="unknown collision method"):
         vissort.collide(vissort.builtin("slabs"), method="gjk")
+
+
+def test_object_pairs_are_the_objects_of_the_pairs(cli_json):
+    # The colliding objects: the objects of each intersecting pair's triangles (mapped here from
+    # the scene's object ranges), as the command line's JSON lists them.
+    scene = vissort.builtin("bunnies", n=10, seed=1)
+    detector = vissort.CollisionDetector(scene)
+    assert detector.object_pairs is None
+    pairs = detector.collide(time=1.0)
+    ranges = scene.object_ranges
+    object_of = np.repeat(np.arange(len(ranges)), ranges[:, 1])
+    expected = sorted({tuple(sorted((int(object_of[a]), int(object_of[b])))) for a, b in pairs})
+    assert len(expected) > 0, "the bunnies touch at 1 s"
+    objects = detector.object_pairs
+    assert objects.dtype == np.uint32 and objects.shape == (len(expected), 2)
+    assert [tuple(p) for p in objects.tolist()] == expected
+    assert detector.stats["colliding_object_pairs"] == len(expected)
+    cli = cli_json("collide", "builtin:bunnies?n=10&seed=1", "--frames", 31)
+    assert cli["frames"][30]["object_pairs_colliding"] == objects.tolist()

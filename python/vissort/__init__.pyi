@@ -111,7 +111,8 @@ _CollisionStats = TypedDict(
         "box_triangle_pairs": int,
         "triangle_pairs": int,
         "intersecting": int,
-        "colliding_objects": int,
+        "colliding_object_pairs": int,
+        "candidate_objects": int,
         "directions": int,
         "queries": int,
         "update_ms": float,
@@ -424,6 +425,10 @@ class CollisionDetector:
     @property
     def stats(self) -> _CollisionStats:
         """The last frame's costs and culling (empty before the first frame)."""
+    @property
+    def object_pairs(self) -> Optional[npt.NDArray[np.uint32]]:
+        """The last frame's colliding objects: (M, 2) object indices, first < second,
+        ascending, with some intersecting triangle pair between them; None before a frame."""
 
 def collide(
     positions: Union[Scene, npt.ArrayLike],

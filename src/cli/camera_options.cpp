@@ -1,7 +1,9 @@
 #include <charconv>
 #include <cmath>
+#include <iomanip>
 #include <iostream>
 #include <numbers>
+#include <sstream>
 
 #include "cli/cli_common.h"
 #include "cli/text_output.h"
@@ -78,7 +80,8 @@ void addViewOptions(CLI::App& command, ViewOptions& options, bool with_frames) {
                        "Orthographic view along X,Y,Z framing the scene's bounding sphere");
     command.add_option("--camera", options.camera,
                        "A camera the mesh file stores, by name or index (default: its first; "
-                       "'vissort info SCENE' lists them)");
+                       "'vissort info SCENE' lists them); framed: none of them, the geometry "
+                       "framed");
     command.add_option("--azimuth", options.azimuth,
                        "Degrees about the vertical (y) axis the eye sits at around the scene's "
                        "centre: 0 looks along -z, 90 along -x (default 31, the default view's)");
@@ -157,6 +160,20 @@ int loadSceneAndView(const std::string& specification, const ViewOptions& option
         return kExitInput;
     if (auto error = resolveView(options, *scene, view); !error.empty())
         return fail(kExitUsage, error);
+    // A camera a mesh file stores that sees little of the scene (inside a mesh scaled 100x, or
+    // cropping it): say so, and how to see the whole.
+    // (A JSON or built-in scene's camera was placed for vissort: the power plant's walkthrough
+    // starts inside the plant on purpose.)
+    const bool scenes_own = view.source.rfind("the file's camera", 0) == 0;
+    std::ostringstream share;
+    share << std::setprecision(2) << 100 * view.share_in_view << '%';
+    if (scenes_own && view.share_in_view < kFewInView)
+        warn(view.source + " sees " + share.str() +
+             " of the scene's surface: --camera framed frames the whole scene");
+    else if (scenes_own && view.share_in_view < kMostInView)
+        std::cout << "note: " << view.source << " sees " << share.str()
+                  << " of the scene's surface, the rest is outside the picture; --camera framed "
+                     "shows all of it\n";
     return kExitOk;
 }
 

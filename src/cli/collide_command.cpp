@@ -22,10 +22,33 @@
 namespace vissort::cli {
 namespace {
 
-nlohmann::json frameRecord(int frame, const CollisionStats& stats) {
-    nlohmann::json record = statsJson(stats);
+// A frame's JSON record: its statistics and the object pairs that collide, by index into the
+// document's "objects".
+nlohmann::json frameRecord(int frame, const CollisionResult& result) {
+    nlohmann::json record = statsJson(result.stats);
     record["frame"] = frame;
+    nlohmann::json pairs = nlohmann::json::array();
+    for (const ObjectPair& p : result.object_pairs)
+        pairs.push_back({p.first, p.second});
+    record["object_pairs_colliding"] = std::move(pairs);
     return record;
+}
+
+// "3 'bunny_3'": an object as people read it.
+std::string objectLabel(const Scene& scene, uint32_t object) {
+    return std::to_string(object) + " '" + scene.objects[object].name + "'";
+}
+
+// The colliding objects of a frame, the first kListed pairs by id and name.
+void printObjectPairs(const Scene& scene, const std::vector<ObjectPair>& pairs) {
+    constexpr std::size_t kListed = 20;
+    std::cout << "colliding objects: " << counted(pairs.size(), "pair");
+    for (std::size_t i = 0; i < pairs.size() && i < kListed; ++i)
+        std::cout << (i == 0 ? ": " : "; ") << objectLabel(scene, pairs[i].first) << " and "
+                  << objectLabel(scene, pairs[i].second);
+    if (pairs.size() > kListed)
+        std::cout << "; and " << pairs.size() - kListed << " more (--json lists them all)";
+    std::cout << '\n';
 }
 
 } // namespace
@@ -124,14 +147,15 @@ int runCollide(const CollideOptions& options) {
         total_ms.push_back(result.stats.total_ms);
         pair_sum += result.pairs.size();
         if (!options.json.path.empty())
-            frames.push_back(frameRecord(f, result.stats));
+            frames.push_back(frameRecord(f, result));
         if (pairs_out.is_open())
             for (const TrianglePair& p : result.pairs)
                 pairs_out << f << ' ' << p.first << ' ' << p.second << '\n';
         if (options.frames > 1)
             std::cout << "frame " << f << ": " << counted(result.pairs.size(), "intersecting pair")
-                      << ", " << counted(result.stats.triangle_pairs, "candidate triangle pair")
-                      << ", " << milliseconds(result.stats.total_ms) << '\n';
+                      << " between " << counted(result.object_pairs.size(), "object pair") << ", "
+                      << counted(result.stats.triangle_pairs, "candidate triangle pair") << ", "
+                      << milliseconds(result.stats.total_ms) << '\n';
         progress.update(f + 1);
     }
     progress.clear();
@@ -150,14 +174,19 @@ int runCollide(const CollideOptions& options) {
               << counted(result.stats.object_pairs, "candidate object pair") << ", "
               << counted(result.stats.triangle_pairs, "candidate triangle pair") << ", "
               << result.pairs.size() << " intersecting\n";
+    printObjectPairs(*scene, result.object_pairs);
 
     if (!options.csv.empty())
         if (const int code = csv.write(options.csv); code != kExitOk)
             return code;
     if (!options.json.path.empty()) {
+        nlohmann::json names = nlohmann::json::array();
+        for (const SceneObject& object : scene->objects)
+            names.push_back(object.name);
         nlohmann::json document = {{"method", options.method},
                                    {"scene", options.scene},
                                    {"size", {settings.width, settings.height}},
+                                   {"objects", std::move(names)},
                                    {"frames", std::move(frames)}};
         if (const int code = writeJsonFile(options.json, document); code != kExitOk)
             return code;

@@ -43,7 +43,7 @@ public:
                 }
         }
         for (uint8_t in : in_pair_)
-            result.stats.colliding_objects += in;
+            result.stats.candidate_objects += in;
         result.stats.box_triangle_pairs = result.stats.triangle_pairs;
         // The box filters and the exact tests interleave here; the exact tests are the work.
         exact_ms = clock.lap();

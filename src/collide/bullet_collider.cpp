@@ -90,7 +90,7 @@ public:
             traverser_.collideTTpersistentStack(roots_[a], roots_[b], recorder);
         }
         for (uint8_t in : in_pair_)
-            result.stats.colliding_objects += in;
+            result.stats.candidate_objects += in;
         result.stats.box_triangle_pairs = result.stats.triangle_pairs = candidates_.size();
         result.stats.cull_ms = clock.lap();
 

@@ -17,7 +17,7 @@ public:
     /// Every intersecting pair of triangles of different objects at positions, appended to
     /// result.pairs (cleared by the caller; any order, no duplicates, first < second), and the
     /// stage figures of result.stats (zeroed by the caller): box_object_pairs, object_pairs,
-    /// box_triangle_pairs, triangle_pairs, colliding_objects, and update_ms / cull_ms /
+    /// box_triangle_pairs, triangle_pairs, candidate_objects, and update_ms / cull_ms /
     /// exact_ms. The caller sorts and sets intersecting and total_ms.
     virtual void collide(PositionsView positions, CollisionResult& result) = 0;
 };

@@ -63,6 +63,9 @@ CollisionDetector::CollisionDetector(std::span<const PrimitiveRange> objects,
     std::sort(by_first.begin(), by_first.end(), [&](uint32_t a, uint32_t b) {
         return objects[a].first_triangle < objects[b].first_triangle;
     });
+    for (uint32_t o : by_first)
+        if (objects[o].triangle_count > 0)
+            object_starts_.emplace_back(objects[o].first_triangle, o);
     for (std::size_t k = 1; k < by_first.size(); ++k) {
         const PrimitiveRange& before = objects[by_first[k - 1]];
         if (uint64_t(before.first_triangle) + before.triangle_count >
@@ -130,6 +133,21 @@ void CollisionDetector::run(PositionsView positions, std::chrono::steady_clock::
     collider_->collide(positions, result);
     std::sort(result.pairs.begin(), result.pairs.end());
     result.stats.intersecting = result.pairs.size();
+    // The objects of each pair's triangles (every triangle of a pair is some object's).
+    const auto objectOf = [&](uint32_t triangle) {
+        const auto after = std::upper_bound(object_starts_.begin(), object_starts_.end(),
+                                            std::pair(triangle, UINT32_MAX));
+        return std::prev(after)->second;
+    };
+    result.object_pairs.clear();
+    for (const TrianglePair& p : result.pairs) {
+        const uint32_t a = objectOf(p.first), b = objectOf(p.second);
+        result.object_pairs.push_back({std::min(a, b), std::max(a, b)});
+    }
+    std::sort(result.object_pairs.begin(), result.object_pairs.end());
+    result.object_pairs.erase(std::unique(result.object_pairs.begin(), result.object_pairs.end()),
+                              result.object_pairs.end());
+    result.stats.colliding_object_pairs = result.object_pairs.size();
     result.stats.total_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }

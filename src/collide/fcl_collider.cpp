@@ -49,7 +49,7 @@ public:
         manager_.collide(this, &FclCollider::collidePair);
         frame_ = nullptr;
         for (uint8_t in : in_pair_)
-            result.stats.colliding_objects += in;
+            result.stats.candidate_objects += in;
         // FCL may report one triangle pair more than once (a contact per intersection point).
         std::sort(result.pairs.begin(), result.pairs.end());
         result.pairs.erase(std::unique(result.pairs.begin(), result.pairs.end()),

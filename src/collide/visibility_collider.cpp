@@ -69,7 +69,7 @@ public:
         }
         stats.object_pairs = live_.size();
         for (uint8_t in : in_pair_)
-            stats.colliding_objects += in;
+            stats.candidate_objects += in;
         for (Worker& w : workers_)
             w.clear();
         parallelFor(live_.size(), [&](std::size_t i, Worker& w) {

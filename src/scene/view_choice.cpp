@@ -2,9 +2,12 @@
 
 #include "vissort/view_choice.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <vector>
 
 namespace vissort {
 namespace {
@@ -61,6 +64,47 @@ Status checkScenePath(const ViewDef& def, const Scene& scene) {
     return Status::ok();
 }
 
+// The share of the scene's surface inside the view: of 4096 points spread over the triangles by
+// area (evenly over the cumulative area, each at a low-discrepancy spot of its triangle), those
+// that project inside the image in front of the eye. A camera inside a mesh scaled 100x sees a
+// sliver of the surface; one framing a quad that reaches past the image still sees most of it,
+// which its corners alone would not say.
+double shareInView(const Scene& scene, const CameraSpec& camera, uint32_t width, uint32_t height) {
+    constexpr int kSamples = 4096;
+    const TrianglePositions& p = scene.positions;
+    const std::size_t triangles = p.triangleCount();
+    std::vector<double> cumulative(triangles);
+    double total = 0;
+    for (std::size_t t = 0; t < triangles; ++t) {
+        const Vec3 a = p.corner(3 * t), b = p.corner(3 * t + 1), c = p.corner(3 * t + 2);
+        total += length(cross(b - a, c - a));
+        cumulative[t] = total;
+    }
+    if (!(total > 0))
+        return 1;
+    const ViewProjection view = frameCamera(camera, p.bounds(), width, height);
+    int seen = 0;
+    for (int s = 0; s < kSamples; ++s) {
+        const double at = (s + 0.5) / kSamples * total;
+        const std::size_t t = std::min<std::size_t>(
+            std::size_t(std::lower_bound(cumulative.begin(), cumulative.end(), at) -
+                        cumulative.begin()),
+            triangles - 1);
+        // The R2 sequence's point s, folded into the triangle.
+        double u = std::fmod(0.5 + s * 0.7548776662466927, 1.0);
+        double v = std::fmod(0.5 + s * 0.5698402909980532, 1.0);
+        if (u + v > 1) {
+            u = 1 - u;
+            v = 1 - v;
+        }
+        const Vec3 a = p.corner(3 * t), b = p.corner(3 * t + 1), c = p.corner(3 * t + 2);
+        const std::array<double, 4> clip = view.toClip(a + (b - a) * u + (c - a) * v);
+        // In front of the eye and inside the image (the depth range is framed to the bounds).
+        seen += clip[3] > 0 && std::abs(clip[0]) <= clip[3] && std::abs(clip[1]) <= clip[3];
+    }
+    return double(seen) / kSamples;
+}
+
 std::string fileCamera(const Scene& scene, std::size_t index) {
     return "the file's camera " + std::to_string(index) + " '" + scene.cameras[index].name + "'";
 }
@@ -78,8 +122,11 @@ Result<ChosenView> chooseView(const ViewDef& def, const Scene& scene) {
 
     const bool perspective_given = def.eye || def.target || def.up || def.fov_degrees;
     const bool orbit_given = def.azimuth_degrees || def.elevation_degrees || def.distance;
+    // "framed" names no stored camera: it goes with the options that place a framed view.
+    const bool framed_asked = def.stored_camera == "framed";
+    const bool stored_asked = !def.stored_camera.empty() && !framed_asked;
     if (orbit_given) {
-        if (def.eye || def.target || def.up || def.ortho_direction || !def.stored_camera.empty())
+        if (def.eye || def.target || def.up || def.ortho_direction || stored_asked)
             return failure(def, "{azimuth}, {elevation} and {distance} place the eye around the "
                                 "scene's centre: they cannot be combined with {eye}, {target}, "
                                 "{up}, {ortho-dir} or {camera}");
@@ -107,7 +154,9 @@ Result<ChosenView> chooseView(const ViewDef& def, const Scene& scene) {
     std::string scene_camera_source = "the scene's camera";
     if (const std::optional<std::size_t> first = defaultStoredCamera(scene))
         scene_camera_source = fileCamera(scene, *first);
-    if (!def.stored_camera.empty()) {
+    if (framed_asked)
+        scene_camera.reset();
+    if (stored_asked) {
         if (def.ortho_direction)
             return failure(def, "{camera} cannot be combined with {ortho-dir}");
         Result<std::size_t> picked = findStoredCamera(scene, def.stored_camera);
@@ -183,6 +232,7 @@ Result<ChosenView> chooseView(const ViewDef& def, const Scene& scene) {
             return failure(def, "{camera} ", def.stored_camera + ": " + e);
         return Result<ChosenView>::failure("the scene's camera: " + e);
     }
+    view.share_in_view = shareInView(scene, view.camera, view.width, view.height);
     return Result<ChosenView>{std::move(view), {}};
 }
 

@@ -66,6 +66,33 @@ TEST_F(Cli, CameraPicksAStoredCamera) {
     EXPECT_EQ(wider["camera"]["fov_degrees"], 60.0);
 }
 
+// A camera a mesh file stores that sees almost nothing is used with a warning naming --camera
+// framed, which frames the whole scene instead (issue 35).
+TEST_F(Cli, CameraFramedAndTheWarningOfACameraThatSeesLittle) {
+    const std::string away = dataPath("meshes/camera_looking_away.gltf");
+    const RunResult own = run({"info", away});
+    ASSERT_EQ(own.code, 0) << own;
+    EXPECT_NE(own.err.find("vissort: warning: the file's camera 0 'front' sees 0% of the "
+                           "scene's surface: --camera framed frames the whole scene"),
+              std::string::npos)
+        << own;
+    // A camera that crops the scene (the glTF's close-up of its quad): a note, not a warning.
+    const RunResult close_up = run({"info", kCameras});
+    EXPECT_TRUE(close_up.err.empty()) << close_up;
+    EXPECT_NE(close_up.out.find("note: the file's camera 0 'front' sees "), std::string::npos)
+        << close_up;
+    EXPECT_NE(close_up.out.find("the rest is outside the picture; --camera framed"),
+              std::string::npos)
+        << close_up;
+    const RunResult framed = run({"info", away, "--camera", "framed"});
+    ASSERT_EQ(framed.code, 0) << framed;
+    EXPECT_TRUE(framed.err.empty()) << framed;
+    EXPECT_NE(framed.out.find("(framed to the geometry)"), std::string::npos) << framed;
+    // The file's cameras set aside: the same camera as a file without any.
+    const json plain = orderJson({kCameras, "--camera", "framed"}, "framed.json");
+    EXPECT_NE(plain["camera"]["eye"], json::array({0.5, 0.0, 3.0}));
+}
+
 TEST_F(Cli, ErrorCamera) {
     expectError({"order", kCameras, "--camera", "frnt"}, kUsage,
                 {"no camera 'frnt'", "indices 0 and 1", "did you mean 'front'?"});
@@ -141,10 +168,10 @@ TEST_F(Cli, CsvHasARowAFrame) {
     const auto collide_rows = csvRows(piped.out);
     ASSERT_EQ(collide_rows.size(), 3u) << piped;
     EXPECT_EQ(collide_rows[0],
-              (std::vector<std::string>{"frame", "time_s", "box_object_pairs", "object_pairs",
-                                        "box_triangle_pairs", "triangle_pairs", "intersecting",
-                                        "colliding_objects", "directions", "queries", "update_ms",
-                                        "cull_ms", "exact_ms", "total_ms"}));
+              (std::vector<std::string>{
+                  "frame", "time_s", "box_object_pairs", "object_pairs", "box_triangle_pairs",
+                  "triangle_pairs", "intersecting", "colliding_object_pairs", "candidate_objects",
+                  "directions", "queries", "update_ms", "cull_ms", "exact_ms", "total_ms"}));
     EXPECT_NE(piped.err.find("frame 1:"), std::string::npos) << "the text goes to stderr" << piped;
     expectError({"order", "builtin:slabs", "--csv", "-", "--json", "-"}, kUsage,
                 {"standard output"});

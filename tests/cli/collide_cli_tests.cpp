@@ -84,6 +84,48 @@ TEST_F(Cli, CollideJsonHasEveryDocumentedKey) {
     }
 }
 
+// The colliding objects by id and name (issue 35): the two crossed bars and not the box apart,
+// in the text, the JSON (ids into "objects") and the CSV's count; checked against the pairs of
+// --pairs-out mapped to their objects here.
+TEST_F(Cli, CollideSaysWhichObjectsCollide) {
+    const std::string scene =
+        std::string(VISSORT_SOURCE_DIR) + "/tests/data/scenes/crossed_bars.json";
+    const RunResult r = run({"collide", scene, "--json", path("c.json"), "--csv", path("c.csv"),
+                             "--pairs-out", path("pairs.txt")});
+    ASSERT_EQ(r.code, 0) << r;
+    EXPECT_NE(r.out.find("colliding objects: 1 pair: 0 'bar_x' and 1 'bar_y'\n"), std::string::npos)
+        << r;
+    const json doc = json::parse(readFile(path("c.json")));
+    EXPECT_EQ(doc["objects"], json({"bar_x", "bar_y", "box"}));
+    const json& frame = doc["frames"][0];
+    EXPECT_EQ(frame["object_pairs_colliding"], json::parse("[[0, 1]]"));
+    EXPECT_EQ(frame.value("colliding_object_pairs", -1), 1);
+    EXPECT_GE(frame.value("candidate_objects", -1), 2);
+    // Every triangle pair lies between the bars: 12 triangles each, in file order.
+    int pairs = 0;
+    for (const std::string& line : lines(readFile(path("pairs.txt")))) {
+        std::istringstream words(line);
+        int f = -1, a = -1, b = -1;
+        words >> f >> a >> b;
+        EXPECT_TRUE(a < 12 && b >= 12 && b < 24) << line;
+        ++pairs;
+    }
+    EXPECT_GT(pairs, 0);
+    const std::vector<std::string> rows = lines(readFile(path("c.csv")));
+    ASSERT_EQ(rows.size(), 2u);
+    const auto fields = [](const std::string& row) {
+        std::vector<std::string> out;
+        std::istringstream cells(row);
+        for (std::string cell; std::getline(cells, cell, ',');)
+            out.push_back(cell);
+        return out;
+    };
+    const std::vector<std::string> header = fields(rows[0]), values = fields(rows[1]);
+    const auto column = std::find(header.begin(), header.end(), "colliding_object_pairs");
+    ASSERT_NE(column, header.end());
+    EXPECT_EQ(values[std::size_t(column - header.begin())], "1");
+}
+
 TEST_F(Cli, CollideDumpsOneGroupPerObjectInTriangleOrder) {
     const RunResult r = run({"collide", "builtin:bunnies?n=3", "--dump-primitives", path("d.obj")});
     ASSERT_EQ(r.code, 0) << r;

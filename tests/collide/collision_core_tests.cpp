@@ -42,6 +42,39 @@ TEST(CollisionCore, VissortAndBruteNeedNoPeers) {
     }
 }
 
+// The colliding objects are named by their index in the detector's list, whatever order their
+// triangles come in: three objects given in reverse triangle order, a far triangle between two
+// crossing ones.
+TEST(CollisionCore, ObjectPairsNameTheObjectsAsTheyWereGiven) {
+    TrianglePositions positions = twoCrossingTriangles();
+    // Triangle 1 moves far away and triangle 2 (a copy of the old triangle 1) crosses triangle 0.
+    for (int k = 0; k < 3; ++k) {
+        positions.x.push_back(positions.x[3 + k]);
+        positions.y.push_back(positions.y[3 + k]);
+        positions.z.push_back(positions.z[3 + k]);
+        positions.x[3 + k] += 100;
+    }
+    const std::vector<PrimitiveRange> reversed = {{2, 1}, {1, 1}, {0, 1}}; // objects 0, 1, 2
+    for (CollisionMethod method : {CollisionMethod::vissort, CollisionMethod::brute}) {
+        SCOPED_TRACE(collisionMethodName(method));
+        CollisionSettings settings;
+        settings.method = method;
+        CollisionDetector detector(reversed, settings);
+        const CollisionResult result = detector.collide(positions.view());
+        ASSERT_EQ(result.pairs, (std::vector<TrianglePair>{{0, 2}}));
+        // Triangle 0 is object 2's, triangle 2 object 0's: the pair (0, 2), first < second.
+        EXPECT_EQ(result.object_pairs, (std::vector<ObjectPair>{{0, 2}}));
+        EXPECT_EQ(result.stats.colliding_object_pairs, 1u);
+        // Apart, nothing collides.
+        TrianglePositions apart = positions;
+        for (int k = 6; k < 9; ++k)
+            apart.x[k] -= 100;
+        const CollisionResult none = detector.collide(apart.view());
+        EXPECT_TRUE(none.object_pairs.empty());
+        EXPECT_EQ(none.stats.colliding_object_pairs, 0u);
+    }
+}
+
 TEST(CollisionStats, FieldTableNamesEveryFieldOnce) {
     CollisionStats s;
     s.box_object_pairs = 1;
@@ -49,7 +82,8 @@ TEST(CollisionStats, FieldTableNamesEveryFieldOnce) {
     s.box_triangle_pairs = 3;
     s.triangle_pairs = 4;
     s.intersecting = 5;
-    s.colliding_objects = 6;
+    s.candidate_objects = 6;
+    s.colliding_object_pairs = 13;
     s.directions = 7;
     s.queries = 8;
     s.update_ms = 9.5;
@@ -65,7 +99,8 @@ TEST(CollisionStats, FieldTableNamesEveryFieldOnce) {
                                                    {"box_triangle_pairs", 3},
                                                    {"triangle_pairs", 4},
                                                    {"intersecting", 5},
-                                                   {"colliding_objects", 6},
+                                                   {"candidate_objects", 6},
+                                                   {"colliding_object_pairs", 13},
                                                    {"directions", 7},
                                                    {"queries", 8},
                                                    {"update_ms", 9.5},
@@ -73,7 +108,7 @@ TEST(CollisionStats, FieldTableNamesEveryFieldOnce) {
                                                    {"exact_ms", 11.5},
                                                    {"total_ms", 12.5}}));
     EXPECT_EQ(sizeof(CollisionStats),
-              5 * sizeof(uint64_t) + 2 * sizeof(uint32_t) + sizeof(uint64_t) + 4 * sizeof(double));
+              6 * sizeof(uint64_t) + 2 * sizeof(uint32_t) + sizeof(uint64_t) + 4 * sizeof(double));
 }
 
 TEST(CollisionCore, PeerMethodsSayHowToGetThem) {

@@ -50,7 +50,7 @@ void expectBulletEqualsBrute(CollisionDetector& bullet, CollisionDetector& brute
     EXPECT_EQ(actual.pairs, expected.pairs);
     EXPECT_EQ(actual.stats.object_pairs, expected.stats.object_pairs);
     EXPECT_EQ(actual.stats.triangle_pairs, expected.stats.triangle_pairs);
-    EXPECT_EQ(actual.stats.colliding_objects, expected.stats.colliding_objects);
+    EXPECT_EQ(actual.stats.candidate_objects, expected.stats.candidate_objects);
 }
 
 /// The 12 triangles of the closed axis-aligned cube [x0, x0 + 1] x [0, 1] x [0, 1], appended.
@@ -142,7 +142,7 @@ TEST(PeerColliders, BulletFindsCubesTouchingFaceToFace) {
                 std::binary_search(result.pairs.begin(), result.pairs.end(), TrianglePair{a, b}))
                 << a << " " << b;
     EXPECT_EQ(result.stats.object_pairs, 1u);
-    EXPECT_EQ(result.stats.colliding_objects, 2u);
+    EXPECT_EQ(result.stats.candidate_objects, 2u);
 }
 
 TEST(PeerColliders, BulletFindsNothingBetweenDisjointObjects) {
@@ -152,7 +152,7 @@ TEST(PeerColliders, BulletFindsNothingBetweenDisjointObjects) {
     EXPECT_TRUE(result.pairs.empty());
     EXPECT_EQ(result.stats.object_pairs, 0u);
     EXPECT_EQ(result.stats.triangle_pairs, 0u);
-    EXPECT_EQ(result.stats.colliding_objects, 0u);
+    EXPECT_EQ(result.stats.candidate_objects, 0u);
     // Nor within one object: the cube's own faces touch each other but are never reported.
     const std::vector<PrimitiveRange> one_object = {{0, 24}};
     CollisionDetector single(one_object, settingsFor(CollisionMethod::bullet));
@@ -169,7 +169,7 @@ TEST(PeerColliders, ObjectWithoutTrianglesMeetsNothing) {
         CollisionDetector detector(with_empty, settingsFor(method));
         const CollisionResult result = detector.collide(positions);
         expectConsistent(result);
-        EXPECT_EQ(result.stats.colliding_objects, 2u);
+        EXPECT_EQ(result.stats.candidate_objects, 2u);
         if (method == CollisionMethod::bullet) {
             EXPECT_EQ(result.pairs, expected.pairs);
         }

@@ -130,6 +130,32 @@ TEST(ChooseView, ValuesOutOfRangeAreRefused) {
               std::string::npos);
 }
 
+// "framed" sets the file's cameras aside; the share in view says how much of the scene a camera
+// sees: all of it framed, none of it looking away.
+TEST(ChooseView, FramedAndTheShareInView) {
+    Scene scene = load(kCameras);
+    ViewDef def;
+    def.stored_camera = "framed";
+    const Result<ChosenView> framed = chooseView(def, scene);
+    ASSERT_TRUE(framed) << framed.error;
+    EXPECT_EQ(framed.value->source, "framed to the geometry");
+    EXPECT_DOUBLE_EQ(framed.value->share_in_view, 1.0);
+    def.azimuth_degrees = 45; // framed goes with the orbit options
+    EXPECT_TRUE(chooseView(def, scene));
+
+    Scene away = load(kNoCamera);
+    const Vec3 centre = away.positions.bounds().centre();
+    CameraSpec backwards;
+    backwards.eye = centre + Vec3{0, 0, 10};
+    backwards.target = centre + Vec3{0, 0, 20}; // the scene behind the eye
+    away.camera = backwards;
+    const Result<ChosenView> own = chooseView({}, away);
+    ASSERT_TRUE(own) << own.error;
+    EXPECT_EQ(own.value->source, "the scene's camera");
+    EXPECT_DOUBLE_EQ(own.value->share_in_view, 0.0);
+    EXPECT_LT(own.value->share_in_view, kFewInView);
+}
+
 TEST(ChooseView, StoredCamerasByNameOrIndexAndTheirNamesAsWritten) {
     const Scene scene = load(kCameras);
     ViewDef def;
