@@ -25,7 +25,7 @@ inline constexpr std::size_t kDeclaredSizeHeadBytes = 64 * 1024;
 /// problem without the file's name. `extension` is the file's, lowercase or not, without the dot.
 /// Checked: PLY (ASCII and binary, by its "ply" signature), OFF and its variants (COFF, NOFF,
 /// STOFF, 4OFF, nOFF; by extension or keyword), binary STL and classic NFF (by extension), text
-/// and binary DirectX and Caligari trueSpace (by signature). Anything
+/// and binary DirectX, Caligari trueSpace and binary glTF (by signature). Anything
 /// else, and any header this does not understand, gives an empty answer: assimp then decides.
 std::string declaredSizeProblem(std::string_view head, uint64_t file_size,
                                 std::string_view extension);
