@@ -60,6 +60,18 @@ template <class Names> std::string closestName(std::string_view text, const Name
     return best.empty() ? best_prefix : best;
 }
 
+/// "did you mean 'PREFIXNAME'? " for closestName's answer, or "" when there is none: the start
+/// of a parenthesis that goes on to list what is known ("(did you mean 'object'? expected
+/// object, triangle or multistage)"). `shown_prefix` is written before the name
+/// ("builtin:").
+template <class Names>
+std::string didYouMeanFirst(std::string_view text, const Names& names,
+                            std::string_view shown_prefix = {}) {
+    const std::string best = closestName(text, names);
+    return best.empty() ? std::string()
+                        : "did you mean '" + std::string(shown_prefix) + best + "'? ";
+}
+
 /// " (did you mean 'NAME'?)" for closestName's answer, or "" when there is none.
 template <class Names> std::string didYouMean(std::string_view text, const Names& names) {
     const std::string best = closestName(text, names);

@@ -58,10 +58,8 @@ Result<E> parseEnum(std::span<const EnumName<E>> table, std::string_view text,
         expected += table[i].name;
         names.push_back(table[i].name);
     }
-    const std::string suggestion = closestName(text, names);
     return Result<E>::failure("unknown " + std::string(what) + " '" + std::string(text) + "' (" +
-                              (suggestion.empty() ? "" : "did you mean '" + suggestion + "'? ") +
-                              "expected " + expected + ")");
+                              didYouMeanFirst(text, names) + "expected " + expected + ")");
 }
 
 } // namespace vissort

@@ -53,14 +53,21 @@ struct ChosenView {
     /// Where the camera came from, for people: "framed to the geometry", "the scene's camera",
     /// "the file's camera 1 'Camera.002'", "--azimuth/--elevation, framed", ...
     std::string source;
-    /// The share of the scene's surface at t = 0 in the view (of points spread over it by
-    /// area), 0 to 1: a file's camera that sees a few percent of the scene (inside a mesh
-    /// scaled 100x) is worth a warning.
-    double share_in_view = 1;
+    /// The index in scene.cameras of the camera when it is a mesh file's stored camera used as
+    /// stored (no option changed it), else none.
+    std::optional<std::size_t> stored_camera;
 };
 
-/// Below this share in view, a camera of the scene's own is worth a warning that says how to
-/// frame the scene instead (--camera framed); below kMostInView, a note that it crops the scene.
+/// The share of the scene's surface at t = 0 that a width x height view through camera shows,
+/// 0 to 1: of 4096 points spread over the triangles by area (each at a low-discrepancy spot of
+/// its triangle), those in front of the eye and inside the image. A file's camera inside a mesh
+/// scaled 100x sees a sliver; one framing a quad that reaches past the image still sees most of
+/// it, which its corners alone would not say. One walk over the triangles, no allocation.
+double shareOfSurfaceInView(const Scene& scene, const CameraSpec& camera, uint32_t width,
+                            uint32_t height);
+
+/// Below this share in view, a mesh file's camera is worth a warning that says how to frame the
+/// scene instead (--camera framed); below kMostInView, a note that it crops the scene.
 inline constexpr double kFewInView = 0.05, kMostInView = 0.95;
 
 /// The view `def` asks for of `scene`, or a one-line error naming the fields that cannot be

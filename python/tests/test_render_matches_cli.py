@@ -95,6 +95,13 @@ def test_camera_of_scene_is_the_cli_camera(cli, tmp_path):
     expected = cli_image(cli, tmp_path, "builtin:bunnies?n=4&seed=2", "--size", "80x60",
                          "--azimuth", "120", "--elevation", "-15")
     np.testing.assert_array_equal(image, expected)
+    # The eye lies in the direction the angles give from the target (sin A cos E, sin E,
+    # cos A cos E), worked out here.
+    a, e = np.radians(120), np.radians(-15)
+    direction = np.subtract(camera.eye, camera.target)
+    np.testing.assert_allclose(direction / np.linalg.norm(direction),
+                               [np.sin(a) * np.cos(e), np.sin(e), np.cos(a) * np.cos(e)],
+                               atol=1e-9)
     # Nothing asked is the default camera.
     default = vissort.Camera.default(scene, size=(80, 60))
     assert vissort.Camera.of_scene(scene, size=(80, 60)).eye == default.eye

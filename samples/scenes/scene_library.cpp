@@ -67,11 +67,9 @@ Result<Scene> makeBuiltinScene(const std::string& name, const SceneParameters& p
         known += (known.empty() ? "" : ", ") + std::string(scene.name);
         names.emplace_back(scene.name);
     }
-    const std::string suggestion = closestName(name, names);
-    return Result<Scene>::failure(
-        "unknown built-in scene 'builtin:" + name + "' (" +
-        (suggestion.empty() ? "" : "did you mean 'builtin:" + suggestion + "'? ") +
-        "known: " + known + ")");
+    return Result<Scene>::failure("unknown built-in scene 'builtin:" + name + "' (" +
+                                  didYouMeanFirst(name, names, "builtin:") + "known: " + known +
+                                  ")");
 }
 
 Result<Scene> loadScene(const std::string& specification) {

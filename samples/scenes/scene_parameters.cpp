@@ -112,9 +112,7 @@ std::string ParameterReader::error() const {
         std::string accepted;
         for (const std::string& known : known_keys_)
             accepted += (accepted.empty() ? "" : ", ") + known;
-        const std::string suggestion = closestName(key, known_keys_);
-        return scene_ + ": unknown parameter '" + key + "' (" +
-               (suggestion.empty() ? "" : "did you mean '" + suggestion + "'? ") +
+        return scene_ + ": unknown parameter '" + key + "' (" + didYouMeanFirst(key, known_keys_) +
                "accepted: " + accepted + ")";
     }
     return {};

@@ -100,7 +100,7 @@ Status writeText(const std::filesystem::path& file, const std::string& text) {
     out << text;
     out.close();
     if (!out)
-        return Status::failure("cannot write " + file.string() + withReason(lastSystemError()));
+        return Status::failure(cannotWrite(file.string()));
     return {};
 }
 

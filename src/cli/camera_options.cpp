@@ -161,16 +161,17 @@ int loadSceneAndView(const std::string& specification, const ViewOptions& option
     if (auto error = resolveView(options, *scene, view); !error.empty())
         return fail(kExitUsage, error);
     // A camera a mesh file stores that sees little of the scene (inside a mesh scaled 100x, or
-    // cropping it): say so, and how to see the whole.
-    // (A JSON or built-in scene's camera was placed for vissort: the power plant's walkthrough
-    // starts inside the plant on purpose.)
-    const bool scenes_own = view.source.rfind("the file's camera", 0) == 0;
+    // cropping it): say so, and how to see the whole. (A JSON or built-in scene's camera was
+    // placed for vissort: the power plant's walkthrough starts inside the plant on purpose.)
+    if (!view.stored_camera)
+        return kExitOk;
+    const double seen = shareOfSurfaceInView(*scene, view.camera, view.width, view.height);
     std::ostringstream share;
-    share << std::setprecision(2) << 100 * view.share_in_view << '%';
-    if (scenes_own && view.share_in_view < kFewInView)
+    share << std::setprecision(2) << 100 * seen << '%';
+    if (seen < kFewInView)
         warn(view.source + " sees " + share.str() +
              " of the scene's surface: --camera framed frames the whole scene");
-    else if (scenes_own && view.share_in_view < kMostInView)
+    else if (seen < kMostInView)
         std::cout << "note: " << view.source << " sees " << share.str()
                   << " of the scene's surface, the rest is outside the picture; --camera framed "
                      "shows all of it\n";

@@ -123,8 +123,7 @@ int runCollide(const CollideOptions& options) {
         errno = 0;
         pairs_out.open(options.pairs_path);
         if (!pairs_out)
-            return fail(kExitFailure,
-                        "cannot write " + options.pairs_path + withReason(lastSystemError()));
+            return fail(kExitFailure, cannotWrite(options.pairs_path));
     }
     const std::vector<PrimitiveRange> objects = scene->objectPrimitives();
     CollisionDetector detector(objects, settings);
@@ -161,8 +160,7 @@ int runCollide(const CollideOptions& options) {
     progress.clear();
     errno = 0;
     if (pairs_out.is_open() && !pairs_out.flush())
-        return fail(kExitFailure,
-                    "cannot write " + options.pairs_path + withReason(lastSystemError()));
+        return fail(kExitFailure, cannotWrite(options.pairs_path));
 
     double mean = 0;
     for (double ms : total_ms)
@@ -196,8 +194,7 @@ int runCollide(const CollideOptions& options) {
         !writePrimitivesObj(options.dump_path,
                             "vissort collide: one group per object id; face i is triangle i",
                             driver.positions(), objects))
-        return fail(kExitFailure,
-                    "cannot write " + options.dump_path + withReason(lastSystemError()));
+        return fail(kExitFailure, cannotWrite(options.dump_path));
     return kExitOk;
 }
 

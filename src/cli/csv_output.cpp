@@ -42,7 +42,7 @@ int CsvTable::write(const std::string& path) const {
     }
     out.flush();
     if (!out || (path != "-" && !file))
-        return fail(kExitFailure, "cannot write " + path + withReason(lastSystemError()));
+        return fail(kExitFailure, cannotWrite(path));
     return kExitOk;
 }
 

@@ -132,9 +132,7 @@ int writeJsonFile(const JsonOutput& output, const nlohmann::json& document,
     out.flush();
     if (!out || (!to_standard_output && !file))
         return fail(kExitFailure,
-                    "cannot write " +
-                        (to_standard_output ? std::string("standard output") : output.path) +
-                        withReason(lastSystemError()));
+                    cannotWrite(to_standard_output ? std::string("standard output") : output.path));
     return kExitOk;
 }
 

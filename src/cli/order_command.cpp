@@ -207,8 +207,7 @@ int runOrder(const OrderOptions& options) {
         if (!writePrimitivesObj(options.dump_path,
                                 "vissort primitives: one group per primitive id, world space",
                                 driver.positions(), primitives))
-            return fail(kExitFailure,
-                        "cannot write " + options.dump_path + withReason(lastSystemError()));
+            return fail(kExitFailure, cannotWrite(options.dump_path));
     }
     return kExitOk;
 }

@@ -41,8 +41,9 @@ std::string unwritableReason(const std::string& path) {
     return {};
 }
 
-std::string lastSystemError() {
-    return errno == 0 ? std::string() : std::string(std::strerror(errno));
+std::string cannotWrite(const std::string& path) {
+    return "cannot write " + path +
+           (errno == 0 ? std::string() : ": " + std::string(std::strerror(errno)));
 }
 
 } // namespace vissort::cli

@@ -12,13 +12,8 @@ namespace vissort::cli {
 /// (standard output). A frame pattern (frame_%04d.png) is checked by its folder.
 std::string unwritableReason(const std::string& path);
 
-/// The system's reason for the last failed call (strerror(errno)), or "" when errno is 0: for
-/// the "cannot write" of a write that failed after all.
-std::string lastSystemError();
-
-/// ": REASON", or "" without one: what follows "cannot write FILE".
-inline std::string withReason(const std::string& reason) {
-    return reason.empty() ? std::string() : ": " + reason;
-}
+/// "cannot write PATH: REASON" after a write that failed, REASON the system's (strerror(errno))
+/// when it gave one: callers set errno to 0 before the write.
+std::string cannotWrite(const std::string& path);
 
 } // namespace vissort::cli

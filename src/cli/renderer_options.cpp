@@ -88,10 +88,9 @@ std::string resolveRendererOptions(const RendererOptions& options, bool allow_al
             std::vector<std::string> names = {"all"};
             for (const auto& entry : kBlendMethodNames)
                 names.emplace_back(entry.name);
-            const std::string suggestion = closestName(options.method, names);
             return "--method: unknown method '" + options.method + "' (" +
-                   (suggestion.empty() ? "" : "did you mean '" + suggestion + "'? ") + "expected " +
-                   blendMethodNames() + "; or all)";
+                   didYouMeanFirst(options.method, names) + "expected " + blendMethodNames() +
+                   "; or all)";
         }
         if (!method)
             return "--method: " + method.error;

@@ -51,9 +51,7 @@ void expectKeys(const Json& value, const std::string& where,
         for (const char* k : allowed)
             list += std::string(list.empty() ? "" : ", ") + k;
         std::vector<std::string_view> names(allowed.begin(), allowed.end());
-        const std::string suggestion = closestName(item.key(), names);
-        fail(where, "unknown key '" + item.key() + "' (" +
-                        (suggestion.empty() ? "" : "did you mean '" + suggestion + "'? ") +
+        fail(where, "unknown key '" + item.key() + "' (" + didYouMeanFirst(item.key(), names) +
                         "allowed: " + list + ")");
     }
 }

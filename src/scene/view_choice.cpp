@@ -64,47 +64,6 @@ Status checkScenePath(const ViewDef& def, const Scene& scene) {
     return Status::ok();
 }
 
-// The share of the scene's surface inside the view: of 4096 points spread over the triangles by
-// area (evenly over the cumulative area, each at a low-discrepancy spot of its triangle), those
-// that project inside the image in front of the eye. A camera inside a mesh scaled 100x sees a
-// sliver of the surface; one framing a quad that reaches past the image still sees most of it,
-// which its corners alone would not say.
-double shareInView(const Scene& scene, const CameraSpec& camera, uint32_t width, uint32_t height) {
-    constexpr int kSamples = 4096;
-    const TrianglePositions& p = scene.positions;
-    const std::size_t triangles = p.triangleCount();
-    std::vector<double> cumulative(triangles);
-    double total = 0;
-    for (std::size_t t = 0; t < triangles; ++t) {
-        const Vec3 a = p.corner(3 * t), b = p.corner(3 * t + 1), c = p.corner(3 * t + 2);
-        total += length(cross(b - a, c - a));
-        cumulative[t] = total;
-    }
-    if (!(total > 0))
-        return 1;
-    const ViewProjection view = frameCamera(camera, p.bounds(), width, height);
-    int seen = 0;
-    for (int s = 0; s < kSamples; ++s) {
-        const double at = (s + 0.5) / kSamples * total;
-        const std::size_t t = std::min<std::size_t>(
-            std::size_t(std::lower_bound(cumulative.begin(), cumulative.end(), at) -
-                        cumulative.begin()),
-            triangles - 1);
-        // The R2 sequence's point s, folded into the triangle.
-        double u = std::fmod(0.5 + s * 0.7548776662466927, 1.0);
-        double v = std::fmod(0.5 + s * 0.5698402909980532, 1.0);
-        if (u + v > 1) {
-            u = 1 - u;
-            v = 1 - v;
-        }
-        const Vec3 a = p.corner(3 * t), b = p.corner(3 * t + 1), c = p.corner(3 * t + 2);
-        const std::array<double, 4> clip = view.toClip(a + (b - a) * u + (c - a) * v);
-        // In front of the eye and inside the image (the depth range is framed to the bounds).
-        seen += clip[3] > 0 && std::abs(clip[0]) <= clip[3] && std::abs(clip[1]) <= clip[3];
-    }
-    return double(seen) / kSamples;
-}
-
 std::string fileCamera(const Scene& scene, std::size_t index) {
     return "the file's camera " + std::to_string(index) + " '" + scene.cameras[index].name + "'";
 }
@@ -152,8 +111,9 @@ Result<ChosenView> chooseView(const ViewDef& def, const Scene& scene) {
     // first).
     std::optional<CameraSpec> scene_camera = scene.camera;
     std::string scene_camera_source = "the scene's camera";
-    if (const std::optional<std::size_t> first = defaultStoredCamera(scene))
-        scene_camera_source = fileCamera(scene, *first);
+    std::optional<std::size_t> scene_camera_index = defaultStoredCamera(scene);
+    if (scene_camera_index)
+        scene_camera_source = fileCamera(scene, *scene_camera_index);
     if (framed_asked)
         scene_camera.reset();
     if (stored_asked) {
@@ -163,6 +123,7 @@ Result<ChosenView> chooseView(const ViewDef& def, const Scene& scene) {
         if (!picked)
             return failure(def, "{camera}: ", picked.error);
         scene_camera = scene.cameras[*picked.value].camera;
+        scene_camera_index = *picked.value;
         scene_camera_source = fileCamera(scene, *picked.value);
         if (perspective_given && scene_camera->projection == Projection::orthographic)
             return failure(def, "{camera} ",
@@ -209,6 +170,8 @@ Result<ChosenView> chooseView(const ViewDef& def, const Scene& scene) {
                                    : scene_camera_source;
         if (perspective_given && !orbit_given)
             view.source += named(def.names, ", changed by the options");
+        if (!framed && !perspective_given && def.path != CameraPath::scene)
+            view.stored_camera = scene_camera_index;
         if (framed && def.eye)
             view.camera.target = bounds.centre();
         if (def.distance) {
@@ -232,8 +195,47 @@ Result<ChosenView> chooseView(const ViewDef& def, const Scene& scene) {
             return failure(def, "{camera} ", def.stored_camera + ": " + e);
         return Result<ChosenView>::failure("the scene's camera: " + e);
     }
-    view.share_in_view = shareInView(scene, view.camera, view.width, view.height);
     return Result<ChosenView>{std::move(view), {}};
+}
+
+double shareOfSurfaceInView(const Scene& scene, const CameraSpec& camera, uint32_t width,
+                            uint32_t height) {
+    constexpr int kSamples = 4096;
+    const TrianglePositions& p = scene.positions;
+    const std::size_t triangles = p.triangleCount();
+    const auto area = [&](std::size_t t) {
+        const Vec3 a = p.corner(3 * t), b = p.corner(3 * t + 1), c = p.corner(3 * t + 2);
+        return length(cross(b - a, c - a));
+    };
+    double total = 0;
+    for (std::size_t t = 0; t < triangles; ++t)
+        total += area(t);
+    if (!(total > 0))
+        return 1;
+    const ViewProjection view = frameCamera(camera, p.bounds(), width, height);
+    // Sample s sits where the running area passes (s + 0.5) / kSamples of the total: one walk
+    // over the triangles, the samples in order.
+    int seen = 0, s = 0;
+    double running = 0;
+    for (std::size_t t = 0; t < triangles && s < kSamples; ++t) {
+        running += area(t);
+        const bool last = t + 1 == triangles;
+        for (; s < kSamples && ((s + 0.5) / kSamples * total <= running || last); ++s) {
+            // The R2 sequence's point s, folded into the triangle.
+            double u = std::fmod(0.5 + s * 0.7548776662466927, 1.0);
+            double v = std::fmod(0.5 + s * 0.5698402909980532, 1.0);
+            if (u + v > 1) {
+                u = 1 - u;
+                v = 1 - v;
+            }
+            const Vec3 a = p.corner(3 * t), b = p.corner(3 * t + 1), c = p.corner(3 * t + 2);
+            const std::array<double, 4> clip = view.toClip(a + (b - a) * u + (c - a) * v);
+            // In front of the eye and inside the image (the depth range is framed to the
+            // bounds).
+            seen += clip[3] > 0 && std::abs(clip[0]) <= clip[3] && std::abs(clip[1]) <= clip[3];
+        }
+    }
+    return double(seen) / kSamples;
 }
 
 } // namespace vissort

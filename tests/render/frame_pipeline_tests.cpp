@@ -11,7 +11,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cstdlib>
 #include <set>
 #include <vector>
 
@@ -69,7 +71,13 @@ TEST(FramePipeline, PictureAndReferenceMatchTheABuffer) {
     EXPECT_LE(test::compareWithABuffer(frame.reference_rgba, truth).max_abs, 1);
     ASSERT_TRUE(frame.error);
     EXPECT_LE(frame.error->max_abs, 2);
-    EXPECT_EQ(frame.error->max_abs, compareImages(frame.rgba, frame.reference_rgba).max_abs);
+    // The largest channel difference, counted here (RGB, as the error counts it).
+    int largest = 0;
+    for (std::size_t i = 0; i < frame.rgba.size(); ++i)
+        if (i % 4 != 3)
+            largest =
+                std::max(largest, std::abs(int(frame.rgba[i]) - int(frame.reference_rgba[i])));
+    EXPECT_EQ(frame.error->max_abs, largest);
     EXPECT_GT(frame.stats.order.queries, 0u);       // vissort ordered the picture
     EXPECT_GT(frame.reference_stats.fragments, 0u); // linked-list listed the reference's
     EXPECT_EQ(frame.colliding_pairs, 0u);           // nothing asked of the collision detector

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "scenes/scene_library.h"
@@ -130,30 +131,46 @@ TEST(ChooseView, ValuesOutOfRangeAreRefused) {
               std::string::npos);
 }
 
-// "framed" sets the file's cameras aside; the share in view says how much of the scene a camera
-// sees: all of it framed, none of it looking away.
-TEST(ChooseView, FramedAndTheShareInView) {
-    Scene scene = load(kCameras);
+// "framed" sets the file's cameras aside; the file's camera used as stored is named, not one an
+// option changed.
+TEST(ChooseView, FramedAndTheStoredCameraUsed) {
+    const Scene scene = load(kCameras);
+    const Result<ChosenView> own = chooseView({}, scene);
+    ASSERT_TRUE(own) << own.error;
+    EXPECT_EQ(own.value->stored_camera, std::optional<std::size_t>(0));
     ViewDef def;
+    def.fov_degrees = 60;
+    EXPECT_FALSE(chooseView(def, scene).value->stored_camera); // changed by an option
+    def = {};
     def.stored_camera = "framed";
     const Result<ChosenView> framed = chooseView(def, scene);
     ASSERT_TRUE(framed) << framed.error;
     EXPECT_EQ(framed.value->source, "framed to the geometry");
-    EXPECT_DOUBLE_EQ(framed.value->share_in_view, 1.0);
+    EXPECT_FALSE(framed.value->stored_camera);
     def.azimuth_degrees = 45; // framed goes with the orbit options
     EXPECT_TRUE(chooseView(def, scene));
+}
 
-    Scene away = load(kNoCamera);
-    const Vec3 centre = away.positions.bounds().centre();
+// The share of the surface in view, against the geometry worked out by hand: the glTF's quad
+// [-1, 1]^2 at z = 0 seen from (0.5, 0, 3) with a vertical field of view of 0.6 radians in a
+// square image shows x in [0.5 - h, 1] and y in [-h, h], h = 3 tan(0.3): 2.65 of its 4
+// square units. A framed camera shows all of a scene, one looking away none.
+TEST(ChooseView, ShareOfTheSurfaceInView) {
+    const Scene scene = load(kCameras);
+    ASSERT_TRUE(scene.camera);
+    const double h = 3 * std::tan(0.6 / 2); // the file's yfov: 0.6 radians
+    const double expected = (1 - (0.5 - h)) * (2 * h) / 4;
+    EXPECT_NEAR(shareOfSurfaceInView(scene, *scene.camera, 1024, 1024), expected, 0.02);
+    ViewDef def;
+    def.stored_camera = "framed";
+    EXPECT_DOUBLE_EQ(shareOfSurfaceInView(scene, chooseView(def, scene).value->camera, 1024, 1024),
+                     1.0);
+    const Scene other = load(kNoCamera);
+    const Vec3 centre = other.positions.bounds().centre();
     CameraSpec backwards;
     backwards.eye = centre + Vec3{0, 0, 10};
     backwards.target = centre + Vec3{0, 0, 20}; // the scene behind the eye
-    away.camera = backwards;
-    const Result<ChosenView> own = chooseView({}, away);
-    ASSERT_TRUE(own) << own.error;
-    EXPECT_EQ(own.value->source, "the scene's camera");
-    EXPECT_DOUBLE_EQ(own.value->share_in_view, 0.0);
-    EXPECT_LT(own.value->share_in_view, kFewInView);
+    EXPECT_DOUBLE_EQ(shareOfSurfaceInView(other, backwards, 64, 48), 0.0);
 }
 
 TEST(ChooseView, StoredCamerasByNameOrIndexAndTheirNamesAsWritten) {
