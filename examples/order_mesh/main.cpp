@@ -1,5 +1,7 @@
 // Loads a scene (a mesh file or a JSON scene) and prints the visibility order of its objects
-// (or triangles), front to back, seen from the scene's camera or the default one.
+// (or triangles), front to back, seen from the camera `vissort order` uses when none is asked
+// for (the scene's own, else its geometry framed, at 1024x1024): the order
+// `vissort order SCENE --level L` prints.
 //   order_mesh SCENE [object|triangle|multistage]
 // (The vissort command's builtin:NAME scenes are its samples', not the installed library's.)
 
@@ -11,6 +13,7 @@
 #include <vissort/oracles.h>
 #include <vissort/scene.h>
 #include <vissort/scene_orderer.h>
+#include <vissort/view_choice.h>
 
 int main(int argc, char** argv) {
     if (argc < 2 || argc > 3) {
@@ -37,9 +40,14 @@ int main(int argc, char** argv) {
         return 1;
     }
 
-    const vissort::Bounds bounds = scene.positions.bounds();
-    const vissort::CameraSpec camera = scene.camera.value_or(vissort::defaultCamera(bounds));
-    const vissort::ViewProjection view = vissort::frameCamera(camera, bounds, 512, 512);
+    // The command line's camera policy (view_choice.h), with nothing asked.
+    const vissort::Result<vissort::ChosenView> chosen = vissort::chooseView({}, scene);
+    if (!chosen) {
+        std::fprintf(stderr, "order_mesh: %s\n", chosen.error.c_str());
+        return 1;
+    }
+    const vissort::ViewProjection view = vissort::frameCamera(
+        chosen.value->camera, scene.positions.bounds(), chosen.value->width, chosen.value->height);
     // The orderer takes each object's triangle range, not the Scene: any mesh source will do.
     vissort::SceneOrderer orderer(scene.objectPrimitives(), uint32_t(scene.triangleCount()),
                                   *level.value, **oracle.value);

@@ -15,18 +15,46 @@
 
 #include "vissort/camera.h"
 #include "vissort/camera_path.h"
+#include "vissort/enum_names.h"
 #include "vissort/geometry.h"
 #include "vissort/result.h"
 
 namespace vissort {
 
+/// A run of an object's triangles with a material of its own: an object made of several meshes
+/// of a file (ObjectGrouping node or file) keeps each mesh as a part, drawn in the mesh's colour.
+struct ObjectPart {
+    std::string name;
+    Rgba colour;
+    uint32_t first_triangle = 0; // scene triangle ids, inside the object's range
+    uint32_t triangle_count = 0;
+};
+
+/// The unit that orders, cycles and collisions speak of.
 struct SceneObject {
     std::string name;
+    /// For an object with parts: the colour of its largest part, with the least alpha of any
+    /// part (so that the object is transparent when a part is).
     Rgba colour;
     bool transparent = false;
     uint32_t first_triangle = 0; // triangle ids are global, object 0's triangles first
     uint32_t triangle_count = 0;
+    /// Empty when the whole object has `colour`; else parts tiling its triangles in order.
+    std::vector<ObjectPart> parts;
+
+    /// The parts as drawn: `parts`, or the object as one part.
+    std::vector<ObjectPart> drawnParts() const;
 };
+
+/// How a mesh file's meshes become objects (docs/scene-format.md):
+///  - mesh: one object per mesh (an OBJ `g`/`o` group of one material, a glTF primitive);
+///  - node: one object per node of the file's hierarchy, its meshes as parts (an OBJ group
+///    with several materials, a glTF mesh of several primitives);
+///  - file: the whole file one object, its meshes as parts.
+/// Triangle ids are the same under mesh and file; node puts a node's meshes together.
+enum class ObjectGrouping { mesh, node, file };
+inline constexpr EnumName<ObjectGrouping> kObjectGroupingNames[] = {
+    {ObjectGrouping::mesh, "mesh"}, {ObjectGrouping::node, "node"}, {ObjectGrouping::file, "file"}};
 
 /// Moves a scene's triangles over time. Implementations must be deterministic.
 class Animation {
@@ -82,17 +110,22 @@ using BuiltinSceneMaker =
 
 /// Loads a scene from a specification:
 ///   `PATH.json`                   a JSON scene composing mesh files (docs/scene-format.md);
+///                                 each entry is one object unless it says otherwise;
 ///   `builtin:NAME?key=value&...`  the scene builtins makes of that name (an error without one);
 ///   any other path                a mesh file read with assimp (OBJ, PLY, STL, glTF/GLB, ...):
-///                                 each mesh of the file is one object, in file order.
+///                                 its meshes become objects as `mesh_file_objects` says (one
+///                                 per mesh when unset), in file order.
 /// Rejects missing or unreadable files, empty geometry and non-finite coordinates, and checks
-/// what builtins makes the same way (validateScene).
-Result<Scene> loadScene(const std::string& specification, const BuiltinSceneMaker& builtins = {});
+/// what builtins makes the same way (validateScene). `mesh_file_objects` set for a JSON or
+/// built-in scene is an error: a JSON scene says it in its entries.
+Result<Scene> loadScene(const std::string& specification, const BuiltinSceneMaker& builtins = {},
+                        std::optional<ObjectGrouping> mesh_file_objects = std::nullopt);
 
 /// A mesh file's bytes already in memory, read as loadScene reads the file: format_hint is its
 /// extension ("obj", "ply", ...), label names it in messages.
 Result<Scene> loadMeshFromMemory(const void* data, std::size_t size, const std::string& format_hint,
-                                 const std::string& label);
+                                 const std::string& label,
+                                 ObjectGrouping objects = ObjectGrouping::mesh);
 
 /// The index in scene.cameras of the camera a mesh file's scene uses by default: the first that
 /// can be used; none when no stored camera can.
@@ -105,15 +138,16 @@ std::optional<std::size_t> defaultStoredCamera(const Scene& scene);
 Result<std::size_t> findStoredCamera(const Scene& scene, const std::string& name_or_index);
 
 /// The camera that frames a scene without one of its own: framingCamera (camera.h) over its
-/// geometry; for a dynamic scene over the geometry of frames 0 to max(frames, 300) - 1 (frames
-/// kFrameInterval apart, up to 32 of them sampled evenly, fewer when they would hold more than
-/// 4M corners), so that the motion stays in the picture. Deterministic.
+/// geometry; for a dynamic scene over the geometry of the frames that will be run, 0 to
+/// frames - 1 (frames kFrameInterval apart, up to 32 of them sampled evenly, fewer when they
+/// would hold more than 4M corners), so that the motion stays in the picture. Deterministic.
 /// `orientation` as in framingCamera.
 CameraSpec framingCameraOf(const Scene& scene, double aspect, int frames = 1,
                            const CameraSpec& orientation = defaultOrientation());
 
 /// Checks a scene's invariants: finite coordinates, object ranges that tile the triangles in
-/// order, at least one triangle. A one-line message when one does not hold.
+/// order (and parts their object's), at least one triangle. A one-line message when one does not
+/// hold.
 Status validateScene(const Scene& scene);
 
 } // namespace vissort

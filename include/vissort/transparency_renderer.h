@@ -108,6 +108,11 @@ inline Result<SampleGrid> sampleGridOf(int64_t samples) {
                                        std::to_string(samples));
 }
 
+/// The background unless one is asked for: a dark slate grey, under which light and dark
+/// surfaces both show, and the default grey (0.8) at alpha 0.5 is plainly lighter (white made
+/// such surfaces nearly invisible: 0.9 against 1).
+inline constexpr Rgba kDefaultBackground{0.3f, 0.32f, 0.36f, 1.0f};
+
 struct RenderSettings {
     BlendMethod method = BlendMethod::vissort;
     OrderLevel level = OrderLevel::object; // vissort's ordering level; centroid's unit
@@ -115,7 +120,7 @@ struct RenderSettings {
     OracleOptions oracle_options;          // its threads and SIMD (the answers never change)
     bool all_transparent = false;          // every object transparent with alpha below
     float alpha = 0.5f;                    // with all_transparent, in (0, 1]
-    Rgba background{1.0f, 1.0f, 1.0f, 1.0f};
+    Rgba background = kDefaultBackground;  // each channel in [0, 1]
     Shading shading = Shading::lit;
     /// Samples a pixel, 1, 2, 4 or 8 (the paper's images: 4): every method renders, blends,
     /// checks, repairs and composites its cycles on each sample as on a pixel of its own, and
@@ -151,6 +156,12 @@ inline constexpr EnumName<RenderSettings::OrderCheck> kOrderCheckNames[] = {
 /// "auto", "on" or "off", or "unknown order check 'NAME' (expected ...)".
 inline Result<RenderSettings::OrderCheck> parseOrderCheck(std::string_view name) {
     return parseEnum<RenderSettings::OrderCheck>(kOrderCheckNames, name, "order check");
+}
+
+/// Whether the renderer draws an object transparent: every object with all_transparent, else
+/// one marked transparent whose alpha is below 1 (SceneObject::colour: its parts' least).
+inline bool drawnTransparent(const SceneObject& object, const RenderSettings& settings) {
+    return settings.all_transparent || (object.transparent && object.colour.a < 1.0f);
 }
 
 /// What one frame cost.
@@ -200,8 +211,10 @@ public:
     Image render(PositionsView positions, const ViewProjection& view, RenderStats& stats);
 
     /// Draws these triangles (scene triangle ids, e.g. collidingTriangles() of a collision
-    /// result) in a strong magenta, nearly opaque, in every method, from the next render on;
-    /// empty: none. Ids beyond the scene are ignored. Drawn over colour_cycles' colours.
+    /// result) in a strong magenta, opaque, in every method, from the next render on, and the
+    /// rest dimmed so that they show (greyer, transparent ones fainter: alpha 0.3 of theirs);
+    /// empty: none, nothing dimmed. Ids beyond the scene are ignored. Drawn over colour_cycles'
+    /// colours, which are not dimmed.
     void setHighlightedTriangles(std::span<const uint32_t> triangles);
 
     /// Reports the share of a frame's order done (SceneOrderer::setProgress) while vissort

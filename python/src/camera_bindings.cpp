@@ -46,7 +46,10 @@ PythonCamera CameraChoice::choose(const py::handle& camera, const std::shared_pt
     if (!scene)
         return {framingCamera(positions, double(width) / height), std::nullopt};
     if (scene != scene_ || std::pair(width, height) != size_) {
-        camera_ = defaultCameraOf(*scene, width, height);
+        // Calls run on, frame after frame: a dynamic scene is framed over its first 10 s, as
+        // `vissort view` frames it without --frames.
+        constexpr int kOpenEndedFrames = 300;
+        camera_ = defaultCameraOf(*scene, width, height, kOpenEndedFrames);
         scene_ = scene;
         size_ = {width, height};
     }
@@ -116,7 +119,8 @@ void bindCamera(py::module_& m) {
             },
             py::arg("scene"), py::arg("size") = py::make_tuple(1024, 1024), py::arg("frames") = 1,
             "The command line's camera when none is given: the scene's own, else its geometry "
-            "framed for an image of that size (a dynamic scene over max(frames, 300) frames)")
+            "framed for an image of that size (a dynamic scene over its first `frames` frames, "
+            "as the command line's --frames N)")
         .def_static(
             "of_scene",
             [](const Scene& scene, const py::object& camera, const py::object& eye,

@@ -26,9 +26,9 @@ struct PythonCamera {
 PythonCamera defaultCameraOf(const Scene& scene, uint32_t width, uint32_t height, int frames = 1);
 
 /// The camera a call uses: `camera` (a vissort.Camera; ValueError for anything else but None),
-/// else the scene's default camera (kept for the next call of the same scene and size: a
-/// dynamic scene's is framed over sampled frames of its motion, not free), else the positions
-/// framed (framingCamera). Needs the GIL.
+/// else the scene's default camera over its first 300 frames (kept for the next call of the same
+/// scene and size: a dynamic scene's is framed over sampled frames of its motion, not free), else
+/// the positions framed (framingCamera). Needs the GIL.
 class CameraChoice {
 public:
     PythonCamera choose(const pybind11::handle& camera, const std::shared_ptr<Scene>& scene,

@@ -1,6 +1,7 @@
 // vissort.render and vissort.Renderer: exact order-independent transparency (and its peer
 // methods) as (H, W, 4) uint8 images, through the process's shared OpenGL context.
 
+#include <cmath>
 #include <memory>
 #include <mutex>
 
@@ -19,6 +20,14 @@
 
 namespace vissort::python {
 namespace {
+
+// The library's default background as Python writes it: (0.3, 0.32, 0.36, 1.0), not the floats'
+// 0.30000001192092896.
+py::tuple defaultBackground() {
+    const auto rounded = [](float v) { return std::round(double(v) * 1e6) / 1e6; };
+    const Rgba& c = kDefaultBackground;
+    return py::make_tuple(rounded(c.r), rounded(c.g), rounded(c.b), rounded(c.a));
+}
 
 #if VISSORT_WITH_GL
 FramePipelineDef pipelineDefOf(const std::string& method, const std::string& level,
@@ -145,8 +154,9 @@ constexpr const char* kSettingsDoc =
     "oracle: vissort's ordering (centroid's unit). all_transparent with alpha: every object "
     "transparent. shading: lit, flat or membrane. samples: 1, 2, 4 or 8 a pixel, averaged "
     "(anti-aliasing). check: auto, on or off (vissort's per-pixel check and repair). "
-    "background: (r, g, b[, a]) in [0, 1]. highlight_collisions: the triangles that intersect "
-    "another object's in magenta, each frame (stats then count the collisions). As the command "
+    "background: (r, g, b[, a]) in [0, 1], a dark slate grey by default. highlight_collisions: "
+    "the triangles that intersect another object's in opaque magenta, the rest dimmed, each "
+    "frame (stats then count the collisions). As the command "
     "line's render options.";
 
 } // namespace
@@ -171,8 +181,8 @@ void bindRender(py::module_& m) {
              py::arg("level") = "object", py::arg("oracle") = "cpu",
              py::arg("all_transparent") = false, py::arg("alpha") = 0.5, py::arg("shading") = "lit",
              py::arg("samples") = 1, py::arg("check") = "auto",
-             py::arg("background") = py::make_tuple(1.0, 1.0, 1.0, 1.0),
-             py::arg("highlight_collisions") = false, kSettingsDoc)
+             py::arg("background") = defaultBackground(), py::arg("highlight_collisions") = false,
+             kSettingsDoc)
         .def("render", &Renderer::render, py::arg("camera") = py::none(),
              py::arg("size") = py::make_tuple(1024, 1024), py::kw_only(),
              py::arg("time") = py::none(), py::arg("positions") = py::none(),
@@ -197,7 +207,7 @@ void bindRender(py::module_& m) {
         py::arg("size") = py::make_tuple(1024, 1024), py::kw_only(), py::arg("method") = "vissort",
         py::arg("level") = "object", py::arg("oracle") = "cpu", py::arg("all_transparent") = false,
         py::arg("alpha") = 0.5, py::arg("shading") = "lit", py::arg("samples") = 1,
-        py::arg("check") = "auto", py::arg("background") = py::make_tuple(1.0, 1.0, 1.0, 1.0),
+        py::arg("check") = "auto", py::arg("background") = defaultBackground(),
         py::arg("highlight_collisions") = false, py::arg("time") = py::none(),
         py::arg("positions") = py::none(), py::arg("triangles") = py::none(),
         ("One frame as an (H, W, 4) uint8 RGBA image (Renderer renders many). " +

@@ -67,6 +67,20 @@ void bindScene(py::module_& m) {
         .def_readonly("transparent", &SceneObject::transparent)
         .def_readonly("first_triangle", &SceneObject::first_triangle)
         .def_readonly("triangle_count", &SceneObject::triangle_count)
+        .def_property_readonly(
+            "parts",
+            [](const SceneObject& o) {
+                py::list parts;
+                for (const ObjectPart& p : o.parts)
+                    parts.append(py::dict(py::arg("name") = p.name,
+                                          py::arg("colour") = py::make_tuple(
+                                              p.colour.r, p.colour.g, p.colour.b, p.colour.a),
+                                          py::arg("first_triangle") = p.first_triangle,
+                                          py::arg("triangle_count") = p.triangle_count));
+                return parts;
+            },
+            "The meshes an object is made of (load(objects='node' or 'file')), each a dict of "
+            "name, colour, first_triangle, triangle_count; empty for an object of one mesh")
         .def("__repr__", [](const SceneObject& o) {
             return "SceneObject(name='" + o.name + "', triangles " +
                    std::to_string(o.first_triangle) + ".." +
@@ -140,17 +154,27 @@ void bindScene(py::module_& m) {
 
     m.def(
         "load",
-        [](const py::object& path) {
+        [](const py::object& path, const std::optional<std::string>& objects) {
             const py::object text = py::module_::import("os").attr("fspath")(path);
             if (!py::isinstance<py::str>(text))
                 throw py::value_error("path must be a str or an os.PathLike of one");
             const std::string specification = text.cast<std::string>();
-            return madeScene([&] { return samples::loadScene(specification); });
+            std::optional<ObjectGrouping> grouping;
+            if (objects) {
+                const Result<ObjectGrouping> named =
+                    parseEnum<ObjectGrouping>(kObjectGroupingNames, *objects, "grouping");
+                if (!named)
+                    throw py::value_error("objects: " + named.error);
+                grouping = *named.value;
+            }
+            return madeScene([&] { return samples::loadScene(specification, grouping); });
         },
-        py::arg("path"),
+        py::arg("path"), py::kw_only(), py::arg("objects") = py::none(),
         "A scene from a mesh file (OBJ, PLY, STL, glTF, Collada, ... through assimp), a JSON "
         "scene, or a 'builtin:NAME?key=value' specification, as the command line reads it. "
-        "ValueError naming the problem when it cannot be read");
+        "objects: how a mesh file's meshes become objects, 'mesh' (one each, the default), "
+        "'node' or 'file' (the command line's --objects). ValueError naming the problem when it "
+        "cannot be read");
     m.def(
         "builtin",
         [](const std::string& name, const py::kwargs& parameters) {

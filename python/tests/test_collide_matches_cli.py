@@ -5,6 +5,7 @@ import numpy as np
 import pytest
 
 import vissort
+from conftest import source_file
 
 
 def cli_pairs(cli, tmp_path, *args):
@@ -79,3 +80,21 @@ def test_object_pairs_are_the_objects_of_the_pairs(cli_json):
     assert detector.stats["colliding_object_pairs"] == len(expected)
     cli = cli_json("collide", "builtin:bunnies?n=10&seed=1", "--frames", 31)
     assert cli["frames"][30]["object_pairs_colliding"] == objects.tolist()
+
+
+def test_a_mesh_files_grouping_decides_what_collides():
+    # crabs.obj: two crabs, each a shell pierced by its claw, four meshes in two nodes. By mesh,
+    # each claw meets its shell (both of the shell's triangles); by node or file, a crab is one
+    # object and does not collide with itself.
+    path = source_file("tests/data/meshes/crabs.obj")
+    by_mesh = vissort.load(path)
+    assert len(by_mesh.objects) == 4
+    assert vissort.collide(by_mesh).tolist() == [[0, 2], [1, 2], [3, 5], [4, 5]]
+    for grouping, objects in (("node", 2), ("file", 1)):
+        scene = vissort.load(path, objects=grouping)
+        assert len(scene.objects) == objects
+        assert [p["name"] for o in scene.objects for p in o.parts] == [o.name for o in
+                                                                       by_mesh.objects]
+        assert vissort.collide(scene).shape == (0, 2)
+    with pytest.raises(ValueError, match="did you mean 'node'"):
+        vissort.load(path, objects="nodes")

@@ -7,6 +7,7 @@ re-exports. Keep them in step with the bindings.
 
 import os
 from typing import (
+    Any,
     Literal,
     Optional,
     Sequence,
@@ -137,6 +138,10 @@ class SceneObject:
     def first_triangle(self) -> int: ...
     @property
     def triangle_count(self) -> int: ...
+    @property
+    def parts(self) -> list[dict[str, Any]]:
+        """The meshes an object is made of (load(objects='node' or 'file')), each a dict of
+        name, colour, first_triangle, triangle_count; empty for an object of one mesh."""
     def __repr__(self) -> str: ...
 
 class Scene:
@@ -175,11 +180,13 @@ class Scene:
         """The cameras a mesh file stores: (name, Camera or None, problem) each."""
     def __repr__(self) -> str: ...
 
-def load(path: Union[str, os.PathLike[str]]) -> Scene:
+def load(path: Union[str, os.PathLike[str]], *,
+         objects: Optional[Literal["mesh", "node", "file"]] = None) -> Scene:
     """A scene from a mesh file (OBJ, PLY, STL, glTF, Collada, ... through assimp), a JSON
     scene, or a 'builtin:NAME?key=value' specification, as the command line reads it. path: a
-    str or an os.PathLike (a pathlib.Path). ValueError naming the problem when it cannot be
-    read."""
+    str or an os.PathLike (a pathlib.Path). objects: how a mesh file's meshes become objects,
+    'mesh' (one each, the default), 'node' or 'file' (the command line's --objects). ValueError
+    naming the problem when it cannot be read."""
 
 def builtin(name: str, **parameters: Union[int, float, str]) -> Scene:
     """A built-in scene by name with its parameters: builtin('bunnies', n=18, seed=1);
@@ -210,7 +217,8 @@ class Camera:
     @staticmethod
     def default(scene: Scene, size: _Size = (1024, 1024), frames: int = 1) -> Camera:
         """The command line's camera when none is given: the scene's own, else its geometry
-        framed for an image of that size (a dynamic scene over max(frames, 300) frames).
+        framed for an image of that size (a dynamic scene over its first `frames` frames, as
+        the command line's --frames N).
         ValueError for frames outside 1 to 100000."""
     @staticmethod
     def of_scene(
@@ -336,7 +344,7 @@ class Renderer:
         shading: _Shading = "lit",
         samples: _Samples = 1,
         check: _Check = "auto",
-        background: npt.ArrayLike = (1.0, 1.0, 1.0, 1.0),
+        background: npt.ArrayLike = (0.3, 0.32, 0.36, 1.0),
         highlight_collisions: bool = False,
     ) -> None:
         """method: vissort, unsorted, centroid, peel, dual-peel, linked-list or weighted. level
@@ -376,7 +384,7 @@ def render(
     shading: _Shading = "lit",
     samples: _Samples = 1,
     check: _Check = "auto",
-    background: npt.ArrayLike = (1.0, 1.0, 1.0, 1.0),
+    background: npt.ArrayLike = (0.3, 0.32, 0.36, 1.0),
     highlight_collisions: bool = False,
     time: Optional[_Seconds] = None,
     positions: Optional[npt.ArrayLike] = None,

@@ -72,8 +72,9 @@ Result<Scene> makeBuiltinScene(const std::string& name, const SceneParameters& p
                                   ")");
 }
 
-Result<Scene> loadScene(const std::string& specification) {
-    return vissort::loadScene(specification, makeBuiltinScene);
+Result<Scene> loadScene(const std::string& specification,
+                        std::optional<ObjectGrouping> mesh_file_objects) {
+    return vissort::loadScene(specification, makeBuiltinScene, mesh_file_objects);
 }
 
 } // namespace vissort::samples

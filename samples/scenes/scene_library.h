@@ -29,7 +29,8 @@ std::vector<BuiltinSceneInfo> builtinScenes();
 Result<Scene> makeBuiltinScene(const std::string& name, const SceneParameters& parameters);
 
 /// vissort::loadScene with these scenes as its `builtin:` ones: a file, a JSON scene or
-/// `builtin:NAME?key=value&...`.
-Result<Scene> loadScene(const std::string& specification);
+/// `builtin:NAME?key=value&...`; `mesh_file_objects` as vissort::loadScene takes it.
+Result<Scene> loadScene(const std::string& specification,
+                        std::optional<ObjectGrouping> mesh_file_objects = std::nullopt);
 
 } // namespace vissort::samples

@@ -144,20 +144,34 @@ std::string cameraLine(const ChosenView& view) {
     return line;
 }
 
-std::optional<Scene> loadSceneOrReport(const std::string& specification) {
-    Result<Scene> loaded = samples::loadScene(specification);
-    if (!loaded) {
-        fail(kExitInput, loaded.error);
-        return std::nullopt;
-    }
-    return std::move(*loaded.value);
+void addObjectsOption(CLI::App& command, std::string& objects) {
+    command.add_option("--objects", objects,
+                       "How a mesh file's meshes become objects: mesh (one object each, the "
+                       "default), node (one per node of the file, its meshes parts of it) or "
+                       "file (the file one object); a JSON scene says it per entry");
 }
 
-int loadSceneAndView(const std::string& specification, const ViewOptions& options,
-                     std::optional<Scene>& scene, ChosenView& view) {
-    scene = loadSceneOrReport(specification);
-    if (!scene)
-        return kExitInput;
+int loadSceneOrReport(const std::string& specification, const std::string& objects,
+                      std::optional<Scene>& scene) {
+    std::optional<ObjectGrouping> grouping;
+    if (!objects.empty()) {
+        const Result<ObjectGrouping> named =
+            parseEnum<ObjectGrouping>(kObjectGroupingNames, objects, "grouping");
+        if (!named)
+            return fail(kExitUsage, "--objects: " + named.error);
+        grouping = *named.value;
+    }
+    Result<Scene> loaded = samples::loadScene(specification, grouping);
+    if (!loaded)
+        return fail(kExitInput, loaded.error);
+    scene = std::move(*loaded.value);
+    return kExitOk;
+}
+
+int loadSceneAndView(const std::string& specification, const std::string& objects,
+                     const ViewOptions& options, std::optional<Scene>& scene, ChosenView& view) {
+    if (const int code = loadSceneOrReport(specification, objects, scene); code != kExitOk)
+        return code;
     if (auto error = resolveView(options, *scene, view); !error.empty())
         return fail(kExitUsage, error);
     // A camera a mesh file stores that sees little of the scene (inside a mesh scaled 100x, or

@@ -47,12 +47,18 @@ std::string cameraLine(const ChosenView& view);
 /// Empty on success, else a one-line message naming the bad option.
 std::string resolveView(const ViewOptions& options, const Scene& scene, ChosenView& view);
 
-/// Loads a scene, printing the error and returning nullopt on failure.
-std::optional<Scene> loadSceneOrReport(const std::string& specification);
+/// Adds --objects: how a mesh file's meshes become objects (ObjectGrouping, scene.h).
+void addObjectsOption(CLI::App& command, std::string& objects);
+
+/// Loads a scene; `objects` is --objects's text, empty when not given. kExitOk with scene set,
+/// else the exit code after the error is printed (kExitUsage for --objects, kExitInput for the
+/// scene).
+int loadSceneOrReport(const std::string& specification, const std::string& objects,
+                      std::optional<Scene>& scene);
 
 /// loadSceneOrReport, then resolveView: kExitOk with both set, else the exit code after the
-/// error is printed (kExitInput for the scene, kExitUsage for the view).
-int loadSceneAndView(const std::string& specification, const ViewOptions& options,
-                     std::optional<Scene>& scene, ChosenView& view);
+/// error is printed (kExitInput for the scene, kExitUsage for an option).
+int loadSceneAndView(const std::string& specification, const std::string& objects,
+                     const ViewOptions& options, std::optional<Scene>& scene, ChosenView& view);
 
 } // namespace vissort::cli

@@ -59,6 +59,7 @@ CLI::App* addCollideCommand(CLI::App& app, CollideOptions& options) {
     command
         ->add_option("scene", options.scene, "Mesh file, JSON scene, or builtin:NAME?key=value&...")
         ->required();
+    addObjectsOption(*command, options.objects);
     command
         ->add_option("--frames", options.frames,
                      "Frames to run; dynamic scenes advance 1/30 s a frame")
@@ -114,9 +115,9 @@ int runCollide(const CollideOptions& options) {
     settings.directions.assign(all_directions.begin(), all_directions.begin() + options.directions);
     if (Status valid = validateCollisionSettings(settings); !valid)
         return fail(kExitUsage, "--size " + options.size + ": " + valid.error);
-    std::optional<Scene> scene = loadSceneOrReport(options.scene);
-    if (!scene)
-        return kExitInput;
+    std::optional<Scene> scene;
+    if (const int code = loadSceneOrReport(options.scene, options.objects, scene); code != kExitOk)
+        return code;
 
     std::ofstream pairs_out;
     if (!options.pairs_path.empty()) {

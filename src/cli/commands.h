@@ -14,6 +14,7 @@ namespace vissort::cli {
 
 struct OrderOptions {
     std::string scene;
+    std::string objects; // --objects, empty when not given
     ViewOptions view;
     std::string level = "object";
     std::string oracle = "cpu";
@@ -27,6 +28,7 @@ int runOrder(const OrderOptions& options);
 
 struct InfoOptions {
     std::string scene;
+    std::string objects; // --objects, empty when not given
     ViewOptions view;
     bool gl = false;
     bool all_objects = false; // list every object, not the first kListedObjects
@@ -59,6 +61,7 @@ int runPaperBench(const BenchOptions& options);
 
 struct CollideOptions {
     std::string scene;
+    std::string objects; // --objects, empty when not given
     int frames = 1;
     std::string method = "vissort";
     std::string size = "64x64";
@@ -85,9 +88,10 @@ struct RendererOptions {
     std::string check = "auto";
     double list_memory_mib = 3072;
     bool colour_cycles = false;
+    std::string background; // empty: kDefaultBackground
 };
-/// Adds --method (its help: method_help) --level --oracle --all-transparent --alpha --shading
-/// --samples --check --list-memory --colour-cycles.
+/// Adds --method (its help: method_help) --level --oracle --all-transparent --alpha
+/// --background --shading --samples --check --list-memory --colour-cycles.
 void addRendererOptions(CLI::App& command, RendererOptions& options,
                         const std::string& method_help);
 /// Empty on success, else a one-line message naming the bad option. The method is left to the
@@ -101,6 +105,7 @@ void printRenderHeader(const std::string& specification, const Scene& scene,
 
 struct RenderOptions {
     std::string scene;
+    std::string objects; // --objects, empty when not given
     ViewOptions view;
     RendererOptions renderer;
     std::string output;
@@ -115,6 +120,7 @@ int runRender(const RenderOptions& options);
 
 struct ViewerOptions {
     std::string scene;
+    std::string objects; // --objects, empty when not given
     ViewOptions view;
     RendererOptions renderer;
     std::string screenshot;

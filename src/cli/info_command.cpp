@@ -22,6 +22,7 @@ CLI::App* addInfoCommand(CLI::App& app, InfoOptions& options) {
                       "(VISSORT_GL_PLATFORM=auto|device|surfaceless picks the platform)");
     command->add_flag("--all-objects", options.all_objects,
                       "List every object (default: the first 10; --json always has them all)");
+    addObjectsOption(*command, options.objects);
     addViewOptions(*command, options.view, false);
     addJsonOptions(*command, options.json,
                    "Write the facts as JSON: objects, transparent_objects, triangles, "
@@ -51,12 +52,23 @@ int printGlInfo() {
 
 nlohmann::json objectList(const Scene& scene) {
     nlohmann::json list = nlohmann::json::array();
-    for (const SceneObject& o : scene.objects)
-        list.push_back({{"name", o.name},
-                        {"first_triangle", o.first_triangle},
-                        {"triangles", o.triangle_count},
-                        {"transparent", o.transparent},
-                        {"colour", {o.colour.r, o.colour.g, o.colour.b, o.colour.a}}});
+    for (const SceneObject& o : scene.objects) {
+        nlohmann::json record = {{"name", o.name},
+                                 {"first_triangle", o.first_triangle},
+                                 {"triangles", o.triangle_count},
+                                 {"transparent", o.transparent},
+                                 {"colour", {o.colour.r, o.colour.g, o.colour.b, o.colour.a}}};
+        if (!o.parts.empty()) {
+            nlohmann::json parts = nlohmann::json::array();
+            for (const ObjectPart& p : o.parts)
+                parts.push_back({{"name", p.name},
+                                 {"first_triangle", p.first_triangle},
+                                 {"triangles", p.triangle_count},
+                                 {"colour", {p.colour.r, p.colour.g, p.colour.b, p.colour.a}}});
+            record["parts"] = std::move(parts);
+        }
+        list.push_back(std::move(record));
+    }
     return list;
 }
 
@@ -85,7 +97,8 @@ int runInfo(const InfoOptions& options) {
     }
     std::optional<Scene> scene;
     ChosenView view;
-    if (const int code = loadSceneAndView(options.scene, options.view, scene, view);
+    if (const int code =
+            loadSceneAndView(options.scene, options.objects, options.view, scene, view);
         code != kExitOk)
         return code;
 
@@ -108,6 +121,7 @@ int runInfo(const InfoOptions& options) {
         const SceneObject& o = scene->objects[i];
         std::cout << "  object " << i << " '" << o.name
                   << "': " << counted(o.triangle_count, "triangle")
+                  << (o.parts.empty() ? "" : " in " + counted(o.parts.size(), "part"))
                   << (o.transparent ? ", transparent" : "") << '\n';
     }
     if (listed < scene->objects.size())

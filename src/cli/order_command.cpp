@@ -83,6 +83,7 @@ CLI::App* addOrderCommand(CLI::App& app, OrderOptions& options) {
     command
         ->add_option("scene", options.scene, "Mesh file, JSON scene, or builtin:NAME?key=value&...")
         ->required();
+    addObjectsOption(*command, options.objects);
     addViewOptions(*command, options.view);
     command->add_option("--level", options.level, "object, triangle or multistage")
         ->capture_default_str();
@@ -111,7 +112,8 @@ int runOrder(const OrderOptions& options) {
     const OracleKind oracle_kind = *parsed_oracle.value;
     std::optional<Scene> scene;
     ChosenView view;
-    if (const int code = loadSceneAndView(options.scene, options.view, scene, view);
+    if (const int code =
+            loadSceneAndView(options.scene, options.objects, options.view, scene, view);
         code != kExitOk)
         return code;
 

@@ -130,6 +130,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
     command
         ->add_option("scene", options.scene, "Mesh file, JSON scene, or builtin:NAME?key=value&...")
         ->required(kWithGl);
+    addObjectsOption(*command, options.objects);
     addViewOptions(*command, options.view);
     addRendererOptions(*command, options.renderer,
                        blendMethodNames() + "; all: every method side by side in one PNG, with "
@@ -200,7 +201,8 @@ int runRender(const RenderOptions& options) {
                                     options.error_map + "'");
     std::optional<Scene> scene;
     ChosenView view;
-    if (const int code = loadSceneAndView(options.scene, options.view, scene, view);
+    if (const int code =
+            loadSceneAndView(options.scene, options.objects, options.view, scene, view);
         code != kExitOk)
         return code;
     Result<std::shared_ptr<GlContext>> context = GlContext::shared();

@@ -1,5 +1,7 @@
 // The transparency renderer's options, shared by `render` and `view` (commands.h).
 
+#include <algorithm>
+#include <charconv>
 #include <iostream>
 
 #include "cli/command_line_errors.h"
@@ -9,6 +11,51 @@
 #include "vissort/transparency_renderer.h" // names and settings only: header-only without GL
 
 namespace vissort::cli {
+namespace {
+
+std::string backgroundText(const Rgba& c) {
+    return formatNumber(c.r) + ',' + formatNumber(c.g) + ',' + formatNumber(c.b);
+}
+
+#if VISSORT_WITH_GL
+/// "R,G,B", "R,G,B,A" (each in [0, 1]) or "#RRGGBB"; empty: the default.
+Result<Rgba> parseBackground(const std::string& text) {
+    if (text.empty())
+        return {kDefaultBackground, {}};
+    const auto bad = [&] {
+        return Result<Rgba>::failure("expects R,G,B or R,G,B,A (each in [0, 1]) or #RRGGBB, got '" +
+                                     text + "'");
+    };
+    if (text[0] == '#') {
+        unsigned value = 0;
+        const char* end = text.data() + text.size();
+        const auto [ptr, ec] = std::from_chars(text.data() + 1, end, value, 16);
+        if (text.size() != 7 || ec != std::errc() || ptr != end)
+            return bad();
+        return {Rgba{float((value >> 16) & 255) / 255, float((value >> 8) & 255) / 255,
+                     float(value & 255) / 255, 1.0f},
+                {}};
+    }
+    float channels[4] = {0, 0, 0, 1};
+    std::size_t start = 0, count = 0;
+    while (start <= text.size() && count < 5) {
+        const std::size_t comma = std::min(text.find(',', start), text.size());
+        double value = 0;
+        const char* first = text.data() + start;
+        const auto [ptr, ec] = std::from_chars(first, text.data() + comma, value);
+        if (ec != std::errc() || ptr != text.data() + comma || !(value >= 0 && value <= 1) ||
+            count == 4)
+            return bad();
+        channels[count++] = float(value);
+        start = comma + 1;
+    }
+    if (count < 3)
+        return bad();
+    return {Rgba{channels[0], channels[1], channels[2], channels[3]}, {}};
+}
+#endif
+
+} // namespace
 
 void addRendererOptions(CLI::App& command, RendererOptions& options,
                         const std::string& method_help) {
@@ -22,6 +69,11 @@ void addRendererOptions(CLI::App& command, RendererOptions& options,
         ->capture_default_str();
     command.add_flag("--all-transparent", options.all_transparent,
                      "Treat every object as transparent with alpha --alpha");
+    command.add_option("--background", options.background,
+                       "The background: R,G,B or R,G,B,A (each in [0, 1]) or #RRGGBB (default " +
+                           backgroundText(kDefaultBackground) +
+                           ", a dark slate grey under which transparent surfaces show; 1,1,1 is "
+                           "white)");
     command.add_option("--alpha", options.alpha, "Alpha of --all-transparent, in (0, 1]")
         ->capture_default_str();
     command
@@ -54,7 +106,7 @@ void printRenderHeader(const std::string& specification, const Scene& scene,
                        const RenderSettings& settings, const ChosenView& view) {
     std::size_t transparent = 0, invisible = 0;
     for (const SceneObject& object : scene.objects) {
-        if (!settings.all_transparent && !(object.transparent && object.colour.a < 1.0f))
+        if (!drawnTransparent(object, settings))
             continue;
         ++transparent;
         // Below half a level of 8 bits: nothing of it reaches the image.
@@ -128,6 +180,10 @@ std::string resolveRendererOptions(const RendererOptions& options, bool allow_al
     settings.colour_cycles = options.colour_cycles;
     settings.all_transparent = options.all_transparent;
     settings.alpha = float(options.alpha);
+    const Result<Rgba> background = parseBackground(options.background);
+    if (!background)
+        return "--background " + background.error;
+    settings.background = *background.value;
     return "";
 }
 #endif

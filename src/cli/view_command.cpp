@@ -7,6 +7,7 @@
 
 #if VISSORT_WITH_VIEWER
 #include "viewer/input_script.h"
+#include "viewer/panel_layout.h"
 #include "viewer/viewer.h"
 #include "vissort/image.h"
 #include "vissort/transparency_renderer.h"
@@ -26,6 +27,7 @@ CLI::App* addViewCommand(CLI::App& app, ViewerOptions& options) {
     command
         ->add_option("scene", options.scene, "Mesh file, JSON scene, or builtin:NAME?key=value&...")
         ->required(kWithViewer);
+    addObjectsOption(*command, options.objects);
     options.view.size = "1024x768";
     addViewOptions(*command, options.view);
     addRendererOptions(*command, options.renderer, "The method shown first (1-7 switch)");
@@ -53,7 +55,7 @@ CLI::App* addViewCommand(CLI::App& app, ViewerOptions& options) {
         "  Space            play/pause                 P    screenshot (vissort-view-N.png)\n"
         "  1-7              vissort, unsorted, centroid, peel, dual-peel, linked-list, weighted\n"
         "  C                colour cycles              K    highlight collisions\n"
-        "  X                error map against linked-list\n"
+        "  X                error map against linked-list   Tab  hide/show the panel\n"
         "  H                help overlay               Escape  quit\n"
         "Needs a display: on a machine without one, run it under xvfb-run.");
     return command;
@@ -65,6 +67,8 @@ int runView(const ViewerOptions&) {
 }
 #else
 namespace {
+
+constexpr int kOpenEndedFrames = 300; // a window left open: the first 10 s of a dynamic scene
 
 void printVec(const char* name, const Vec3& v) {
     std::cout << ' ' << name << ' ' << v.x << ',' << v.y << ',' << v.z;
@@ -92,17 +96,28 @@ int runView(const ViewerOptions& options) {
         return fail(kExitFailure, display.error);
     std::optional<Scene> scene;
     ChosenView view;
-    if (const int code = loadSceneAndView(options.scene, options.view, scene, view);
+    uint32_t window_width = 0, window_height = 0;
+    if (auto error = parseSize(options.view.size, window_width, window_height); !error.empty())
+        return fail(kExitUsage, error);
+    // The camera frames the scene in the part of the window right of the panel; a window
+    // without --frames runs on: a dynamic scene is framed over its first 10 s.
+    ViewOptions framing = options.view;
+    framing.size =
+        std::to_string(viewer::sceneWidth(window_width, window_height, !options.hide_ui)) + "x" +
+        std::to_string(window_height);
+    if (!options.frames_given)
+        framing.frames = kOpenEndedFrames;
+    if (const int code = loadSceneAndView(options.scene, options.objects, framing, scene, view);
         code != kExitOk)
         return code;
     printRenderHeader(options.scene, *scene, settings.render, view);
     settings.title = "vissort view " + options.scene;
     settings.camera = view.camera;
     settings.path = view.path;
-    settings.width = view.width;
-    settings.height = view.height;
-    // A screenshot is taken after the last frame: without --frames, its default one.
-    settings.frames = options.frames_given || !options.screenshot.empty() ? view.frames : 0;
+    settings.width = window_width;
+    settings.height = window_height;
+    // A screenshot is taken after the last frame: without --frames, the first.
+    settings.frames = options.frames_given ? view.frames : options.screenshot.empty() ? 0 : 1;
     settings.screenshot = options.screenshot;
     settings.hide_ui = options.hide_ui;
     settings.overlays.highlight_collisions = options.highlight_collisions;

@@ -9,9 +9,9 @@ namespace {
 
 struct PositionKey {
     float x, y, z;
-    uint32_t object;
+    uint32_t part;
     bool operator==(const PositionKey& o) const {
-        return x == o.x && y == o.y && z == o.z && object == o.object;
+        return x == o.x && y == o.y && z == o.z && part == o.part;
     }
 };
 
@@ -19,7 +19,7 @@ struct PositionHash {
     std::size_t operator()(const PositionKey& k) const {
         uint32_t bits[4];
         std::memcpy(bits, &k.x, 12);
-        bits[3] = k.object;
+        bits[3] = k.part;
         std::size_t h = 1469598103934665603ull;
         for (uint32_t b : bits)
             h = (h ^ b) * 1099511628211ull;
@@ -34,17 +34,22 @@ RenderMesh::RenderMesh(const Scene& scene) {
     const std::size_t corners = p.x.size();
     corner_vertex_.resize(corners);
     corner_object_.resize(corners);
+    corner_part_.resize(corners);
     std::unordered_map<PositionKey, uint32_t, PositionHash> vertex_of;
     vertex_of.reserve(corners);
+    uint32_t part_index = 0;
     for (uint32_t o = 0; o < scene.objects.size(); ++o) {
-        const SceneObject& object = scene.objects[o];
-        const std::size_t first = std::size_t(object.first_triangle) * 3;
-        for (std::size_t c = first; c < first + std::size_t(object.triangle_count) * 3; ++c) {
-            // +0.0 so that -0.0 and 0.0 weld.
-            const PositionKey key{p.x[c] + 0.0f, p.y[c] + 0.0f, p.z[c] + 0.0f, o};
-            corner_vertex_[c] =
-                vertex_of.try_emplace(key, uint32_t(vertex_of.size())).first->second;
-            corner_object_[c] = o;
+        for (const ObjectPart& part : scene.objects[o].drawnParts()) {
+            const std::size_t first = std::size_t(part.first_triangle) * 3;
+            for (std::size_t c = first; c < first + std::size_t(part.triangle_count) * 3; ++c) {
+                // +0.0 so that -0.0 and 0.0 weld.
+                const PositionKey key{p.x[c] + 0.0f, p.y[c] + 0.0f, p.z[c] + 0.0f, part_index};
+                corner_vertex_[c] =
+                    vertex_of.try_emplace(key, uint32_t(vertex_of.size())).first->second;
+                corner_object_[c] = o;
+                corner_part_[c] = part_index;
+            }
+            ++part_index;
         }
     }
     vertex_normals_.resize(vertex_of.size() * 3);

@@ -18,13 +18,13 @@ GlBuffer createBuffer() {
 
 } // namespace
 
-SceneGeometry::SceneGeometry(const Scene& scene, std::span<const float> object_colours)
+SceneGeometry::SceneGeometry(const Scene& scene, std::span<const float> part_colours)
     : mesh_(scene), object_bounds_(scene.objects.size()) {
     GLuint name = 0;
     glCreateVertexArrays(1, &name);
     vertex_array_ = GlVertexArray(name);
     vertices_ = createBuffer();
-    objects_ = createBuffer();
+    parts_ = createBuffer();
     colours_ = createBuffer();
     elements_ = createBuffer();
     subset_elements_ = createBuffer();
@@ -34,26 +34,27 @@ SceneGeometry::SceneGeometry(const Scene& scene, std::span<const float> object_c
     glNamedBufferStorage(tints_.get(), GLsizeiptr(scene.triangleCount() * sizeof(uint32_t) + 4),
                          nullptr, GL_DYNAMIC_STORAGE_BIT);
     // Zero-size storage is an error in OpenGL: every buffer gets a few spare bytes.
-    const std::vector<uint32_t>& corner_objects = mesh_.cornerObjects();
-    glNamedBufferStorage(objects_.get(), GLsizeiptr(corner_objects.size() * sizeof(uint32_t) + 4),
+    // The shaders need a corner's colour only: its part's (an object's, when it has no parts).
+    const std::vector<uint32_t>& corner_parts = mesh_.cornerParts();
+    glNamedBufferStorage(parts_.get(), GLsizeiptr(corner_parts.size() * sizeof(uint32_t) + 4),
                          nullptr, GL_DYNAMIC_STORAGE_BIT);
-    glNamedBufferSubData(objects_.get(), 0, GLsizeiptr(corner_objects.size() * sizeof(uint32_t)),
-                         corner_objects.data());
-    glNamedBufferStorage(colours_.get(), GLsizeiptr(object_colours.size() * sizeof(float) + 16),
+    glNamedBufferSubData(parts_.get(), 0, GLsizeiptr(corner_parts.size() * sizeof(uint32_t)),
+                         corner_parts.data());
+    glNamedBufferStorage(colours_.get(), GLsizeiptr(part_colours.size() * sizeof(float) + 16),
                          nullptr, GL_DYNAMIC_STORAGE_BIT);
-    glNamedBufferSubData(colours_.get(), 0, GLsizeiptr(object_colours.size() * sizeof(float)),
-                         object_colours.data());
+    glNamedBufferSubData(colours_.get(), 0, GLsizeiptr(part_colours.size() * sizeof(float)),
+                         part_colours.data());
 
     const GLuint va = vertex_array_.get();
     glVertexArrayVertexBuffer(va, 0, vertices_.get(), 0, 6 * sizeof(float));
-    glVertexArrayVertexBuffer(va, 1, objects_.get(), 0, sizeof(uint32_t));
+    glVertexArrayVertexBuffer(va, 1, parts_.get(), 0, sizeof(uint32_t));
     for (GLuint attribute : {0u, 1u}) { // position, normal
         glEnableVertexArrayAttrib(va, attribute);
         glVertexArrayAttribFormat(va, attribute, 3, GL_FLOAT, GL_FALSE,
                                   attribute * 3 * sizeof(float));
         glVertexArrayAttribBinding(va, attribute, 0);
     }
-    glEnableVertexArrayAttrib(va, 2); // object
+    glEnableVertexArrayAttrib(va, 2); // drawn part
     glVertexArrayAttribIFormat(va, 2, 1, GL_UNSIGNED_INT, 0);
     glVertexArrayAttribBinding(va, 2, 1);
     glVertexArrayElementBuffer(va, elements_.get());
@@ -172,14 +173,16 @@ void SceneGeometry::setCycleColours(std::span<const std::vector<uint32_t>> group
 
 void SceneGeometry::uploadTints() {
     tint_data_.resize(cycle_tints_.size());
-    bool any = false;
+    bool any = false, any_highlight = false;
     for (std::size_t t = 0; t < tint_data_.size(); ++t) {
         tint_data_[t] = highlighted_[t] ? kHighlightTint : cycle_tints_[t];
         any |= tint_data_[t] != kNoTint;
+        any_highlight |= highlighted_[t] != 0;
     }
     glNamedBufferSubData(tints_.get(), 0, GLsizeiptr(tint_data_.size() * sizeof(uint32_t)),
                          tint_data_.data());
     tinting_ = any;
+    dimming_ = any_highlight;
 }
 
 void SceneGeometry::setView(GLuint program, const ViewProjection& view) const {
@@ -195,6 +198,7 @@ void SceneGeometry::setView(GLuint program, const ViewProjection& view) const {
                        view.projection == Projection::orthographic ? 1 : 0);
     glProgramUniform1i(program, glGetUniformLocation(program, "shading"), int(shading_));
     glProgramUniform1i(program, glGetUniformLocation(program, "tinting"), tinting_ ? 1 : 0);
+    glProgramUniform1i(program, glGetUniformLocation(program, "dimming"), dimming_ ? 1 : 0);
 }
 
 void SceneGeometry::use(GLuint program, const ViewProjection& view) const {

@@ -1,6 +1,6 @@
 #pragma once
 // The scene on the GPU, shared by every blending method: one vertex stream (position, normal,
-// object per corner, RenderMesh), the objects' colours, and an element buffer holding the opaque
+// drawn part per corner, RenderMesh), the parts' colours, and an element buffer holding the opaque
 // triangles and then the transparent ones in the frame's draw order.
 
 #include <cstdint>
@@ -17,8 +17,9 @@ namespace vissort::detail {
 
 class SceneGeometry {
 public:
-    /// object_colours: 4 floats (r, g, b, alpha) per object of scene, as shaded (shading.h).
-    SceneGeometry(const Scene& scene, std::span<const float> object_colours);
+    /// part_colours: 4 floats (r, g, b, alpha) per drawn part of scene (RenderMesh::cornerParts),
+    /// as shaded (shading.h).
+    SceneGeometry(const Scene& scene, std::span<const float> part_colours);
 
     /// Uploads the vertices of a frame: positions has the scene's triangle count. Positions equal
     /// to the last ones uploaded cost a comparison.
@@ -31,8 +32,8 @@ public:
     void setView(GLuint program, const ViewProjection& view) const;
     /// How triangles are shaded (shading.h); lit unless set.
     void setShading(Shading shading) { shading_ = shading; }
-    /// Draws these triangles (scene triangle ids) in the highlight colour (shading.h); empty:
-    /// none. Highlights are drawn over cycle colours.
+    /// Draws these triangles (scene triangle ids) in the highlight colour and the untinted rest
+    /// dimmed (shading.h); empty: none. Highlights are drawn over cycle colours.
     void setHighlighted(std::span<const uint32_t> triangles);
     /// Draws the triangles of each group (scene triangle ids) in a colour of the cycle palette
     /// (shading.h), group g in colour g modulo the palette; empty: none. Replaces the last call's.
@@ -61,7 +62,7 @@ private:
 
     RenderMesh mesh_;
     GlVertexArray vertex_array_;
-    GlBuffer vertices_, objects_, colours_, elements_, subset_elements_, tints_;
+    GlBuffer vertices_, parts_, colours_, elements_, subset_elements_, tints_;
     TrianglePositions uploaded_; // what the vertex buffer holds
     std::vector<float> vertex_data_;
     std::vector<uint32_t> element_data_;
@@ -81,6 +82,7 @@ private:
     std::vector<uint32_t> tint_data_;       // what the tint buffer holds
     Shading shading_ = Shading::lit;
     bool tinting_ = false;
+    bool dimming_ = false; // some triangle is highlighted: the untinted ones are dimmed
 };
 
 } // namespace vissort::detail

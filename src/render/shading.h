@@ -15,19 +15,24 @@ namespace vissort::detail {
 //    (Govindaraju et al., I3D 2005, section 5.2): light crosses 1 / |n . v| times the layer's
 //    thickness, so alpha' = 1 - (1 - alpha)^(1 / max(|n . v|, kMembraneFacing)): surfaces seen
 //    edge-on grow opaque, the rim of a soap bubble. Opaque surfaces (alpha 1) stay opaque.
-// Inputs: SceneGeometry's vertex stream (position, unit normal, object) and per-object colours
+// Inputs: SceneGeometry's vertex stream (position, unit normal, drawn part) and per-part colours
 // (SSBO binding 0); `shading` is the Shading's index. Output: `shaded`, straight (not
 // premultiplied) colour and alpha, interpolated across the triangle.
 // With `tinting`, each triangle's tint in SSBO binding 5 (one uint per triangle; corners are
 // unindexed, so a corner's index / 3 is its triangle) replaces its object's colour: kHighlightTint
-// a strong magenta, nearly opaque (colliding triangles); kCycleTint + g the colour g (modulo 8) of
-// a palette without magenta, at the object's alpha (the primitives of the order's cycle g). In
-// every method alike: the methods stay comparable.
+// a strong magenta, opaque (colliding triangles); kCycleTint + g the colour g (modulo 8) of a
+// palette without magenta, at the object's alpha (the primitives of the order's cycle g). With
+// `dimming` (some triangle is highlighted), every untinted triangle is dimmed so that the
+// highlights stand out, even behind it: its colour kDimToGrey of the way to grey 0.5, and a
+// transparent one's alpha kDimAlpha of its own (colliding triangles are mostly inside other
+// objects: drawn only in magenta, 1,014 highlighted triangles of the bunnies changed 669 pixels).
+// In every method alike: the methods stay comparable.
 inline constexpr uint32_t kNoTint = 0, kHighlightTint = 1, kCycleTint = 2;
+inline constexpr float kDimToGrey = 0.6f, kDimAlpha = 0.3f; // the shader's literals
 inline constexpr const char* kShadeVertexShader = R"(#version 450 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
-layout(location = 2) in uint object;
+layout(location = 2) in uint part;  // its colour's index
 layout(std430, binding = 0) readonly buffer Colours { vec4 colours[]; };
 layout(std430, binding = 5) readonly buffer Tints { uint tints[]; };
 uniform mat4 view_projection;
@@ -36,6 +41,7 @@ uniform vec3 view_direction;  // orthographic: the direction of view
 uniform bool orthographic;
 uniform int shading;  // Shading: 0 lit, 1 flat, 2 membrane
 uniform bool tinting;
+uniform bool dimming;
 out vec4 shaded;
 // The most a layer seen edge-on thickens: 20 times (alpha 0.25 becomes 0.997).
 const float kMembraneFacing = 0.05;
@@ -47,12 +53,14 @@ invariant gl_Position;  // the same depths in every program: vissort's repair te
 void main() {
     gl_Position = view_projection * vec4(position, 1.0);
     triangle = uint(gl_VertexID) / 3u;  // elements are 3 t + k (SceneGeometry)
-    vec4 base = colours[object];
+    vec4 base = colours[part];
     uint tint = tinting ? tints[gl_VertexID / 3] : 0u;
     if (tint == 1u)
-        base = vec4(1.0, 0.1, 0.55, max(base.a, 0.85));  // kHighlightTint
+        base = vec4(1.0, 0.1, 0.55, 1.0);  // kHighlightTint
     else if (tint >= 2u)
         base = vec4(kCyclePalette[(tint - 2u) % 8u], base.a);  // kCycleTint + group
+    else if (dimming)  // kDimToGrey, kDimAlpha
+        base = vec4(mix(base.rgb, vec3(0.5), 0.6), base.a < 1.0 ? base.a * 0.3 : 1.0);
     if (shading == 1) {  // flat
         shaded = base;
         return;

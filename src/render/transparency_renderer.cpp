@@ -390,13 +390,15 @@ TransparencyRenderer::TransparencyRenderer(std::shared_ptr<GlContext> context, c
     std::vector<float> colours;
     for (uint32_t o = 0; o < scene.objects.size(); ++o) {
         const SceneObject& object = scene.objects[o];
-        const bool is_transparent =
-            settings.all_transparent || (object.transparent && object.colour.a < 1.0f);
+        const bool is_transparent = drawnTransparent(object, settings);
         transparent[o] = is_transparent ? 1 : 0;
-        const float alpha = settings.all_transparent ? settings.alpha
-                            : is_transparent         ? object.colour.a
-                                                     : 1.0f;
-        colours.insert(colours.end(), {object.colour.r, object.colour.g, object.colour.b, alpha});
+        for (const ObjectPart& part : object.drawnParts()) {
+            // An opaque mesh of a transparent object: alpha 1, opaque where blended.
+            const float alpha = settings.all_transparent ? settings.alpha
+                                : is_transparent         ? part.colour.a
+                                                         : 1.0f;
+            colours.insert(colours.end(), {part.colour.r, part.colour.g, part.colour.b, alpha});
+        }
         if (!is_transparent)
             for (uint32_t t = 0; t < object.triangle_count; ++t)
                 d.opaque_triangles.push_back(object.first_triangle + t);

@@ -307,6 +307,8 @@ private:
         const bool has_mesh = object.contains("mesh"), has_shape = object.contains("shape");
         if (has_mesh == has_shape)
             fail(where, "needs exactly one of 'mesh' or 'shape'");
+        if (has_shape && object.contains("objects"))
+            fail(where + ".objects", "says how a mesh file becomes objects: a shape is one");
         if (has_shape) {
             const std::string shape = readString(object["shape"], where + ".shape");
             if (shape != "box")
@@ -318,13 +320,24 @@ private:
         const std::string mesh = readString(object["mesh"], where + ".mesh");
         if (mesh.empty())
             fail(where + ".mesh", "empty path");
+        // An entry is the object its user named, whatever the file's meshes.
+        ObjectGrouping grouping = ObjectGrouping::file;
+        if (object.contains("objects")) {
+            const Result<ObjectGrouping> named = parseEnum<ObjectGrouping>(
+                kObjectGroupingNames, readString(object["objects"], where + ".objects"),
+                "grouping");
+            if (!named)
+                fail(where + ".objects", named.error);
+            grouping = *named.value;
+        }
         const std::string path = (folder_ / mesh).lexically_normal().string();
-        auto cached = meshes_.find(path);
+        const std::pair<std::string, ObjectGrouping> key{path, grouping};
+        auto cached = meshes_.find(key);
         if (cached == meshes_.end()) {
-            Result<Scene> loaded = loadMeshFile(path);
+            Result<Scene> loaded = loadMeshFile(path, grouping);
             if (!loaded)
                 fail(where + ".mesh", loaded.error);
-            cached = meshes_.emplace(path, std::move(*loaded.value)).first;
+            cached = meshes_.emplace(key, std::move(*loaded.value)).first;
         }
         return cached->second;
     }
@@ -332,7 +345,7 @@ private:
     void addObject(const Json& object, std::size_t index) {
         const std::string where = "objects[" + std::to_string(index) + "]";
         expectKeys(object, where,
-                   {"name", "mesh", "shape", "translate", "rotate", "scale", "colour",
+                   {"name", "mesh", "objects", "shape", "translate", "rotate", "scale", "colour",
                     "transparent", "animation"});
         const Scene& part = source(object, where);
 
@@ -375,6 +388,11 @@ private:
             added.name = part.objects.size() > 1 ? name + "/" + part_object.name : name;
             added.first_triangle =
                 static_cast<uint32_t>(first_triangle + part_object.first_triangle);
+            for (ObjectPart& mesh_part : added.parts) {
+                mesh_part.first_triangle += static_cast<uint32_t>(first_triangle);
+                if (colour)
+                    mesh_part.colour = *colour;
+            }
             if (colour)
                 added.colour = *colour;
             added.transparent = transparent ? *transparent : added.colour.a < 1.0f;
@@ -410,7 +428,8 @@ private:
     std::filesystem::path folder_;
     Scene scene_;
     std::optional<Scene> box_;
-    std::map<std::string, Scene> meshes_; // by normalised path: a mesh used twice is read once
+    // By normalised path and grouping: a mesh used twice is read once.
+    std::map<std::pair<std::string, ObjectGrouping>, Scene> meshes_;
     std::vector<RigidMotion> motions_;
 };
 

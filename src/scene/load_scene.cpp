@@ -91,15 +91,23 @@ Result<Scene> loadBuiltin(const std::string& specification, const BuiltinSceneMa
     return builtins(name, *parameters.value);
 }
 
-Result<Scene> loadSpecification(const std::string& specification,
-                                const BuiltinSceneMaker& builtins) {
+Result<Scene> loadSpecification(const std::string& specification, const BuiltinSceneMaker& builtins,
+                                std::optional<ObjectGrouping> mesh_file_objects) {
     if (specification.empty())
         return Result<Scene>::failure("empty scene specification");
+    const bool builtin = specification.starts_with(kBuiltinPrefix),
+               json = !builtin && endsWithJson(specification);
+    if (mesh_file_objects && (builtin || json))
+        return Result<Scene>::failure(
+            specification + ": how a file's meshes become objects applies to a mesh file; " +
+            (json ? "a JSON scene says it per entry (\"objects\": \"mesh\", \"node\" or \"file\")"
+                  : "a built-in scene makes its own objects"));
     try {
-        Result<Scene> scene = specification.starts_with(kBuiltinPrefix)
-                                  ? loadBuiltin(specification, builtins)
-                              : endsWithJson(specification) ? detail::loadJsonScene(specification)
-                                                            : detail::loadMeshFile(specification);
+        Result<Scene> scene =
+            builtin ? loadBuiltin(specification, builtins)
+            : json  ? detail::loadJsonScene(specification)
+                    : detail::loadMeshFile(specification,
+                                           mesh_file_objects.value_or(ObjectGrouping::mesh));
         if (!scene)
             return scene;
         if (Status valid = validateScene(*scene.value); !valid)
@@ -113,17 +121,18 @@ Result<Scene> loadSpecification(const std::string& specification,
 
 } // namespace
 
-Result<Scene> loadScene(const std::string& specification, const BuiltinSceneMaker& builtins) {
-    Result<Scene> scene = loadSpecification(specification, builtins);
+Result<Scene> loadScene(const std::string& specification, const BuiltinSceneMaker& builtins,
+                        std::optional<ObjectGrouping> mesh_file_objects) {
+    Result<Scene> scene = loadSpecification(specification, builtins, mesh_file_objects);
     if (!scene)
         scene.error = oneLine(scene.error);
     return scene;
 }
 
 Result<Scene> loadMeshFromMemory(const void* data, std::size_t size, const std::string& format_hint,
-                                 const std::string& label) {
+                                 const std::string& label, ObjectGrouping objects) {
     try {
-        Result<Scene> scene = detail::loadMeshMemory(data, size, format_hint, label);
+        Result<Scene> scene = detail::loadMeshMemory(data, size, format_hint, label, objects);
         if (scene)
             if (Status valid = validateScene(*scene.value); !valid)
                 scene = Result<Scene>::failure(label + ": " + valid.error);

@@ -33,6 +33,7 @@ struct MeshInstance {
     unsigned mesh_index = 0;
     aiMatrix4x4 world; // node-to-world transform of the node that references the mesh
     std::string node_name;
+    std::size_t node = 0; // the node's place in a depth-first walk; meshes of no node get one each
 };
 
 // What std::bad_alloc says ("std::bad_alloc") names no problem. Some of assimp's readers
@@ -61,34 +62,84 @@ std::string oneLine(std::string text) {
 }
 
 void collectInstances(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent,
-                      std::vector<MeshInstance>& out, std::vector<bool>& referenced) {
+                      std::vector<MeshInstance>& out, std::vector<bool>& referenced,
+                      std::size_t& nodes) {
     const aiMatrix4x4 world = parent * node.mTransformation;
+    const std::size_t this_node = nodes++;
     for (unsigned i = 0; i < node.mNumMeshes; ++i) {
         const unsigned mesh_index = node.mMeshes[i];
         if (mesh_index >= scene.mNumMeshes)
             continue; // ValidateDataStructure rejects this first
         referenced[mesh_index] = true;
         // The root's name is usually the file name, not an object name.
-        out.push_back({mesh_index, world, &node == scene.mRootNode ? "" : node.mName.C_Str()});
+        out.push_back(
+            {mesh_index, world, &node == scene.mRootNode ? "" : node.mName.C_Str(), this_node});
     }
     for (unsigned i = 0; i < node.mNumChildren; ++i)
-        collectInstances(scene, *node.mChildren[i], world, out, referenced);
+        collectInstances(scene, *node.mChildren[i], world, out, referenced, nodes);
 }
 
-/// Every mesh instance in mesh (file) order; instances of one mesh in node order. Meshes no node
-/// references still count, placed with the identity transform.
-std::vector<MeshInstance> meshInstances(const aiScene& scene) {
+/// Every mesh instance: in mesh (file) order, instances of one mesh in node order; for node
+/// grouping in node order (depth first), so that a node's meshes are together. Meshes no node
+/// references still count, placed with the identity transform, last under node grouping.
+std::vector<MeshInstance> meshInstances(const aiScene& scene, ObjectGrouping grouping) {
     std::vector<MeshInstance> instances;
     std::vector<bool> referenced(scene.mNumMeshes, false);
+    std::size_t nodes = 0;
     if (scene.mRootNode)
-        collectInstances(scene, *scene.mRootNode, aiMatrix4x4(), instances, referenced);
+        collectInstances(scene, *scene.mRootNode, aiMatrix4x4(), instances, referenced, nodes);
     for (unsigned i = 0; i < scene.mNumMeshes; ++i)
         if (!referenced[i])
-            instances.push_back({i, aiMatrix4x4(), ""});
-    std::stable_sort(
-        instances.begin(), instances.end(),
-        [](const MeshInstance& a, const MeshInstance& b) { return a.mesh_index < b.mesh_index; });
+            instances.push_back({i, aiMatrix4x4(), "", nodes++});
+    if (grouping != ObjectGrouping::node)
+        std::stable_sort(instances.begin(), instances.end(),
+                         [](const MeshInstance& a, const MeshInstance& b) {
+                             return a.mesh_index < b.mesh_index;
+                         });
     return instances;
+}
+
+/// Under node or file grouping, consecutive meshes of one group become one object whose parts
+/// they are (a group of one mesh is that mesh): named after the node (the file under file
+/// grouping; "object_<id>" for the root or an unnamed node), its colour the largest part's with
+/// the least alpha of any part.
+std::vector<SceneObject> groupedObjects(std::vector<SceneObject> meshes,
+                                        const std::vector<std::size_t>& group_of,
+                                        const std::vector<std::string>& group_name) {
+    std::vector<SceneObject> objects;
+    for (std::size_t first = 0; first < meshes.size();) {
+        std::size_t end = first + 1;
+        while (end < meshes.size() && group_of[end] == group_of[first])
+            ++end;
+        if (end == first + 1) { // one mesh: the object, named after its node or file
+            objects.push_back(std::move(meshes[first]));
+            if (!group_name[first].empty())
+                objects.back().name = group_name[first];
+            first = end;
+            continue;
+        }
+        SceneObject object;
+        object.name = group_name[first].empty() ? "object_" + std::to_string(objects.size())
+                                                : group_name[first];
+        object.first_triangle = meshes[first].first_triangle;
+        const SceneObject* largest = &meshes[first];
+        float least_alpha = 1.0f;
+        for (std::size_t m = first; m < end; ++m) {
+            const SceneObject& mesh = meshes[m];
+            object.triangle_count += mesh.triangle_count;
+            object.parts.push_back(
+                {mesh.name, mesh.colour, mesh.first_triangle, mesh.triangle_count});
+            if (mesh.triangle_count > largest->triangle_count)
+                largest = &mesh;
+            least_alpha = std::min(least_alpha, mesh.colour.a);
+        }
+        object.colour = largest->colour;
+        object.colour.a = least_alpha;
+        object.transparent = least_alpha < 1.0f;
+        objects.push_back(std::move(object));
+        first = end;
+    }
+    return objects;
 }
 
 uint64_t fanTriangleCount(const aiMesh& mesh) {
@@ -139,8 +190,9 @@ std::string objectName(const aiMesh& mesh, const MeshInstance& instance, unsigne
 }
 
 Result<Scene> convertScene(const aiScene& ai_scene, const std::string& label,
-                           const std::string& scene_name, const std::string& extension) {
-    const std::vector<MeshInstance> instances = meshInstances(ai_scene);
+                           const std::string& scene_name, const std::string& extension,
+                           ObjectGrouping grouping) {
+    const std::vector<MeshInstance> instances = meshInstances(ai_scene, grouping);
     uint64_t total = 0;
     for (const MeshInstance& instance : instances)
         total += fanTriangleCount(*ai_scene.mMeshes[instance.mesh_index]);
@@ -159,11 +211,17 @@ Result<Scene> convertScene(const aiScene& ai_scene, const std::string& label,
     scene.name = scene_name;
     scene.positions.resize(static_cast<std::size_t>(total));
     std::size_t corner = 0;
+    std::vector<std::size_t> group_of;
+    std::vector<std::string> group_name;
     for (const MeshInstance& instance : instances) {
         const aiMesh& mesh = *ai_scene.mMeshes[instance.mesh_index];
         const uint64_t count = fanTriangleCount(mesh);
         if (count == 0)
             continue; // points and lines only
+        group_of.push_back(grouping == ObjectGrouping::mesh   ? group_of.size()
+                           : grouping == ObjectGrouping::node ? instance.node
+                                                              : 0);
+        group_name.push_back(grouping == ObjectGrouping::file ? scene_name : instance.node_name);
         SceneObject object;
         object.name =
             objectName(mesh, instance, instance_counts[instance.mesh_index], scene.objects.size());
@@ -194,6 +252,8 @@ Result<Scene> convertScene(const aiScene& ai_scene, const std::string& label,
         }
         scene.objects.push_back(std::move(object));
     }
+    if (grouping != ObjectGrouping::mesh)
+        scene.objects = groupedObjects(std::move(scene.objects), group_of, group_name);
 
     // Checked after the transform: a finite vertex can still overflow float once moved.
     PositionsView p = scene.positions;
@@ -229,7 +289,7 @@ template <class Read> Status readWithAssimp(Read&& read) {
 
 Result<Scene> finishImport(Assimp::Importer& importer, const aiScene* ai_scene,
                            const std::string& label, const std::string& scene_name,
-                           const std::string& extension) {
+                           const std::string& extension, ObjectGrouping grouping) {
     if (!ai_scene) {
         // assimp's own reason, said to be assimp's: a user then knows whom to ask.
         const std::string reason = oneLine(importer.GetErrorString());
@@ -238,7 +298,7 @@ Result<Scene> finishImport(Assimp::Importer& importer, const aiScene* ai_scene,
         return Result<Scene>::failure(label + ": " + kAssimpFailed +
                                       (reason.empty() ? "it gave no reason" : reason));
     }
-    return convertScene(*ai_scene, label, scene_name, extension);
+    return convertScene(*ai_scene, label, scene_name, extension, grouping);
 }
 
 // An OFF file's scene, checked against its own face list (off_faces.h): assimp's reader drops
@@ -267,7 +327,7 @@ bool isOff(const std::string& extension) {
 
 } // namespace
 
-Result<Scene> loadMeshFile(const std::string& path) {
+Result<Scene> loadMeshFile(const std::string& path, ObjectGrouping grouping) {
     std::error_code ec;
     const std::filesystem::path file(path);
     if (!std::filesystem::exists(file, ec))
@@ -303,8 +363,8 @@ Result<Scene> loadMeshFile(const std::string& path) {
         if (Status read = readWithAssimp([&] { ai_scene = importer.ReadFile(path, kImportFlags); });
             !read)
             return Result<Scene>::failure(path + ": " + read.error);
-        Result<Scene> scene =
-            finishImport(importer, ai_scene, path, file.stem().string(), lowerCase(extension));
+        Result<Scene> scene = finishImport(importer, ai_scene, path, file.stem().string(),
+                                           lowerCase(extension), grouping);
         if (!isOff(extension))
             return scene;
         std::ifstream again(file, std::ios::binary);
@@ -317,7 +377,7 @@ Result<Scene> loadMeshFile(const std::string& path) {
 }
 
 Result<Scene> loadMeshMemory(const void* data, std::size_t size, const std::string& format_hint,
-                             const std::string& label) {
+                             const std::string& label, ObjectGrouping grouping) {
     if (!data || size == 0)
         return Result<Scene>::failure(label + ": empty input");
     try {
@@ -339,7 +399,7 @@ Result<Scene> loadMeshMemory(const void* data, std::size_t size, const std::stri
             return Result<Scene>::failure(label + ": " + read.error);
         Result<Scene> scene =
             finishImport(importer, ai_scene, label, std::filesystem::path(label).stem().string(),
-                         lowerCase(format_hint));
+                         lowerCase(format_hint), grouping);
         if (!isOff(format_hint))
             return scene;
         std::istringstream again{std::string(bytes)};

@@ -64,7 +64,7 @@ Events parseInputScript(const std::string& text) {
                 }) == std::end(kScriptKeys))
                 return failure(number,
                                "unknown key '" + key +
-                                   "' (expected W A S D Q E F R P H C K X SPACE ESCAPE 1-7)");
+                                   "' (expected W A S D Q E F R P H C K X SPACE ESCAPE TAB 1-7)");
         } else if (kind == "drag") {
             event.kind = ScriptEvent::Kind::drag;
             std::string button;

@@ -32,7 +32,7 @@ struct ScriptEvent {
 /// The keys a script may press, as written there.
 inline constexpr const char* kScriptKeys[] = {"W", "A", "S", "D", "Q", "E",     "F",      "R",
                                               "P", "H", "C", "K", "X", "SPACE", "ESCAPE", "1",
-                                              "2", "3", "4", "5", "6", "7"};
+                                              "2", "3", "4", "5", "6", "7",     "TAB"};
 
 /// The events of a script's text, sorted by frame (file order within a frame), or a one-line
 /// error naming the line and what is wrong with it.

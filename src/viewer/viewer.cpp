@@ -20,6 +20,7 @@
 #include "gl/gl_objects.h"
 #include "gl/gl_program.h"
 #include "viewer/camera_controls.h"
+#include "viewer/panel_layout.h"
 #include "viewer/render_worker.h"
 #include "viewer/viewer_panel.h"
 #include "vissort/frame_driver.h"
@@ -37,9 +38,10 @@ void recordGlfwError(int, const char* description) {
     g_glfw_error = description;
 }
 
-// Shows the renderer's image one pixel per pixel, from the window's top-left corner: the same
-// bytes `vissort render` writes (no filtering, no scaling); a grey margin where the window is
-// larger than the image (between a resize and the frame at the new size).
+// Shows the renderer's image one pixel per pixel, from the top-left corner of the part of the
+// window right of the panel (`left` pixels in): the same bytes `vissort render` writes (no
+// filtering, no scaling); a grey margin where the window is larger than the image (between a
+// resize and the frame at the new size).
 constexpr const char* kBlitVertex = R"(#version 330 core
 void main() {
     vec2 corner = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
@@ -49,12 +51,14 @@ void main() {
 constexpr const char* kBlitFragment = R"(#version 330 core
 uniform sampler2D image;
 uniform int window_height;
+uniform int left;
 out vec4 colour;
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     pixel.y = window_height - 1 - pixel.y; // the image's rows run from the top
+    pixel.x -= left;
     ivec2 size = textureSize(image, 0);
-    if (pixel.x >= size.x || pixel.y >= size.y)
+    if (pixel.x < 0 || pixel.x >= size.x || pixel.y >= size.y)
         colour = vec4(0.5, 0.5, 0.5, 1.0);
     else
         colour = texelFetch(image, pixel, 0);
@@ -69,6 +73,8 @@ public:
     Result<ViewerSummary> run();
 
 private:
+    // The panel for the window's current size; width 0 when hidden (Tab, --hide-ui).
+    PanelLayout layout() const;
     // Input, from GLFW's callbacks or the script.
     void onKey(const std::string& name);
     void onDrag(int button, double dx, double dy);
@@ -97,7 +103,7 @@ private:
     detail::GlObject<detail::DeleteTexture> texture_;
     detail::GlObject<detail::DeleteVertexArray> vertex_array_;
     detail::GlProgram blit_;
-    GLint image_uniform_ = -1, height_uniform_ = -1;
+    GLint image_uniform_ = -1, height_uniform_ = -1, left_uniform_ = -1;
 
     CameraSpec camera_;          // the user's camera, once moved
     bool following_path_ = true; // the path's camera (the start camera on a static path)
@@ -108,6 +114,7 @@ private:
     bool animated_ = false; // a dynamic scene or a moving path: frames differ
     bool dirty_ = true;     // something changed since the frame on screen
     bool help_ = false;
+    bool panel_shown_ = true; // Tab, or the panel's button, hides and shows it
     bool quit_ = false;
     std::string pending_error_;
     std::size_t next_event_ = 0;
@@ -181,6 +188,8 @@ Status Viewer::open() {
             of(window).onKey("SPACE");
         else if (key == GLFW_KEY_ESCAPE)
             of(window).onKey("ESCAPE");
+        else if (key == GLFW_KEY_TAB)
+            of(window).onKey("TAB");
         else if ((key >= GLFW_KEY_A && key <= GLFW_KEY_Z) ||
                  (key >= GLFW_KEY_1 && key <= GLFW_KEY_7))
             of(window).onKey(std::string(1, char(key)));
@@ -224,6 +233,7 @@ Status Viewer::open() {
     }
     image_uniform_ = glGetUniformLocation(blit_.get(), "image");
     height_uniform_ = glGetUniformLocation(blit_.get(), "window_height");
+    left_uniform_ = glGetUniformLocation(blit_.get(), "left");
     GLuint name = 0;
     glGenVertexArrays(1, &name);
     vertex_array_ = detail::GlObject<detail::DeleteVertexArray>(name);
@@ -234,6 +244,13 @@ Status Viewer::open() {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     worker_ = std::make_unique<RenderWorker>(scene_);
     return Status::ok();
+}
+
+PanelLayout Viewer::layout() const {
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window_, &width, &height);
+    return panelLayout(uint32_t(std::max(width, 1)), uint32_t(std::max(height, 1)),
+                       panel_shown_ && !settings_.hide_ui);
 }
 
 CameraSpec Viewer::currentCamera() const {
@@ -278,6 +295,9 @@ void Viewer::onKey(const std::string& name) {
         screenshot_asked_ = true;
     } else if (name == "H") {
         help_ = !help_;
+    } else if (name == "TAB") {
+        panel_shown_ = !panel_shown_;
+        dirty_ = true; // the scene's part of the window changed
     } else if (name == "C") {
         render_.colour_cycles = !render_.colour_cycles;
         dirty_ = true;
@@ -356,7 +376,8 @@ RenderRequest Viewer::request() const {
     request.frame = frame_;
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_, &width, &height);
-    request.width = uint32_t(std::max(width, 1));
+    const uint32_t window_width = uint32_t(std::max(width, 1));
+    request.width = window_width > layout().width ? window_width - layout().width : 1;
     request.height = uint32_t(std::max(height, 1));
     return request;
 }
@@ -407,6 +428,7 @@ void Viewer::drawWindow() {
         glBindTexture(GL_TEXTURE_2D, texture_.get());
         glUniform1i(image_uniform_, 0);
         glUniform1i(height_uniform_, height);
+        glUniform1i(left_uniform_, int(layout().width));
         glBindVertexArray(vertex_array_.get());
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glBindVertexArray(0);
@@ -414,9 +436,14 @@ void Viewer::drawWindow() {
     }
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    const PanelLayout panel = layout();
+    ImGui::GetIO().FontGlobalScale = panel.scale;
     ImGui::NewFrame();
-    if (!settings_.hide_ui) {
+    if (!settings_.hide_ui && !panel_shown_ && drawShowPanelButton())
+        onKey("TAB");
+    if (!settings_.hide_ui && panel_shown_) {
         PanelState state;
+        state.layout = panel;
         state.scene = &scene_;
         state.last = shown_ ? &*shown_ : nullptr;
         state.frame_ms = frame_ms_;
@@ -439,20 +466,22 @@ void Viewer::drawWindow() {
             onKey("R");
         if (actions.screenshot)
             onKey("P");
+        if (actions.hide_panel)
+            onKey("TAB");
         if (actions.measure_complexity) {
             FrameDriver driver(scene_);
             driver.seek(frame_);
             try {
-                complexity_ = estimateDepthComplexity(driver.positions(), currentCamera(),
-                                                      driver.positions().bounds(), uint32_t(width),
-                                                      uint32_t(height), 128);
+                complexity_ = estimateDepthComplexity(
+                    driver.positions(), currentCamera(), driver.positions().bounds(),
+                    uint32_t(std::max(width - int(panel.width), 1)), uint32_t(height), 128);
             } catch (const std::exception& error) {
                 pending_error_ = error.what();
             }
         }
-        if (help_)
-            drawHelpOverlay();
     }
+    if (!settings_.hide_ui && help_)
+        drawHelpOverlay();
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }

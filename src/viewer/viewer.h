@@ -10,7 +10,8 @@
 //   W/S: fly forward/back   A/D: left/right   Q/E: down/up   F: frame the scene   R: reset camera
 //   Space: play/pause       1-7: method (vissort, unsorted, centroid, peel, dual-peel,
 //   linked-list, weighted)  C: colour cycles  K: highlight collisions  X: error map against
-//   linked-list             P: screenshot     H: help overlay      Escape: quit
+//   linked-list             P: screenshot     H: help overlay      Tab: hide/show the panel
+//   Escape: quit
 
 #include <cstdint>
 #include <optional>

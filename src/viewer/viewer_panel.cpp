@@ -50,14 +50,20 @@ bool samplesCombo(uint32_t& samples) {
 
 PanelActions drawPanel(const PanelState& state, RenderSettings& settings, Overlays& overlays) {
     PanelActions actions;
-    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(345, 0), ImGuiCond_FirstUseEver);
-    ImGui::Begin("vissort");
+    // A sidebar: the scene is drawn right of it (panel_layout.h), so it never covers the scene.
+    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(float(state.layout.width), ImGui::GetIO().DisplaySize.y),
+                             ImGuiCond_Always);
+    ImGui::Begin("vissort", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    if (ImGui::Button("Hide panel (Tab)"))
+        actions.hide_panel = true;
     const Scene& scene = *state.scene;
     if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) {
+        // As drawn: "all transparent" counts every object.
         std::size_t transparent = 0, transparent_triangles = 0;
         for (const SceneObject& object : scene.objects)
-            if (object.transparent) {
+            if (drawnTransparent(object, settings)) {
                 ++transparent;
                 transparent_triangles += object.triangle_count;
             }
@@ -84,6 +90,11 @@ PanelActions drawPanel(const PanelState& state, RenderSettings& settings, Overla
             }
         }
         actions.settings_changed |= enumCombo("shading", kShadingNames, settings.shading);
+        float background[3] = {settings.background.r, settings.background.g, settings.background.b};
+        if (ImGui::ColorEdit3("background", background)) {
+            settings.background = {background[0], background[1], background[2], 1.0f};
+            actions.settings_changed = true;
+        }
         actions.settings_changed |= samplesCombo(settings.samples);
         actions.settings_changed |= enumCombo("check", kOrderCheckNames, settings.check);
     }
@@ -155,6 +166,16 @@ PanelActions drawPanel(const PanelState& state, RenderSettings& settings, Overla
     return actions;
 }
 
+bool drawShowPanelButton() {
+    ImGui::SetNextWindowPos(ImVec2(4, 4), ImGuiCond_Always);
+    ImGui::Begin("show panel", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                     ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NoMove);
+    const bool pressed = ImGui::Button("Panel (Tab)");
+    ImGui::End();
+    return pressed;
+}
+
 void drawHelpOverlay() {
     const ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f),
@@ -177,6 +198,7 @@ void drawHelpOverlay() {
         {"X", "error map against linked-list"},
         {"P", "screenshot (vissort-view-N.png)"},
         {"H", "this help"},
+        {"Tab", "hide / show the panel"},
         {"Escape", "quit"},
     };
     for (const auto& line : kLines) {

@@ -6,6 +6,7 @@
 #include <optional>
 #include <span>
 
+#include "viewer/panel_layout.h"
 #include "viewer/render_worker.h"
 #include "vissort/depth_complexity.h"
 #include "vissort/scene.h"
@@ -14,6 +15,7 @@
 namespace vissort::viewer {
 
 struct PanelState {
+    PanelLayout layout; // where it sits (panel_layout.h)
     const Scene* scene = nullptr;
     const RenderedFrame* last = nullptr; // the frame on screen, if any
     std::span<const float> frame_ms;     // recent frames' total ms, oldest first
@@ -30,10 +32,16 @@ struct PanelActions {
     bool frame_scene = false;
     bool measure_complexity = false;
     bool screenshot = false;
+    bool hide_panel = false;
 };
 
-/// The panel at the window's top-left; settings and overlays are edited in place.
+/// The panel as a sidebar at the window's left (state.layout); settings and overlays are edited
+/// in place.
 PanelActions drawPanel(const PanelState& state, RenderSettings& settings, Overlays& overlays);
+
+/// While the panel is hidden: a small button at the top-left that shows it again; true when
+/// pressed.
+bool drawShowPanelButton();
 
 /// The controls, centred.
 void drawHelpOverlay();

@@ -16,6 +16,7 @@
 #include "scenes/scene_library.h"
 #include "vissort/camera.h"
 #include "vissort/scene.h"
+#include "vissort/transparency_renderer.h"
 
 namespace vissort {
 namespace {
@@ -76,7 +77,7 @@ TEST_F(Cli, FlatRenderOfEveryExactMethodMatchesTheRayCastABuffer) {
     const Scene& scene = *loaded.value;
     const ViewProjection view = frameCamera(*scene.camera, scene.positions.bounds(), 96, 72);
     const test::ABuffer reference = test::rayCastComposite(
-        scene.positions, view, coloursAtAlpha(scene, 0.4f), Rgba{1, 1, 1, 1});
+        scene.positions, view, coloursAtAlpha(scene, 0.4f), kDefaultBackground);
     for (const char* method : {"vissort", "peel", "dual-peel", "linked-list"}) {
         const RunResult r =
             run({"render", kSticks, "--size", "96x72", "--all-transparent", "--alpha", "0.4",
@@ -149,10 +150,10 @@ TEST_F(Cli, RenderAtFourSamplesMatchesTheSupersampledABuffer) {
     ASSERT_TRUE(loaded) << loaded.error;
     const Scene& scene = *loaded.value;
     const ViewProjection samples = frameCamera(*scene.camera, scene.positions.bounds(), 192, 144);
-    const test::ABuffer reference =
-        test::resolveSamples(test::rayCastComposite(scene.positions, samples,
-                                                    coloursAtAlpha(scene, 0.4f), Rgba{1, 1, 1, 1}),
-                             2, 2);
+    const test::ABuffer reference = test::resolveSamples(
+        test::rayCastComposite(scene.positions, samples, coloursAtAlpha(scene, 0.4f),
+                               kDefaultBackground),
+        2, 2);
     for (const char* method : {"vissort", "linked-list"}) {
         const RunResult r =
             run({"render", kSticks, "--size", "96x72", "--all-transparent", "--alpha", "0.4",
@@ -270,7 +271,7 @@ TEST_F(Cli, BenchTransparencyErrors) {
 
 const std::string kInterpenetrating = dataPath("scenes/interpenetrating.json");
 
-// Pixels of the highlight colour (shading.h: magenta, nearly opaque), lit or not.
+// Pixels of the highlight colour (shading.h: magenta, opaque), lit or not.
 int magentaPixels(const std::string& png_path) {
     int width = 0, height = 0, channels = 0;
     unsigned char* png = stbi_load(png_path.c_str(), &width, &height, &channels, 4);
@@ -308,7 +309,8 @@ TEST_F(Cli, RenderHighlightsCollidingTriangles) {
 TEST_F(Cli, RenderColoursTheCycles) {
     const std::string scene = dataPath("scenes/three_sticks_and_box.json");
     const std::vector<std::string> common = {
-        "render", scene, "--size", "200x150", "--all-transparent", "--shading", "flat"};
+        "render",    scene,  "--size",       "200x150", "--all-transparent",
+        "--shading", "flat", "--background", "1,1,1"};
     auto with = [&](std::vector<std::string> more) {
         std::vector<std::string> args = common;
         args.insert(args.end(), more.begin(), more.end());
@@ -467,6 +469,31 @@ TEST_F(Cli, RenderCsvAndCamera) {
     expectError({"render", "builtin:bunnies?n=3", "--method", "all", "-o", path("a.png"), "--csv",
                  path("a.csv")},
                 kUsage, {"--csv", "--method all"});
+}
+
+// The background: a dark slate grey by default (kDefaultBackground), under which the default
+// grey at alpha 0.5 shows; --background takes R,G,B[,A] or #RRGGBB, and refuses the rest.
+TEST_F(Cli, RenderBackgroundByDefaultAndAsAsked) {
+    const auto corner = [&](const std::vector<std::string>& more) {
+        std::vector<std::string> args = {"render", kSticks, "--size",
+                                         "40x30",  "-o",    path("bg.png")};
+        args.insert(args.end(), more.begin(), more.end());
+        const RunResult r = run(args);
+        EXPECT_EQ(r.code, 0) << r;
+        const Png png = readPng(path("bg.png"));
+        return std::vector<int>(png.rgba.begin(), png.rgba.begin() + 3);
+    };
+    const std::vector<int> plain = corner({});
+    const Rgba& d = kDefaultBackground;
+    const float expected[3] = {d.r * 255, d.g * 255, d.b * 255};
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(plain[c], expected[c], 1.0) << c;
+    EXPECT_EQ(corner({"--background", "0,0,1"}), (std::vector<int>{0, 0, 255}));
+    EXPECT_EQ(corner({"--background", "#ff8000"}), (std::vector<int>{255, 128, 0}));
+    EXPECT_EQ(corner({"--background", "1,1,1,1"}), (std::vector<int>{255, 255, 255}));
+    for (const char* bad : {"2,0,0", "red", "#ff00", "1,1", "1,1,1,1,1", "0,,1", "#gg0000"})
+        expectError({"render", kSticks, "--background", bad, "-o", path("x.png")}, kUsage,
+                    {"--background expects R,G,B or R,G,B,A", bad});
 }
 
 } // namespace

@@ -5,8 +5,10 @@
 // same options; a resized window renders the new size correctly; no display and a
 // bad script are one-line errors.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <sstream>
 
 #include "cli_fixture.h"
@@ -102,6 +104,34 @@ TEST_F(View, ScreenshotEqualsRenderOfTheSameFrame) {
     EXPECT_NE(r.out.find("2 frames at 256x192"), std::string::npos) << r;
     const Png shown = readPng(path("view.png"));
     EXPECT_EQ(maxDifference(shown, render({"builtin:bunnies?n=6", "--size", "256x192"}, 2)), 0);
+}
+
+// With its panel, the window draws the scene right of it (panel_layout.h: 240 of 800 pixels
+// at 800x600), framed for that part: the screenshot's right 560 columns are render's picture at
+// 560x600; Tab (scripted) hides the panel and the scene takes the whole window.
+TEST_F(View, ThePanelLeavesTheSceneItsOwnPartOfTheWindow) {
+    const RunResult r = run({"view", "builtin:bunnies?n=2", "--size", "800x600", "--frames", "1",
+                             "--screenshot", path("panel.png")},
+                            120, kXvfb);
+    ASSERT_EQ(r.code, 0) << r;
+    EXPECT_NE(r.out.find("1 frame at 560x600"), std::string::npos) << r;
+    const Png shown = readPng(path("panel.png"));
+    const Png rendered = render({"builtin:bunnies?n=2", "--size", "560x600"}, 1);
+    ASSERT_EQ(shown.width, 800);
+    ASSERT_EQ(rendered.width, 560);
+    Png right = rendered;
+    for (int y = 0; y < shown.height; ++y)
+        std::copy_n(&shown.rgba[(std::size_t(y) * 800 + 240) * 4], 560 * 4,
+                    &right.rgba[std::size_t(y) * 560 * 4]);
+    EXPECT_EQ(maxDifference(right, rendered), 0);
+
+    std::ofstream(path("tab.txt")) << "0 key TAB\n";
+    const RunResult hidden =
+        run({"view", "builtin:bunnies?n=2", "--size", "800x600", "--frames", "1", "--script",
+             path("tab.txt"), "--screenshot", path("hidden.png")},
+            120, kXvfb);
+    ASSERT_EQ(hidden.code, 0) << hidden;
+    EXPECT_NE(hidden.out.find("1 frame at 800x600"), std::string::npos) << hidden;
 }
 
 // The renderer's options reach the window: membrane shading at 4 samples a pixel.

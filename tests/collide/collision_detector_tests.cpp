@@ -185,6 +185,35 @@ TEST(CollisionDetector, RealMeshesThatInterpenetrate) {
     }
 }
 
+// Collisions are between the objects a user names: two copies of a file of four meshes (claws
+// piercing shells), far apart. Entries of a JSON scene are one object each: no pair meets.
+// With every mesh an object, the claws meet their shells: brute force's pairs, all inside a copy.
+TEST(CollisionDetector, ObjectsAreTheEntriesAUserNamed) {
+    const std::string scenes = std::string(VISSORT_SOURCE_DIR) + "/tests/data/scenes/";
+    const Result<Scene> entries = samples::loadScene(scenes + "two_crab_files.json");
+    const Result<Scene> meshes = samples::loadScene(scenes + "two_crab_files_by_mesh.json");
+    ASSERT_TRUE(entries) << entries.error;
+    ASSERT_TRUE(meshes) << meshes.error;
+    ASSERT_EQ(entries.value->objects.size(), 2u);
+    ASSERT_EQ(meshes.value->objects.size(), 8u);
+    for (CollisionMethod m : {CollisionMethod::brute, CollisionMethod::vissort}) {
+        const CollisionResult whole =
+            CollisionDetector(entries.value->objectPrimitives(), method(m))
+                .collide(entries.value->positions);
+        EXPECT_TRUE(whole.pairs.empty()) << collisionMethodName(m);
+        EXPECT_TRUE(whole.object_pairs.empty()) << collisionMethodName(m);
+    }
+    const auto ranges = meshes.value->objectPrimitives();
+    const CollisionResult brute =
+        CollisionDetector(ranges, method(CollisionMethod::brute)).collide(meshes.value->positions);
+    // Each claw crosses its shell's plane from (0.75, 1.1) to (1.25, 1), across the quad's
+    // diagonal y = x: it meets both of its shell's triangles. 4 crabs, 2 pairs each.
+    EXPECT_EQ(brute.pairs.size(), 8u);
+    for (const ObjectPair& pair : brute.object_pairs) // both objects in one copy: 0-3 or 4-7
+        EXPECT_EQ(pair.first / 4, pair.second / 4);
+    expectSamePairs(brute, run({meshes.value->positions, ranges}, CollisionSettings{}), "by mesh");
+}
+
 // Two unit boxes, the second moved along x by 1 + gap (negative gaps overlap), then both turned
 // about z: face-to-face contact exactly at gap 0 when unturned.
 TEST(CollisionDetector, BoxesFaceToFaceAtSmallGaps) {

@@ -2,8 +2,8 @@
 //  - its picture and its reference's are the A-buffer's (ray cast, independent of OpenGL), and
 //    the error it reports is between those two pictures;
 //  - with highlight_collisions, exactly the triangles CGAL finds meeting another object's are
-//    drawn in the highlight colour (the A-buffer with them recoloured), and the counts are
-//    CGAL's;
+//    drawn in the highlight colour and the rest dimmed (the A-buffer recoloured so), and the
+//    counts are CGAL's;
 //  - configure keeps a renderer whose settings did not change (its order seeds the next frame)
 //    and remakes one whose settings did.
 
@@ -103,8 +103,7 @@ TEST(FramePipeline, HighlightsExactlyTheTrianglesThatMeetAnotherObjects) {
     std::vector<Rgba> colours = triangleColours(scene, def.settings);
     const test::ABuffer plain =
         test::rayCastComposite(scene.positions, view, colours, def.settings.background);
-    for (uint32_t t : meeting.triangles)
-        colours[t] = {1.0f, 0.1f, 0.55f, 0.85f}; // the renderer's highlight colour
+    highlightColours(colours, {meeting.triangles.begin(), meeting.triangles.end()});
     const test::ABuffer highlighted =
         test::rayCastComposite(scene.positions, view, colours, def.settings.background);
 

@@ -72,6 +72,10 @@ inline std::vector<RenderCase> renderCases() {
         {"Bunnies", "builtin:bunnies", false, 0.5f, {}, true, 4},
         // Opaque steel and floor with transparent pipes and tanks.
         {"PlantOpaqueAndTransparent", "builtin:plant?layers=3", false, 0.5f, {}, true, 4},
+        // One object of four meshes, each in its material: transparent shells, opaque claws
+        // through them.
+        {"PartsOfOneObject", "tests/data/scenes/crabs.json", false, 0.5f,
+         lookingAt({6, -5, 7}, {6, 1, 0}), false, 1},
     };
 }
 
@@ -103,14 +107,38 @@ inline std::vector<uint8_t> render(const Scene& scene, const RenderSettings& set
 inline std::vector<Rgba> triangleColours(const Scene& scene, const RenderSettings& settings) {
     std::vector<Rgba> colours(scene.triangleCount());
     for (const SceneObject& object : scene.objects) {
-        Rgba colour = object.colour;
         const bool transparent =
             settings.all_transparent || (object.transparent && object.colour.a < 1.0f);
-        colour.a = settings.all_transparent ? settings.alpha : transparent ? colour.a : 1.0f;
-        for (uint32_t t = 0; t < object.triangle_count; ++t)
-            colours[object.first_triangle + t] = colour;
+        // Each mesh of an object in its own colour: the parts, or the object's one colour.
+        const std::vector<ObjectPart> parts =
+            object.parts.empty()
+                ? std::vector<ObjectPart>{{object.name, object.colour, object.first_triangle,
+                                           object.triangle_count}}
+                : object.parts;
+        for (const ObjectPart& part : parts) {
+            Rgba colour = part.colour;
+            colour.a = settings.all_transparent ? settings.alpha : transparent ? colour.a : 1.0f;
+            for (uint32_t t = 0; t < part.triangle_count; ++t)
+                colours[part.first_triangle + t] = colour;
+        }
     }
     return colours;
+}
+
+/// The colours shading.h documents for highlighted triangles: the highlighted magenta and opaque,
+/// every other (untinted) triangle dimmed: 60% of the way to grey 0.5, a transparent one's alpha
+/// 0.3 of its own. `untinted` says which triangles carry no other tint (all when null).
+inline void highlightColours(std::vector<Rgba>& colours, const std::vector<uint32_t>& highlighted,
+                             const std::vector<bool>* untinted = nullptr) {
+    for (std::size_t t = 0; t < colours.size(); ++t) {
+        if (untinted && !(*untinted)[t])
+            continue;
+        Rgba& c = colours[t];
+        c = {c.r + 0.6f * (0.5f - c.r), c.g + 0.6f * (0.5f - c.g), c.b + 0.6f * (0.5f - c.b),
+             c.a < 1.0f ? c.a * 0.3f : 1.0f};
+    }
+    for (uint32_t t : highlighted)
+        colours[t] = {1.0f, 0.1f, 0.55f, 1.0f};
 }
 
 } // namespace vissort::test

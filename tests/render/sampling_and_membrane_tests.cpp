@@ -217,11 +217,12 @@ Scene tiltedSquare(double facing, float alpha) {
     return scene;
 }
 
-// The centre pixel's red, 0..255.
+// The centre pixel's red, 0..255, over a white background.
 int centreRed(const Scene& scene, Shading shading) {
     CameraSpec camera = orthographic({0, 0, -1});
     const ViewProjection view = frameCamera(camera, scene.positions.bounds(), 33, 33);
     RenderSettings settings;
+    settings.background = {1, 1, 1, 1};
     settings.method = BlendMethod::linked_list;
     settings.shading = shading;
     const std::vector<uint8_t> image = render(scene, settings, view);

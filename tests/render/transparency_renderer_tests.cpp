@@ -132,6 +132,22 @@ INSTANTIATE_TEST_SUITE_P(Scenes, RenderScenes, testing::ValuesIn(renderCases()),
                          });
 
 // The cycles and groups the scenes are chosen for are really there.
+// What the viewer's panel and render's header count as transparent is what is drawn so: an
+// object marked transparent with alpha below 1, or every object with all_transparent (the panel
+// said "0 transparent" then).
+TEST(TransparencyRenderer, DrawnTransparentIsWhatTheRendererBlends) {
+    SceneObject glass{"glass", Rgba{1, 1, 1, 0.5f}, true, 0, 1};
+    SceneObject steel{"steel", Rgba{1, 1, 1, 1}, false, 1, 1};
+    SceneObject marked_opaque{"marked", Rgba{1, 1, 1, 1}, true, 2, 1}; // alpha 1: opaque
+    RenderSettings settings;
+    EXPECT_TRUE(drawnTransparent(glass, settings));
+    EXPECT_FALSE(drawnTransparent(steel, settings));
+    EXPECT_FALSE(drawnTransparent(marked_opaque, settings));
+    settings.all_transparent = true;
+    EXPECT_TRUE(drawnTransparent(steel, settings));
+    EXPECT_TRUE(drawnTransparent(marked_opaque, settings));
+}
+
 TEST(TransparencyRenderer, CycleScenesAreCompositedPerPixel) {
     for (const RenderCase& c : renderCases()) {
         if (c.name != "ThreeSticksCycle" && c.name != "Nested")
@@ -407,7 +423,8 @@ TEST(TransparencyRenderer, WithoutTransparentObjectsEveryMethodDrawsTheOpaqueIma
 // nothing. At object level the cycle is the three sticks (multistage splits it into the
 // triangles of its own cycles, whichever they are): the ray-cast A-buffer with the sticks in the
 // palette's first colour (shading.h: orange) and the box in its own is what vissort must draw.
-// A highlighted triangle stays magenta over it; without cycles nothing changes.
+// A highlighted triangle stays magenta over it, the untinted box dimmed; without cycles nothing
+// changes.
 TEST(TransparencyRenderer, ColourCyclesPaintsEachCycleOverTheABuffer) {
     const Scene scene = test::loadTestScene("tests/data/scenes/three_sticks_and_box.json");
     const RenderCase c{"SticksAndBox", "", true, 0.5f, {}, true, 2};
@@ -437,8 +454,11 @@ TEST(TransparencyRenderer, ColourCyclesPaintsEachCycleOverTheABuffer) {
     renderer.setHighlightedTriangles(first_stick);
     const std::vector<uint8_t> highlighted =
         renderer.render(scene.positions, view, stats).toRgba8();
-    for (uint32_t t : first_stick)
-        colours[t] = {1.0f, 0.1f, 0.55f, 0.85f};
+    // The box carries no cycle tint: it is dimmed; the sticks keep their cycle colour.
+    std::vector<bool> untinted(colours.size(), false);
+    for (uint32_t t = box.first_triangle; t < box.first_triangle + box.triangle_count; ++t)
+        untinted[t] = true;
+    highlightColours(colours, first_stick, &untinted);
     EXPECT_LE(
         test::compareWithABuffer(highlighted, test::rayCastComposite(scene.positions, view, colours,
                                                                      settings.background))

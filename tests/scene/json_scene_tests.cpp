@@ -243,33 +243,58 @@ TEST(JsonScene, EulerAnglesApplyXThenYThenZ) {
     EXPECT_NEAR(b.max.z, 1.0, 1e-6);
 }
 
-TEST(JsonScene, MeshPathsAreRelativeToTheJsonFileAndMultiMeshFilesGiveSeveralObjects) {
+TEST(JsonScene, MeshPathsAreRelativeToTheJsonFileAndEachEntryIsOneObject) {
     TempDir dir;
     dir.write("models/tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     const std::string groups = kMeshes + "groups.obj";
     const Scene scene = loadOrFail(dir.write("scene.json", R"({"name": "mixed", "objects": [
         {"mesh": "models/tri.obj", "translate": [0, 0, 1]},
         {"name": "glass", "mesh": ")" + groups + R"("},
+        {"name": "each", "mesh": ")" + groups + R"(", "objects": "mesh"},
         {"mesh": "models/tri.obj", "colour": [1, 0, 0, 0.25], "transparent": false}]})"));
     EXPECT_EQ(scene.name, "mixed");
-    ASSERT_EQ(scene.objects.size(), 5u);
+    ASSERT_EQ(scene.objects.size(), 6u);
     EXPECT_EQ(scene.objects[0].name, "tri");
-    EXPECT_EQ(scene.objects[1].name, "glass/red");
-    EXPECT_EQ(scene.objects[2].name, "glass/green");
-    EXPECT_EQ(scene.objects[3].name, "glass/blue");
-    EXPECT_EQ(scene.objects[4].name, "tri");
-    const uint32_t firsts[] = {0, 1, 2, 3, 5};
-    for (int i = 0; i < 5; ++i)
+    // groups.obj's three meshes: one object by default, its meshes parts of it.
+    EXPECT_EQ(scene.objects[1].name, "glass");
+    EXPECT_EQ(scene.objects[2].name, "each/red");
+    EXPECT_EQ(scene.objects[3].name, "each/green");
+    EXPECT_EQ(scene.objects[4].name, "each/blue");
+    EXPECT_EQ(scene.objects[5].name, "tri");
+    const uint32_t firsts[] = {0, 1, 5, 6, 7, 9};
+    for (int i = 0; i < 6; ++i)
         EXPECT_EQ(scene.objects[i].first_triangle, firsts[i]);
-    EXPECT_EQ(scene.triangleCount(), 6u);
+    EXPECT_EQ(scene.triangleCount(), 10u);
     EXPECT_EQ(scene.positions.corner(0).z, 1.0);
+    const SceneObject& glass = scene.objects[1];
+    ASSERT_EQ(glass.parts.size(), 3u);
+    EXPECT_EQ(glass.parts[0].name, "red");
+    EXPECT_EQ(glass.parts[2].first_triangle, 3u); // placed in the scene's triangle ids
+    EXPECT_EQ(glass.parts[2].triangle_count, 2u);
     // The file's materials stay unless overridden: red_glass has d 0.5.
-    EXPECT_TRUE(scene.objects[1].transparent);
-    EXPECT_FALSE(scene.objects[2].transparent);
+    EXPECT_TRUE(glass.transparent);
+    EXPECT_FLOAT_EQ(glass.parts[1].colour.g, 1.0f);
+    EXPECT_TRUE(scene.objects[2].transparent);
+    EXPECT_FALSE(scene.objects[3].transparent);
     // An explicit colour replaces it; an explicit "transparent" wins over the colour's alpha.
-    EXPECT_FLOAT_EQ(scene.objects[4].colour.r, 1.0f);
-    EXPECT_FLOAT_EQ(scene.objects[4].colour.a, 0.25f);
-    EXPECT_FALSE(scene.objects[4].transparent);
+    EXPECT_FLOAT_EQ(scene.objects[5].colour.r, 1.0f);
+    EXPECT_FLOAT_EQ(scene.objects[5].colour.a, 0.25f);
+    EXPECT_FALSE(scene.objects[5].transparent);
+}
+
+TEST(JsonScene, AnEntryColourRecoloursEveryPart) {
+    TempDir dir;
+    const Scene scene =
+        loadOrFail(dir.write("c.json", R"({"objects": [{"mesh": ")" + kMeshes +
+                                           R"(crabs.obj", "colour": [0, 0, 1]}]})"));
+    ASSERT_EQ(scene.objects.size(), 1u);
+    ASSERT_EQ(scene.objects[0].parts.size(), 4u);
+    for (const ObjectPart& part : scene.objects[0].parts) {
+        EXPECT_FLOAT_EQ(part.colour.b, 1.0f);
+        EXPECT_FLOAT_EQ(part.colour.r, 0.0f);
+        EXPECT_FLOAT_EQ(part.colour.a, 1.0f);
+    }
+    EXPECT_FALSE(scene.objects[0].transparent);
 }
 
 TEST(JsonScene, ColourAlphaBelowOneMeansTransparent) {
@@ -491,6 +516,22 @@ TEST(JsonScene, RejectsStructuralMistakes) {
         const std::string path = dir.write("case" + std::to_string(index++) + ".json", text);
         expectError(loadJsonScene(path), path, contains);
     }
+}
+
+TEST(JsonScene, RejectsObjectGroupingsItDoesNotKnowAndOnShapes) {
+    TempDir dir;
+    const std::string crabs = kMeshes + "crabs.obj";
+    const std::string misspelt =
+        dir.write("a.json", R"({"objects": [{"mesh": ")" + crabs + R"(", "objects": "meshes"}]})");
+    expectError(loadJsonScene(misspelt), misspelt,
+                "objects[0].objects: unknown grouping 'meshes' (did you mean 'mesh'?");
+    const std::string not_text =
+        dir.write("b.json", R"({"objects": [{"mesh": ")" + crabs + R"(", "objects": 1}]})");
+    expectError(loadJsonScene(not_text), not_text, "objects[0].objects: expected a string");
+    const std::string shape =
+        dir.write("c.json", R"({"objects": [{"shape": "box", "objects": "file"}]})");
+    expectError(loadJsonScene(shape), shape,
+                "objects[0].objects: says how a mesh file becomes objects");
 }
 
 TEST(JsonScene, RejectsMissingAndBrokenMeshFilesNamingThem) {

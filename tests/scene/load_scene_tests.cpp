@@ -147,6 +147,39 @@ TEST(ValidateScene, RejectsBrokenInvariants) {
     EXPECT_EQ(broken([](Scene& s) { s.camera = CameraSpec{}; }), "");
 }
 
+TEST(ValidateScene, PartsMustTileTheirObject) {
+    const auto with_parts = [](std::vector<ObjectPart> parts) {
+        Scene scene = handMadeScene();
+        scene.objects[2].parts = std::move(parts); // object c: triangles 3, 4, 5
+        return validateScene(scene).error;
+    };
+    EXPECT_EQ(with_parts({{"p", Rgba{}, 3, 1}, {"q", Rgba{}, 4, 2}}), "");
+    EXPECT_NE(with_parts({{"p", Rgba{}, 3, 1}, {"q", Rgba{}, 5, 1}}).find("'q' does not follow"),
+              std::string::npos); // a gap
+    EXPECT_NE(with_parts({{"p", Rgba{}, 3, 2}}).find("parts do not cover"), std::string::npos);
+    EXPECT_NE(with_parts({{"p", Rgba{}, 3, 1}, {"q", Rgba{}, 4, 3}}).find("parts do not cover"),
+              std::string::npos);                                          // past the object's end
+    EXPECT_NE(with_parts({{"p", Rgba{}, 3, 0}, {"q", Rgba{}, 3, 3}}), ""); // an empty part
+    Rgba nan;
+    nan.r = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_NE(with_parts({{"p", nan, 3, 3}}).find("non-finite colour"), std::string::npos);
+}
+
+TEST(LoadScene, ObjectGroupingAppliesToMeshFilesOnly) {
+    const std::string crabs = kSource + "/tests/data/meshes/crabs.obj";
+    const Result<Scene> each = samples::loadScene(crabs);
+    const Result<Scene> whole = samples::loadScene(crabs, ObjectGrouping::file);
+    ASSERT_TRUE(each) << each.error;
+    ASSERT_TRUE(whole) << whole.error;
+    EXPECT_EQ(each.value->objects.size(), 4u);
+    EXPECT_EQ(whole.value->objects.size(), 1u);
+    expectFailure(
+        samples::loadScene(kSource + "/tests/data/scenes/three_sticks.json", ObjectGrouping::mesh),
+        "a JSON scene says it per entry");
+    expectFailure(samples::loadScene("builtin:bunnies", ObjectGrouping::file),
+                  "a built-in scene makes its own objects");
+}
+
 // --- loadScene ---
 
 TEST(LoadScene, MeshFilesAndJsonScenesByPath) {

@@ -261,6 +261,82 @@ TEST(MeshLoader, GltfInstancesUseTheirNodeWorldTransforms) {
     EXPECT_TRUE(scene.objects[1].transparent);
 }
 
+TEST(MeshLoader, FileGroupingMakesOneObjectOfPartsWithTheSameTriangles) {
+    const Result<Scene> each = loadMeshFile(kMeshes + "crabs.obj");
+    const Result<Scene> whole = loadMeshFile(kMeshes + "crabs.obj", ObjectGrouping::file);
+    ASSERT_TRUE(each) << each.error;
+    ASSERT_TRUE(whole) << whole.error;
+    // Four meshes: two crabs of a shell (a quad, d 0.5 and 0.7) and a claw (opaque).
+    ASSERT_EQ(each.value->objects.size(), 4u);
+    ASSERT_EQ(whole.value->objects.size(), 1u);
+    EXPECT_EQ(whole.value->positions.x, each.value->positions.x);
+    EXPECT_EQ(whole.value->positions.y, each.value->positions.y);
+    EXPECT_EQ(whole.value->positions.z, each.value->positions.z);
+    const SceneObject& crabs = whole.value->objects[0];
+    EXPECT_EQ(crabs.name, "crabs");
+    EXPECT_EQ(crabs.first_triangle, 0u);
+    EXPECT_EQ(crabs.triangle_count, 6u);
+    ASSERT_EQ(crabs.parts.size(), 4u);
+    for (std::size_t i = 0; i < 4; ++i) {
+        const SceneObject& mesh = each.value->objects[i];
+        EXPECT_EQ(crabs.parts[i].name, mesh.name);
+        EXPECT_EQ(crabs.parts[i].first_triangle, mesh.first_triangle);
+        EXPECT_EQ(crabs.parts[i].triangle_count, mesh.triangle_count);
+        EXPECT_EQ(crabs.parts[i].colour.g, mesh.colour.g);
+        EXPECT_EQ(crabs.parts[i].colour.a, mesh.colour.a);
+    }
+    // The largest part's colour (the first shell, Kd 1 0.2 0.2) with the least alpha (0.5).
+    EXPECT_FLOAT_EQ(crabs.colour.r, 1.0f);
+    EXPECT_FLOAT_EQ(crabs.colour.g, 0.2f);
+    EXPECT_FLOAT_EQ(crabs.colour.a, 0.5f);
+    EXPECT_TRUE(crabs.transparent);
+}
+
+TEST(MeshLoader, NodeGroupingMakesOneObjectPerNodeInNodeOrder) {
+    // An OBJ group of two materials is one node of two meshes.
+    const Result<Scene> crabs = loadMeshFile(kMeshes + "crabs.obj", ObjectGrouping::node);
+    ASSERT_TRUE(crabs) << crabs.error;
+    ASSERT_EQ(crabs.value->objects.size(), 2u);
+    EXPECT_EQ(crabs.value->objects[0].name, "crab");
+    EXPECT_EQ(crabs.value->objects[1].name, "crab2");
+    EXPECT_EQ(crabs.value->objects[1].first_triangle, 3u);
+    EXPECT_EQ(crabs.value->objects[1].parts.size(), 2u);
+    EXPECT_FLOAT_EQ(crabs.value->objects[1].colour.a, 0.7f);
+
+    // Nodes first and third place mesh 'pair' (two primitives: two meshes, at z = 1 and 2),
+    // third moved 5 along x; node second places 'solo' (z = 0). By mesh, the instances of a
+    // mesh come together; by node, each node's meshes do, in node order.
+    const Result<Scene> by_mesh = loadMeshFile(kMeshes + "nodes_out_of_mesh_order.gltf");
+    const Result<Scene> by_node =
+        loadMeshFile(kMeshes + "nodes_out_of_mesh_order.gltf", ObjectGrouping::node);
+    ASSERT_TRUE(by_mesh) << by_mesh.error;
+    ASSERT_TRUE(by_node) << by_node.error;
+    ASSERT_EQ(by_mesh.value->objects.size(), 5u);
+    EXPECT_EQ(by_mesh.value->objects[0].name, "first/pair-0");
+    EXPECT_EQ(by_mesh.value->objects[1].name, "third/pair-0");
+    const Scene& scene = *by_node.value;
+    ASSERT_EQ(scene.objects.size(), 3u);
+    const char* names[] = {"first", "second", "third"};
+    const uint32_t firsts[] = {0, 2, 3}, counts[] = {2, 1, 2};
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_EQ(scene.objects[i].name, names[i]);
+        EXPECT_EQ(scene.objects[i].first_triangle, firsts[i]);
+        EXPECT_EQ(scene.objects[i].triangle_count, counts[i]);
+    }
+    expectCorner(scene, 0, {0, 0, 1}); // first: pair's primitives
+    expectCorner(scene, 3, {0, 0, 2});
+    expectCorner(scene, 6, {0, 0, 0}); // second: solo
+    expectCorner(scene, 9, {5, 0, 1}); // third: pair, moved
+    expectCorner(scene, 12, {5, 0, 2});
+    // Parts keep their materials: pair's second primitive is blue at alpha 0.5.
+    ASSERT_EQ(scene.objects[2].parts.size(), 2u);
+    EXPECT_FLOAT_EQ(scene.objects[2].parts[1].colour.b, 1.0f);
+    EXPECT_FLOAT_EQ(scene.objects[2].parts[1].colour.a, 0.5f);
+    EXPECT_TRUE(scene.objects[2].transparent);
+    EXPECT_TRUE(scene.objects[1].parts.empty());
+    EXPECT_FALSE(scene.objects[1].transparent);
+}
+
 TEST(MeshLoader, MemoryInputGoesThroughTheSameReader) {
     const std::string bytes = readBytes(kModels + "bunny-lowres.obj");
     const Result<Scene> loaded = loadMeshMemory(bytes.data(), bytes.size(), "obj", "bunny.obj");

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -66,6 +67,38 @@ TEST(ChooseView, NothingAskedOfASceneWithoutACameraFramesEveryCorner) {
         ASSERT_GT(c[3], 0.0) << "corner " << i << " behind the eye";
         EXPECT_LE(std::abs(c[0]), c[3]) << "corner " << i;
         EXPECT_LE(std::abs(c[1]), c[3]) << "corner " << i;
+    }
+}
+
+// A dynamic scene is framed over the frames that will be run: two boxes approaching each other
+// for 30 frames fill the picture (some corner beyond 80% of the half-width), every corner of
+// every frame inside it. Framed over 300 frames (the old least), they covered under a tenth.
+TEST(ChooseView, ADynamicSceneIsFramedOverTheFramesRun) {
+    const Scene scene = load("tests/data/scenes/approaching.json");
+    ASSERT_TRUE(scene.isDynamic());
+    for (int frames : {1, 30}) {
+        SCOPED_TRACE(frames);
+        ViewDef def;
+        def.width = 64;
+        def.height = 48;
+        def.frames = frames;
+        const Result<ChosenView> chosen = chooseView(def, scene);
+        ASSERT_TRUE(chosen) << chosen.error;
+        const ViewProjection view =
+            frameCamera(chosen.value->camera, scene.positions.bounds(), def.width, def.height);
+        double widest = 0;
+        TrianglePositions positions;
+        for (int frame = 0; frame < frames; ++frame) {
+            scene.frame(frame * kFrameInterval, positions);
+            for (std::size_t i = 0; i < positions.x.size(); ++i) {
+                const auto c = view.toClip(positions.view().corner(i));
+                ASSERT_GT(c[3], 0.0);
+                const double extent = std::max(std::abs(c[0]), std::abs(c[1])) / c[3];
+                ASSERT_LE(extent, 1.0) << "frame " << frame << " corner " << i;
+                widest = std::max(widest, extent);
+            }
+        }
+        EXPECT_GT(widest, 0.8);
     }
 }
 

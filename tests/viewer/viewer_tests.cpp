@@ -1,5 +1,6 @@
 // The viewer's camera controls against their documented geometry (camera_controls.h), computed
-// here from first principles, and the input script's format (input_script.h).
+// here from first principles, the input script's format (input_script.h) and the panel's
+// layout (panel_layout.h).
 
 #include <gtest/gtest.h>
 
@@ -7,6 +8,7 @@
 
 #include "viewer/camera_controls.h"
 #include "viewer/input_script.h"
+#include "viewer/panel_layout.h"
 
 namespace vissort::viewer {
 namespace {
@@ -120,6 +122,33 @@ TEST(InputScript, RejectsBadLinesNamingThem) {
         EXPECT_NE(events.error.find(needle), std::string::npos) << text << ": " << events.error;
     }
     EXPECT_FALSE(loadInputScript("/nonexistent/script.txt"));
+}
+
+// The panel never covers more than 30% of the window (a fixed 345 pixels covered 44% of an
+// 800x600 one), grows with the window, and leaves the rest to the scene; hidden, the scene has it
+// all.
+TEST(PanelLayout, ASidebarScaledWithTheWindow) {
+    const PanelLayout small = panelLayout(800, 600), usual = panelLayout(1024, 768),
+                      large = panelLayout(1920, 1200), hidden = panelLayout(800, 600, false);
+    EXPECT_EQ(small.width, 240u); // 30% of 800: 340 * 0.75 would be 255
+    EXPECT_FLOAT_EQ(small.scale, 0.75f);
+    EXPECT_FLOAT_EQ(usual.scale, 0.8f); // 1024 / 1280
+    EXPECT_EQ(usual.width, 272u);       // 340 * 0.8
+    EXPECT_FLOAT_EQ(large.scale, 1.5f);
+    EXPECT_EQ(large.width, 510u);
+    EXPECT_LE(large.width, 1920u * 3 / 10);
+    EXPECT_EQ(hidden.width, 0u);
+    EXPECT_FLOAT_EQ(hidden.scale, 0.75f);
+    EXPECT_EQ(sceneWidth(800, 600, true), 560u);
+    EXPECT_EQ(sceneWidth(800, 600, false), 800u);
+    EXPECT_EQ(sceneWidth(1, 1, true), 1u); // never an empty image
+}
+
+TEST(InputScript, TabTogglesThePanel) {
+    const Result<std::vector<ScriptEvent>> script = parseInputScript("2 key tab\n");
+    ASSERT_TRUE(script) << script.error;
+    ASSERT_EQ(script.value->size(), 1u);
+    EXPECT_EQ((*script.value)[0].key, "TAB");
 }
 
 } // namespace
