@@ -36,8 +36,9 @@ int main(int argc, char** argv) {
         for (int frame = 0; frame < frames; ++frame) {
             scene.frame(frame * vissort::kFrameInterval, positions);
             const vissort::CollisionResult result = detector.collide(positions);
-            std::printf("frame %d: %zu intersecting triangle pairs, %zu colliding object pairs\n",
-                        frame, result.pairs.size(), result.object_pairs.size());
+            const std::size_t pairs = result.pairs.size(), objects = result.object_pairs.size();
+            std::printf("frame %d: %zu intersecting triangle pair%s, %zu colliding object pair%s\n",
+                        frame, pairs, pairs == 1 ? "" : "s", objects, objects == 1 ? "" : "s");
             for (const vissort::ObjectPair& pair : result.object_pairs)
                 std::printf("  %u '%s' and %u '%s'\n", pair.first,
                             scene.objects[pair.first].name.c_str(), pair.second,
