@@ -5,7 +5,6 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <iterator>
 #include <numeric>
 #include <string>
@@ -151,14 +150,10 @@ PanelActions drawPanel(const PanelState& state, RenderSettings& settings, Overla
                             static_cast<unsigned long long>(last.frame.error->pixels_over_one));
         }
         if (!state.frame_ms.empty()) {
-            const float top = *std::max_element(state.frame_ms.begin(), state.frame_ms.end());
-            const float scale = std::max(1.0f, top * 1.1f);
-            // The plot's scale on it: the axis runs from 0 at the bottom to `scale` at the top.
-            char overlay[64];
-            std::snprintf(overlay, sizeof overlay, "0 to %.0f ms; last %.1f ms", scale,
-                          state.frame_ms.back());
-            ImGui::PlotLines("ms", state.frame_ms.data(), int(state.frame_ms.size()), 0, overlay,
-                             0.0f, scale, ImVec2(0, 60));
+            // The plot's scale on it: the axis runs from 0 at the bottom to `top` at the top.
+            const PlotScale scale = frameTimePlotScale(state.frame_ms);
+            ImGui::PlotLines("ms", state.frame_ms.data(), int(state.frame_ms.size()), 0,
+                             scale.caption.c_str(), 0.0f, scale.top, ImVec2(0, 60));
         }
     }
     ImGui::TextDisabled("H: help");

@@ -144,6 +144,18 @@ TEST(PanelLayout, ASidebarScaledWithTheWindow) {
     EXPECT_EQ(sceneWidth(1, 1, true), 1u); // never an empty image
 }
 
+// The frame-time plot says its scale: 0 to the largest frame and a tenth more (at least 1 ms),
+// and the last frame's time.
+TEST(PanelLayout, ThePlotSaysItsScale) {
+    const float frames[] = {40.0f, 132.7f, 77.42f};
+    const PlotScale scale = frameTimePlotScale(frames);
+    EXPECT_FLOAT_EQ(scale.top, 132.7f * 1.1f);
+    EXPECT_EQ(scale.caption, "0 to 146 ms; last 77.4 ms");
+    const float fast[] = {0.2f, 0.3f};
+    EXPECT_FLOAT_EQ(frameTimePlotScale(fast).top, 1.0f);
+    EXPECT_EQ(frameTimePlotScale(fast).caption, "0 to 1 ms; last 0.3 ms");
+}
+
 TEST(InputScript, TabTogglesThePanel) {
     const Result<std::vector<ScriptEvent>> script = parseInputScript("2 key tab\n");
     ASSERT_TRUE(script) << script.error;
