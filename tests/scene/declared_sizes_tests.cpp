@@ -152,6 +152,27 @@ TEST(DeclaredSizes, AsciiPlyDeclaringBillionsOfVerticesIsRefused) {
                   {"ASCII PLY header declares 2000000000 'vertex'", "bytes"});
 }
 
+// A list's count is in an ASCII PLY's body, and assimp reserves it before reading the values:
+// a face of 3 billion corners (12 GB reserved), or a count of 25 digits followed by bytes that
+// are no digits (the mesh_file fuzzer's 219-byte file: 27 GB), is refused; honest lists pass.
+TEST(DeclaredSizes, AsciiPlyListCountsInTheBodyAreBounded) {
+    TempDir dir;
+    const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\n" +
+                               kPlyVertexProperties +
+                               "element face 1\nproperty list uchar int vertex_indices\n"
+                               "end_header\n0 0 0\n1 0 0\n0 1 0\n";
+    const std::string huge = dir.write("huge.ply", header + "3000000000 0 1 2\n");
+    expectRefused(loadMeshFile(huge), huge,
+                  {"ASCII PLY body has a list of 3000000000 values in 'face' 0", "bytes left"});
+    const std::string digits =
+        dir.write("digits.ply", header + "7777777777777777777777777\xff\xff 0 1 2\n");
+    expectRefused(loadMeshFile(digits), digits, {"a list of 25-digit values"});
+    const std::string honest = dir.write("honest.ply", header + "3 0 1 2\n");
+    const Result<Scene> loaded = loadMeshFile(honest);
+    ASSERT_TRUE(loaded) << loaded.error;
+    EXPECT_EQ(loaded.value->triangleCount(), 1u);
+}
+
 TEST(DeclaredSizes, BinaryPlyDeclaringMoreThanTheFileHoldsIsRefused) {
     TempDir dir;
     const std::string honest =
