@@ -157,8 +157,7 @@ TEST(DeclaredSizes, AsciiPlyDeclaringBillionsOfVerticesIsRefused) {
 // are no digits (the mesh_file fuzzer's 219-byte file: 27 GB), is refused; honest lists pass.
 TEST(DeclaredSizes, AsciiPlyListCountsInTheBodyAreBounded) {
     TempDir dir;
-    const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\n" +
-                               kPlyVertexProperties +
+    const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\n" + kPlyVertexProperties +
                                "element face 1\nproperty list uchar int vertex_indices\n"
                                "end_header\n0 0 0\n1 0 0\n0 1 0\n";
     const std::string huge = dir.write("huge.ply", header + "3000000000 0 1 2\n");
