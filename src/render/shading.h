@@ -23,12 +23,11 @@ namespace vissort::detail {
 // a strong magenta, opaque (colliding triangles); kCycleTint + g the colour g (modulo 8) of a
 // palette without magenta, at the object's alpha (the primitives of the order's cycle g). With
 // `dimming` (some triangle is highlighted), every untinted triangle is dimmed so that the
-// highlights stand out, even behind it: its colour kDimToGrey of the way to grey 0.5, and a
-// transparent one's alpha kDimAlpha of its own (colliding triangles are mostly inside other
+// highlights stand out, even behind it: its colour 60% of the way to grey 0.5, and a
+// transparent one's alpha 0.3 of its own (colliding triangles are mostly inside other
 // objects: drawn only in magenta, 1,014 highlighted triangles of the bunnies changed 669 pixels).
 // In every method alike: the methods stay comparable.
 inline constexpr uint32_t kNoTint = 0, kHighlightTint = 1, kCycleTint = 2;
-inline constexpr float kDimToGrey = 0.6f, kDimAlpha = 0.3f; // the shader's literals
 inline constexpr const char* kShadeVertexShader = R"(#version 450 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
@@ -59,7 +58,7 @@ void main() {
         base = vec4(1.0, 0.1, 0.55, 1.0);  // kHighlightTint
     else if (tint >= 2u)
         base = vec4(kCyclePalette[(tint - 2u) % 8u], base.a);  // kCycleTint + group
-    else if (dimming)  // kDimToGrey, kDimAlpha
+    else if (dimming)
         base = vec4(mix(base.rgb, vec3(0.5), 0.6), base.a < 1.0 ? base.a * 0.3 : 1.0);
     if (shading == 1) {  // flat
         shaded = base;

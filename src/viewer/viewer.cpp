@@ -376,9 +376,9 @@ RenderRequest Viewer::request() const {
     request.frame = frame_;
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_, &width, &height);
-    const uint32_t window_width = uint32_t(std::max(width, 1));
-    request.width = window_width > layout().width ? window_width - layout().width : 1;
     request.height = uint32_t(std::max(height, 1));
+    request.width = sceneWidth(uint32_t(std::max(width, 1)), request.height,
+                               panel_shown_ && !settings_.hide_ui);
     return request;
 }
 
