@@ -3,7 +3,8 @@
 # build-fuzz/ and runs each for a bounded time. docs/robustness.md, "Fuzzing".
 #   bash scripts/fuzz.sh                 every target, 60 s each
 #   bash scripts/fuzz.sh 300             every target, 300 s each
-#   bash scripts/fuzz.sh 60 mesh_file    one target (json_scene, scene_parameters, mesh_file)
+#   bash scripts/fuzz.sh 60 mesh_file    one target (json_scene, scene_parameters, mesh_file,
+#                                        grid_file)
 #   bash scripts/fuzz.sh --runs 5000 mesh_file
 #                                        a fixed number of inputs: with VISSORT_FUZZ_SEED set,
 #                                        the same inputs on every machine (what CI runs)
@@ -31,7 +32,7 @@ else
   budget_text="$seconds s"
   shift || true
 fi
-all_targets=(json_scene scene_parameters mesh_file)
+all_targets=(json_scene scene_parameters mesh_file grid_file)
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=("${all_targets[@]}")
 for t in "${targets[@]}"; do

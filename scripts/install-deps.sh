@@ -12,6 +12,7 @@ packages=(
   nlohmann-json3-dev         # JSON scenes and --json output
   libcli11-dev               # command-line parsing
   libembree-dev              # ray casting for the exact oracle and the ground truth
+  libpugixml-dev             # reading VTK XML grids (.vtu)
   libgmp-dev pkgconf         # exact rational arithmetic where float cannot decide (the exact fragment model)
   libegl-dev libopengl-dev   # headless OpenGL: EGL and glvnd's libOpenGL (the gl oracle)
   libgl-dev                  # the OpenGL 4.5 core headers (GL/glcorearb.h)

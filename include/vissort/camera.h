@@ -52,6 +52,29 @@ struct ViewProjection {
     void pixelRay(double px, double py, Vec3& origin, Vec3& direction) const;
 };
 
+/// The screen rectangle that points project into, in pixels from the top-left corner (as the
+/// rasterizers place a corner: ((x/w + 1) / 2 * width, (1 - y/w) / 2 * height)), grown one point
+/// at a time; `wraps` once a point lies at or behind the eye plane, where corners bound nothing.
+struct ScreenExtent {
+    double low_x = 1e300, low_y = 1e300, high_x = -1e300, high_y = -1e300;
+    bool wraps = false;
+
+    void add(const ViewProjection& view, const Vec3& point) {
+        const std::array<double, 4> clip = view.toClip(point);
+        if (!(clip[3] > 0)) {
+            wraps = true;
+            return;
+        }
+        const double x = (clip[0] / clip[3] + 1) * 0.5 * view.width;
+        const double y = (1 - clip[1] / clip[3]) * 0.5 * view.height;
+        low_x = x < low_x ? x : low_x;
+        high_x = x > high_x ? x : high_x;
+        low_y = y < low_y ? y : low_y;
+        high_y = y > high_y ? y : high_y;
+    }
+    bool isEmpty() const { return !(low_x <= high_x && low_y <= high_y); }
+};
+
 /// The default view of a scene: perspective, 45 degrees vertically, looking at the bounding
 /// sphere's centre from the direction (0.6, 0.5, 1), far enough that the whole sphere fits in an
 /// image of the given aspect ratio (width / height) with a 5% margin.

@@ -9,9 +9,15 @@
 #include <string>
 #include <vector>
 
+#include "vissort/geometry.h"
 #include "vissort/result.h"
 
 namespace vissort {
+
+/// The background unless one is asked for: a dark slate grey, under which light and dark
+/// surfaces both show, and the default grey (0.8) at alpha 0.5 is plainly lighter (white made
+/// such surfaces nearly invisible: 0.9 against 1).
+inline constexpr Rgba kDefaultBackground{0.3f, 0.32f, 0.36f, 1.0f};
 
 /// A rendered frame: linear RGBA floats, row 0 at the top, 4 floats per pixel.
 struct Image {

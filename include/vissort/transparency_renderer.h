@@ -108,11 +108,6 @@ inline Result<SampleGrid> sampleGridOf(int64_t samples) {
                                        std::to_string(samples));
 }
 
-/// The background unless one is asked for: a dark slate grey, under which light and dark
-/// surfaces both show, and the default grey (0.8) at alpha 0.5 is plainly lighter (white made
-/// such surfaces nearly invisible: 0.9 against 1).
-inline constexpr Rgba kDefaultBackground{0.3f, 0.32f, 0.36f, 1.0f};
-
 struct RenderSettings {
     BlendMethod method = BlendMethod::vissort;
     OrderLevel level = OrderLevel::object; // vissort's ordering level; centroid's unit

@@ -5,6 +5,7 @@
 #include <span>
 #include <sstream>
 
+#include "vissort/image.h"
 #include "vissort/vertex_positions.h"
 
 namespace vissort::python {
@@ -211,6 +212,24 @@ std::pair<uint32_t, uint32_t> readSize(const py::handle& size) {
     if (Status valid = validateImageSize(uint64_t(sides[0]), uint64_t(sides[1])); !valid)
         throw py::value_error("size " + valid.error);
     return {uint32_t(sides[0]), uint32_t(sides[1])};
+}
+
+Rgba readColour(const py::handle& colour, const std::string& what) {
+    const std::string expected = what + " must be (r, g, b) or (r, g, b, a), each in [0, 1]";
+    const py::array array = py::array::ensure(colour);
+    if (!array || array.ndim() != 1 || (array.shape(0) != 3 && array.shape(0) != 4))
+        throw py::value_error(expected);
+    const auto c = py::array_t<double>::ensure(array).unchecked<1>();
+    for (py::ssize_t i = 0; i < array.shape(0); ++i)
+        if (!(c(i) >= 0.0 && c(i) <= 1.0))
+            throw py::value_error(expected);
+    return {float(c(0)), float(c(1)), float(c(2)), array.shape(0) == 4 ? float(c(3)) : 1.0f};
+}
+
+py::tuple defaultBackground() {
+    const auto rounded = [](float v) { return std::round(double(v) * 1e6) / 1e6; };
+    const Rgba& c = kDefaultBackground;
+    return py::make_tuple(rounded(c.r), rounded(c.g), rounded(c.b), rounded(c.a));
 }
 
 } // namespace vissort::python

@@ -62,4 +62,12 @@ py::tuple vec3Tuple(const Vec3& v);
 /// ValueError otherwise.
 std::pair<uint32_t, uint32_t> readSize(const py::handle& size);
 
+/// A colour (r, g, b) or (r, g, b, a), each in [0, 1] (alpha 1 when left out); else ValueError:
+/// "WHAT must be (r, g, b) or (r, g, b, a), each in [0, 1]". Needs the GIL.
+Rgba readColour(const py::handle& colour, const std::string& what);
+
+/// The library's default background as Python writes it: (0.3, 0.32, 0.36, 1.0), not the floats'
+/// 0.30000001192092896.
+py::tuple defaultBackground();
+
 } // namespace vissort::python

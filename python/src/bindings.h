@@ -11,5 +11,6 @@ void bindCamera(pybind11::module_& m);
 void bindOrder(pybind11::module_& m);
 void bindRender(pybind11::module_& m);
 void bindCollide(pybind11::module_& m);
+void bindVolume(pybind11::module_& m);
 
 } // namespace vissort::python

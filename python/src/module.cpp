@@ -20,4 +20,5 @@ PYBIND11_MODULE(_vissort, m) {
     vissort::python::bindOrder(m);
     vissort::python::bindRender(m);
     vissort::python::bindCollide(m);
+    vissort::python::bindVolume(m);
 }

@@ -21,14 +21,6 @@
 namespace vissort::python {
 namespace {
 
-// The library's default background as Python writes it: (0.3, 0.32, 0.36, 1.0), not the floats'
-// 0.30000001192092896.
-py::tuple defaultBackground() {
-    const auto rounded = [](float v) { return std::round(double(v) * 1e6) / 1e6; };
-    const Rgba& c = kDefaultBackground;
-    return py::make_tuple(rounded(c.r), rounded(c.g), rounded(c.b), rounded(c.a));
-}
-
 #if VISSORT_WITH_GL
 FramePipelineDef pipelineDefOf(const std::string& method, const std::string& level,
                                const std::string& oracle, bool all_transparent, double alpha,
@@ -62,15 +54,7 @@ FramePipelineDef pipelineDefOf(const std::string& method, const std::string& lev
     if (!parsed_check)
         throw py::value_error(parsed_check.error);
     settings.check = *parsed_check.value;
-    const py::array colour = py::array::ensure(background);
-    if (!colour || colour.ndim() != 1 || (colour.shape(0) != 3 && colour.shape(0) != 4))
-        throw py::value_error("background must be (r, g, b) or (r, g, b, a), each in [0, 1]");
-    const auto c = py::array_t<double>::ensure(colour).unchecked<1>();
-    for (py::ssize_t i = 0; i < colour.shape(0); ++i)
-        if (!(c(i) >= 0.0 && c(i) <= 1.0))
-            throw py::value_error("background must be (r, g, b) or (r, g, b, a), each in [0, 1]");
-    settings.background = {float(c(0)), float(c(1)), float(c(2)),
-                           colour.shape(0) == 4 ? float(c(3)) : 1.0f};
+    settings.background = readColour(background, "background");
     return def;
 }
 

@@ -23,19 +23,23 @@ import numpy.typing as npt
 __all__ = [
     "Camera",
     "CollisionDetector",
+    "Grid",
     "OrderResult",
     "Orderer",
     "Renderer",
     "Scene",
     "SceneObject",
+    "VolumeRenderer",
     "__version__",
     "builtin",
     "builtin_scenes",
     "collide",
     "has_gl",
     "load",
+    "load_grid",
     "order",
     "render",
+    "render_volume",
 ]
 
 # The library's version, as `vissort --version` prints it.
@@ -54,6 +58,10 @@ _Shading = Literal["lit", "flat", "membrane"]
 _Samples = Literal[1, 2, 4, 8]
 _Check = Literal["auto", "on", "off"]
 _CollisionMethod = Literal["vissort", "brute", "bullet", "fcl"]
+_VolumeMethod = Literal["vissort", "centroid", "mpvo", "lists", "raycast"]
+_TransferPreset = Literal["cool-warm", "fire", "grey", "bands"]
+# A transfer function: a preset, a JSON file's path, or rows (scalar, r, g, b, extinction).
+_Transfer = Union[_TransferPreset, str, npt.ArrayLike]
 
 # (width, height): any sequence of two integers (not bools), each side 1..16384, at most
 # 67108864 (16384 * 16384 / 4) pixels; anything else is a ValueError.
@@ -455,3 +463,99 @@ def collide(
     first < second, ascending. positions: a Scene (at time, default 0) or corners (T, 3, 3),
     or (V, 3) with triangles=(T, 3). threads, size and min_cull as CollisionDetector's.
     Releases the GIL."""
+
+
+_VolumeStats = TypedDict(
+    "_VolumeStats",
+    {
+        "order_ms": float,
+        "composite_ms": float,
+        "cells": int,
+        "queries": int,
+        "cycles": int,
+        "cells_in_cycles": int,
+        "segments": int,
+        "list_segments": int,
+    },
+)
+
+
+class Grid:
+    """A tetrahedral grid with a scalar per point: load_grid(path) or Grid(points, cells,
+    scalars); hexahedra, wedges and pyramids are split into tetrahedra (docs/volume.md)."""
+
+    def __init__(
+        self,
+        points: npt.ArrayLike,
+        cells: npt.ArrayLike,
+        scalars: Optional[npt.ArrayLike] = None,
+        name: str = "grid",
+    ) -> None:
+        """points (N, 3); cells (M, 4) tetrahedra, (M, 5) pyramids, (M, 6) wedges or (M, 8)
+        hexahedra, corners in VTK's order; scalars (N,) or None. ValueError naming the
+        problem (an index out of range, a degenerate or inverted cell, a non-conforming grid)."""
+    @property
+    def name(self) -> str: ...
+    @property
+    def scalar_name(self) -> str: ...
+    @property
+    def points(self) -> npt.NDArray[np.float64]:
+        """(N, 3) float64, a copy."""
+    @property
+    def tets(self) -> npt.NDArray[np.uint32]:
+        """(M, 4) uint32: the tetrahedra, positively oriented, a copy."""
+    @property
+    def scalars(self) -> Optional[npt.NDArray[np.float64]]:
+        """(N,) float64, a copy; None when the grid has none."""
+    def facts(self) -> dict[str, Any]:
+        """points, tetrahedra, file_cells, skipped_cells, bounds ((min), (max)), scalar_range
+        ((min, max) or None), boundary_faces, convex: what `vissort info GRID` prints."""
+
+
+def load_grid(spec: Union[str, os.PathLike[str]]) -> Grid:
+    """A grid from a file (.vtk, .vtu, tetgen .node/.ele, Medit .mesh) or
+    builtin:cube|torus|knot?n=CELLS; ValueError with the loader's one-line message."""
+
+
+class VolumeRenderer:
+    """Frames of one grid by one method, keeping vissort's last order for the next frame
+    (coherence)."""
+
+    def __init__(
+        self,
+        grid: Grid,
+        method: _VolumeMethod = "vissort",
+        *,
+        oracle: _Oracle = "cpu",
+        threads: int = 0,
+    ) -> None: ...
+    def render(
+        self,
+        camera: Optional[Camera] = None,
+        *,
+        size: _Size = (512, 512),
+        tf: _Transfer = "cool-warm",
+        tf_range: Literal["normalized", "absolute"] = "normalized",
+        density: float = 4.0,
+        background: Sequence[float] = (0.3, 0.32, 0.36, 1.0),
+    ) -> npt.NDArray[np.uint8]:
+        """The picture as (H, W, 4) uint8; camera None frames the grid. Releases the GIL."""
+    @property
+    def stats(self) -> _VolumeStats:
+        """The last frame's costs."""
+
+
+def render_volume(
+    grid: Grid,
+    camera: Optional[Camera] = None,
+    *,
+    size: _Size = (512, 512),
+    method: _VolumeMethod = "vissort",
+    tf: _Transfer = "cool-warm",
+    tf_range: Literal["normalized", "absolute"] = "normalized",
+    density: float = 4.0,
+    background: Sequence[float] = (0.3, 0.32, 0.36, 1.0),
+    oracle: _Oracle = "cpu",
+) -> npt.NDArray[np.uint8]:
+    """One frame by one method (VolumeRenderer follows frames), as (H, W, 4) uint8: emission and
+    absorption with the transfer function tf (docs/volume.md's law). Releases the GIL."""

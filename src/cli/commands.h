@@ -133,4 +133,23 @@ struct ViewerOptions {
 CLI::App* addViewCommand(CLI::App& app, ViewerOptions& options);
 int runView(const ViewerOptions& options);
 
+struct VolumeOptions {
+    std::string grid;
+    std::string output;
+    std::string tf = "cool-warm";
+    double density = 4.0;
+    std::string method = "vissort";
+    std::string oracle = "cpu";
+    std::string background; // empty: kDefaultBackground
+    std::string reference;  // a method each frame is compared with, or empty
+    std::string error_map;  // with reference: where the error maps go
+    ViewOptions view;
+    JsonOutput json;
+};
+CLI::App* addVolumeCommand(CLI::App& app, VolumeOptions& options);
+int runVolume(const VolumeOptions& options);
+
+/// `info` of a grid file or built-in grid (grid_info.cpp).
+int runGridInfo(const InfoOptions& options);
+
 } // namespace vissort::cli

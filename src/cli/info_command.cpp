@@ -6,17 +6,19 @@
 #include "cli/json_output.h"
 #include "cli/text_output.h"
 #include "vissort/depth_complexity.h"
+#include "vissort/tet_grid.h"
 #if VISSORT_WITH_GL
 #include "vissort/gl_context.h"
 #endif
 
 namespace vissort::cli {
 CLI::App* addInfoCommand(CLI::App& app, InfoOptions& options) {
-    CLI::App* command = app.add_subcommand("info", "Describe a scene: objects, triangles, bounds, "
-                                                   "depth complexity from a view");
+    CLI::App* command =
+        app.add_subcommand("info", "Describe a scene (objects, triangles, bounds, depth "
+                                   "complexity from a view) or a grid (cells, scalars, boundary)");
     command->add_option(
         "scene", options.scene,
-        "Mesh file, JSON scene, or builtin:NAME?key=value&... (optional with --gl)");
+        "Mesh file, JSON scene, grid file, or builtin:NAME?key=value&... (optional with --gl)");
     command->add_flag("--gl", options.gl,
                       "Print the OpenGL context's EGL platform, vendor, renderer and version "
                       "(VISSORT_GL_PLATFORM=auto|device|surfaceless picks the platform)");
@@ -95,6 +97,8 @@ int runInfo(const InfoOptions& options) {
     } else if (options.scene.empty()) {
         return fail(kExitUsage, "info needs a scene, or --gl (run 'vissort info --help')");
     }
+    if (isGridSpec(options.scene))
+        return runGridInfo(options);
     std::optional<Scene> scene;
     ChosenView view;
     if (const int code =

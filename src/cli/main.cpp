@@ -32,8 +32,10 @@ int main(int argc, char** argv) {
     CLI::App* collide_command = addCollideCommand(app, collide);
     ViewerOptions view;
     CLI::App* view_command = addViewCommand(app, view);
+    VolumeOptions volume;
+    CLI::App* volume_command = addVolumeCommand(app, volume);
     for (CLI::App* command : {order_command, info_command, bench_command, render_command,
-                              collide_command, view_command})
+                              collide_command, view_command, volume_command})
         addQuietOption(*command);
     // After the commands: each would inherit it, and it speaks of them all.
     app.footer("Run 'vissort COMMAND --help' for a command's options. docs/cli.md documents\n"
@@ -95,13 +97,16 @@ int main(int argc, char** argv) {
                    {collide_command, "--csv", &collide.csv},
                    {collide_command, "--pairs-out", &collide.pairs_path},
                    {collide_command, "--dump-primitives", &collide.dump_path},
-                   {view_command, "--screenshot", &view.screenshot}};
+                   {view_command, "--screenshot", &view.screenshot},
+                   {volume_command, "-o", &volume.output},
+                   {volume_command, "--json", &volume.json.path},
+                   {volume_command, "--error-map", &volume.error_map}};
     for (const auto& output : outputs)
         if (output.command->parsed())
             if (const std::string reason = unwritableReason(*output.path); !reason.empty())
                 return fail(kExitFailure, std::string(output.option) + ": " + reason);
     for (const JsonOutput* json :
-         {&order.json, &info.json, &bench.json, &render.json, &collide.json})
+         {&order.json, &info.json, &bench.json, &render.json, &collide.json, &volume.json})
         reserveStandardOutputFor(*json);
     for (const std::string* csv : {&order.csv, &render.csv, &collide.csv})
         reserveStandardOutputFor(*csv);
@@ -119,6 +124,8 @@ int main(int argc, char** argv) {
             return runRender(render);
         if (collide_command->parsed())
             return runCollide(collide);
+        if (volume_command->parsed())
+            return runVolume(volume);
         if (view_command->parsed()) {
             view.frames_given = view_command->count("--frames") > 0;
             return runView(view);

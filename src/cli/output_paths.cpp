@@ -3,8 +3,10 @@
 #include "cli/output_paths.h"
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <regex>
 #include <system_error>
 
 #include <unistd.h>
@@ -44,6 +46,17 @@ std::string unwritableReason(const std::string& path) {
 std::string cannotWrite(const std::string& path) {
     return "cannot write " + path +
            (errno == 0 ? std::string() : ": " + std::string(std::strerror(errno)));
+}
+
+bool isFramePattern(const std::string& path) {
+    static const std::regex pattern(R"([^%]*%0?[0-9]?d[^%]*)");
+    return std::regex_match(path, pattern);
+}
+
+std::string framePath(const std::string& pattern, int frame) {
+    char buffer[4096];
+    std::snprintf(buffer, sizeof(buffer), pattern.c_str(), frame);
+    return buffer;
 }
 
 } // namespace vissort::cli

@@ -16,4 +16,11 @@ std::string unwritableReason(const std::string& path);
 /// when it gave one: callers set errno to 0 before the write.
 std::string cannotWrite(const std::string& path);
 
+/// Whether path is a frame pattern, "frame_%04d.png" and the like: exactly one %d conversion
+/// (flags 0-9 only), no other '%'.
+bool isFramePattern(const std::string& path);
+
+/// The pattern's path for one frame.
+std::string framePath(const std::string& pattern, int frame);
+
 } // namespace vissort::cli

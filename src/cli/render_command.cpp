@@ -15,6 +15,7 @@
 #include "cli/csv_output.h"
 #include "cli/environment.h"
 #include "cli/json_output.h"
+#include "cli/output_paths.h"
 #include "cli/progress.h"
 #include "cli/stats_output.h"
 #include "cli/text_output.h"
@@ -45,18 +46,6 @@ std::vector<std::string> renderCsvColumns(bool highlight, bool reference) {
 
 #if VISSORT_WITH_GL
 namespace {
-
-// "frame_%04d.png" and the like: exactly one %d conversion (flags 0-9 only), no other '%'.
-bool isFramePattern(const std::string& path) {
-    static const std::regex pattern(R"([^%]*%0?[0-9]?d[^%]*)");
-    return std::regex_match(path, pattern);
-}
-
-std::string framePath(const std::string& pattern, int frame) {
-    char buffer[4096];
-    std::snprintf(buffer, sizeof(buffer), pattern.c_str(), frame);
-    return buffer;
-}
 
 nlohmann::json errorJson(const ImageError& error, const std::string& reference) {
     return {

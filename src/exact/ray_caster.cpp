@@ -20,40 +20,12 @@
 
 #include <embree3/rtcore.h>
 
+#include "exact/embree_device.h"
+
 #include "geometry/exact_fragments.h"
 
 namespace vissort::detail {
 namespace {
-
-// Owns one Embree handle (device or scene) and releases it once: non-copyable RAII.
-template <class Handle, void (*release)(Handle)> class EmbreeHandle {
-public:
-    explicit EmbreeHandle(Handle handle) : handle_(handle) {}
-    ~EmbreeHandle() {
-        if (handle_)
-            release(handle_);
-    }
-    EmbreeHandle(const EmbreeHandle&) = delete;
-    EmbreeHandle& operator=(const EmbreeHandle&) = delete;
-
-    Handle get() const { return handle_; }
-
-private:
-    Handle handle_;
-};
-
-using EmbreeDevice = EmbreeHandle<RTCDevice, rtcReleaseDevice>;
-using EmbreeScene = EmbreeHandle<RTCScene, rtcReleaseScene>;
-
-// One device for the process: creating one starts Embree's thread pool, too costly per frame.
-RTCDevice sharedDevice() {
-    static const EmbreeDevice device(rtcNewDevice(nullptr));
-    if (!device.get()) {
-        throw std::runtime_error("cannot create an Embree device (error " +
-                                 std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
-    }
-    return device.get();
-}
 
 // What the intersection callback needs: the exact ray it stands for (Embree's is its float copy),
 // the model, the triangles, and where to record them. Embree hands the callback the context
@@ -352,7 +324,7 @@ AllHits castHits(PositionsView positions, std::span<const uint32_t> triangles,
     assert(std::all_of(triangles.begin(), triangles.end(),
                        [&](uint32_t t) { return t < positions.triangleCount(); }));
 
-    const RTCDevice device = sharedDevice();
+    const RTCDevice device = sharedEmbreeDevice();
     EmbreeScene scene(rtcNewScene(device));
     rtcSetSceneFlags(scene.get(), RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(scene.get(), RTC_BUILD_QUALITY_HIGH);

@@ -86,23 +86,17 @@ std::vector<uint32_t> centroidBackToFront(PositionsView positions,
 PixelRect screenRectOf(PositionsView positions, std::span<const uint32_t> triangles,
                        const ViewProjection& view) {
     const PixelRect whole{0, 0, view.width, view.height};
-    double low_x = std::numeric_limits<double>::infinity(), low_y = low_x;
-    double high_x = -low_x, high_y = -low_x;
+    ScreenExtent extent;
     for (uint32_t t : triangles)
-        for (std::size_t c = std::size_t(t) * 3; c < std::size_t(t) * 3 + 3; ++c) {
-            const std::array<double, 4> clip = view.toClip(positions.corner(c));
-            if (!(clip[3] > 0))
-                return whole; // the projection wraps: no bound from corners
-            // Screen position as the rasterizers compute it (cpu_reference_oracle.h, rule 4).
-            const double sx = (clip[0] / clip[3] + 1) * 0.5 * view.width;
-            const double sy = (1 - clip[1] / clip[3]) * 0.5 * view.height;
-            low_x = std::min(low_x, sx);
-            high_x = std::max(high_x, sx);
-            low_y = std::min(low_y, sy);
-            high_y = std::max(high_y, sy);
-        }
-    if (!(low_x <= high_x && low_y <= high_y))
+        for (std::size_t c = std::size_t(t) * 3; c < std::size_t(t) * 3 + 3; ++c)
+            extent.add(view,
+                       positions.corner(c)); // as the rasterizers (cpu_reference_oracle.h, rule 4)
+    if (extent.wraps)
+        return whole; // the projection wraps: no bound from corners
+    if (extent.isEmpty())
         return {};
+    const double low_x = extent.low_x, high_x = extent.high_x, low_y = extent.low_y,
+                 high_y = extent.high_y;
     // A pixel is covered through its centre (px + 0.5): a margin of a pixel covers rounding.
     const double x0 = std::clamp(std::floor(low_x) - 1, 0.0, double(view.width));
     const double x1 = std::clamp(std::ceil(high_x) + 1, 0.0, double(view.width));

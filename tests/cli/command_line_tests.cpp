@@ -165,7 +165,7 @@ std::set<std::string> documentedOptions(const std::string& doc, const std::strin
 TEST_F(Cli, EveryCommandsHelpAgreesWithDocsCli) {
     const std::string doc = readFile(std::string(VISSORT_SOURCE_DIR) + "/docs/cli.md");
     ASSERT_FALSE(doc.empty());
-    for (const char* command : {"order", "info", "render", "collide", "bench", "view"}) {
+    for (const char* command : {"order", "info", "render", "collide", "bench", "view", "volume"}) {
         SCOPED_TRACE(command);
         const RunResult help = run({command, "--help"});
         ASSERT_EQ(help.code, 0) << help;

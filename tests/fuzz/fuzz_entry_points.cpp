@@ -14,6 +14,7 @@
 
 #include "scenes/scene_library.h"
 #include "vissort/scene.h"
+#include "vissort/tet_grid.h"
 
 namespace vissort::fuzz {
 namespace {
@@ -134,9 +135,62 @@ void meshFile(const uint8_t* data, std::size_t size) {
     checkResult(samples::loadScene(path), path);
 }
 
+void gridFile(const uint8_t* data, std::size_t size) {
+    if (size == 0)
+        return;
+    const std::string_view text(reinterpret_cast<const char*>(data + 1), size - 1);
+    // Two files (tetgen's .node and .ele, Medit's .mesh and .sol) are split at the first line of
+    // "====": without one, the second is empty.
+    constexpr std::string_view kSplit = "\n====\n";
+    const std::size_t split = text.find(kSplit);
+    const std::string_view first = text.substr(0, split);
+    const std::string_view second =
+        split == std::string_view::npos ? std::string_view() : text.substr(split + kSplit.size());
+    const auto write = [](const std::string& name, std::string_view bytes) {
+        return writeInput(name, reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
+    };
+    std::string path;
+    switch (data[0] % 4) {
+    case 0:
+        path = write("grid.vtk", text);
+        break;
+    case 1:
+        path = write("grid.vtu", text);
+        break;
+    case 2:
+        path = write("grid.node", first);
+        write("grid.ele", second);
+        break;
+    default:
+        path = write("grid.mesh", first);
+        std::filesystem::remove(std::filesystem::path(path).replace_extension(".sol"));
+        if (!second.empty())
+            write("grid.sol", second);
+        break;
+    }
+    const Result<TetGrid> grid = loadGrid(path);
+    if (grid) {
+        if (Status valid = validateGrid(*grid.value); !valid) {
+            std::fprintf(stderr, "fuzz: a loaded grid is invalid: %s\n", valid.error.c_str());
+            std::abort();
+        }
+        return;
+    }
+    // tetgen's errors name the pair ("DIR/grid.node/.ele: ...").
+    const std::string source = path.substr(0, path.size() - (data[0] % 4 == 2 ? 5 : 0));
+    if (grid.error.empty() || grid.error.find('\n') != std::string::npos ||
+        grid.error.rfind(source, 0) != 0) {
+        std::fprintf(stderr, "fuzz: bad error message for %s: '%s'\n", path.c_str(),
+                     grid.error.c_str());
+        std::abort();
+    }
+}
+
 const std::vector<Target>& targets() {
-    static const std::vector<Target> all = {
-        {"json_scene", jsonScene}, {"scene_parameters", sceneParameters}, {"mesh_file", meshFile}};
+    static const std::vector<Target> all = {{"json_scene", jsonScene},
+                                            {"scene_parameters", sceneParameters},
+                                            {"mesh_file", meshFile},
+                                            {"grid_file", gridFile}};
     return all;
 }
 

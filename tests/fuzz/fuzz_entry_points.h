@@ -25,6 +25,10 @@ void sceneParameters(const uint8_t* data, std::size_t size);
 /// extension (obj, ply, stl, off, gltf, glb, nff), that is which of assimp's readers gets it.
 void meshFile(const uint8_t* data, std::size_t size);
 
+/// The bytes after the first as a grid file through loadGrid; the first byte picks the format
+/// (vtk, vtu, tetgen's pair, Medit with its .sol), and a line "====" splits a pair's two files.
+void gridFile(const uint8_t* data, std::size_t size);
+
 struct Target {
     const char* name; // the folder under tests/fuzz/corpus and tests/fuzz/crashes
     void (*run)(const uint8_t* data, std::size_t size);

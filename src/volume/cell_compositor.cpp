@@ -1,0 +1,204 @@
+// Compositing cell segments: a cell's pixels are the centres inside its projected box whose
+// rays cross it (tet_crossing.h), visited band of rows by band on worker threads (each band's
+// pixels are composited in the order, whatever the other bands do). Cells in a cycle, and every
+// cell for lists, go through per-pixel lists: (pixel, depth, colour) gathered, sorted, composited.
+#include "volume/cell_compositor.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <mutex>
+#include <thread>
+
+namespace vissort::detail {
+namespace {
+
+// The pixels whose centres a cell's projection may cover: inclusive ranges, conservative by a
+// pixel (the crossing test at each centre decides).
+struct PixelBox {
+    int32_t x0 = 0, y0 = 0, x1 = -1, y1 = -1;
+};
+
+PixelBox cellBox(const TetGrid& grid, const Tet& tet, const ViewProjection& view) {
+    ScreenExtent extent;
+    for (const uint32_t p : tet)
+        extent.add(view, grid.points[p]);
+    if (extent.wraps)
+        return {0, 0, int32_t(view.width) - 1, int32_t(view.height) - 1}; // the whole picture
+    const auto clamp = [](double v, uint32_t size) {
+        return int32_t(std::clamp(v, -1.0, double(size)));
+    };
+    return {
+        clamp(std::floor(extent.low_x - 0.5) - 1, view.width),
+        clamp(std::floor(extent.low_y - 0.5) - 1, view.height),
+        std::min(clamp(std::ceil(extent.high_x - 0.5) + 1, view.width), int32_t(view.width) - 1),
+        std::min(clamp(std::ceil(extent.high_y - 0.5) + 1, view.height), int32_t(view.height) - 1)};
+}
+
+// A segment held in a per-pixel list.
+struct ListSegment {
+    uint32_t pixel;
+    double depth;
+    SegmentColour colour;
+};
+
+struct Band {
+    uint32_t y0, y1; // rows [y0, y1)
+};
+
+class BandCompositor {
+public:
+    BandCompositor(const CompositeJob& job, Band band)
+        : job_(job), band_(band), colours_(std::size_t(band.y1 - band.y0) * job.view.width) {}
+
+    // Calls visit(pixel, from, to, planes) for each pixel of the band whose ray crosses cell c.
+    template <class Visit> void forEachSegment(uint32_t c, const PixelBox& box, Visit&& visit) {
+        const int32_t y_first = std::max<int32_t>(box.y0, int32_t(band_.y0));
+        const int32_t y_last = std::min<int32_t>(box.y1, int32_t(band_.y1) - 1);
+        if (y_first > y_last || box.x0 > box.x1)
+            return;
+        const TetPlanes planes(job_.grid, job_.grid.tets[c]);
+        for (int32_t y = y_first; y <= y_last; ++y)
+            for (int32_t x = std::max(box.x0, 0); x <= box.x1; ++x) {
+                const std::size_t pixel = std::size_t(y) * job_.view.width + uint32_t(x);
+                const Crossing crossing =
+                    crossTet(planes, job_.rays.origin[pixel], job_.rays.direction[pixel]);
+                const double from = std::max(crossing.t_in, job_.rays.t_low[pixel]);
+                const double to = std::min(crossing.t_out, job_.rays.t_high[pixel]);
+                if (to > from)
+                    visit(pixel, from, to, planes);
+            }
+    }
+
+    SegmentColour segmentColour(std::size_t pixel, double from, double to,
+                                const TetPlanes& planes) const {
+        const Vec3& o = job_.rays.origin[pixel];
+        const Vec3& d = job_.rays.direction[pixel];
+        return job_.law.segment(planes.scalarAt(o + d * from), planes.scalarAt(o + d * to),
+                                to - from);
+    }
+
+    void composite(uint32_t c, const PixelBox& box) {
+        forEachSegment(c, box,
+                       [&](std::size_t pixel, double from, double to, const TetPlanes& planes) {
+                           local(pixel).add(segmentColour(pixel, from, to, planes));
+                           ++segments_;
+                       });
+    }
+
+    void gather(uint32_t c, const PixelBox& box) {
+        forEachSegment(
+            c, box, [&](std::size_t pixel, double from, double to, const TetPlanes& planes) {
+                list_.push_back({uint32_t(pixel), from, segmentColour(pixel, from, to, planes)});
+            });
+    }
+
+    // Composites the gathered segments, each pixel's by depth, and empties the list.
+    void compositeList() {
+        std::sort(list_.begin(), list_.end(), [](const ListSegment& a, const ListSegment& b) {
+            return a.pixel != b.pixel ? a.pixel < b.pixel : a.depth < b.depth;
+        });
+        for (const ListSegment& s : list_)
+            local(s.pixel).add(s.colour);
+        segments_ += list_.size();
+        list_segments_ += list_.size();
+        list_.clear();
+    }
+
+    void finish(Image& image) const {
+        for (std::size_t i = 0; i < colours_.size(); ++i)
+            colours_[i].finish(job_.background,
+                               &image.rgba[(std::size_t(band_.y0) * job_.view.width + i) * 4]);
+    }
+
+    uint64_t segments() const { return segments_; }
+    uint64_t listSegments() const { return list_segments_; }
+
+private:
+    FrontToBack& local(std::size_t pixel) {
+        return colours_[pixel - std::size_t(band_.y0) * job_.view.width];
+    }
+
+    const CompositeJob& job_;
+    Band band_;
+    std::vector<FrontToBack> colours_;
+    std::vector<ListSegment> list_;
+    uint64_t segments_ = 0, list_segments_ = 0;
+};
+
+// Runs work(band) over bands of rows on the job's threads, then sums the bands' counts.
+template <class Work>
+Image runBands(const CompositeJob& job, VolumeFrameStats& stats, Work&& work) {
+    Image image{job.view.width, job.view.height,
+                std::vector<float>(std::size_t(job.view.width) * job.view.height * 4)};
+    // Several bands a thread, so that a band dense with cells does not hold the others up.
+    const uint32_t band_count =
+        std::min<uint32_t>(job.view.height, std::max(1u, job.thread_count) * 8);
+    std::atomic<uint32_t> next{0};
+    std::mutex sum;
+    const auto run = [&] {
+        for (uint32_t b = next++; b < band_count; b = next++) {
+            const Band band{uint32_t(uint64_t(job.view.height) * b / band_count),
+                            uint32_t(uint64_t(job.view.height) * (b + 1) / band_count)};
+            BandCompositor compositor(job, band);
+            work(compositor);
+            compositor.finish(image);
+            const std::lock_guard lock(sum);
+            stats.segments += compositor.segments();
+            stats.list_segments += compositor.listSegments();
+        }
+    };
+    std::vector<std::thread> threads;
+    for (unsigned i = 1; i < job.thread_count; ++i)
+        threads.emplace_back(run);
+    run();
+    for (std::thread& t : threads)
+        t.join();
+    return image;
+}
+
+std::vector<PixelBox> cellBoxes(const CompositeJob& job) {
+    std::vector<PixelBox> boxes(job.grid.tets.size());
+    for (std::size_t c = 0; c < boxes.size(); ++c)
+        boxes[c] = cellBox(job.grid, job.grid.tets[c], job.view);
+    return boxes;
+}
+
+} // namespace
+
+Image compositeInOrder(const CompositeJob& job, std::span<const uint32_t> order,
+                       std::span<const std::vector<uint32_t>> cycles, VolumeFrameStats& stats) {
+    const std::vector<PixelBox> boxes = cellBoxes(job);
+    std::vector<int32_t> cycle_of(job.grid.tets.size(), -1);
+    for (std::size_t k = 0; k < cycles.size(); ++k)
+        for (const uint32_t c : cycles[k])
+            cycle_of[c] = int32_t(k);
+    return runBands(job, stats, [&](BandCompositor& band) {
+        std::vector<uint8_t> cycle_done(cycles.size(), 0);
+        for (const uint32_t c : order) {
+            const int32_t k = cycle_of[c];
+            if (k < 0) {
+                band.composite(c, boxes[c]);
+                continue;
+            }
+            // A cycle's members come one after another: all of them at the first, by depth.
+            if (cycle_done[std::size_t(k)])
+                continue;
+            cycle_done[std::size_t(k)] = 1;
+            for (const uint32_t member : cycles[std::size_t(k)])
+                band.gather(member, boxes[member]);
+            band.compositeList();
+        }
+    });
+}
+
+Image compositeLists(const CompositeJob& job, VolumeFrameStats& stats) {
+    const std::vector<PixelBox> boxes = cellBoxes(job);
+    return runBands(job, stats, [&](BandCompositor& band) {
+        for (uint32_t c = 0; c < job.grid.tets.size(); ++c)
+            band.gather(c, boxes[c]);
+        band.compositeList();
+    });
+}
+
+} // namespace vissort::detail

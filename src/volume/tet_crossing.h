@@ -1,0 +1,104 @@
+#pragma once
+// Where a ray crosses a tetrahedron, and the scalar there: what the ray caster's walk and the
+// rasterizing methods' per-pixel segments share, so that both cut a ray into the very same
+// segments (the methods differ only in the order they composite them). Internal to src/volume/.
+
+#include <limits>
+#include <vector>
+
+#include "vissort/camera.h"
+#include "vissort/tet_grid.h"
+
+namespace vissort::detail {
+
+/// A tetrahedron's four face planes, each n . p >= offset on the inner side (face i opposite
+/// corner i, n unnormalized), and the corner values that make the scalar's barycentric form.
+struct TetPlanes {
+    Vec3 normal[4];
+    double offset[4];
+    double corner_height[4]; // n_i . corner_i - offset_i: the height of corner i over face i
+    double scalar[4];
+
+    TetPlanes(const TetGrid& grid, const Tet& tet) {
+        for (int f = 0; f < 4; ++f) {
+            const Vec3& a = grid.points[tet[kTetFaceCorners[f][0]]];
+            normal[f] = cross(grid.points[tet[kTetFaceCorners[f][1]]] - a,
+                              grid.points[tet[kTetFaceCorners[f][2]]] - a);
+            offset[f] = dot(normal[f], a);
+            corner_height[f] = dot(normal[f], grid.points[tet[f]]) - offset[f];
+            scalar[f] = grid.scalars.empty() ? 0.0 : grid.scalars[tet[f]];
+        }
+    }
+
+    /// The scalar at p: its barycentric coordinates, each its height over a face over the
+    /// opposite corner's.
+    double scalarAt(const Vec3& p) const {
+        double s = 0, weights = 0;
+        for (int f = 0; f < 4; ++f) {
+            const double w = (dot(normal[f], p) - offset[f]) / corner_height[f];
+            s += w * scalar[f];
+            weights += w;
+        }
+        return s / weights; // the weights sum to 1 up to rounding
+    }
+};
+
+/// Where the ray o + t d is inside a tetrahedron: [t_in, t_out] (empty when t_in >= t_out),
+/// and the face it leaves by (-1 when none: a degenerate ray).
+struct Crossing {
+    double t_in = -std::numeric_limits<double>::infinity();
+    double t_out = std::numeric_limits<double>::infinity();
+    int exit_face = -1;
+};
+
+inline Crossing crossTet(const TetPlanes& planes, const Vec3& o, const Vec3& d) {
+    Crossing c;
+    for (int f = 0; f < 4; ++f) {
+        const double along = dot(planes.normal[f], d);
+        const double at = (planes.offset[f] - dot(planes.normal[f], o)) / along; // meets the plane
+        if (along > 0) {
+            c.t_in = std::max(c.t_in, at); // entering the face's inner side
+        } else if (along < 0 && at < c.t_out) {
+            c.t_out = at;
+            c.exit_face = f;
+        } else if (along == 0 && dot(planes.normal[f], o) < planes.offset[f]) {
+            c.t_in = std::numeric_limits<double>::infinity(); // parallel to the face, outside it
+        }
+    }
+    return c;
+}
+
+/// The ray through each pixel centre of a view (ViewProjection::pixelRay) and the part of it in
+/// view: from the near plane (to the far plane, orthographic). Computed once a frame.
+struct PixelRayTable {
+    uint32_t width = 0, height = 0;
+    std::vector<Vec3> origin, direction;
+    std::vector<double> t_low, t_high;
+
+    explicit PixelRayTable(const ViewProjection& view) : width(view.width), height(view.height) {
+        const std::size_t n = std::size_t(width) * height;
+        origin.resize(n);
+        direction.resize(n);
+        t_low.resize(n);
+        t_high.resize(n);
+        const double row[4] = {view.view[2], view.view[6], view.view[10], view.view[14]};
+        const auto eye = [&](const Vec3& p) {
+            return -(row[0] * p.x + row[1] * p.y + row[2] * p.z + row[3]);
+        };
+        for (uint32_t py = 0; py < height; ++py)
+            for (uint32_t px = 0; px < width; ++px) {
+                const std::size_t i = std::size_t(py) * width + px;
+                view.pixelRay(px + 0.5, py + 0.5, origin[i], direction[i]);
+                const double z0 = eye(origin[i]), dz = eye(origin[i] + direction[i]) - z0;
+                t_low[i] = 0;
+                t_high[i] = std::numeric_limits<double>::infinity();
+                if (dz > 0) {
+                    t_low[i] = std::max(0.0, (view.near - z0) / dz);
+                    if (view.projection == Projection::orthographic)
+                        t_high[i] = (view.far - z0) / dz;
+                }
+            }
+    }
+};
+
+} // namespace vissort::detail
