@@ -30,18 +30,19 @@ if [ "${1:-}" = "--sanitize" ]; then
   # oracle's touching faces) run here.
   tests=(-E "TouchingFaces.BoxesSharingFacesMakeNoCycle|TouchingFaces.WallsOnASlabMakeNoCycle|GlTouchingFaces.CyclesContainTheExactOnes|GlTouchingFaces.APositiveToleranceMakesNoCycleOfTouchingFaces|CpuOracle.LargeViewportWithBigTriangles|CpuOracle.SpotMeshBothProjections|Cli.CollideMatchesBruteForceOver300FramesOfBunnies|Cli.BenchOracleMeasuresEveryOracleInOneRun|EveryFrame.EveryOrderMatchesItsFramesGroundTruth/powerplant_|RealModels.FzkHouseHasTheExactCyclesAndExactTransparency")
 elif [ "${1:-}" = "--tsan" ]; then
-  # The threaded code: the rasterizer's banded passes (its tests run 1, 2 and 3 threads) and
-  # the collision detector's shared refits and pairs.
+  # The threaded code: the rasterizer's banded passes (its tests run 1, 2 and 3 threads), the
+  # collision detector's shared refits and pairs, and the volume methods' bands of rows and the
+  # ray caster's rows (their tests compare 1 and 3 threads).
   build_dir=build-tsan
   flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DVISSORT_TSAN=ON)
-  targets=(--target raster_tests collide_tests)
+  targets=(--target raster_tests collide_tests volume_tests)
   # CpuOracle.SpotMeshBothProjections takes about 300 to 530 s alone under ThreadSanitizer (19 s
   # in the release build; its 640x480 queries of the whole mesh against itself arbitrate at
   # every pixel): the same banded passes run in the other CpuOracle tests at 1, 2 and 3 threads,
   # so it runs in the release suite only, as under the other sanitizers; so does
   # CpuOracle.LargeViewportWithBigTriangles (its longest test after that one: a 1600x1200
   # viewport's passes, which the banded tests run on smaller viewports at 1 to 3 threads).
-  tests=(-R "CpuOracle|CollisionThreads"
+  tests=(-R "CpuOracle|CollisionThreads|VolumeRenderer.ThreadCount|CellWalkRayCaster.ThreadCount"
          -E "CpuOracle.SpotMeshBothProjections|CpuOracle.LargeViewportWithBigTriangles")
   timeout=600
 elif [ "${1:-}" = "--no-gl" ]; then

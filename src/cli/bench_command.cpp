@@ -12,21 +12,23 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options) {
         "figures (figures for docs/benchmarks.md)");
     command
         ->add_option("what", options.what,
-                     "What to measure: oracle, transparency, collision or paper (the paper's "
-                     "figures 5 and 6, files under --out)")
+                     "What to measure: oracle, transparency, collision, paper (the paper's "
+                     "figures 5 and 6, files under --out) or volume (the volume rendering "
+                     "methods on grids)")
         ->required();
     command->add_option("--repeat", options.repeat, "Runs per synthetic case (best is kept)")
         ->capture_default_str();
     command->add_option("--frames", options.frames,
                         "Frames of the real workloads (oracle: 11), of each method and scene "
                         "(transparency: 3), of each bunny count (collision: 30, after one "
-                        "untimed) or of each path (paper: 60, quick 6); the first is not timed");
+                        "untimed), of each path (paper: 60, quick 6) or of each grid's orbit "
+                        "(volume: 5, after one untimed); the first is not timed");
     command->add_option("--gl-frames", options.gl_frames,
                         "Frames through the gl oracle, at most --frames (oracle: 5; paper: 3 on "
                         "a GPU, 0 on a software renderer, quick 2)");
     command->add_option("--size", options.size,
                         "Image size WxH (transparency: 1024x1024; paper: 1600x1200, the "
-                        "paper's, quick 320x240)");
+                        "paper's, quick 320x240; volume: 512x512)");
     command
         ->add_option("--level", options.level,
                      "transparency: vissort's level, object, triangle or multistage")
@@ -44,7 +46,13 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options) {
         ->add_option("--counts", options.counts,
                      "collision: numbers of bunnies to measure, comma-separated")
         ->capture_default_str();
-    command->add_option("--plot", options.plot_path, "collision: write ms against N as a PNG");
+    command
+        ->add_option("--cells", options.cells,
+                     "volume: about how many tetrahedra each grid has (a cube and a knot of "
+                     "each), comma-separated")
+        ->capture_default_str();
+    command->add_option("--plot", options.plot_path,
+                        "collision: write ms against N as a PNG; volume: ms against cells");
     addJsonOptions(*command, options.json, "Write the figures as JSON");
     command
         ->add_option("--out", options.out_dir,
@@ -70,8 +78,10 @@ int runBench(const BenchOptions& options) {
         return runCollisionBench(options);
     if (options.what == "paper")
         return runPaperBench(options);
+    if (options.what == "volume")
+        return runVolumeBench(options);
     return fail(kExitUsage, "bench: unknown benchmark '" + options.what +
-                                "' (try: oracle, transparency, collision, paper)");
+                                "' (try: oracle, transparency, collision, paper, volume)");
 }
 
 } // namespace vissort::cli

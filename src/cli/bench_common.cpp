@@ -5,7 +5,7 @@
 
 namespace vissort::cli {
 
-bool parseCounts(const std::string& text, std::vector<uint32_t>& counts) {
+bool parseCounts(const std::string& text, std::vector<uint32_t>& counts, uint32_t most) {
     counts.clear();
     std::size_t start = 0;
     while (start <= text.size()) {
@@ -14,7 +14,7 @@ bool parseCounts(const std::string& text, std::vector<uint32_t>& counts) {
         const char* first = text.data() + start;
         const char* last = text.data() + comma;
         if (std::from_chars(first, last, count).ptr != last || first == last || count < 1 ||
-            count > 1000)
+            count > most)
             return false;
         counts.push_back(count);
         start = comma + 1;

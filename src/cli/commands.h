@@ -47,6 +47,7 @@ struct BenchOptions {
     std::string depths = "2,4,8,16,32,64";
     int samples = 1; // transparency: samples a pixel measured next to 1
     std::string counts = "18,36,72,144";
+    std::string cells = "10000,100000"; // volume: about this many tetrahedra a grid
     std::string plot_path;
     JsonOutput json;
     std::string out_dir = "paper-bench"; // paper: where its files go
@@ -58,6 +59,7 @@ int runOracleBench(const BenchOptions& options);
 int runTransparencyBench(const BenchOptions& options);
 int runCollisionBench(const BenchOptions& options);
 int runPaperBench(const BenchOptions& options);
+int runVolumeBench(const BenchOptions& options);
 
 struct CollideOptions {
     std::string scene;

@@ -6,6 +6,7 @@
 #include <limits>
 #include <vector>
 
+#include "geometry/pixel_rays.h"
 #include "vissort/camera.h"
 #include "vissort/tet_grid.h"
 
@@ -68,8 +69,9 @@ inline Crossing crossTet(const TetPlanes& planes, const Vec3& o, const Vec3& d) 
     return c;
 }
 
-/// The ray through each pixel centre of a view (ViewProjection::pixelRay) and the part of it in
-/// view: from the near plane (to the far plane, orthographic). Computed once a frame.
+/// The ray through each pixel centre of a view (PixelRays: ViewProjection::pixelRay's very
+/// doubles, the view's inverse computed once) and the part of it in view: from the near plane
+/// (to the far plane, orthographic). Computed once a frame.
 struct PixelRayTable {
     uint32_t width = 0, height = 0;
     std::vector<Vec3> origin, direction;
@@ -81,6 +83,7 @@ struct PixelRayTable {
         direction.resize(n);
         t_low.resize(n);
         t_high.resize(n);
+        const PixelRays rays(view);
         const double row[4] = {view.view[2], view.view[6], view.view[10], view.view[14]};
         const auto eye = [&](const Vec3& p) {
             return -(row[0] * p.x + row[1] * p.y + row[2] * p.z + row[3]);
@@ -88,7 +91,9 @@ struct PixelRayTable {
         for (uint32_t py = 0; py < height; ++py)
             for (uint32_t px = 0; px < width; ++px) {
                 const std::size_t i = std::size_t(py) * width + px;
-                view.pixelRay(px + 0.5, py + 0.5, origin[i], direction[i]);
+                const PixelRay ray = rays.centre(px, py);
+                origin[i] = ray.origin;
+                direction[i] = ray.direction;
                 const double z0 = eye(origin[i]), dz = eye(origin[i] + direction[i]) - z0;
                 t_low[i] = 0;
                 t_high[i] = std::numeric_limits<double>::infinity();

@@ -101,6 +101,34 @@ TEST_F(Cli, VolumeErrors) {
                 {"has no point scalars"});
 }
 
+TEST_F(Cli, BenchVolumeMeasuresEveryMethodOnEveryGrid) {
+    const RunResult r = run({"bench", "volume", "--cells", "400,2000", "--frames", "2", "--size",
+                             "32x32", "--json", path("bench.json"), "--plot", path("plot.png")});
+    ASSERT_EQ(r.code, 0) << r;
+    const json bench = json::parse(readFile(path("bench.json")));
+    ASSERT_EQ(bench["rows"].size(), 2u * 2 * 5); // two sizes, a cube and a knot, five methods
+    for (const json& row : bench["rows"]) {
+        SCOPED_TRACE(row.dump());
+        EXPECT_GT(row["median_ms"].get<double>(), 0);
+        EXPECT_GT(row["cells"].get<uint64_t>(), 100u);
+        const std::string method = row["method"];
+        if (method == "vissort" || method == "lists" || method == "raycast") {
+            EXPECT_LE(row["max_error"].get<int>(), 1);
+        }
+        if (method == "vissort") {
+            EXPECT_GE(row["queries_per_cell"].get<double>(), 1.0);
+        }
+        if (method == "lists") {
+            EXPECT_GT(row["list_segments_per_cell"].get<double>(), 0);
+        }
+    }
+    EXPECT_EQ(bench["rows"][0]["convex"], true);
+    EXPECT_EQ(bench["rows"][5]["convex"], false);
+    EXPECT_GT(readPng(path("plot.png")).width, 0);
+    expectError({"bench", "volume", "--cells", "0"}, kUsage,
+                {"--cells must be numbers of tetrahedra"});
+}
+
 TEST_F(Cli, InfoDescribesAGrid) {
     const RunResult r = run({"info", "builtin:torus?n=8", "--json", path("info.json")});
     ASSERT_EQ(r.code, 0) << r;
