@@ -91,6 +91,13 @@ public:
     /// triangles.
     void orderFrame(const VertexPositionsView& vertices, const ViewProjection& view,
                     FrameOrder& out);
+    /// The list the next frame starts from, instead of the last frame's order (or, on the first
+    /// frame, the depth-key order): a permutation of stage 1's primitives (objects, or triangles
+    /// at triangle level), front to back as the caller best knows it. Last frame's cycles are
+    /// forgotten. A better start costs fewer queries, never a different validity. Throws
+    /// std::invalid_argument when start is not such a permutation.
+    void seed(std::span<const uint32_t> start);
+
     /// Reports the share of the frame's primitives ordered so far (0 to 1), after each Vis-sort
     /// iteration, on the thread that orders; for a progress display of a long frame. Multistage
     /// reports its triangle stage. An empty function stops the reports.

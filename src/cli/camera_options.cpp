@@ -8,6 +8,7 @@
 #include "cli/cli_common.h"
 #include "cli/text_output.h"
 #include "scenes/scene_library.h"
+#include "vissort/tet_grid.h"
 
 namespace vissort::cli {
 namespace {
@@ -153,6 +154,11 @@ void addObjectsOption(CLI::App& command, std::string& objects) {
 
 int loadSceneOrReport(const std::string& specification, const std::string& objects,
                       std::optional<Scene>& scene) {
+    if (isGridSpec(specification))
+        return fail(kExitInput,
+                    specification +
+                        " is a tetrahedral grid, not a scene: 'vissort volume' renders it and "
+                        "'vissort info' describes it (docs/volume.md)");
     std::optional<ObjectGrouping> grouping;
     if (!objects.empty()) {
         const Result<ObjectGrouping> named =

@@ -2,6 +2,9 @@
 // frame's order, with last frame's cycles as hints to confirm (hinted_cycles.h); the first frame,
 // or one whose primitives changed, starts from the depth-key order.
 
+#include <stdexcept>
+#include <string>
+
 #include "order/scene_orderer_sort.h"
 
 namespace vissort {
@@ -53,6 +56,25 @@ void SceneOrderer::sortStage1(PositionsView positions, const ViewProjection& vie
     }
     // The order becomes the previous one; sorted_ keeps the old buffer for the next frame.
     std::swap(previous_order_, sorted_.order);
+}
+
+void SceneOrderer::seed(std::span<const uint32_t> start) {
+    const std::size_t n = level_ == OrderLevel::triangle ? triangle_count_ : objects_.size();
+    std::vector<uint8_t> seen(n, 0);
+    bool permutation = start.size() == n;
+    for (std::size_t i = 0; permutation && i < start.size(); ++i) {
+        permutation = start[i] < n && !seen[start[i]];
+        if (permutation)
+            seen[start[i]] = 1;
+    }
+    if (!permutation)
+        throw std::invalid_argument(
+            "SceneOrderer::seed: the start list must be a permutation of the " + std::to_string(n) +
+            " primitives of the orderer's first stage");
+    previous_order_.assign(start.begin(), start.end());
+    sorted_.cycles.clear(); // no hints: the cycles were of another order's ids
+    sorted_.cycle_witnesses.clear();
+    previous_triangle_order_.clear();
 }
 
 } // namespace vissort

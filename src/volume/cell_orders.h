@@ -32,7 +32,8 @@ MpvoOrder mpvoOrder(const TetGrid& grid, const std::vector<TetNeighbours>& neigh
                     const ViewProjection& view);
 
 /// Vis-sort at cell level: each cell one primitive of its four faces, ordered by SceneOrderer
-/// (coherence from the last frame's order and cycles) with the given oracle.
+/// (coherence from the last frame's order and cycles; the first frame from the centroid order)
+/// with the given oracle.
 class VisibilityCellOrder {
 public:
     /// Fails (one line) when the oracle cannot be made.
@@ -45,11 +46,13 @@ public:
 private:
     VisibilityCellOrder(const TetGrid& grid, std::unique_ptr<GeometryOracle> oracle);
 
+    const TetGrid& grid_;
     TrianglePositions faces_;
     std::vector<PrimitiveRange> cells_;
     std::unique_ptr<GeometryOracle> oracle_;
     SceneOrderer orderer_;
     FrameOrder frame_;
+    bool first_frame_ = true;
 };
 
 } // namespace vissort::detail

@@ -129,6 +129,19 @@ TEST_F(Cli, BenchVolumeMeasuresEveryMethodOnEveryGrid) {
                 {"--cells must be numbers of tetrahedra"});
 }
 
+TEST_F(Cli, SceneCommandsPointAGridToVolume) {
+    for (const char* command : {"order", "render", "collide"}) {
+        SCOPED_TRACE(command);
+        std::vector<std::string> args = {command, "builtin:knot"};
+        if (std::string(command) == "render") {
+            args.insert(args.end(), {"-o", path("x.png")});
+        }
+        expectError(args, kInput,
+                    {"builtin:knot is a tetrahedral grid", "'vissort volume' renders it"});
+    }
+    expectError({"order", dataPath("grids/tetgen_cube.1.node")}, kInput, {"is a tetrahedral grid"});
+}
+
 TEST_F(Cli, InfoDescribesAGrid) {
     const RunResult r = run({"info", "builtin:torus?n=8", "--json", path("info.json")});
     ASSERT_EQ(r.code, 0) << r;

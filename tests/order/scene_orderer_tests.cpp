@@ -258,6 +258,34 @@ TEST(SceneOrderer, CoherentFramesCostAboutLinearQueries) {
     }
 }
 
+// A frame seeded with a visibility order (another orderer's answer for the same frame) starts
+// where the depth-key order has to work its way to: one iteration, at most 2n queries, and a
+// valid order; a list that is not a permutation is refused.
+TEST(SceneOrderer, SeededFrameStartsFromTheGivenOrder) {
+    const Scene scene = test::loadTestScene("builtin:plant");
+    auto oracle = oracleOf(OracleKind::cpu);
+    ASSERT_TRUE(oracle);
+    const CameraSpec camera = scene.camera.value_or(defaultCamera(scene.positions.bounds()));
+    const ViewProjection view = frameCamera(camera, scene.positions.bounds(), 96, 96);
+    SceneOrderer first = ordererOf(scene, OrderLevel::object, *oracle);
+    const FrameOrder known = first.orderFrame(scene.positions, view);
+    ASSERT_TRUE(known.cycles.empty());
+    SceneOrderer seeded = ordererOf(scene, OrderLevel::object, *oracle);
+    seeded.seed(known.order);
+    const FrameOrder frame = seeded.orderFrame(scene.positions, view);
+    EXPECT_LE(frame.stats.queries, 2u * scene.objects.size());
+    EXPECT_LT(frame.stats.queries, known.stats.queries);
+    const auto primitives = primitivesOf(scene, OrderLevel::object);
+    EXPECT_EQ(
+        test::checkVisibilityOrder(scene.positions, view, primitives, frame.order, frame.cycles)
+            .violation_count,
+        0u);
+    std::vector<uint32_t> repeated = known.order;
+    repeated[1] = repeated[0];
+    EXPECT_THROW(seeded.seed(repeated), std::invalid_argument);
+    EXPECT_THROW(seeded.seed(std::span(known.order).first(3)), std::invalid_argument);
+}
+
 TEST(SceneOrderer, MultistageOutputsEveryTriangleOnce) {
     const Scene scene = test::loadTestScene("tests/data/scenes/interpenetrating.json");
     const ViewProjection view = frameCamera(*scene.camera, scene.positions.bounds(), 64, 64);
