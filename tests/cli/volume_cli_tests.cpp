@@ -130,7 +130,11 @@ TEST_F(Cli, BenchVolumeMeasuresEveryMethodOnEveryGrid) {
 }
 
 TEST_F(Cli, SceneCommandsPointAGridToVolume) {
-    for (const char* command : {"order", "render", "collide"}) {
+    std::vector<const char*> commands = {"order", "collide"};
+#if VISSORT_WITH_GL
+    commands.push_back("render"); // without OpenGL, render says that first
+#endif
+    for (const char* command : commands) {
         SCOPED_TRACE(command);
         std::vector<std::string> args = {command, "builtin:knot"};
         if (std::string(command) == "render") {
