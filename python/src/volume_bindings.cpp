@@ -149,10 +149,10 @@ public:
                                 const py::handle& background) {
         const VolumeSettings settings = readSettings(tf, tf_range, density, background);
         const auto [width, height] = readSize(size);
+        // The grid's boundary frames the default camera, chosen once per size (CameraChoice).
         const Scene& boundary = grid_.boundaryScene();
         const PythonCamera chosen =
-            camera.is_none() ? defaultCameraOf(boundary, width, height)
-                             : choice_.choose(camera, nullptr, boundary.positions, width, height);
+            choice_.choose(camera, grid_.boundary, boundary.positions, width, height);
         const ViewProjection view = viewOf(chosen, boundary.positions, width, height);
         Result<Image> image;
         {

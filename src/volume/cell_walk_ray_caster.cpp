@@ -13,32 +13,14 @@
 #include <stdexcept>
 #include <thread>
 
-#include "exact/embree_device.h"
-#include "volume/tet_crossing.h"
-#include "volume/volume_law.h"
+#include "volume/cell_walk_ray_caster.h"
 
 namespace vissort {
+namespace detail {
 namespace {
 
-using detail::Crossing;
-using detail::EmbreeScene;
-using detail::FrontToBack;
-using detail::PixelRayTable;
-using detail::TetPlanes;
-using detail::VolumeLaw;
-
-// A face of the grid's boundary: its tetrahedron and which face.
-struct BoundaryFace {
-    uint32_t tet;
-    uint8_t face;
-};
-
-struct Walker {
-    const TetGrid& grid;
-    const std::vector<TetNeighbours>& neighbours;
-    const std::vector<BoundaryFace>& boundary;
-    const VolumeLaw& law;
-};
+using BoundaryFace = CellWalkCaster::BoundaryFace;
+using BoundsData = CellWalkCaster::BoundsData;
 
 // What the intersection callback needs; Embree hands it the context pointer, so it comes first.
 struct HitCollector {
@@ -80,12 +62,6 @@ void recordEntry(const RTCIntersectFunctionNArguments* args) {
     collector->hits->push_back({dot(normal, a - o) / along, args->primID});
 }
 
-struct BoundsData {
-    const TetGrid* grid;
-    const std::vector<BoundaryFace>* boundary;
-    float margin;
-};
-
 void faceBounds(const RTCBoundsFunctionArguments* args) {
     const auto* data = static_cast<const BoundsData*>(args->geometryUserPtr);
     const BoundaryFace& bf = (*data->boundary)[args->primID];
@@ -100,6 +76,131 @@ void faceBounds(const RTCBoundsFunctionArguments* args) {
 }
 
 } // namespace
+
+Result<std::unique_ptr<CellWalkCaster>> CellWalkCaster::make(const TetGrid& grid) {
+    using R = Result<std::unique_ptr<CellWalkCaster>>;
+    Result<std::vector<TetNeighbours>> neighbours = faceNeighbours(grid);
+    if (!neighbours)
+        return R::failure(neighbours.error);
+    RTCDevice device = nullptr;
+    try {
+        device = sharedEmbreeDevice();
+    } catch (const std::exception& e) {
+        return R::failure(e.what());
+    }
+    return R{std::unique_ptr<CellWalkCaster>(
+                 new CellWalkCaster(grid, std::move(*neighbours.value), device)),
+             {}};
+}
+
+CellWalkCaster::CellWalkCaster(const TetGrid& grid, std::vector<TetNeighbours> neighbours,
+                               RTCDevice device)
+    : grid_(grid), neighbours_(std::move(neighbours)), scene_(rtcNewScene(device)) {
+    for (uint32_t t = 0; t < grid.tets.size(); ++t)
+        for (uint8_t f = 0; f < 4; ++f)
+            if (neighbours_[t][f] == kNoNeighbour)
+                boundary_.push_back({t, f});
+    const GridMeasures measures(grid);
+    // Far more than a float box's rounding at the grid's scale.
+    bounds_data_ = {
+        &grid, &boundary_,
+        float((length(measures.bounds.centre()) + 2 * measures.bounds.radius() + 1) * 0x1p-16)};
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(geometry, unsigned(boundary_.size()));
+    rtcSetGeometryUserData(geometry, &bounds_data_);
+    rtcSetGeometryBoundsFunction(geometry, faceBounds, nullptr);
+    rtcSetGeometryIntersectFunction(geometry, recordEntry);
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometry(scene_.get(), geometry);
+    rtcReleaseGeometry(geometry);
+    rtcCommitScene(scene_.get());
+}
+
+Image CellWalkCaster::render(const VolumeLaw& law, const Rgba& background,
+                             const PixelRayTable& rays, unsigned thread_count,
+                             uint64_t& segments) const {
+    const TetGrid& grid = grid_;
+    const std::vector<BoundaryFace>& boundary = boundary_;
+    Image image;
+    image.width = rays.width;
+    image.height = rays.height;
+    image.rgba.assign(std::size_t(rays.width) * rays.height * 4, 0.0f);
+    std::atomic<uint32_t> next_row{0};
+    std::atomic<uint64_t> segment_count{0};
+    const auto work = [&] {
+        std::vector<std::pair<double, uint32_t>> hits;
+        HitCollector collector{};
+        collector.grid = &grid;
+        collector.boundary = &boundary;
+        collector.hits = &hits;
+        uint64_t walked_segments = 0;
+        for (uint32_t py = next_row++; py < rays.height; py = next_row++) {
+            for (uint32_t px = 0; px < rays.width; ++px) {
+                const std::size_t pixel = std::size_t(py) * rays.width + px;
+                const Vec3& o = rays.origin[pixel];
+                const Vec3& d = rays.direction[pixel];
+                const double t_low = rays.t_low[pixel], t_high = rays.t_high[pixel];
+                hits.clear();
+                rtcInitIntersectContext(&collector.context);
+                collector.origin = o;
+                collector.direction = d;
+                RTCRayHit ray{};
+                ray.ray.org_x = float(o.x);
+                ray.ray.org_y = float(o.y);
+                ray.ray.org_z = float(o.z);
+                ray.ray.dir_x = float(d.x);
+                ray.ray.dir_y = float(d.y);
+                ray.ray.dir_z = float(d.z);
+                ray.ray.tnear = 0;
+                ray.ray.tfar = std::numeric_limits<float>::infinity();
+                ray.ray.mask = 0xFFFFFFFF;
+                ray.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+                rtcIntersect1(scene_.get(), &collector.context, &ray);
+                std::sort(hits.begin(), hits.end());
+
+                FrontToBack colour;
+                double walked_to = -std::numeric_limits<double>::infinity();
+                for (const auto& [t_hit, face] : hits) {
+                    if (t_hit < walked_to)
+                        continue; // a cell already walked through
+                    uint32_t tet = boundary[face].tet;
+                    // Every step moves forwards or ends the walk; the step limit only guards
+                    // against a cycle of zero-length steps that rounding could make.
+                    for (std::size_t steps = 0; steps <= grid.tets.size(); ++steps) {
+                        const TetPlanes planes(grid, grid.tets[tet]);
+                        const Crossing c = crossTet(planes, o, d);
+                        if (c.exit_face < 0 || c.t_out < walked_to)
+                            break;
+                        const double from = std::max({c.t_in, t_low, walked_to});
+                        const double to = std::min(c.t_out, t_high);
+                        if (to > from) {
+                            const double s_in = planes.scalarAt(o + d * from);
+                            const double s_out = planes.scalarAt(o + d * to);
+                            colour.add(law.segment(s_in, s_out, to - from));
+                            ++walked_segments;
+                        }
+                        walked_to = std::max(walked_to, c.t_out);
+                        tet = neighbours_[tet][c.exit_face];
+                        if (tet == kNoNeighbour)
+                            break;
+                    }
+                }
+                colour.finish(background, &image.rgba[pixel * 4]);
+            }
+        }
+        segment_count += walked_segments;
+    };
+    std::vector<std::thread> pool;
+    for (unsigned i = 1; i < thread_count; ++i)
+        pool.emplace_back(work);
+    work();
+    for (std::thread& t : pool)
+        t.join();
+    segments += segment_count;
+    return image;
+}
+
+} // namespace detail
 
 Status validateVolumeSettings(const TetGrid& grid, const VolumeSettings& settings) {
     if (grid.scalars.empty())
@@ -119,130 +220,20 @@ Status validateVolumeSettings(const TetGrid& grid, const VolumeSettings& setting
 
 Result<Image> castVolume(const TetGrid& grid, const VolumeSettings& settings,
                          const ViewProjection& view, unsigned thread_count) {
-    uint64_t segments = 0;
-    return detail::castVolumeCounting(grid, settings, view, thread_count, segments);
-}
-
-Result<Image> detail::castVolumeCounting(const TetGrid& grid, const VolumeSettings& settings,
-                                         const ViewProjection& view, unsigned thread_count,
-                                         uint64_t& segments) {
-    using R = Result<Image>;
     if (Status valid = validateVolumeSettings(grid, settings); !valid)
-        return R::failure(valid.error);
-    Result<std::vector<TetNeighbours>> neighbours = faceNeighbours(grid);
-    if (!neighbours)
-        return R::failure(neighbours.error);
-    std::vector<BoundaryFace> boundary;
-    for (uint32_t t = 0; t < grid.tets.size(); ++t)
-        for (uint8_t f = 0; f < 4; ++f)
-            if ((*neighbours.value)[t][f] == kNoNeighbour)
-                boundary.push_back({t, f});
-
-    RTCDevice device = nullptr;
-    try {
-        device = detail::sharedEmbreeDevice();
-    } catch (const std::exception& e) {
-        return R::failure(e.what());
-    }
-    Bounds bounds;
-    for (const Vec3& p : grid.points)
-        bounds.add(p);
-    // Far more than a float box's rounding at the grid's scale.
-    BoundsData bounds_data{&grid, &boundary,
-                           float((length(bounds.centre()) + 2 * bounds.radius() + 1) * 0x1p-16)};
-    EmbreeScene scene(rtcNewScene(device));
-    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
-    rtcSetGeometryUserPrimitiveCount(geometry, unsigned(boundary.size()));
-    rtcSetGeometryUserData(geometry, &bounds_data);
-    rtcSetGeometryBoundsFunction(geometry, faceBounds, nullptr);
-    rtcSetGeometryIntersectFunction(geometry, recordEntry);
-    rtcCommitGeometry(geometry);
-    rtcAttachGeometry(scene.get(), geometry);
-    rtcReleaseGeometry(geometry);
-    rtcCommitScene(scene.get());
-
-    const VolumeLaw law(grid, settings);
-    const PixelRayTable rays(view);
-
-    Image image;
-    image.width = view.width;
-    image.height = view.height;
-    image.rgba.assign(std::size_t(view.width) * view.height * 4, 0.0f);
-    std::atomic<uint32_t> next_row{0};
-    std::atomic<uint64_t> segment_count{0};
-    const auto work = [&] {
-        std::vector<std::pair<double, uint32_t>> hits;
-        HitCollector collector{};
-        collector.grid = &grid;
-        collector.boundary = &boundary;
-        collector.hits = &hits;
-        uint64_t walked_segments = 0;
-        for (uint32_t py = next_row++; py < view.height; py = next_row++) {
-            for (uint32_t px = 0; px < view.width; ++px) {
-                const std::size_t pixel = std::size_t(py) * view.width + px;
-                const Vec3& o = rays.origin[pixel];
-                const Vec3& d = rays.direction[pixel];
-                const double t_low = rays.t_low[pixel], t_high = rays.t_high[pixel];
-                hits.clear();
-                rtcInitIntersectContext(&collector.context);
-                collector.origin = o;
-                collector.direction = d;
-                RTCRayHit ray{};
-                ray.ray.org_x = float(o.x);
-                ray.ray.org_y = float(o.y);
-                ray.ray.org_z = float(o.z);
-                ray.ray.dir_x = float(d.x);
-                ray.ray.dir_y = float(d.y);
-                ray.ray.dir_z = float(d.z);
-                ray.ray.tnear = 0;
-                ray.ray.tfar = std::numeric_limits<float>::infinity();
-                ray.ray.mask = 0xFFFFFFFF;
-                ray.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-                rtcIntersect1(scene.get(), &collector.context, &ray);
-                std::sort(hits.begin(), hits.end());
-
-                FrontToBack colour;
-                double walked_to = -std::numeric_limits<double>::infinity();
-                for (const auto& [t_hit, face] : hits) {
-                    if (t_hit < walked_to)
-                        continue; // a cell already walked through
-                    uint32_t tet = boundary[face].tet;
-                    // Every step moves forwards or ends the walk; the step limit only guards
-                    // against a cycle of zero-length steps that rounding could make.
-                    for (std::size_t steps = 0; steps <= grid.tets.size(); ++steps) {
-                        const TetPlanes planes(grid, grid.tets[tet]);
-                        const Crossing c = detail::crossTet(planes, o, d);
-                        if (c.exit_face < 0 || c.t_out < walked_to)
-                            break;
-                        const double from = std::max({c.t_in, t_low, walked_to});
-                        const double to = std::min(c.t_out, t_high);
-                        if (to > from) {
-                            const double s_in = planes.scalarAt(o + d * from);
-                            const double s_out = planes.scalarAt(o + d * to);
-                            colour.add(law.segment(s_in, s_out, to - from));
-                            ++walked_segments;
-                        }
-                        walked_to = std::max(walked_to, c.t_out);
-                        tet = (*neighbours.value)[tet][c.exit_face];
-                        if (tet == kNoNeighbour)
-                            break;
-                    }
-                }
-                colour.finish(settings.background, &image.rgba[pixel * 4]);
-            }
-        }
-        segment_count += walked_segments;
-    };
-    const unsigned threads =
-        thread_count == 0 ? std::max(1u, std::thread::hardware_concurrency()) : thread_count;
-    std::vector<std::thread> pool;
-    for (unsigned i = 1; i < threads; ++i)
-        pool.emplace_back(work);
-    work();
-    for (std::thread& t : pool)
-        t.join();
-    segments = segment_count;
-    return R{std::move(image), {}};
+        return Result<Image>::failure(valid.error);
+    Result<std::unique_ptr<detail::CellWalkCaster>> caster = detail::CellWalkCaster::make(grid);
+    if (!caster)
+        return Result<Image>::failure(caster.error);
+    const detail::GridMeasures measures(grid);
+    uint64_t segments = 0;
+    return {(*caster.value)
+                ->render(detail::VolumeLaw(measures, settings), settings.background,
+                         detail::PixelRayTable(view),
+                         thread_count == 0 ? std::max(1u, std::thread::hardware_concurrency())
+                                           : thread_count,
+                         segments),
+            {}};
 }
 
 } // namespace vissort

@@ -71,13 +71,18 @@ inline Crossing crossTet(const TetPlanes& planes, const Vec3& o, const Vec3& d) 
 
 /// The ray through each pixel centre of a view (PixelRays: ViewProjection::pixelRay's very
 /// doubles, the view's inverse computed once) and the part of it in view: from the near plane
-/// (to the far plane, orthographic). Computed once a frame.
+/// (to the far plane, orthographic). Filled once a frame, its memory kept for the next.
 struct PixelRayTable {
     uint32_t width = 0, height = 0;
     std::vector<Vec3> origin, direction;
     std::vector<double> t_low, t_high;
 
-    explicit PixelRayTable(const ViewProjection& view) : width(view.width), height(view.height) {
+    PixelRayTable() = default;
+    explicit PixelRayTable(const ViewProjection& view) { fill(view); }
+
+    void fill(const ViewProjection& view) {
+        width = view.width;
+        height = view.height;
         const std::size_t n = std::size_t(width) * height;
         origin.resize(n);
         direction.resize(n);

@@ -72,13 +72,12 @@ Result<TransferFunction> loadTransferFunction(const std::string& name_or_path) {
         std::vector<std::string> names;
         for (const Preset& p : presets())
             names.push_back(p.name);
-        const std::string near = closestName(name_or_path, names);
         std::string known;
         for (const std::string& n : names)
             known += (known.empty() ? "" : ", ") + n;
         return R::failure("'" + name_or_path + "' is neither a transfer function preset" +
-                          (near.empty() ? "" : " (did you mean '" + near + "'?)") +
-                          " nor a file; the presets are " + known);
+                          didYouMean(name_or_path, names) + " nor a file; the presets are " +
+                          known);
     }
     constexpr std::uintmax_t kMaxBytes = 16 << 20; // far beyond any hand-made function
     if (std::filesystem::file_size(name_or_path, error) > kMaxBytes)

@@ -21,12 +21,12 @@ namespace {
 // other, with their corners in other orders, so their depths tie to within a few units in the
 // last place. The exact rule (tolerance 0) decides every such tie exactly, which costs most of
 // a frame; cells' interiors are disjoint, so a tie is always "not behind", and a tolerance above
-// float noise answers it so in float, 25 times faster on builtin:knot. What the float rule can
+// float noise answers it so in float, without the exact model. What the float rule can
 // miss: a cell behind another by less than the tolerance at every pixel they share, and pixels
 // where the rasterizer's coverage (the top-left rule on float corners) and the exact crossing of
 // the compositor disagree, next to a silhouette edge. Either way the rays there cross the cells
-// over very short segments: the tests measure at most 0.12/255 against brute force, and hold
-// vissort to 1/255 on every frame (docs/volume.md, "Exactness").
+// over very short segments: the tests hold vissort to 1/255 against brute force on every frame
+// (docs/volume.md, "Exactness").
 constexpr float kCellDepthTolerance = 1e-6f;
 
 std::vector<PrimitiveRange> cellRanges(std::size_t cells) {

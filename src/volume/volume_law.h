@@ -3,6 +3,7 @@
 // opacity. The ray caster, the rasterizing methods and their shaders all follow it (the shaders
 // restate it in GLSL; tests compare their pictures). Internal to src/volume/.
 
+#include <algorithm>
 #include <cmath>
 
 #include "vissort/tet_grid.h"
@@ -15,27 +16,38 @@ struct SegmentColour {
     double r = 0, g = 0, b = 0, a = 0;
 };
 
+/// What the law needs of a grid, measured once per grid rather than every frame: its bounds (the
+/// unit of length is their diagonal) and its scalars' range.
+struct GridMeasures {
+    Bounds bounds;
+    double scalar_min = 0, scalar_max = 0;
+
+    explicit GridMeasures(const TetGrid& grid) {
+        for (const Vec3& p : grid.points)
+            bounds.add(p);
+        if (!grid.scalars.empty()) {
+            const auto [low, high] = std::minmax_element(grid.scalars.begin(), grid.scalars.end());
+            scalar_min = *low;
+            scalar_max = *high;
+        }
+    }
+};
+
 /// What turns a segment's scalars and world length into its colour: the transfer function's
 /// scalar mapping (normalized: (s - min) / (max - min) over the grid's scalars; a constant field
 /// maps to 0) and the unit of length (the grid's bounding-box diagonal).
 class VolumeLaw {
 public:
-    VolumeLaw(const TetGrid& grid, const VolumeSettings& settings) : settings_(settings) {
-        Bounds bounds;
-        for (const Vec3& p : grid.points)
-            bounds.add(p);
-        length_unit_ = std::max(2 * bounds.radius(), 1e-300);
-        if (settings.transfer.normalized && !grid.scalars.empty()) {
-            const auto [low, high] = std::minmax_element(grid.scalars.begin(), grid.scalars.end());
-            offset_ = *low;
-            scale_ = *high > *low ? 1.0 / (*high - *low) : 0.0;
+    VolumeLaw(const GridMeasures& grid, const VolumeSettings& settings) : settings_(settings) {
+        length_unit_ = std::max(2 * grid.bounds.radius(), 1e-300);
+        if (settings.transfer.normalized) {
+            offset_ = grid.scalar_min;
+            scale_ =
+                grid.scalar_max > grid.scalar_min ? 1.0 / (grid.scalar_max - grid.scalar_min) : 0.0;
         }
     }
 
     double normalizedScalar(double s) const { return (s - offset_) * scale_; }
-    double lengthUnit() const { return length_unit_; }
-    double scalarOffset() const { return offset_; }
-    double scalarScale() const { return scale_; }
 
     /// The segment from scalar s_in to s_out, world length `length`.
     SegmentColour segment(double s_in, double s_out, double length) const {
@@ -69,10 +81,5 @@ struct FrontToBack {
         rgba[3] = float(1 - transmittance * (1 - background.a));
     }
 };
-
-/// castVolume, counting the segments composited.
-Result<Image> castVolumeCounting(const TetGrid& grid, const VolumeSettings& settings,
-                                 const ViewProjection& view, unsigned thread_count,
-                                 uint64_t& segments);
 
 } // namespace vissort::detail

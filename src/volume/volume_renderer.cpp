@@ -1,11 +1,13 @@
 // VolumeRenderer: one method's frames of one grid. The ordering methods put the cells in order
 // (cell_orders.h) and composite them (cell_compositor.h); lists and raycast need no order.
 #include <chrono>
+#include <optional>
 #include <thread>
 
 #include "vissort/volume.h"
 #include "volume/cell_compositor.h"
 #include "volume/cell_orders.h"
+#include "volume/cell_walk_ray_caster.h"
 #include "volume/volume_law.h"
 
 namespace vissort {
@@ -15,8 +17,12 @@ struct VolumeRenderer::State {
     VolumeMethod method;
     OracleKind oracle;
     unsigned threads;
+    detail::GridMeasures measures; // what the law needs of the grid, once
+    detail::PixelRayTable rays;    // this frame's rays; its memory kept for the next
     std::optional<std::vector<TetNeighbours>> neighbours;    // mpvo's, made on its first frame
     std::unique_ptr<detail::VisibilityCellOrder> visibility; // vissort's, kept for coherence
+    std::unique_ptr<detail::CellWalkCaster> caster;          // raycast's neighbours and tree
+    std::vector<uint32_t> order;                             // centroid's and mpvo's
     VolumeFrameStats stats;
 };
 
@@ -27,8 +33,12 @@ VolumeRenderer::VolumeRenderer(const TetGrid& grid, VolumeMethod method, OracleK
                        oracle,
                        thread_count == 0 ? std::max(1u, std::thread::hardware_concurrency())
                                          : thread_count,
+                       detail::GridMeasures(grid),
+                       {},
                        std::nullopt,
                        nullptr,
+                       nullptr,
+                       {},
                        {}}) {}
 
 VolumeRenderer::~VolumeRenderer() = default;
@@ -50,18 +60,27 @@ Result<Image> VolumeRenderer::render(const VolumeSettings& settings, const ViewP
         return R::failure(valid.error);
     if (s.method == VolumeMethod::raycast) {
         const auto start = Clock::now();
-        Result<Image> image =
-            detail::castVolumeCounting(s.grid, settings, view, s.threads, s.stats.segments);
+        if (!s.caster) {
+            Result<std::unique_ptr<detail::CellWalkCaster>> made =
+                detail::CellWalkCaster::make(s.grid);
+            if (!made)
+                return R::failure(made.error);
+            s.caster = std::move(*made.value);
+        }
+        s.rays.fill(view);
+        Image image = s.caster->render(detail::VolumeLaw(s.measures, settings), settings.background,
+                                       s.rays, s.threads, s.stats.segments);
         s.stats.composite_ms = ms(start);
-        return image;
+        return R{std::move(image), {}};
     }
 
     const auto order_start = Clock::now();
-    std::vector<uint32_t> order;
+    std::span<const uint32_t> order;
     std::span<const std::vector<uint32_t>> cycles;
     switch (s.method) {
     case VolumeMethod::centroid:
-        order = detail::centroidOrder(s.grid, view);
+        s.order = detail::centroidOrder(s.grid, view);
+        order = s.order;
         break;
     case VolumeMethod::mpvo: {
         if (!s.neighbours) {
@@ -71,7 +90,8 @@ Result<Image> VolumeRenderer::render(const VolumeSettings& settings, const ViewP
             s.neighbours = std::move(*neighbours.value);
         }
         detail::MpvoOrder mpvo = detail::mpvoOrder(s.grid, *s.neighbours, view);
-        order = std::move(mpvo.order);
+        s.order = std::move(mpvo.order);
+        order = s.order;
         s.stats.cycles = mpvo.broken_cycles;
         break;
     }
@@ -99,9 +119,9 @@ Result<Image> VolumeRenderer::render(const VolumeSettings& settings, const ViewP
     s.stats.order_ms = ms(order_start);
 
     const auto composite_start = Clock::now();
-    const detail::VolumeLaw law(s.grid, settings);
-    const detail::PixelRayTable rays(view);
-    const detail::CompositeJob job{s.grid, law, rays, view, settings.background, s.threads};
+    const detail::VolumeLaw law(s.measures, settings);
+    s.rays.fill(view);
+    const detail::CompositeJob job{s.grid, law, s.rays, view, settings.background, s.threads};
     Image image = s.method == VolumeMethod::lists
                       ? detail::compositeLists(job, s.stats)
                       : detail::compositeInOrder(job, order, cycles, s.stats);
