@@ -144,8 +144,7 @@ std::string appendBinaryValues(NumericType type, const unsigned char* data, uint
 /// An ASCII number, NaN and infinities included (a skipped array may hold them; kept values are
 /// checked for being finite apart, with a message that says so). Overflow reads as infinity.
 inline std::optional<double> parseReal(std::string_view token) {
-    if (!token.empty() && token.front() == '+')
-        token.remove_prefix(1);
+    token = withoutPlusSign(token);
     double value = 0;
     const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
     if (token.empty() || end != token.data() + token.size())

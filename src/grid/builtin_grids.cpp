@@ -12,6 +12,7 @@
 #include "grid/raw_grid.h"
 #include "grid/token_scanner.h"
 #include "vissort/closest_name.h"
+#include "vissort/specification.h"
 
 namespace vissort::detail {
 namespace {
@@ -166,34 +167,35 @@ Result<TetGrid> makeBuiltinGrid(const std::string& name_and_parameters) {
         std::vector<std::string> names;
         for (const Shape& s : list)
             names.push_back(s.name);
-        const std::string near = closestName(name, names);
-        return R::failure("unknown built-in grid '" + name + "'" +
-                          (near.empty() ? "" : " (did you mean '" + near + "'?)") +
-                          "; the built-in grids are cube, torus and knot");
+        return R::failure(oneLine("unknown built-in grid '" + name + "'") +
+                          didYouMean(name, names) + "; the built-in grids are " +
+                          builtinGridList());
     }
+    const std::string specification = "builtin:" + name_and_parameters;
+    Result<SpecificationParameters> parameters = parseSpecificationQuery(
+        question == std::string::npos ? "" : name_and_parameters.substr(question + 1),
+        specification);
+    if (!parameters)
+        return R::failure(oneLine(parameters.error));
     int n = shape->default_n;
-    std::string parameters =
-        question == std::string::npos ? "" : name_and_parameters.substr(question + 1);
-    while (!parameters.empty()) {
-        const std::size_t amp = parameters.find('&');
-        const std::string pair = parameters.substr(0, amp);
-        parameters = amp == std::string::npos ? "" : parameters.substr(amp + 1);
-        const std::size_t equals = pair.find('=');
-        const std::string key = pair.substr(0, equals);
+    for (const auto& [key, text] : *parameters.value) {
         if (key != "n")
-            return R::failure("builtin:" + name + " has no parameter '" + key +
-                              "'; it takes n (cells "
-                              "along each side of its lattice)");
-        const std::optional<int64_t> value =
-            equals == std::string::npos ? std::nullopt
-                                        : TokenScanner::parseInteger(pair.substr(equals + 1));
+            return R::failure(oneLine("builtin:" + name + " has no parameter '" + key +
+                                      "'; it takes n (cells along each side of its lattice)"));
+        const std::optional<int64_t> value = TokenScanner::parseInteger(text);
         if (!value || *value < 1 || *value > kMaxLatticeCells)
-            return R::failure("builtin:" + name + "'s n must be a whole number from 1 to " +
-                              std::to_string(kMaxLatticeCells) + ", not '" +
-                              (equals == std::string::npos ? "" : pair.substr(equals + 1)) + "'");
+            return R::failure(oneLine("builtin:" + name + "'s n must be a whole number from 1 to " +
+                                      std::to_string(kMaxLatticeCells) + ", not '" + text + "'"));
         n = int(*value);
     }
     return latticeGrid(*shape, n);
+}
+
+std::string builtinGridList() {
+    std::string list;
+    for (const Shape& s : shapes())
+        list += (list.empty() ? "" : ", ") + std::string(s.name);
+    return list;
 }
 
 std::vector<BuiltinGridInfo> builtinGrids() {

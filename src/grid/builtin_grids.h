@@ -11,6 +11,9 @@ namespace vissort::detail {
 /// Makes the grid that "NAME?key=value&..." (after "builtin:") names, or says why it cannot.
 Result<TetGrid> makeBuiltinGrid(const std::string& name_and_parameters);
 
+/// The built-in grids' names, comma-separated, for messages.
+std::string builtinGridList();
+
 /// Every built-in grid's name and description.
 std::vector<BuiltinGridInfo> builtinGrids();
 

@@ -17,6 +17,7 @@
 #include <span>
 
 #include "grid/raw_grid.h"
+#include "grid/tet_measures.h"
 
 namespace vissort::detail {
 namespace {
@@ -75,16 +76,6 @@ const char* cellTypeName(CellType type) {
     return "cell";
 }
 
-double signedVolume6(const std::vector<Vec3>& points, const Tet& tet) {
-    const Vec3& a = points[tet[0]];
-    return dot(cross(points[tet[1]] - a, points[tet[2]] - a), points[tet[3]] - a);
-}
-
-bool hasRepeatedCorner(const Tet& tet) {
-    return tet[0] == tet[1] || tet[0] == tet[2] || tet[0] == tet[3] || tet[1] == tet[2] ||
-           tet[1] == tet[3] || tet[2] == tet[3];
-}
-
 // The tetrahedra of one cell, oriented as the cell is (positive for a cell oriented as VTK
 // documents), without those with a repeated corner.
 void splitCell(CellType type, std::span<const uint32_t> corners, std::vector<Tet>& out) {
@@ -118,18 +109,6 @@ void splitCell(CellType type, std::span<const uint32_t> corners, std::vector<Tet
         }
     }
     std::erase_if(out, hasRepeatedCorner);
-}
-
-// Below this fraction of the cube of its longest edge a tetrahedron counts as flat: a regular
-// one has about 0.118, a sliver that float coordinates still order robustly far more than this.
-constexpr double kFlatVolumeRatio = 1e-9;
-
-double longestEdgeCubed(const std::vector<Vec3>& points, const Tet& tet) {
-    double longest = 0;
-    for (int i = 0; i < 4; ++i)
-        for (int j = i + 1; j < 4; ++j)
-            longest = std::max(longest, length(points[tet[i]] - points[tet[j]]));
-    return longest * longest * longest;
 }
 
 } // namespace
@@ -190,7 +169,7 @@ Result<TetGrid> tetrahedralize(RawGrid raw, std::string name) {
         int cell_orientation = 0;
         for (Tet& tet : pieces) {
             const double volume = signedVolume6(raw.points, tet);
-            if (std::abs(volume) <= kFlatVolumeRatio * 6 * longestEdgeCubed(raw.points, tet))
+            if (isFlat(volume, longestEdge(raw.points, tet)))
                 return R::failure(describe() + " is degenerate: it has no volume (corners " +
                                   std::to_string(tet[0]) + ", " + std::to_string(tet[1]) + ", " +
                                   std::to_string(tet[2]) + " and " + std::to_string(tet[3]) +

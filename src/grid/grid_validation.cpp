@@ -5,10 +5,15 @@
 #include <cmath>
 #include <numeric>
 
+#include "grid/tet_measures.h"
 #include "vissort/tet_grid.h"
 
 namespace vissort {
 namespace {
+
+using detail::kFlatVolumeRatio;
+using detail::longestEdge;
+using detail::orient;
 
 // A face of a tetrahedron, keyed by its sorted corners.
 struct FaceRecord {
@@ -20,22 +25,6 @@ struct FaceRecord {
 std::array<uint32_t, 3> faceOf(const Tet& tet, int face) {
     return {tet[kTetFaceCorners[face][0]], tet[kTetFaceCorners[face][1]],
             tet[kTetFaceCorners[face][2]]};
-}
-
-double orient(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-    return dot(cross(b - a, c - a), d - a);
-}
-
-// Volumes below this fraction of the cube of the longest edge are flat (as in cell_split.cpp):
-// relative, so that a grid's units do not matter.
-constexpr double kFlatVolumeRatio = 1e-9;
-
-double longestEdge(const TetGrid& grid, const Tet& tet) {
-    double longest = 0;
-    for (int i = 0; i < 4; ++i)
-        for (int j = i + 1; j < 4; ++j)
-            longest = std::max(longest, length(grid.points[tet[i]] - grid.points[tet[j]]));
-    return longest;
 }
 
 std::string tetName(uint32_t t) {
@@ -83,7 +72,7 @@ Result<std::vector<TetNeighbours>> faceNeighbours(const TetGrid& grid) {
             const double side =
                 orient(grid.points[fa[0]], grid.points[fa[1]], grid.points[fa[2]], far_b);
             const double edge =
-                std::max(longestEdge(grid, ta), longestEdge(grid, grid.tets[b.tet]));
+                std::max(longestEdge(grid.points, ta), longestEdge(grid.points, grid.tets[b.tet]));
             if (side > kFlatVolumeRatio * edge * edge * edge)
                 return R::failure("the grid is not conforming: tetrahedra " +
                                   std::to_string(a.tet) + " and " + std::to_string(b.tet) +
@@ -129,13 +118,10 @@ Status validateGrid(const TetGrid& grid) {
             if (p >= grid.points.size())
                 return Status::failure(tetName(t) + " names point " + std::to_string(p) + " of " +
                                        std::to_string(grid.points.size()));
-        if (tet[0] == tet[1] || tet[0] == tet[2] || tet[0] == tet[3] || tet[1] == tet[2] ||
-            tet[1] == tet[3] || tet[2] == tet[3])
+        if (detail::hasRepeatedCorner(tet))
             return Status::failure(tetName(t) + " repeats a point");
-        const double edge = longestEdge(grid, tet);
-        const double volume6 = orient(grid.points[tet[0]], grid.points[tet[1]], grid.points[tet[2]],
-                                      grid.points[tet[3]]);
-        if (volume6 <= kFlatVolumeRatio * 6 * edge * edge * edge)
+        const double volume6 = detail::signedVolume6(grid.points, tet);
+        if (volume6 < 0 || detail::isFlat(volume6, longestEdge(grid.points, tet)))
             return Status::failure(tetName(t) + (volume6 < 0 ? " is inverted (negative volume)"
                                                              : " is degenerate (no volume)"));
     }

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "grid/builtin_grids.h"
 #include "grid/raw_grid.h"
+#include "grid/token_scanner.h"
 
 namespace vissort {
 namespace {
@@ -21,10 +21,7 @@ constexpr uint64_t kMaxGridFileBytes = uint64_t(4) << 30;
 constexpr std::string_view kBuiltinPrefix = "builtin:";
 
 std::string lowerExtension(const std::string& path) {
-    std::string ext = fs::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
+    return detail::lowerCase(fs::path(path).extension().string());
 }
 
 Result<std::string> readWhole(const std::string& path) {
@@ -121,8 +118,10 @@ Result<TetGrid> loadGrid(const std::string& spec) {
         if (!raw)
             return R::failure(label + ": " + raw.error);
     } else {
-        return R::failure(spec + ": not a grid file (vissort reads grids from .vtk, .vtu, tetgen's "
-                                 ".node/.ele and Medit's .mesh, or builtin:cube, torus, knot)");
+        return R::failure(spec +
+                          ": not a grid file (vissort reads grids from .vtk, .vtu, tetgen's "
+                          ".node/.ele and Medit's .mesh, or builtin:NAME, NAME one of " +
+                          detail::builtinGridList() + ")");
     }
     Result<TetGrid> grid =
         detail::tetrahedralize(std::move(*raw.value), fs::path(spec).filename().string());

@@ -13,6 +13,8 @@
 #include <system_error>
 #include <vector>
 
+#include "grid/token_scanner.h"
+
 namespace vissort::detail {
 
 /// text as a message shows it: at most max_chars characters ("..." after them when it is longer),
@@ -54,9 +56,7 @@ inline std::string listed(const std::vector<std::string>& names, std::size_t max
 inline std::string badNumber(std::string_view token, std::size_t max_chars) {
     if (token.empty())
         return "a value is missing";
-    std::string_view digits = token;
-    if (digits.front() == '+')
-        digits.remove_prefix(1);
+    const std::string_view digits = withoutPlusSign(token);
     double value = 0;
     const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     if (end == digits.data() + digits.size() && error == std::errc::result_out_of_range)

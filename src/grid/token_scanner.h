@@ -21,6 +21,14 @@ inline std::string lowerCase(std::string_view text) {
     return lower;
 }
 
+/// The token without a leading '+' that a sign does not follow: from_chars reads no '+', and "+-5"
+/// must stay a bad number rather than become -5.
+inline std::string_view withoutPlusSign(std::string_view token) {
+    if (token.size() >= 2 && token[0] == '+' && token[1] != '-' && token[1] != '+')
+        token.remove_prefix(1);
+    return token;
+}
+
 class TokenScanner {
 public:
     /// comment: a character that starts a comment running to the end of its line ('#' for
@@ -82,8 +90,7 @@ public:
     std::optional<double> nextDouble() { return parseDouble(next()); }
 
     static std::optional<int64_t> parseInteger(std::string_view token) {
-        if (!token.empty() && token.front() == '+')
-            token.remove_prefix(1);
+        token = withoutPlusSign(token);
         int64_t value = 0;
         const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
         if (token.empty() || error != std::errc() || end != token.data() + token.size())
@@ -91,8 +98,7 @@ public:
         return value;
     }
     static std::optional<double> parseDouble(std::string_view token) {
-        if (!token.empty() && token.front() == '+')
-            token.remove_prefix(1);
+        token = withoutPlusSign(token);
         double value = 0;
         const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
         if (token.empty() || error != std::errc() || end != token.data() + token.size() ||

@@ -203,8 +203,12 @@ private:
     template <class T>
     bool readValues(ValueType type, uint64_t count, uint64_t stride, const std::string& what,
                     std::vector<T>* out, uint64_t components = 1) {
-        if (type.is_string)
-            return skipStrings(count, what) && skipMetadata(components);
+        if (type.is_string) {
+            if (!skipStrings(count, what))
+                return false;
+            skipMetadata(components);
+            return true;
+        }
         if (binary_) {
             // The data start on the line after their header (vtkDataReader's getline).
             scan_.restOfLine();
@@ -247,7 +251,8 @@ private:
                     out->push_back(*value);
             }
         }
-        return skipMetadata(components);
+        skipMetadata(components);
+        return true;
     }
 
     /// String arrays are never kept: skipped line by line (ASCII) or by their length prefixes
@@ -288,12 +293,11 @@ private:
     /// Skips a METADATA block if one follows an array of components: text even in a BINARY
     /// file, lines of COMPONENT_NAMES (one per component, empty for an unnamed one) and
     /// INFORMATION keys (a NAME line and a DATA line each), ended by a blank line.
-    bool skipMetadata(uint64_t components) {
+    void skipMetadata(uint64_t components) {
         if (lowerCase(scan_.peek()) != "metadata")
-            return true;
+            return;
         next();
         skipMetadataBlock(components);
-        return true;
     }
     void skipMetadataBlock(uint64_t components) {
         scan_.restOfLine();
@@ -383,7 +387,7 @@ private:
     }
 
     bool readPoints() {
-        if (!grid_.points.empty() || have_points_)
+        if (have_points_)
             return fail("a second POINTS section");
         uint64_t count;
         ValueType type;
@@ -541,8 +545,7 @@ private:
         uint64_t count;
         if (!valueCount(what, tuples, components, count))
             return false;
-        const bool candidate = attributes_ == Attributes::points && type.numeric &&
-                               components > 0 && tuples == grid_.points.size();
+        const bool candidate = attributes_ == Attributes::points && type.numeric && components > 0;
         bool keep = false;
         if (candidate) {
             point_array_names_.push_back(name);

@@ -71,12 +71,17 @@ uint64_t maxInflatedSize(uint64_t compressed) {
 
 /// An attribute that must be a whole non-negative number.
 std::optional<uint64_t> parseCount(const char* text) {
-    const std::string_view token(text);
-    uint64_t value = 0;
-    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (token.empty() || error != std::errc() || end != token.data() + token.size())
+    const std::optional<int64_t> value = TokenScanner::parseInteger(text);
+    if (!value || *value < 0)
         return std::nullopt;
-    return value;
+    return uint64_t(*value);
+}
+
+/// A DataArray's NumberOfComponents: 1 when absent, nullopt when not a whole number (pugixml's
+/// as_ullong would read "3x" as 3 and "-1" as 0).
+std::optional<uint64_t> componentsOf(const pugi::xml_node& array) {
+    const pugi::xml_attribute attribute = array.attribute("NumberOfComponents");
+    return attribute ? parseCount(attribute.value()) : std::optional<uint64_t>(1);
 }
 
 /// How much of a name or token a message quotes.
@@ -219,9 +224,12 @@ private:
             const pugi::xml_node array = piece.child("Points").child("DataArray");
             if (!array)
                 return fail("Points has no DataArray");
-            const uint64_t components = array.attribute("NumberOfComponents").as_ullong(1);
+            const std::optional<uint64_t> components = componentsOf(array);
             if (components != 3)
-                return fail("Points DataArray has " + std::to_string(components) +
+                return fail("Points DataArray has " +
+                            (components ? std::to_string(*components)
+                                        : quoted(array.attribute("NumberOfComponents").value(),
+                                                 kShownChars)) +
                             " components instead of 3");
             std::vector<double> coordinates;
             if (!readArray(array, "Points", *points * 3, 1, coordinates))
@@ -289,6 +297,8 @@ private:
             if (findElementType(array.attribute("type").as_string()))
                 arrays.push_back(array);
         auto named = [&](const std::string& name) {
+            if (name.empty())
+                return pugi::xml_node();
             for (pugi::xml_node array : arrays)
                 if (name == array.attribute("Name").as_string())
                     return array;
@@ -307,12 +317,13 @@ private:
                                 (names.empty() ? "the file has none"
                                                : "the file has " + listed(names, kShownChars)));
                 }
-            } else if (const char* active = point_data.attribute("Scalars").as_string();
-                       *active != '\0' && named(active)) {
-                chosen = named(active);
+            } else if (const pugi::xml_node active =
+                           named(point_data.attribute("Scalars").as_string());
+                       active) {
+                chosen = active;
             } else {
                 for (pugi::xml_node array : arrays)
-                    if (array.attribute("NumberOfComponents").as_ullong(1) == 1) {
+                    if (componentsOf(array) == 1) {
                         chosen = array;
                         break;
                     }
@@ -331,7 +342,12 @@ private:
                 return fail("no point array named " + quoted(grid_.scalar_name, kShownChars));
         }
         const std::string what = "PointData array " + quoted(grid_.scalar_name, kShownChars);
-        const uint64_t components = chosen.attribute("NumberOfComponents").as_ullong(1);
+        const std::optional<uint64_t> parsed_components = componentsOf(chosen);
+        if (!parsed_components)
+            return fail(what + " has NumberOfComponents " +
+                        quoted(chosen.attribute("NumberOfComponents").value(), kShownChars) +
+                        ", not a whole number");
+        const uint64_t components = *parsed_components;
         uint64_t count;
         if (components == 0)
             return fail(what + " has 0 components");

@@ -7,6 +7,7 @@
 #include "scene/json_scene.h"
 #include "scene/mesh_loader.h"
 #include "vissort/scene.h"
+#include "vissort/specification.h"
 
 namespace vissort {
 namespace {
@@ -22,64 +23,13 @@ bool endsWithJson(const std::string& path) {
     return extension == ".json";
 }
 
-/// Splits "k=v&k2=v2" into parameters; an empty query gives none.
-Result<SceneParameters> parseQuery(const std::string& query, const std::string& specification) {
-    SceneParameters parameters;
-    std::size_t begin = 0;
-    while (begin < query.size()) {
-        std::size_t end = query.find('&', begin);
-        if (end == std::string::npos)
-            end = query.size();
-        const std::string item = query.substr(begin, end - begin);
-        const std::size_t equals = item.find('=');
-        if (item.empty())
-            return Result<SceneParameters>::failure(specification +
-                                                    ": empty parameter between '&'");
-        if (equals == std::string::npos)
-            return Result<SceneParameters>::failure(specification + ": parameter '" + item +
-                                                    "' needs a value (key=value)");
-        const std::string key = item.substr(0, equals);
-        if (key.empty())
-            return Result<SceneParameters>::failure(specification + ": parameter '" + item +
-                                                    "' has no key");
-        if (!parameters.emplace(key, item.substr(equals + 1)).second)
-            return Result<SceneParameters>::failure(specification + ": parameter '" + key +
-                                                    "' given twice");
-        begin = end + 1;
-        if (end + 1 == query.size())
-            return Result<SceneParameters>::failure(specification +
-                                                    ": empty parameter after the last '&'");
-    }
-    return {std::move(parameters), {}};
-}
-
-/// Messages quote the specification and parts of the input as they are (a file name, a key, a
-/// value); control characters in them are written as \xNN, so that every error stays one line.
-/// (The scene_parameters fuzzer found "builtin:x?&" followed by line ends.)
-std::string oneLine(const std::string& message) {
-    static constexpr char kHex[] = "0123456789abcdef";
-    std::string line;
-    line.reserve(message.size());
-    for (const char c : message) {
-        const auto byte = static_cast<unsigned char>(c);
-        if (byte < 0x20 || byte == 0x7f) {
-            line += "\\x";
-            line += kHex[byte >> 4];
-            line += kHex[byte & 15];
-        } else {
-            line += c;
-        }
-    }
-    return line;
-}
-
 Result<Scene> loadBuiltin(const std::string& specification, const BuiltinSceneMaker& builtins) {
     const std::string rest = specification.substr(kBuiltinPrefix.size());
     const std::size_t question = rest.find('?');
     const std::string name = rest.substr(0, question);
     if (name.empty())
         return Result<Scene>::failure(specification + ": missing the built-in scene name");
-    Result<SceneParameters> parameters = parseQuery(
+    Result<SceneParameters> parameters = parseSpecificationQuery(
         question == std::string::npos ? std::string() : rest.substr(question + 1), specification);
     if (!parameters)
         return Result<Scene>::failure(parameters.error);

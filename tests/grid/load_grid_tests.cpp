@@ -27,7 +27,7 @@ TEST(LoadGrid, FileProblemsNameTheFile) {
     EXPECT_EQ(
         loadGrid("model.obj").error,
         "model.obj: not a grid file (vissort reads grids from .vtk, .vtu, tetgen's .node/.ele and "
-        "Medit's .mesh, or builtin:cube, torus, knot)");
+        "Medit's .mesh, or builtin:NAME, NAME one of cube, torus, knot)");
 }
 
 TEST(LoadGrid, GridSpecsAreToldFromScenes) {

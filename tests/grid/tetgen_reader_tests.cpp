@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "grid/raw_grid.h"
+#include "grid/token_scanner.h"
 #include "reader_test_support.h"
 
 namespace vissort::detail {
@@ -247,4 +248,14 @@ TEST(TetgenReader, MessagesShowAtMost32CharactersOfAToken) {
 }
 
 } // namespace
+// A '+' is read before digits, never before another sign: "+-5" is not -5.
+TEST(TokenScanner, APlusSignOnlyBeforeDigits) {
+    EXPECT_EQ(TokenScanner::parseInteger("+5"), 5);
+    EXPECT_EQ(TokenScanner::parseDouble("+2.5"), 2.5);
+    EXPECT_FALSE(TokenScanner::parseInteger("+-5"));
+    EXPECT_FALSE(TokenScanner::parseDouble("+-1.5"));
+    EXPECT_FALSE(TokenScanner::parseInteger("++5"));
+    EXPECT_FALSE(TokenScanner::parseInteger("+"));
+}
+
 } // namespace vissort::detail

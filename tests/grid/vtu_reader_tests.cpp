@@ -416,6 +416,10 @@ TEST(VtuReader, RefusesBadArrays) {
     EXPECT_EQ(vtuError(edited(ascii, "Points\" NumberOfComponents=\"3",
                               "Points\" NumberOfComponents=\"2")),
               "Points DataArray has 2 components instead of 3");
+    // Counts are read whole: pugixml's own reading takes "3x" for 3.
+    EXPECT_EQ(vtuError(edited(ascii, "Points\" NumberOfComponents=\"3",
+                              "Points\" NumberOfComponents=\"3x")),
+              "Points DataArray has '3x' components instead of 3");
     EXPECT_EQ(vtuError(edited(ascii, "0.5 0.5 2", "0.5 0.5")),
               "Points has 26 values instead of 27");
     EXPECT_EQ(vtuError(edited(ascii, "0.5 0.5 2", "0.5 0.5 2 7")),
