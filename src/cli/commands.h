@@ -2,6 +2,8 @@
 // The vissort subcommands: each registers its options and runs when chosen.
 
 #include <CLI/CLI.hpp>
+#include <functional>
+#include <string>
 
 #include "cli/cli_common.h"
 #include "cli/json_output.h"
@@ -131,6 +133,12 @@ struct ViewerOptions {
     bool highlight_collisions = false;
     bool show_errors = false;
     bool frames_given = false; // --frames on the command line (else: until the window closes)
+    // A grid's (vissort view GRID): its transfer function and density.
+    std::string tf = "cool-warm";
+    double density = 4.0;
+    // Whether an option (by its long name, "--level") was on the command line: a grid's window
+    // refuses a scene's options and a scene's a grid's, rather than ignoring them.
+    std::function<bool(const std::string&)> given = [](const std::string&) { return false; };
 };
 CLI::App* addViewCommand(CLI::App& app, ViewerOptions& options);
 int runView(const ViewerOptions& options);

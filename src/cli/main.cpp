@@ -128,6 +128,9 @@ int main(int argc, char** argv) {
             return runVolume(volume);
         if (view_command->parsed()) {
             view.frames_given = view_command->count("--frames") > 0;
+            view.given = [view_command](const std::string& name) {
+                return view_command->count(name) > 0;
+            };
             return runView(view);
         }
     } catch (const std::bad_alloc&) {

@@ -10,6 +10,7 @@
 #include "cli/output_paths.h"
 #include "cli/progress.h"
 #include "cli/text_output.h"
+#include "cli/volume_options.h"
 #include "harnesses/volume_comparison.h"
 #include "vissort/volume.h"
 
@@ -126,15 +127,11 @@ int runVolume(const VolumeOptions& options) {
     Result<OracleKind> oracle = parseOracleKind(options.oracle);
     if (!oracle)
         return fail(kExitUsage, "--oracle " + oracle.error);
-    if (!std::isfinite(options.density) || options.density < 0)
-        return fail(kExitUsage,
-                    "--density must be a finite number >= 0, got " + formatNumber(options.density));
-    const Result<Rgba> background = parseBackground(options.background);
-    if (!background)
-        return fail(kExitUsage, "--background " + background.error);
-    Result<TransferFunction> tf = loadTransferFunction(options.tf);
-    if (!tf)
-        return fail(kExitUsage, "--tf " + tf.error);
+    VolumeSettings settings;
+    if (const std::string error =
+            resolveVolumeSettings(options.tf, options.density, options.background, settings);
+        !error.empty())
+        return fail(kExitUsage, error);
     if (all && options.view.frames > 1)
         return fail(kExitUsage, "--method all draws one frame: leave out --frames");
     for (const auto& [option, path] :
@@ -152,10 +149,6 @@ int runVolume(const VolumeOptions& options) {
     Result<TetGrid> grid = loadGrid(options.grid);
     if (!grid)
         return fail(kExitInput, grid.error);
-    VolumeSettings settings;
-    settings.transfer = std::move(*tf.value);
-    settings.density = options.density;
-    settings.background = *background.value;
     if (Status valid = validateVolumeSettings(*grid.value, settings); !valid)
         return fail(kExitInput, valid.error);
     const Scene boundary = boundaryScene(*grid.value);

@@ -2,7 +2,8 @@
 // Input replayed by `vissort view --script FILE`, so that tests (and demos) drive the viewer the
 // way a user does. A text file, one event per line, '#' to the end of a line is a comment:
 //
-//   FRAME key NAME                  a key press: W A S D Q E F R P H C K X SPACE ESCAPE 1 .. 7
+//   FRAME key NAME                  a key press: W A S D Q E F R P H C K X T [ ] SPACE ESCAPE
+//                                   TAB 1 .. 7
 //   FRAME drag BUTTON X0 Y0 X1 Y1   a mouse drag, left, right or middle, in window pixels
 //   FRAME wheel STEPS               wheel steps, positive towards the scene (may be fractional)
 //   FRAME resize WIDTH HEIGHT       the window resized
@@ -30,9 +31,9 @@ struct ScriptEvent {
 };
 
 /// The keys a script may press, as written there.
-inline constexpr const char* kScriptKeys[] = {"W", "A", "S", "D", "Q", "E",     "F",      "R",
-                                              "P", "H", "C", "K", "X", "SPACE", "ESCAPE", "1",
-                                              "2", "3", "4", "5", "6", "7",     "TAB"};
+inline constexpr const char* kScriptKeys[] = {"W", "A", "S", "D", "Q",     "E",      "F", "R", "P",
+                                              "H", "C", "K", "X", "SPACE", "ESCAPE", "1", "2", "3",
+                                              "4", "5", "6", "7", "TAB",   "T",      "[", "]"};
 
 /// The events of a script's text, sorted by frame (file order within a frame), or a one-line
 /// error naming the line and what is wrong with it.

@@ -9,8 +9,8 @@
 #include "vissort/gl_context.h"
 
 namespace vissort::viewer {
-RenderWorker::RenderWorker(const Scene& scene)
-    : scene_(scene), frames_(scene), thread_([this] { run(); }) {}
+RenderWorker::RenderWorker(const Scene& scene, const TetGrid* grid)
+    : scene_(scene), grid_(grid), frames_(scene), thread_([this] { run(); }) {}
 
 RenderWorker::~RenderWorker() {
     {
@@ -74,13 +74,24 @@ void RenderWorker::run() {
         }
         changed_.notify_all();
     }
-    // Its GL objects go with the context current on this thread.
+    // Its GL objects go with the context current on this thread (the gl oracle's too).
     pipeline_.reset();
+    volume_.reset();
+    volume_reference_.reset();
 }
 
 RenderedFrame RenderWorker::render(const RenderRequest& request) {
     RenderedFrame frame;
     frame.request = request;
+    if (request.volume) {
+        try {
+            renderVolume(request, frame);
+        } catch (const std::exception& error) {
+            volume_.reset();
+            frame.error = error.what();
+        }
+        return frame;
+    }
     try {
         // The frame's positions as `vissort render` takes them; the view framed to its bounds.
         frames_.seek(request.frame);
@@ -109,6 +120,41 @@ RenderedFrame RenderWorker::render(const RenderRequest& request) {
         frame.error = error.what();
     }
     return frame;
+}
+
+void RenderWorker::renderVolume(const RenderRequest& request, RenderedFrame& frame) {
+    if (grid_ == nullptr)
+        throw std::logic_error("a volume was asked of a window without a grid");
+    const VolumeView& volume = *request.volume;
+    // Framed to the boundary's bounds, as `vissort volume` frames it.
+    const ViewProjection view =
+        frameCamera(request.camera, scene_.positions.bounds(), request.width, request.height);
+    if (!volume_ || volume_method_ != volume.method || volume_oracle_ != volume.oracle) {
+        volume_.reset(); // one gl oracle at a time on this thread's context
+        volume_ = std::make_unique<VolumeRenderer>(*grid_, volume.method, volume.oracle);
+        volume_method_ = volume.method;
+        volume_oracle_ = volume.oracle;
+    }
+    Result<Image> image = volume_->render(volume.settings, view);
+    if (!image)
+        throw std::runtime_error(image.error);
+    frame.volume_stats = volume_->stats();
+    RenderStats& stats = frame.frame.stats;
+    stats.order_ms = frame.volume_stats.order_ms;
+    stats.render_ms = frame.volume_stats.composite_ms;
+    stats.total_ms = stats.order_ms + stats.render_ms;
+    stats.order.queries = frame.volume_stats.queries;
+    frame.frame.rgba = image.value->toRgba8();
+    if (!request.overlays.error_map)
+        return;
+    if (!volume_reference_)
+        volume_reference_ = std::make_unique<VolumeRenderer>(*grid_, VolumeMethod::raycast);
+    Result<Image> truth = volume_reference_->render(volume.settings, view);
+    if (!truth)
+        throw std::runtime_error(truth.error);
+    const std::vector<uint8_t> truth_rgba = truth.value->toRgba8();
+    frame.frame.error = compareImages(frame.frame.rgba, truth_rgba);
+    frame.frame.rgba = errorMap(frame.frame.rgba, truth_rgba);
 }
 
 } // namespace vissort::viewer

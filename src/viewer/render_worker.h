@@ -20,6 +20,7 @@
 #include "vissort/image.h"
 #include "vissort/scene.h"
 #include "vissort/transparency_renderer.h"
+#include "vissort/volume.h"
 
 namespace vissort::viewer {
 
@@ -34,27 +35,43 @@ struct Overlays {
     bool error_map = false;
 };
 
-/// What to render: the scene at a frame (time frame * kFrameInterval) through a camera.
+/// What a grid's window renders (`vissort view GRID`): the volume renderer's settings and
+/// method, and the name the panel shows for the transfer function (a preset's, a file's, or
+/// "edited").
+struct VolumeView {
+    VolumeSettings settings;
+    VolumeMethod method = VolumeMethod::vissort;
+    OracleKind oracle = OracleKind::cpu; // vissort's
+    std::string tf_name;
+};
+
+/// What to render: the scene at a frame (time frame * kFrameInterval) through a camera; for a
+/// grid, its volume (the scene is then the grid's boundary, which frames the camera).
 struct RenderRequest {
     RenderSettings settings;
-    Overlays overlays;
+    std::optional<VolumeView> volume; // a grid's window: these settings instead of `settings`
+    Overlays overlays; // a grid's: error_map against raycast, highlight_collisions unused
     CameraSpec camera;
     int frame = 0;
     uint32_t width = 0, height = 0;
 };
 
 /// A finished request: the pipeline's frame (its picture replaced by the error map with
-/// overlays.error_map), or the one-line error that stopped it.
+/// overlays.error_map), or the one-line error that stopped it. A grid's frame has its picture,
+/// its times (order_ms, render_ms: compositing, total_ms) and error in `frame`, its counts in
+/// volume_stats.
 struct RenderedFrame {
     RenderRequest request;
     PipelineFrame frame;
+    VolumeFrameStats volume_stats;
     std::string error;
 };
 
 class RenderWorker {
 public:
-    /// Starts the thread; scene must outlive the worker.
-    explicit RenderWorker(const Scene& scene);
+    /// Starts the thread; scene must outlive the worker. With a grid (which must outlive it
+    /// too), requests with a volume render the grid, scene being its boundary (boundaryScene).
+    explicit RenderWorker(const Scene& scene, const TetGrid* grid = nullptr);
     /// Finishes the frame in progress, then stops the thread.
     ~RenderWorker();
     RenderWorker(const RenderWorker&) = delete;
@@ -72,8 +89,10 @@ public:
 private:
     void run();
     RenderedFrame render(const RenderRequest& request);
+    void renderVolume(const RenderRequest& request, RenderedFrame& frame);
 
     const Scene& scene_;
+    const TetGrid* grid_;
     mutable std::mutex mutex_;
     std::condition_variable changed_;
     std::optional<RenderRequest> pending_;
@@ -81,6 +100,11 @@ private:
     bool busy_ = false, stopping_ = false;
     // The worker thread's own: made on the first request, reconfigured by each.
     std::unique_ptr<FramePipeline> pipeline_;
+    // A grid's: the method's renderer (kept while method and oracle stay, for vissort's
+    // coherence) and raycast's for the error map.
+    std::unique_ptr<VolumeRenderer> volume_, volume_reference_;
+    VolumeMethod volume_method_ = VolumeMethod::vissort;
+    OracleKind volume_oracle_ = OracleKind::cpu;
     FrameDriver frames_; // positions only: the camera comes with each request
     std::thread thread_; // last: started once everything above exists
 };

@@ -22,7 +22,9 @@
 #include "viewer/camera_controls.h"
 #include "viewer/panel_layout.h"
 #include "viewer/render_worker.h"
+#include "viewer/transfer_editing.h"
 #include "viewer/viewer_panel.h"
+#include "viewer/volume_panel.h"
 #include "vissort/frame_driver.h"
 #include "vissort/image.h"
 
@@ -67,7 +69,8 @@ void main() {
 
 class Viewer {
 public:
-    Viewer(const Scene& scene, const ViewerSettings& settings);
+    /// grid: null for a scene's window; else the grid whose boundary scene is.
+    Viewer(const Scene& scene, const TetGrid* grid, const ViewerSettings& settings);
     ~Viewer();
     Status open();
     Result<ViewerSummary> run();
@@ -77,6 +80,8 @@ private:
     PanelLayout layout() const;
     // Input, from GLFW's callbacks or the script.
     void onKey(const std::string& name);
+    // A grid's keys; false for those a grid's window does not take.
+    bool onVolumeKey(const std::string& name);
     void onDrag(int button, double dx, double dy);
     void onWheel(double steps);
     Status onResize(uint32_t width, uint32_t height);
@@ -93,8 +98,11 @@ private:
     }
 
     const Scene& scene_;
+    const TetGrid* grid_;
     ViewerSettings settings_;
     RenderSettings render_;
+    std::optional<VolumeView> volume_; // a grid's settings, edited in the panel
+    std::optional<GridFacts> grid_facts_;
     Overlays overlays_;
     GLFWwindow* window_ = nullptr;
     bool imgui_ = false;
@@ -132,9 +140,11 @@ private:
     ViewerSummary summary_;
 };
 
-Viewer::Viewer(const Scene& scene, const ViewerSettings& settings)
-    : scene_(scene), settings_(settings), render_(settings.render), overlays_(settings.overlays),
-      camera_(settings.camera) {
+Viewer::Viewer(const Scene& scene, const TetGrid* grid, const ViewerSettings& settings)
+    : scene_(scene), grid_(grid), settings_(settings), render_(settings.render),
+      volume_(settings.volume), overlays_(settings.overlays), camera_(settings.camera) {
+    if (grid_ != nullptr)
+        grid_facts_ = describeGrid(*grid_);
     FrameDriver driver(scene_);
     driver.seek(0);
     first_bounds_ = driver.positions().bounds();
@@ -191,7 +201,8 @@ Status Viewer::open() {
         else if (key == GLFW_KEY_TAB)
             of(window).onKey("TAB");
         else if ((key >= GLFW_KEY_A && key <= GLFW_KEY_Z) ||
-                 (key >= GLFW_KEY_1 && key <= GLFW_KEY_7))
+                 (key >= GLFW_KEY_1 && key <= GLFW_KEY_7) || key == GLFW_KEY_LEFT_BRACKET ||
+                 key == GLFW_KEY_RIGHT_BRACKET)
             of(window).onKey(std::string(1, char(key)));
     });
     glfwSetMouseButtonCallback(window_, [](GLFWwindow* window, int button, int action, int) {
@@ -242,7 +253,7 @@ Status Viewer::open() {
     glBindTexture(GL_TEXTURE_2D, texture_.get());
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    worker_ = std::make_unique<RenderWorker>(scene_);
+    worker_ = std::make_unique<RenderWorker>(scene_, grid_);
     return Status::ok();
 }
 
@@ -266,8 +277,33 @@ void Viewer::moveCamera(const CameraSpec& camera) {
     dirty_ = true;
 }
 
+bool Viewer::onVolumeKey(const std::string& name) {
+    VolumeView& volume = *volume_;
+    constexpr double kDensityStep = 1.5;
+    if (name.size() == 1 && name[0] >= '1' && name[0] <= '7') {
+        if (name[0] > '5')
+            return true; // 6 and 7 are scene methods
+        volume.method = kVolumeMethodNames[name[0] - '1'].value;
+    } else if (name == "T") {
+        volume.tf_name = nextTransferPreset(volume.tf_name);
+        volume.settings.transfer = *loadTransferFunction(volume.tf_name).value;
+    } else if (name == "[") {
+        volume.settings.density /= kDensityStep;
+    } else if (name == "]") {
+        volume.settings.density *= kDensityStep;
+    } else if (name == "X") {
+        overlays_.error_map = !overlays_.error_map;
+    } else {
+        return name == "C" || name == "K"; // a scene's overlays: nothing to do for a grid
+    }
+    dirty_ = true;
+    return true;
+}
+
 void Viewer::onKey(const std::string& name) {
     const double step = kFlyStepOfRadius * radius_;
+    if (volume_ && onVolumeKey(name))
+        return;
     if (name == "ESCAPE") {
         quit_ = true;
     } else if (name == "W") {
@@ -371,6 +407,7 @@ void Viewer::applyScript(int frame) {
 RenderRequest Viewer::request() const {
     RenderRequest request;
     request.settings = render_;
+    request.volume = volume_;
     request.overlays = overlays_;
     request.camera = currentCamera();
     request.frame = frame_;
@@ -409,6 +446,8 @@ void Viewer::show(RenderedFrame frame) {
     summary_.overlays = frame.request.overlays;
     summary_.colliding_pairs = frame.frame.colliding_pairs;
     summary_.difference = frame.frame.error;
+    summary_.volume = frame.request.volume;
+    summary_.volume_stats = frame.volume_stats;
     shown_ = std::move(frame);
     if (playing_ && animated_)
         ++frame_;
@@ -455,7 +494,9 @@ void Viewer::drawWindow() {
                 std::chrono::duration<double>(frame_times_.back() - frame_times_.front()).count();
             state.fps = seconds > 0 ? double(frame_times_.size() - 1) / seconds : 0;
         }
-        const PanelActions actions = drawPanel(state, render_, overlays_);
+        state.grid_facts = grid_facts_ ? &*grid_facts_ : nullptr;
+        const PanelActions actions = volume_ ? drawVolumePanel(state, *volume_, overlays_)
+                                             : drawPanel(state, render_, overlays_);
         if (actions.settings_changed)
             dirty_ = true;
         if (actions.toggle_play)
@@ -575,7 +616,17 @@ Status checkDisplay() {
 }
 
 Result<ViewerSummary> runViewer(const Scene& scene, const ViewerSettings& settings) {
-    Viewer viewer(scene, settings);
+    Viewer viewer(scene, nullptr, settings);
+    if (Status opened = viewer.open(); !opened)
+        return {std::nullopt, opened.error};
+    return viewer.run();
+}
+
+Result<ViewerSummary> runVolumeViewer(const TetGrid& grid, const Scene& boundary,
+                                      const ViewerSettings& settings) {
+    if (!settings.volume)
+        return {std::nullopt, "a grid's viewer needs its volume settings"};
+    Viewer viewer(boundary, &grid, settings);
     if (Status opened = viewer.open(); !opened)
         return {std::nullopt, opened.error};
     return viewer.run();

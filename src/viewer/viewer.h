@@ -1,9 +1,10 @@
 #pragma once
 // `vissort view`: a window showing a scene rendered by the transparency renderer (the same pixels
-// `vissort render` writes for the same camera and size), moved with the mouse and keys, with a
-// panel of settings and live statistics (Dear ImGui). GLFW makes the window and its OpenGL
-// context on the calling thread; a RenderWorker renders on its own thread through the headless
-// context, so input is handled while a slow frame renders.
+// `vissort render` writes for the same camera and size), or a tetrahedral grid by the volume
+// renderer (the pixels of `vissort volume`), moved with the mouse and keys, with a panel of
+// settings and live statistics (Dear ImGui); a grid's panel edits its transfer function. GLFW makes
+// the window and its OpenGL context on the calling thread; a RenderWorker renders on its own thread
+// through the headless context, so input is handled while a slow frame renders.
 //
 // Controls (also in `vissort view --help` and the help overlay, H):
 //   left drag: orbit about the target      right or middle drag: pan       wheel: zoom
@@ -12,6 +13,9 @@
 //   linked-list, weighted)  C: colour cycles  K: highlight collisions  X: error map against
 //   linked-list             P: screenshot     H: help overlay      Tab: hide/show the panel
 //   Escape: quit
+// A grid's window: 1-5 method (vissort, centroid, mpvo, lists, raycast), T: next transfer
+// function preset, [ and ]: density down and up (by 1.5x), X: error map against raycast; C and K
+// do nothing.
 
 #include <cstdint>
 #include <optional>
@@ -38,7 +42,8 @@ struct ViewerSettings {
     int frames = 0;         // 0: until the window closes; N: render N frames, then close
     std::string screenshot; // with frames: where the last frame is saved (PNG)
     bool hide_ui = false;   // no panel (and no help overlay) in the window or the screenshot
-    std::vector<ScriptEvent> script; // input replayed (input_script.h)
+    std::vector<ScriptEvent> script;  // input replayed (input_script.h)
+    std::optional<VolumeView> volume; // runVolumeViewer's start settings
 };
 
 /// What a run of the viewer did.
@@ -53,6 +58,8 @@ struct ViewerSummary {
     uint64_t colliding_pairs = 0;   // the last frame's, with highlight_collisions
     std::optional<ImageError> difference; // the last frame's, with error_map
     std::vector<std::string> screenshots; // files written (the final one and P presses)
+    std::optional<VolumeView> volume;     // a grid's: the last frame's settings
+    VolumeFrameStats volume_stats;        // ... and counts
 };
 
 /// Whether a display is named to open windows on (X11 or Wayland), without connecting to it: a
@@ -64,5 +71,11 @@ Status checkDisplay();
 /// display to connect to (the same advice as checkDisplay's), no OpenGL context for the window,
 /// a frame the renderer could not render, a screenshot that could not be written; each one line.
 Result<ViewerSummary> runViewer(const Scene& scene, const ViewerSettings& settings);
+
+/// The same for a grid rendered by the volume renderer from settings.volume (required), the
+/// camera framed on its boundary (boundaryScene(grid)); both must outlive the call. The panel
+/// edits the method, the transfer function and the density.
+Result<ViewerSummary> runVolumeViewer(const TetGrid& grid, const Scene& boundary,
+                                      const ViewerSettings& settings);
 
 } // namespace vissort::viewer

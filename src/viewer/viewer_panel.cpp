@@ -49,14 +49,7 @@ bool samplesCombo(uint32_t& samples) {
 
 PanelActions drawPanel(const PanelState& state, RenderSettings& settings, Overlays& overlays) {
     PanelActions actions;
-    // A sidebar: the scene is drawn right of it (panel_layout.h), so it never covers the scene.
-    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(float(state.layout.width), ImGui::GetIO().DisplaySize.y),
-                             ImGuiCond_Always);
-    ImGui::Begin("vissort", nullptr,
-                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-    if (ImGui::Button("Hide panel (Tab)"))
-        actions.hide_panel = true;
+    beginSidebar(state, actions);
     const Scene& scene = *state.scene;
     if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) {
         // As drawn: "all transparent" counts every object.
@@ -110,20 +103,7 @@ PanelActions drawPanel(const PanelState& state, RenderSettings& settings, Overla
         if (overlays.error_map)
             ImGui::TextDisabled("grey: within 1/255; yellow 2/255 to red 64/255");
     }
-    if (ImGui::CollapsingHeader("Camera and time", ImGuiTreeNodeFlags_DefaultOpen)) {
-        if (ImGui::Button(state.playing ? "Pause (Space)" : "Play (Space)"))
-            actions.toggle_play = true;
-        ImGui::SameLine();
-        ImGui::Text("frame %d", state.frame);
-        if (ImGui::Button("Frame scene (F)"))
-            actions.frame_scene = true;
-        ImGui::SameLine();
-        if (ImGui::Button("Reset (R)"))
-            actions.reset_camera = true;
-        ImGui::SameLine();
-        if (ImGui::Button("Screenshot (P)"))
-            actions.screenshot = true;
-    }
+    drawCameraSection(state, actions);
     if (ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::Text("%.1f frames/s", state.fps);
         if (state.last != nullptr && state.last->error.empty()) {
@@ -149,16 +129,52 @@ PanelActions drawPanel(const PanelState& state, RenderSettings& settings, Overla
                             last.frame.error->max_abs,
                             static_cast<unsigned long long>(last.frame.error->pixels_over_one));
         }
-        if (!state.frame_ms.empty()) {
-            // The plot's scale on it: the axis runs from 0 at the bottom to `top` at the top.
-            const PlotScale scale = frameTimePlotScale(state.frame_ms);
-            ImGui::PlotLines("ms", state.frame_ms.data(), int(state.frame_ms.size()), 0,
-                             scale.caption.c_str(), 0.0f, scale.top, ImVec2(0, 60));
-        }
+        drawFrameTimePlot(state);
     }
+    endSidebar();
+    return actions;
+}
+
+void beginSidebar(const PanelState& state, PanelActions& actions) {
+    // A sidebar: the scene is drawn right of it (panel_layout.h), so it never covers the scene.
+    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(float(state.layout.width), ImGui::GetIO().DisplaySize.y),
+                             ImGuiCond_Always);
+    ImGui::Begin("vissort", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    if (ImGui::Button("Hide panel (Tab)"))
+        actions.hide_panel = true;
+}
+
+void drawCameraSection(const PanelState& state, PanelActions& actions) {
+    if (!ImGui::CollapsingHeader("Camera and time", ImGuiTreeNodeFlags_DefaultOpen))
+        return;
+    if (ImGui::Button(state.playing ? "Pause (Space)" : "Play (Space)"))
+        actions.toggle_play = true;
+    ImGui::SameLine();
+    ImGui::Text("frame %d", state.frame);
+    if (ImGui::Button("Frame scene (F)"))
+        actions.frame_scene = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Reset (R)"))
+        actions.reset_camera = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Screenshot (P)"))
+        actions.screenshot = true;
+}
+
+void drawFrameTimePlot(const PanelState& state) {
+    if (state.frame_ms.empty())
+        return;
+    // The plot's scale on it: the axis runs from 0 at the bottom to `top` at the top.
+    const PlotScale scale = frameTimePlotScale(state.frame_ms);
+    ImGui::PlotLines("ms", state.frame_ms.data(), int(state.frame_ms.size()), 0,
+                     scale.caption.c_str(), 0.0f, scale.top, ImVec2(0, 60));
+}
+
+void endSidebar() {
     ImGui::TextDisabled("H: help");
     ImGui::End();
-    return actions;
 }
 
 bool drawShowPanelButton() {
@@ -188,9 +204,12 @@ void drawHelpOverlay() {
         {"R", "reset the camera"},
         {"Space", "play / pause"},
         {"1 to 7", "vissort, unsorted, centroid, peel, dual-peel, linked-list, weighted"},
+        {"1 to 5 (a grid)", "vissort, centroid, mpvo, lists, raycast"},
+        {"T (a grid)", "next transfer function preset"},
+        {"[ / ] (a grid)", "density down / up"},
         {"C", "colour the cycles of vissort's order"},
         {"K", "highlight colliding triangles"},
-        {"X", "error map against linked-list"},
+        {"X", "error map against linked-list (a grid: raycast)"},
         {"P", "screenshot (vissort-view-N.png)"},
         {"H", "this help"},
         {"Tab", "hide / show the panel"},

@@ -10,6 +10,7 @@
 #include "viewer/render_worker.h"
 #include "vissort/depth_complexity.h"
 #include "vissort/scene.h"
+#include "vissort/tet_grid.h"
 #include "vissort/transparency_renderer.h"
 
 namespace vissort::viewer {
@@ -23,6 +24,7 @@ struct PanelState {
     int frame = 0;                       // the animation frame
     bool playing = false;
     const std::optional<DepthComplexity>* complexity = nullptr; // measured on demand
+    const GridFacts* grid_facts = nullptr;                      // a grid's window: its facts
 };
 
 struct PanelActions {
@@ -38,6 +40,14 @@ struct PanelActions {
 /// The panel as a sidebar at the window's left (state.layout); settings and overlays are edited
 /// in place.
 PanelActions drawPanel(const PanelState& state, RenderSettings& settings, Overlays& overlays);
+
+/// The sections every window's panel has, for volume_panel.cpp: the sidebar's window begun
+/// (with its hide button), the camera and time buttons, the frame-time plot, and the end of the
+/// sidebar with the help hint.
+void beginSidebar(const PanelState& state, PanelActions& actions);
+void drawCameraSection(const PanelState& state, PanelActions& actions);
+void drawFrameTimePlot(const PanelState& state);
+void endSidebar();
 
 /// While the panel is hidden: a small button at the top-left that shows it again; true when
 /// pressed.

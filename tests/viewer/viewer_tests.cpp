@@ -1,6 +1,6 @@
 // The viewer's camera controls against their documented geometry (camera_controls.h), computed
 // here from first principles, the input script's format (input_script.h) and the panel's
-// layout (panel_layout.h).
+// layout (panel_layout.h), and the panel's transfer function editing (transfer_editing.h).
 
 #include <gtest/gtest.h>
 
@@ -9,6 +9,7 @@
 #include "viewer/camera_controls.h"
 #include "viewer/input_script.h"
 #include "viewer/panel_layout.h"
+#include "viewer/transfer_editing.h"
 
 namespace vissort::viewer {
 namespace {
@@ -161,6 +162,84 @@ TEST(InputScript, TabTogglesThePanel) {
     ASSERT_TRUE(script) << script.error;
     ASSERT_EQ(script.value->size(), 1u);
     EXPECT_EQ((*script.value)[0].key, "TAB");
+}
+
+// Three points at 0, 0.5 and 1 (normalized).
+TransferFunction threePoints() {
+    TransferFunction tf;
+    tf.points = {{0.0, 0.1, 0.2, 0.3, 1.0}, {0.5, 0.9, 0.8, 0.7, 2.0}, {1.0, 0.0, 1.0, 0.0, 4.0}};
+    return tf;
+}
+
+TEST(TransferEditing, APointMovesOnlyBetweenItsNeighbours) {
+    TransferFunction tf = threePoints();
+    moveTransferPoint(tf, 1, 0.25);
+    EXPECT_EQ(tf.points[1].scalar, 0.25);
+    moveTransferPoint(tf, 1, 7.0); // past the last: held just inside it
+    EXPECT_LT(tf.points[1].scalar, 1.0);
+    EXPECT_GT(tf.points[1].scalar, 0.999999);
+    moveTransferPoint(tf, 1, -3.0);
+    EXPECT_GT(tf.points[1].scalar, 0.0);
+    EXPECT_LT(tf.points[1].scalar, 1e-6);
+    moveTransferPoint(tf, 0, -2.0); // the ends move freely outwards
+    EXPECT_EQ(tf.points[0].scalar, -2.0);
+    moveTransferPoint(tf, 2, std::nan(""));
+    EXPECT_EQ(tf.points[2].scalar, 1.0);
+    EXPECT_TRUE(validateTransferFunction(tf)) << validateTransferFunction(tf).error;
+}
+
+TEST(TransferEditing, AnInsertedPointLeavesTheFunctionAsItWas) {
+    TransferFunction tf = threePoints();
+    const TransferFunction before = tf;
+    EXPECT_EQ(insertTransferPoint(tf, 0), 1u);
+    ASSERT_EQ(tf.points.size(), 4u);
+    EXPECT_EQ(tf.points[1].scalar, 0.25);
+    EXPECT_EQ(insertTransferPoint(tf, 3), 4u); // after the last (at 1): beyond it
+    EXPECT_GT(tf.points[4].scalar, 1.0);
+    EXPECT_TRUE(validateTransferFunction(tf)) << validateTransferFunction(tf).error;
+    for (double s = -0.5; s <= 1.5; s += 0.01) {
+        const TransferPoint a = before.at(s), b = tf.at(s);
+        EXPECT_NEAR(a.r, b.r, 1e-12) << s;
+        EXPECT_NEAR(a.g, b.g, 1e-12) << s;
+        EXPECT_NEAR(a.b, b.b, 1e-12) << s;
+        EXPECT_NEAR(a.extinction, b.extinction, 1e-12) << s;
+    }
+}
+
+TEST(TransferEditing, RemovingKeepsTwoPoints) {
+    TransferFunction tf = threePoints();
+    EXPECT_TRUE(removeTransferPoint(tf, 1));
+    EXPECT_EQ(tf.points.size(), 2u);
+    EXPECT_EQ(tf.points[1].scalar, 1.0);
+    EXPECT_FALSE(removeTransferPoint(tf, 0));
+    EXPECT_FALSE(removeTransferPoint(tf, 5));
+    EXPECT_EQ(tf.points.size(), 2u);
+}
+
+TEST(TransferEditing, ClampingAndPresets) {
+    TransferPoint p{0.5, 1.5, -0.2, std::nan(""), -3.0};
+    clampTransferPoint(p);
+    EXPECT_EQ(p.r, 1.0);
+    EXPECT_EQ(p.g, 0.0);
+    EXPECT_EQ(p.b, 0.0);
+    EXPECT_EQ(p.extinction, 0.0);
+    // T walks every preset once and comes back.
+    const std::vector<TransferPreset> presets = transferPresets();
+    std::string name = presets.front().name;
+    for (std::size_t i = 1; i <= presets.size(); ++i) {
+        name = nextTransferPreset(name);
+        EXPECT_EQ(name, presets[i % presets.size()].name);
+    }
+    EXPECT_EQ(nextTransferPreset("my-tf.json"), presets.front().name);
+}
+
+TEST(InputScript, AcceptsTheGridKeys) {
+    const Result<std::vector<ScriptEvent>> script = parseInputScript("0 key t\n1 key [\n1 key ]\n");
+    ASSERT_TRUE(script) << script.error;
+    ASSERT_EQ(script.value->size(), 3u);
+    EXPECT_EQ((*script.value)[0].key, "T");
+    EXPECT_EQ((*script.value)[1].key, "[");
+    EXPECT_EQ((*script.value)[2].key, "]");
 }
 
 } // namespace
