@@ -63,7 +63,7 @@ def test_methods_against_the_ray_caster():
     assert np.abs(image.astype(int) - truth).max() <= 1
     stats = renderer.stats
     assert stats["cells"] == len(grid.tets)
-    assert stats["queries"] >= len(grid.tets)
+    assert stats["queries"] >= len(grid.tets) - 1  # pass 1: every cell but the first drawn
     assert stats["segments"] > 0
     mpvo = vissort.render_volume(grid, camera, size=(48, 48), method="mpvo", tf="bands", density=6)
     assert np.abs(mpvo.astype(int) - truth).max() > 16

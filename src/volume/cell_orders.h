@@ -5,12 +5,14 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "vissort/camera.h"
 #include "vissort/oracles.h"
 #include "vissort/scene_orderer.h"
 #include "vissort/tet_grid.h"
+#include "volume/convex_facing_oracle.h"
 
 namespace vissort::detail {
 
@@ -31,12 +33,21 @@ struct MpvoOrder {
 MpvoOrder mpvoOrder(const TetGrid& grid, const std::vector<TetNeighbours>& neighbours,
                     const ViewProjection& view);
 
-/// Vis-sort at cell level: each cell one primitive of its four faces, ordered by SceneOrderer
-/// (coherence from the last frame's order and cycles; the first frame from the centroid order)
-/// with the given oracle.
+/// The same topological sort of the shared faces, taking among the ready cells the one earliest
+/// in `preferred` (a permutation of the cells), and breaking a cycle at the earliest preferred
+/// cell left: an order every shared face agrees with, otherwise as close to `preferred` as the
+/// faces allow. Vissort's start list: last frame's order (or the centres') for the cells that
+/// share no face, the faces for those that do.
+MpvoOrder faceConsistentOrder(const TetGrid& grid, const std::vector<TetNeighbours>& neighbours,
+                              const ViewProjection& view, std::span<const uint32_t> preferred);
+
+/// Vis-sort at cell level: each cell one primitive of its four faces (drawn by its front faces,
+/// queried by its back ones: ConvexFacingOracle), ordered by SceneOrderer with the given oracle
+/// from a start list every shared face agrees with, otherwise in last frame's order (the first
+/// frame's: the centroid order): faceConsistentOrder.
 class VisibilityCellOrder {
 public:
-    /// Fails (one line) when the oracle cannot be made.
+    /// Fails (one line) when the oracle cannot be made or the grid is not conforming.
     static Result<std::unique_ptr<VisibilityCellOrder>> make(const TetGrid& grid,
                                                              OracleKind oracle);
 
@@ -44,14 +55,18 @@ public:
     const FrameOrder& order(const ViewProjection& view);
 
 private:
-    VisibilityCellOrder(const TetGrid& grid, std::unique_ptr<GeometryOracle> oracle);
+    VisibilityCellOrder(const TetGrid& grid, std::vector<TetNeighbours> neighbours,
+                        std::unique_ptr<GeometryOracle> oracle);
 
     const TetGrid& grid_;
+    std::vector<TetNeighbours> neighbours_; // for the start list (faceConsistentOrder)
     TrianglePositions faces_;
     std::vector<PrimitiveRange> cells_;
     std::unique_ptr<GeometryOracle> oracle_;
+    ConvexFacingOracle facing_; // over oracle_: fronts drawn, backs queried
     SceneOrderer orderer_;
     FrameOrder frame_;
+    std::vector<uint32_t> preferred_; // last frame's order, or the centres' on the first
     bool first_frame_ = true;
 };
 

@@ -116,7 +116,9 @@ TEST_F(Cli, BenchVolumeMeasuresEveryMethodOnEveryGrid) {
             EXPECT_LE(row["max_error"].get<int>(), 1);
         }
         if (method == "vissort") {
-            EXPECT_GE(row["queries_per_cell"].get<double>(), 1.0);
+            // Pass 1 queries every cell but the one drawn first, whatever the start list.
+            const double cells = row["cells"].get<double>();
+            EXPECT_GE(row["queries_per_cell"].get<double>(), (cells - 1) / cells);
         }
         if (method == "lists") {
             EXPECT_GT(row["list_segments_per_cell"].get<double>(), 0);

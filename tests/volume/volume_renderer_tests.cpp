@@ -167,7 +167,7 @@ TEST(VolumeRenderer, ReportsItsCosts) {
     VolumeRenderer vissort(grid, VolumeMethod::vissort, OracleKind::cpu, 2);
     ASSERT_TRUE(vissort.render(settings, view));
     EXPECT_EQ(vissort.stats().cells, grid.tets.size());
-    EXPECT_GE(vissort.stats().queries, grid.tets.size());
+    EXPECT_GE(vissort.stats().queries, grid.tets.size() - 1); // pass 1: all but the first drawn
     VolumeRenderer lists(grid, VolumeMethod::lists, OracleKind::cpu, 2);
     ASSERT_TRUE(lists.render(settings, view));
     EXPECT_EQ(lists.stats().list_segments, lists.stats().segments);
