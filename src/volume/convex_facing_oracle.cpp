@@ -12,15 +12,6 @@ namespace {
 // to the eye) is not called: the float corners the rasterizer sees could turn it either way.
 constexpr double kEdgeOnCosine = 1e-7;
 
-// Whether a corner reaches the near plane, where the rasterizer clips (perspective: its eye
-// distance w, which is negative behind the eye, within a margin of the plane's; orthographic:
-// its depth).
-bool atNearPlane(const Vec3& corner, const ViewProjection& view) {
-    if (view.projection == Projection::perspective)
-        return !(view.toClip(corner)[3] > view.near * (1 + 1e-6));
-    return !(view.depthOf(corner) > 1e-9);
-}
-
 enum class Facing { front, back, both };
 
 Facing facingOf(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& inside,
@@ -31,18 +22,10 @@ Facing facingOf(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& inside,
     const Vec3 to_eye =
         view.projection == Projection::perspective ? view.eye_position - a : view.forward * -1.0;
     const double along = dot(normal, to_eye);
-    const double scale = length(normal) * length(to_eye);
-    if (!(std::abs(along) > kEdgeOnCosine * scale))
+    if (!(along * along >
+          kEdgeOnCosine * kEdgeOnCosine * dot(normal, normal) * dot(to_eye, to_eye)))
         return Facing::both;
     return along > 0 ? Facing::front : Facing::back;
-}
-
-void append(TrianglePositions& to, PositionsView from, std::size_t triangle) {
-    for (std::size_t k = 3 * triangle; k < 3 * triangle + 3; ++k) {
-        to.x.push_back(from.x[k]);
-        to.y.push_back(from.y[k]);
-        to.z.push_back(from.z[k]);
-    }
 }
 
 } // namespace
@@ -50,12 +33,19 @@ void append(TrianglePositions& to, PositionsView from, std::size_t triangle) {
 void ConvexFacingOracle::bind(PositionsView positions, const ViewProjection& view,
                               std::span<const PrimitiveRange> primitives) {
     count_ = uint32_t(primitives.size());
-    split_.x.clear();
-    split_.y.clear();
-    split_.z.clear();
+    // Room for every face twice; what is used is kept at the end (the capacity stays).
+    std::size_t room = 0;
+    for (const PrimitiveRange& range : primitives)
+        room += 2 * std::size_t(range.triangle_count);
+    split_.resize(room);
+    std::size_t used = 0; // triangles written
     ranges_.resize(2 * primitives.size());
     front_faces_ = back_faces_ = 0;
-    std::vector<Facing> facing;
+    // A corner's distance in front of the eye plane, along the view (either projection clips
+    // where it falls below the near plane's; negative behind the eye).
+    const auto& m = view.view;
+    const double near_margin = view.near * (1 + 1e-6);
+    std::vector<Facing> facing; // a primitive's faces'; one allocation a bind
     for (std::size_t p = 0; p < primitives.size(); ++p) {
         const PrimitiveRange range = primitives[p];
         const std::size_t first = range.first_triangle, end = first + range.triangle_count;
@@ -64,7 +54,8 @@ void ConvexFacingOracle::bind(PositionsView positions, const ViewProjection& vie
         for (std::size_t k = 3 * first; k < 3 * end; ++k) {
             const Vec3 corner = positions.corner(k);
             inside = inside + corner;
-            near_plane = near_plane || atNearPlane(corner, view);
+            const double ahead = -(m[2] * corner.x + m[6] * corner.y + m[10] * corner.z + m[14]);
+            near_plane = near_plane || !(ahead > near_margin);
         }
         inside = inside * (1.0 / double(3 * std::max<std::size_t>(range.triangle_count, 1)));
         facing.assign(range.triangle_count, Facing::both);
@@ -74,15 +65,20 @@ void ConvexFacingOracle::bind(PositionsView positions, const ViewProjection& vie
                                              positions.corner(3 * t + 2), inside, view);
         for (const Facing wanted : {Facing::front, Facing::back}) {
             PrimitiveRange& out = ranges_[2 * p + (wanted == Facing::back ? 1 : 0)];
-            out.first_triangle = uint32_t(split_.triangleCount());
+            out.first_triangle = uint32_t(used);
             for (std::size_t t = first; t < end; ++t)
-                if (facing[t - first] == wanted || facing[t - first] == Facing::both)
-                    append(split_, positions, t);
-            out.triangle_count = uint32_t(split_.triangleCount()) - out.first_triangle;
+                if (facing[t - first] == wanted || facing[t - first] == Facing::both) {
+                    std::copy_n(&positions.x[3 * t], 3, &split_.x[3 * used]);
+                    std::copy_n(&positions.y[3 * t], 3, &split_.y[3 * used]);
+                    std::copy_n(&positions.z[3 * t], 3, &split_.z[3 * used]);
+                    ++used;
+                }
+            out.triangle_count = uint32_t(used) - out.first_triangle;
         }
         front_faces_ += ranges_[2 * p].triangle_count;
         back_faces_ += ranges_[2 * p + 1].triangle_count;
     }
+    split_.resize(used);
     inner_.bind(split_, view, ranges_);
 }
 
