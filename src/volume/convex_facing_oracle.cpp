@@ -12,7 +12,7 @@ namespace {
 // to the eye) is not called: the float corners the rasterizer sees could turn it either way.
 constexpr double kEdgeOnCosine = 1e-7;
 
-enum class Facing { front, back, both };
+enum class Facing : uint8_t { front, back, both };
 
 Facing facingOf(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& inside,
                 const ViewProjection& view) {
@@ -33,24 +33,22 @@ Facing facingOf(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& inside,
 void ConvexFacingOracle::bind(PositionsView positions, const ViewProjection& view,
                               std::span<const PrimitiveRange> primitives) {
     count_ = uint32_t(primitives.size());
-    // Room for every face twice; what is used is kept at the end (the capacity stays).
-    std::size_t room = 0;
+    // First each face's facing (and the triangles that makes), then the split itself, sized
+    // exactly: it is the largest of the order's buffers.
+    std::size_t faces = 0;
     for (const PrimitiveRange& range : primitives)
-        room += 2 * std::size_t(range.triangle_count);
-    split_.resize(room);
-    std::size_t used = 0; // triangles written
-    ranges_.resize(2 * primitives.size());
-    front_faces_ = back_faces_ = 0;
+        faces += range.triangle_count;
+    facing_.resize(faces);
+    std::size_t used = 0; // triangles the split needs
     // A corner's distance in front of the eye plane, along the view (either projection clips
     // where it falls below the near plane's; negative behind the eye).
     const auto& m = view.view;
     const double near_margin = view.near * (1 + 1e-6);
-    std::vector<Facing> facing; // a primitive's faces'; one allocation a bind
-    for (std::size_t p = 0; p < primitives.size(); ++p) {
-        const PrimitiveRange range = primitives[p];
+    std::size_t at = 0; // the first of the primitive's faces in facing_
+    for (const PrimitiveRange& range : primitives) {
         const std::size_t first = range.first_triangle, end = first + range.triangle_count;
         Vec3 inside{0, 0, 0};
-        bool near_plane = range.triangle_count == 0;
+        bool near_plane = false;
         for (std::size_t k = 3 * first; k < 3 * end; ++k) {
             const Vec3 corner = positions.corner(k);
             inside = inside + corner;
@@ -58,27 +56,41 @@ void ConvexFacingOracle::bind(PositionsView positions, const ViewProjection& vie
             near_plane = near_plane || !(ahead > near_margin);
         }
         inside = inside * (1.0 / double(3 * std::max<std::size_t>(range.triangle_count, 1)));
-        facing.assign(range.triangle_count, Facing::both);
-        if (!near_plane)
-            for (std::size_t t = first; t < end; ++t)
-                facing[t - first] = facingOf(positions.corner(3 * t), positions.corner(3 * t + 1),
-                                             positions.corner(3 * t + 2), inside, view);
+        for (std::size_t t = first; t < end; ++t, ++at) {
+            const Facing f = near_plane
+                                 ? Facing::both
+                                 : facingOf(positions.corner(3 * t), positions.corner(3 * t + 1),
+                                            positions.corner(3 * t + 2), inside, view);
+            facing_[at] = uint8_t(f);
+            used += f == Facing::both ? 2 : 1;
+        }
+    }
+    split_.resize(used);
+    ranges_.resize(2 * primitives.size());
+    front_faces_ = back_faces_ = 0;
+    std::size_t written = 0;
+    at = 0;
+    for (std::size_t p = 0; p < primitives.size(); ++p) {
+        const PrimitiveRange range = primitives[p];
+        const std::size_t first = range.first_triangle, end = first + range.triangle_count;
         for (const Facing wanted : {Facing::front, Facing::back}) {
             PrimitiveRange& out = ranges_[2 * p + (wanted == Facing::back ? 1 : 0)];
-            out.first_triangle = uint32_t(used);
-            for (std::size_t t = first; t < end; ++t)
-                if (facing[t - first] == wanted || facing[t - first] == Facing::both) {
-                    std::copy_n(&positions.x[3 * t], 3, &split_.x[3 * used]);
-                    std::copy_n(&positions.y[3 * t], 3, &split_.y[3 * used]);
-                    std::copy_n(&positions.z[3 * t], 3, &split_.z[3 * used]);
-                    ++used;
-                }
-            out.triangle_count = uint32_t(used) - out.first_triangle;
+            out.first_triangle = uint32_t(written);
+            for (std::size_t t = first; t < end; ++t) {
+                const Facing f = Facing(facing_[at + (t - first)]);
+                if (f != wanted && f != Facing::both)
+                    continue;
+                std::copy_n(&positions.x[3 * t], 3, &split_.x[3 * written]);
+                std::copy_n(&positions.y[3 * t], 3, &split_.y[3 * written]);
+                std::copy_n(&positions.z[3 * t], 3, &split_.z[3 * written]);
+                ++written;
+            }
+            out.triangle_count = uint32_t(written) - out.first_triangle;
         }
+        at += range.triangle_count;
         front_faces_ += ranges_[2 * p].triangle_count;
         back_faces_ += ranges_[2 * p + 1].triangle_count;
     }
-    split_.resize(used);
     inner_.bind(split_, view, ranges_);
 }
 

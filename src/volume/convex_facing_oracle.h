@@ -10,6 +10,7 @@
 // plane (clipped there, its fronts no longer cover its pixels), is drawn and queried both ways,
 // which is what the whole cell would do. Internal to src/volume/.
 
+#include <cstdint>
 #include <vector>
 
 #include "vissort/geometry_oracle.h"
@@ -41,6 +42,7 @@ private:
     TrianglePositions split_;            // each primitive's fronts, then its backs
     std::vector<PrimitiveRange> ranges_; // primitive p: 2p its fronts, 2p + 1 its backs
     uint64_t front_faces_ = 0, back_faces_ = 0;
+    std::vector<uint8_t> facing_; // each bound face's: front, back or both
 };
 
 } // namespace vissort::detail
