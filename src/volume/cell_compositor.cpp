@@ -5,6 +5,7 @@
 #include "volume/cell_compositor.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <mutex>
@@ -14,25 +15,71 @@ namespace vissort::detail {
 namespace {
 
 // The pixels whose centres a cell's projection may cover: inclusive ranges, conservative by a
-// pixel (the crossing test at each centre decides).
+// pixel (the crossing test at each centre decides), and the projected corners, from which each
+// row's span is cut (hull: false when a corner is at or behind the eye plane, where corners bound
+// nothing: every pixel of the box is then tested).
 struct PixelBox {
     int32_t x0 = 0, y0 = 0, x1 = -1, y1 = -1;
+    bool hull = false;
+    float corner_x[4] = {}, corner_y[4] = {};
+
+    // The columns [first, last] of row y whose centres lie in the corners' convex hull, widened
+    // by kHullMargin pixels (the corners are floats; the crossing test decides exactly): on a
+    // horizontal line the hull spans the crossings of the six segments between the corners.
+    void rowSpan(int32_t y, int32_t& first, int32_t& last) const {
+        first = x0;
+        last = x1;
+        if (!hull)
+            return;
+        constexpr float kHullMargin = 1e-2f;
+        const float centre = float(y) + 0.5f;
+        float low = 1e30f, high = -1e30f;
+        for (int a = 0; a < 4; ++a)
+            for (int b = a + 1; b < 4; ++b) {
+                const float ya = corner_y[a], yb = corner_y[b];
+                if ((ya > centre + kHullMargin && yb > centre + kHullMargin) ||
+                    (ya < centre - kHullMargin && yb < centre - kHullMargin))
+                    continue; // the segment is wholly above or below the row
+                float xa = corner_x[a], xb = corner_x[b];
+                if (std::abs(yb - ya) > kHullMargin) { // where it crosses, clamped to it
+                    const float u = std::clamp((centre - ya) / (yb - ya), 0.0f, 1.0f);
+                    xa = xb = corner_x[a] + u * (corner_x[b] - corner_x[a]);
+                }
+                low = std::min({low, xa, xb});
+                high = std::max({high, xa, xb});
+            }
+        if (!(low <= high)) {
+            last = first - 1; // the row misses the hull
+            return;
+        }
+        first = std::max(x0, int32_t(std::ceil(low - 0.5f - kHullMargin)));
+        last = std::min(x1, int32_t(std::floor(high - 0.5f + kHullMargin)));
+    }
 };
 
 PixelBox cellBox(const TetGrid& grid, const Tet& tet, const ViewProjection& view) {
     ScreenExtent extent;
-    for (const uint32_t p : tet)
-        extent.add(view, grid.points[p]);
+    PixelBox box;
+    for (int k = 0; k < 4; ++k) {
+        const Vec3& p = grid.points[tet[k]];
+        extent.add(view, p);
+        const std::array<double, 4> clip = view.toClip(p);
+        box.corner_x[k] = float((clip[0] / clip[3] + 1) * 0.5 * view.width);
+        box.corner_y[k] = float((1 - clip[1] / clip[3]) * 0.5 * view.height);
+    }
     if (extent.wraps)
         return {0, 0, int32_t(view.width) - 1, int32_t(view.height) - 1}; // the whole picture
     const auto clamp = [](double v, uint32_t size) {
         return int32_t(std::clamp(v, -1.0, double(size)));
     };
-    return {
-        clamp(std::floor(extent.low_x - 0.5) - 1, view.width),
-        clamp(std::floor(extent.low_y - 0.5) - 1, view.height),
-        std::min(clamp(std::ceil(extent.high_x - 0.5) + 1, view.width), int32_t(view.width) - 1),
-        std::min(clamp(std::ceil(extent.high_y - 0.5) + 1, view.height), int32_t(view.height) - 1)};
+    box.x0 = clamp(std::floor(extent.low_x - 0.5) - 1, view.width);
+    box.y0 = clamp(std::floor(extent.low_y - 0.5) - 1, view.height);
+    box.x1 =
+        std::min(clamp(std::ceil(extent.high_x - 0.5) + 1, view.width), int32_t(view.width) - 1);
+    box.y1 =
+        std::min(clamp(std::ceil(extent.high_y - 0.5) + 1, view.height), int32_t(view.height) - 1);
+    box.hull = true;
+    return box;
 }
 
 // A segment held in a per-pixel list.
@@ -58,16 +105,33 @@ public:
         if (y_first > y_last || box.x0 > box.x1)
             return;
         const TetPlanes planes(job_.grid, job_.grid.tets[c]);
-        for (int32_t y = y_first; y <= y_last; ++y)
-            for (int32_t x = std::max(box.x0, 0); x <= box.x1; ++x) {
+        // Every ray of a perspective view leaves the eye, and every ray of an orthographic one
+        // runs along the view: that half of each plane's crossing is the cell's, computed once
+        // (the same bits as per pixel).
+        const bool shared_origin = job_.view.projection == Projection::perspective;
+        double numerator[4], along[4];
+        for (int f = 0; f < 4; ++f) {
+            numerator[f] = planes.offset[f] - dot(planes.normal[f], job_.rays.origin[0]);
+            along[f] = dot(planes.normal[f], job_.rays.direction[0]);
+        }
+        for (int32_t y = y_first; y <= y_last; ++y) {
+            int32_t x_first = 0, x_last = -1;
+            box.rowSpan(y, x_first, x_last);
+            for (int32_t x = std::max(x_first, 0); x <= x_last; ++x) {
                 const std::size_t pixel = std::size_t(y) * job_.view.width + uint32_t(x);
-                const Crossing crossing =
-                    crossTet(planes, job_.rays.origin[pixel], job_.rays.direction[pixel]);
+                for (int f = 0; f < 4; ++f)
+                    if (shared_origin)
+                        along[f] = dot(planes.normal[f], job_.rays.direction[pixel]);
+                    else
+                        numerator[f] =
+                            planes.offset[f] - dot(planes.normal[f], job_.rays.origin[pixel]);
+                const Crossing crossing = crossPlanes(numerator, along);
                 const double from = std::max(crossing.t_in, job_.rays.t_low[pixel]);
                 const double to = std::min(crossing.t_out, job_.rays.t_high[pixel]);
                 if (to > from)
                     visit(pixel, from, to, planes);
             }
+        }
     }
 
     SegmentColour segmentColour(std::size_t pixel, double from, double to,

@@ -13,35 +13,33 @@
 namespace vissort::detail {
 
 /// A tetrahedron's four face planes, each n . p >= offset on the inner side (face i opposite
-/// corner i, n unnormalized), and the corner values that make the scalar's barycentric form.
+/// corner i, n unnormalized), and its scalar as a linear function: corner 0's value plus the
+/// gradient's dot product with the offset from corner 0.
 struct TetPlanes {
     Vec3 normal[4];
     double offset[4];
-    double corner_height[4]; // n_i . corner_i - offset_i: the height of corner i over face i
-    double scalar[4];
+    Vec3 origin;    // corner 0
+    double scalar0; // the scalar there
+    Vec3 gradient{0, 0, 0};
 
     TetPlanes(const TetGrid& grid, const Tet& tet) {
+        origin = grid.points[tet[0]];
+        scalar0 = grid.scalars.empty() ? 0.0 : grid.scalars[tet[0]];
         for (int f = 0; f < 4; ++f) {
             const Vec3& a = grid.points[tet[kTetFaceCorners[f][0]]];
             normal[f] = cross(grid.points[tet[kTetFaceCorners[f][1]]] - a,
                               grid.points[tet[kTetFaceCorners[f][2]]] - a);
             offset[f] = dot(normal[f], a);
-            corner_height[f] = dot(normal[f], grid.points[tet[f]]) - offset[f];
-            scalar[f] = grid.scalars.empty() ? 0.0 : grid.scalars[tet[f]];
+            // Barycentric coordinate f is corner f's height over face f, normalized: its
+            // gradient is the face's normal over the corner's height.
+            const double corner_height = dot(normal[f], grid.points[tet[f]]) - offset[f];
+            const double value = grid.scalars.empty() ? 0.0 : grid.scalars[tet[f]];
+            gradient = gradient + normal[f] * (value / corner_height);
         }
     }
 
-    /// The scalar at p: its barycentric coordinates, each its height over a face over the
-    /// opposite corner's.
-    double scalarAt(const Vec3& p) const {
-        double s = 0, weights = 0;
-        for (int f = 0; f < 4; ++f) {
-            const double w = (dot(normal[f], p) - offset[f]) / corner_height[f];
-            s += w * scalar[f];
-            weights += w;
-        }
-        return s / weights; // the weights sum to 1 up to rounding
-    }
+    /// The scalar at p (linear in the cell: its corners' values interpolated barycentrically).
+    double scalarAt(const Vec3& p) const { return scalar0 + dot(gradient, p - origin); }
 };
 
 /// Where the ray o + t d is inside a tetrahedron: [t_in, t_out] (empty when t_in >= t_out),
@@ -52,21 +50,32 @@ struct Crossing {
     int exit_face = -1;
 };
 
-inline Crossing crossTet(const TetPlanes& planes, const Vec3& o, const Vec3& d) {
+/// crossTet from each face's numerator, offset - n . o, and n . d: where the ray meets plane f is
+/// numerator / along (callers whose rays share an origin or a direction compute one of the two
+/// once, with the same bits).
+inline Crossing crossPlanes(const double numerator[4], const double along[4]) {
     Crossing c;
     for (int f = 0; f < 4; ++f) {
-        const double along = dot(planes.normal[f], d);
-        const double at = (planes.offset[f] - dot(planes.normal[f], o)) / along; // meets the plane
-        if (along > 0) {
+        const double at = numerator[f] / along[f]; // meets the plane
+        if (along[f] > 0) {
             c.t_in = std::max(c.t_in, at); // entering the face's inner side
-        } else if (along < 0 && at < c.t_out) {
+        } else if (along[f] < 0 && at < c.t_out) {
             c.t_out = at;
             c.exit_face = f;
-        } else if (along == 0 && dot(planes.normal[f], o) < planes.offset[f]) {
+        } else if (along[f] == 0 && numerator[f] > 0) {
             c.t_in = std::numeric_limits<double>::infinity(); // parallel to the face, outside it
         }
     }
     return c;
+}
+
+inline Crossing crossTet(const TetPlanes& planes, const Vec3& o, const Vec3& d) {
+    double numerator[4], along[4];
+    for (int f = 0; f < 4; ++f) {
+        numerator[f] = planes.offset[f] - dot(planes.normal[f], o);
+        along[f] = dot(planes.normal[f], d);
+    }
+    return crossPlanes(numerator, along);
 }
 
 /// The ray through each pixel centre of a view (PixelRays: ViewProjection::pixelRay's very
