@@ -287,10 +287,11 @@ bool Viewer::onVolumeKey(const std::string& name) {
     } else if (name == "T") {
         volume.tf_name = nextTransferPreset(volume.tf_name);
         volume.settings.transfer = *loadTransferFunction(volume.tf_name).value;
-    } else if (name == "[") {
-        volume.settings.density /= kDensityStep;
-    } else if (name == "]") {
-        volume.settings.density *= kDensityStep;
+    } else if (name == "[" || name == "]") {
+        // Held within the panel slider's reach and far from 0 and infinity, which a held key
+        // would otherwise reach (an infinite density is refused, and would end the window).
+        volume.settings.density = std::clamp(
+            volume.settings.density * (name == "]" ? kDensityStep : 1 / kDensityStep), 1e-6, 1e6);
     } else if (name == "X") {
         overlays_.error_map = !overlays_.error_map;
     } else {

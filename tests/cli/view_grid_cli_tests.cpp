@@ -73,6 +73,16 @@ TEST_F(ViewGrid, KeysChangeMethodTransferFunctionAndDensity) {
               0);
 }
 
+// A held ] (or [) stops at a density of 1e6 (1e-6), short of the infinity the renderer refuses.
+TEST_F(ViewGrid, DensityKeysStopShortOfInfinity) {
+    std::string keys;
+    for (int i = 0; i < 2000; ++i)
+        keys += "0 key ]\n";
+    const RunResult r = viewAfter(keys, "dense.png");
+    ASSERT_EQ(r.code, 0) << r;
+    EXPECT_NE(r.out.find("density 1e+06"), std::string::npos) << r;
+}
+
 // X (and --show-errors): the map of `volume --reference raycast --error-map`, and the error
 // reported against the ray caster: none for vissort.
 TEST_F(ViewGrid, ErrorMapAgainstRaycast) {
