@@ -108,30 +108,37 @@ public:
         // Every ray of a perspective view leaves the eye, and every ray of an orthographic one
         // runs along the view: that half of each plane's crossing is the cell's, computed once
         // (the same bits as per pixel).
-        const bool shared_origin = job_.view.projection == Projection::perspective;
         double numerator[4], along[4];
         for (int f = 0; f < 4; ++f) {
             numerator[f] = planes.offset[f] - dot(planes.normal[f], job_.rays.origin[0]);
             along[f] = dot(planes.normal[f], job_.rays.direction[0]);
         }
-        for (int32_t y = y_first; y <= y_last; ++y) {
-            int32_t x_first = 0, x_last = -1;
-            box.rowSpan(y, x_first, x_last);
-            for (int32_t x = std::max(x_first, 0); x <= x_last; ++x) {
-                const std::size_t pixel = std::size_t(y) * job_.view.width + uint32_t(x);
-                for (int f = 0; f < 4; ++f)
-                    if (shared_origin)
-                        along[f] = dot(planes.normal[f], job_.rays.direction[pixel]);
-                    else
-                        numerator[f] =
-                            planes.offset[f] - dot(planes.normal[f], job_.rays.origin[pixel]);
-                const Crossing crossing = crossPlanes(numerator, along);
-                const double from = std::max(crossing.t_in, job_.rays.t_low[pixel]);
-                const double to = std::min(crossing.t_out, job_.rays.t_high[pixel]);
-                if (to > from)
-                    visit(pixel, from, to, planes);
+        // The pixel loop once for each kind of view, so that the choice is not made per pixel.
+        const auto walk = [&]<bool kSharedOrigin>() {
+            for (int32_t y = y_first; y <= y_last; ++y) {
+                int32_t x_first = 0, x_last = -1;
+                box.rowSpan(y, x_first, x_last);
+                for (int32_t x = std::max(x_first, 0); x <= x_last; ++x) {
+                    const std::size_t pixel = std::size_t(y) * job_.view.width + uint32_t(x);
+                    for (int f = 0; f < 4; ++f) {
+                        if constexpr (kSharedOrigin)
+                            along[f] = dot(planes.normal[f], job_.rays.direction[pixel]);
+                        else
+                            numerator[f] =
+                                planes.offset[f] - dot(planes.normal[f], job_.rays.origin[pixel]);
+                    }
+                    const Crossing crossing = crossPlanes(numerator, along);
+                    const double from = std::max(crossing.t_in, job_.rays.t_low[pixel]);
+                    const double to = std::min(crossing.t_out, job_.rays.t_high[pixel]);
+                    if (to > from)
+                        visit(pixel, from, to, planes);
+                }
             }
-        }
+        };
+        if (job_.view.projection == Projection::perspective)
+            walk.template operator()<true>();
+        else
+            walk.template operator()<false>();
     }
 
     SegmentColour segmentColour(std::size_t pixel, double from, double to,

@@ -41,6 +41,12 @@ MpvoOrder mpvoOrder(const TetGrid& grid, const std::vector<TetNeighbours>& neigh
 MpvoOrder faceConsistentOrder(const TetGrid& grid, const std::vector<TetNeighbours>& neighbours,
                               const ViewProjection& view, std::span<const uint32_t> preferred);
 
+/// The cells' faces as triangles, four a cell (cell c's are triangles 4c to 4c + 3, face f
+/// opposite corner f, corners in kTetFaceCorners' order), and each cell's range of them: the
+/// primitives of the cell order.
+TrianglePositions cellFaces(const TetGrid& grid);
+std::vector<PrimitiveRange> cellRanges(std::size_t cells);
+
 /// Vis-sort at cell level: each cell one primitive of its four faces (drawn by its front faces,
 /// queried by its back ones: ConvexFacingOracle), ordered by SceneOrderer with the given oracle
 /// from a start list every shared face agrees with, otherwise in last frame's order (the first

@@ -34,6 +34,8 @@ namespace {
 // (docs/volume.md, "Exactness").
 constexpr float kCellDepthTolerance = 1e-6f;
 
+} // namespace
+
 std::vector<PrimitiveRange> cellRanges(std::size_t cells) {
     std::vector<PrimitiveRange> ranges(cells);
     for (uint32_t c = 0; c < cells; ++c)
@@ -41,24 +43,27 @@ std::vector<PrimitiveRange> cellRanges(std::size_t cells) {
     return ranges;
 }
 
-} // namespace
-
-VisibilityCellOrder::VisibilityCellOrder(const TetGrid& grid, std::vector<TetNeighbours> neighbours,
-                                         std::unique_ptr<GeometryOracle> oracle)
-    : grid_(grid), neighbours_(std::move(neighbours)), cells_(cellRanges(grid.tets.size())),
-      oracle_(std::move(oracle)), facing_(*oracle_),
-      orderer_(cells_, uint32_t(4 * grid.tets.size()), OrderLevel::object, facing_) {
-    oracle_->setDepthTolerance(kCellDepthTolerance);
-    faces_.resize(4 * grid.tets.size());
+TrianglePositions cellFaces(const TetGrid& grid) {
+    TrianglePositions faces;
+    faces.resize(4 * grid.tets.size());
     std::size_t corner = 0;
     for (const Tet& tet : grid.tets)
         for (int f = 0; f < 4; ++f)
             for (int k = 0; k < 3; ++k, ++corner) {
                 const Vec3& p = grid.points[tet[kTetFaceCorners[f][k]]];
-                faces_.x[corner] = float(p.x);
-                faces_.y[corner] = float(p.y);
-                faces_.z[corner] = float(p.z);
+                faces.x[corner] = float(p.x);
+                faces.y[corner] = float(p.y);
+                faces.z[corner] = float(p.z);
             }
+    return faces;
+}
+
+VisibilityCellOrder::VisibilityCellOrder(const TetGrid& grid, std::vector<TetNeighbours> neighbours,
+                                         std::unique_ptr<GeometryOracle> oracle)
+    : grid_(grid), neighbours_(std::move(neighbours)), faces_(cellFaces(grid)),
+      cells_(cellRanges(grid.tets.size())), oracle_(std::move(oracle)), facing_(*oracle_),
+      orderer_(cells_, uint32_t(4 * grid.tets.size()), OrderLevel::object, facing_) {
+    oracle_->setDepthTolerance(kCellDepthTolerance);
 }
 
 const FrameOrder& VisibilityCellOrder::order(const ViewProjection& view) {

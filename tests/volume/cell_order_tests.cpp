@@ -82,20 +82,8 @@ TEST(FaceConsistentOrder, EveryFaceAgreesAndThePreferenceIsKeptWhereAllowed) {
 // The oracle over whole cells and the facing one over its own inner oracle, bound to the same
 // cells: random draws, then every cell queried, several times.
 void expectSameAnswers(const TetGrid& grid, const ViewProjection& view) {
-    TrianglePositions faces;
-    faces.resize(4 * grid.tets.size());
-    std::size_t corner = 0;
-    for (const Tet& tet : grid.tets)
-        for (int f = 0; f < 4; ++f)
-            for (int k = 0; k < 3; ++k, ++corner) {
-                const Vec3& p = grid.points[tet[kTetFaceCorners[f][k]]];
-                faces.x[corner] = float(p.x);
-                faces.y[corner] = float(p.y);
-                faces.z[corner] = float(p.z);
-            }
-    std::vector<PrimitiveRange> cells(grid.tets.size());
-    for (uint32_t c = 0; c < cells.size(); ++c)
-        cells[c] = {4 * c, 4};
+    const TrianglePositions faces = detail::cellFaces(grid);
+    const std::vector<PrimitiveRange> cells = detail::cellRanges(grid.tets.size());
     std::unique_ptr<GeometryOracle> whole = *makeOracle(OracleKind::cpu).value;
     std::unique_ptr<GeometryOracle> inner = *makeOracle(OracleKind::cpu).value;
     whole->setDepthTolerance(1e-6f);
