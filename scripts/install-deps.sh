@@ -7,6 +7,7 @@ packages=(
   ca-certificates
   g++ cmake make             # C++20 compiler and build
   libassimp-dev              # reading OBJ, PLY, STL, glTF/GLB and the rest
+  libmeshoptimizer-dev       # levels of detail: simplified meshes (meshopt_simplify)
   zlib1g-dev                 # assimp's CMake package links libz.so but does not depend on it
   libglm-dev                 # camera and transform maths
   nlohmann-json3-dev         # JSON scenes and --json output

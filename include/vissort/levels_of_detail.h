@@ -1,0 +1,111 @@
+#pragma once
+// Levels of detail of a scene's objects (docs/lod.md): each object's triangles simplified into a
+// chain of coarser meshes with their geometric error (meshoptimizer's meshopt_simplify, borders
+// and the seams between parts kept), ending with the object's bounding box; and the choice, frame
+// by frame, of the coarsest level whose error projects to at most a given number of pixels.
+//
+// The levels live in a scene of their own (LevelsOfDetail::scene): the same objects, in the same
+// order, each holding its levels one after another, finest first. Level 0 is the source object's
+// own triangles, in order. Renderers and orderers draw a frame's chosen range of each object.
+//
+// Layer: vissort::scene (the package's `scene` component; docs/architecture.md).
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "vissort/camera.h"
+#include "vissort/geometry.h"
+#include "vissort/result.h"
+#include "vissort/scene.h"
+
+namespace vissort {
+
+/// How the chains are built.
+struct LodOptions {
+    /// Each level aims at this fraction of the triangles of the level before it, in (0, 1).
+    float reduction = 0.25f;
+    /// At most this many levels an object, level 0 and the box included (2 to 16).
+    uint32_t max_levels = 8;
+};
+
+/// One level of an object: its range of LevelsOfDetail::scene's triangles and its geometric
+/// error in world units (how far its surface may lie from the source's: meshoptimizer's error,
+/// summed along the chain, as a bound; the box's is its diagonal).
+struct DetailLevel {
+    uint32_t first_triangle = 0;
+    uint32_t triangle_count = 0;
+    float error = 0.0f;
+    bool box = false; // the object's bounding box (12 triangles, made from each frame's corners)
+};
+
+class LevelsOfDetail {
+public:
+    /// The levels of every object of source (a valid scene). A dynamic source gives a dynamic
+    /// scene whose frames are the source's frames expanded (simplified levels move with the
+    /// source corners they keep; boxes follow each frame's corners). progress, when set, is
+    /// called with the share of the source's triangles done (0 to 1).
+    static LevelsOfDetail build(const Scene& source, const LodOptions& options = {},
+                                const std::function<void(double)>& progress = {});
+
+    /// Every object's levels, finest first: objects, names and colours as the source's, each
+    /// level of each drawn part a part of its own (so that normals never mix levels).
+    const Scene& scene() const { return scene_; }
+    std::span<const DetailLevel> levels(uint32_t object) const;
+    std::size_t objectCount() const { return level_start_.size() - 1; }
+    std::size_t sourceTriangleCount() const { return source_triangles_; }
+
+    /// The positions of scene() for a frame of the source (positions with the source's triangle
+    /// count) into out, and each object's bounds at that frame into bounds.
+    void expand(PositionsView source, TrianglePositions& out, std::vector<Bounds>& bounds) const;
+    /// The objects' bounds at t = 0 (the source's positions).
+    const std::vector<Bounds>& bounds() const { return bounds_; }
+    /// The triangle of scene() that is source triangle t at level 0 (t < sourceTriangleCount()).
+    uint32_t detailedTriangleOf(uint32_t source_triangle) const;
+
+    /// How scene()'s corners are made from the source's (shared with a dynamic scene's
+    /// animation).
+    struct Expansion;
+
+private:
+    Scene scene_;
+    std::vector<uint32_t> level_start_; // object -> its first entry of levels_; one past the last
+    std::vector<DetailLevel> levels_;
+    std::vector<Bounds> bounds_;
+    std::size_t source_triangles_ = 0;
+    std::shared_ptr<Expansion> expansion_;
+};
+
+/// The level of detail of each object, frame by frame: the coarsest level whose error projects
+/// to at most max_error_px pixels, seen through the frame's view from the nearest corner of the
+/// object's bounds, with hysteresis: a level is left for a coarser one only when the coarser
+/// one's error projects to at most (1 - hysteresis) x max_error_px, so that objects at the
+/// threshold do not switch back and forth along a path. The error never exceeds max_error_px.
+class LevelChooser {
+public:
+    static constexpr uint8_t kCulled = 0xFF; // no corner of the object's bounds in the view
+
+    /// max_error_px > 0; hysteresis in [0, 1).
+    explicit LevelChooser(float max_error_px, float hysteresis = 0.25f);
+
+    /// This frame's level of each object of levels (an index into levels.levels(o)), or kCulled
+    /// for an object wholly outside the view's frustum. bounds: each object's, this frame.
+    std::span<const uint8_t> choose(const LevelsOfDetail& levels, std::span<const Bounds> bounds,
+                                    const ViewProjection& view);
+    std::span<const uint8_t> chosen() const { return chosen_; }
+
+    /// The pixels that a world length at bounds projects to at most (the largest over the box's
+    /// depths, with the perspective's stretch at the frustum's edges); infinite when the box
+    /// reaches the eye plane.
+    static double pixelsPerUnit(const Bounds& bounds, const ViewProjection& view);
+    /// Whether no point of bounds can be in the view's frustum (conservative: false when unsure).
+    static bool outsideView(const Bounds& bounds, const ViewProjection& view);
+
+private:
+    float max_error_px_, hysteresis_;
+    std::vector<uint8_t> chosen_;
+};
+
+} // namespace vissort

@@ -1,0 +1,114 @@
+// Choosing each object's level of detail per frame (levels_of_detail.h).
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "vissort/levels_of_detail.h"
+
+namespace vissort {
+namespace {
+
+std::array<Vec3, 8> cornersOf(const Bounds& bounds) {
+    std::array<Vec3, 8> corners;
+    for (uint8_t c = 0; c < 8; ++c)
+        corners[c] = {c & 1 ? bounds.max.x : bounds.min.x, c & 2 ? bounds.max.y : bounds.min.y,
+                      c & 4 ? bounds.max.z : bounds.min.z};
+    return corners;
+}
+
+} // namespace
+
+LevelChooser::LevelChooser(float max_error_px, float hysteresis)
+    : max_error_px_(max_error_px), hysteresis_(hysteresis) {
+    if (!(max_error_px > 0.0f) || !std::isfinite(max_error_px))
+        throw std::invalid_argument("the level of detail's error must be a positive number of "
+                                    "pixels, got " +
+                                    std::to_string(max_error_px));
+    if (!(hysteresis >= 0.0f && hysteresis < 1.0f))
+        throw std::invalid_argument("the hysteresis must be in [0, 1), got " +
+                                    std::to_string(hysteresis));
+}
+
+double LevelChooser::pixelsPerUnit(const Bounds& bounds, const ViewProjection& view) {
+    const std::array<double, 16>& p = view.projection_matrix;
+    // Column-major: p[0] and p[5] scale eye x and y into clip space.
+    const double scale_x = std::abs(p[0]) * 0.5 * view.width;
+    const double scale_y = std::abs(p[5]) * 0.5 * view.height;
+    const double scale = std::max(scale_x, scale_y);
+    if (view.projection == Projection::orthographic)
+        return scale;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const Vec3& corner : cornersOf(bounds))
+        nearest = std::min(nearest, view.toClip(corner)[3]); // w: the depth along the view
+    if (!(nearest > 0.0))
+        return std::numeric_limits<double>::infinity();
+    // Nothing is drawn nearer than the near plane. A length at depth w spans scale / w pixels
+    // facing the eye; towards the frustum's edges a length along the view also moves on screen,
+    // by up to the tangent of the half-angle: sqrt(1 + tx^2 + ty^2) covers both.
+    nearest = std::max(nearest, view.near);
+    const double tx = p[0] != 0 ? 1.0 / std::abs(p[0]) : 0.0;
+    const double ty = p[5] != 0 ? 1.0 / std::abs(p[5]) : 0.0;
+    return scale / nearest * std::sqrt(1.0 + tx * tx + ty * ty);
+}
+
+bool LevelChooser::outsideView(const Bounds& bounds, const ViewProjection& view) {
+    if (bounds.isEmpty())
+        return true;
+    // Outside when every corner fails the same plane of the clip volume (-w <= x, y <= w,
+    // 0 <= z): then so does their hull. A margin keeps corners on a plane inside.
+    std::array<bool, 5> all_outside{true, true, true, true, true};
+    for (const Vec3& corner : cornersOf(bounds)) {
+        const std::array<double, 4> c = view.toClip(corner);
+        const double margin = 1e-6 * (std::abs(c[3]) + std::abs(c[0]) + std::abs(c[1]) + 1.0);
+        all_outside[0] = all_outside[0] && c[0] < -c[3] - margin;
+        all_outside[1] = all_outside[1] && c[0] > c[3] + margin;
+        all_outside[2] = all_outside[2] && c[1] < -c[3] - margin;
+        all_outside[3] = all_outside[3] && c[1] > c[3] + margin;
+        all_outside[4] = all_outside[4] && c[2] < -margin;
+    }
+    return std::find(all_outside.begin(), all_outside.end(), true) != all_outside.end();
+}
+
+std::span<const uint8_t> LevelChooser::choose(const LevelsOfDetail& levels,
+                                              std::span<const Bounds> bounds,
+                                              const ViewProjection& view) {
+    const std::size_t objects = levels.objectCount();
+    if (bounds.size() != objects)
+        throw std::invalid_argument("bounds for " + std::to_string(bounds.size()) +
+                                    " objects, the levels have " + std::to_string(objects));
+    const bool first_frame = chosen_.size() != objects;
+    if (first_frame)
+        chosen_.assign(objects, 0);
+    const double coarser_bound = double(max_error_px_) * (1.0 - double(hysteresis_));
+    for (uint32_t o = 0; o < objects; ++o) {
+        if (outsideView(bounds[o], view)) {
+            chosen_[o] = kCulled;
+            continue;
+        }
+        const std::span<const DetailLevel> chain = levels.levels(o);
+        const double per_unit = pixelsPerUnit(bounds[o], view);
+        // The coarsest level whose error projects within `limit` pixels (level 0: none).
+        const auto coarsestWithin = [&](double limit) {
+            uint8_t best = 0;
+            for (uint8_t l = 1; l < chain.size(); ++l)
+                if (double(chain[l].error) * per_unit <= limit)
+                    best = l;
+            return best;
+        };
+        uint8_t& level = chosen_[o];
+        if (first_frame || level == kCulled) {
+            level = coarsestWithin(max_error_px_);
+        } else if (double(chain[level].error) * per_unit > max_error_px_) {
+            level = coarsestWithin(max_error_px_); // too coarse now: finer at once
+        } else {
+            level = std::max(level, coarsestWithin(coarser_bound)); // coarser with a margin
+        }
+    }
+    return chosen_;
+}
+
+} // namespace vissort

@@ -1,0 +1,328 @@
+// Building levels of detail with meshoptimizer (levels_of_detail.h).
+
+#include "vissort/levels_of_detail.h"
+
+#include <meshoptimizer.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+namespace vissort {
+namespace {
+
+// A level that keeps more than this share of the triangles of the one before it is not worth
+// its memory: the chain stops there.
+constexpr double kLeastProgress = 0.85;
+
+// The 12 triangles of a box, as corners 0-7 (bit 0: x, bit 1: y, bit 2: z at max), each face's
+// two triangles facing out.
+constexpr std::array<std::array<uint8_t, 3>, 12> kBoxTriangles = {{
+    {0, 2, 1},
+    {1, 2, 3}, // z min
+    {4, 5, 6},
+    {5, 7, 6}, // z max
+    {0, 1, 4},
+    {1, 5, 4}, // y min
+    {2, 6, 3},
+    {3, 6, 7}, // y max
+    {0, 4, 2},
+    {2, 4, 6}, // x min
+    {1, 3, 5},
+    {3, 7, 5}, // x max
+}};
+
+Vec3 boxCorner(const Bounds& bounds, uint8_t corner) {
+    return {corner & 1 ? bounds.max.x : bounds.min.x, corner & 2 ? bounds.max.y : bounds.min.y,
+            corner & 4 ? bounds.max.z : bounds.min.z};
+}
+
+double diagonal(const Bounds& bounds) {
+    const double dx = bounds.max.x - bounds.min.x, dy = bounds.max.y - bounds.min.y,
+                 dz = bounds.max.z - bounds.min.z;
+    return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+// One drawn part's mesh, welded by position, with its chain of simplified index buffers.
+struct PartChain {
+    ObjectPart part;
+    std::vector<float> vertices;               // 3 per welded vertex
+    std::vector<uint32_t> vertex_corner;       // welded vertex -> a source corner
+    std::vector<std::vector<uint32_t>> levels; // index buffers, level 0 the source's own
+    std::vector<float> errors;                 // world units, summed along the chain
+    float scale = 1.0f;                        // meshopt_simplifyScale of the vertices
+
+    // Welds the part's corners (triangle ids [first, first + count) of positions).
+    void weld(PositionsView positions) {
+        const std::size_t corners = std::size_t(part.triangle_count) * 3;
+        std::vector<float> soup(corners * 3);
+        const std::size_t first = std::size_t(part.first_triangle) * 3;
+        for (std::size_t c = 0; c < corners; ++c) {
+            soup[c * 3] = positions.x[first + c];
+            soup[c * 3 + 1] = positions.y[first + c];
+            soup[c * 3 + 2] = positions.z[first + c];
+        }
+        std::vector<uint32_t> remap(corners);
+        const std::size_t unique = meshopt_generateVertexRemap(
+            remap.data(), nullptr, corners, soup.data(), corners, 3 * sizeof(float));
+        vertices.assign(unique * 3, 0.0f);
+        vertex_corner.assign(unique, 0);
+        std::vector<uint32_t> indices(corners);
+        for (std::size_t c = corners; c-- > 0;) { // the first corner of each vertex wins
+            const uint32_t v = remap[c];
+            indices[c] = v;
+            vertex_corner[v] = uint32_t(first + c);
+            std::copy_n(&soup[c * 3], 3, &vertices[std::size_t(v) * 3]);
+        }
+        // Level 0 keeps the source's corners as they are (not the welded vertices' first
+        // corners): its triangles are the source's, bit for bit.
+        levels.push_back(std::move(indices));
+        errors.push_back(0.0f);
+        scale = meshopt_simplifyScale(vertices.data(), unique, 3 * sizeof(float));
+    }
+
+    // The next level aiming at `reduction` of the last one's indices; false when the simplifier
+    // could not go far enough (or would leave nothing).
+    bool simplify(float reduction) {
+        const std::vector<uint32_t>& last = levels.back();
+        const std::size_t target =
+            std::max<std::size_t>(3, std::size_t(double(last.size() / 3) * reduction) * 3);
+        if (last.size() <= 3)
+            return false;
+        std::vector<uint32_t> next(last.size());
+        float relative = 0.0f;
+        // Borders locked: an open edge of the part (its seam with another part, or a hole) keeps
+        // its vertices, so parts stay joined and holes keep their outline. Any error allowed
+        // (1 = the part's extent): the chain records what each level costs, the selection
+        // decides where it is worth it.
+        const std::size_t count = meshopt_simplify(
+            next.data(), last.data(), last.size(), vertices.data(), vertices.size() / 3,
+            3 * sizeof(float), target, 1.0f, meshopt_SimplifyLockBorder, &relative);
+        if (count == 0 || double(count) > kLeastProgress * double(last.size()))
+            return false;
+        next.resize(count);
+        levels.push_back(std::move(next));
+        errors.push_back(errors.back() + relative * scale);
+        return true;
+    }
+};
+
+} // namespace
+
+struct LevelsOfDetail::Expansion {
+    std::vector<uint32_t> corner_source; // scene() corner -> source corner (box corners: 0)
+    std::vector<PrimitiveRange> source_objects, detailed_objects;
+    struct Box {
+        uint32_t object, first_triangle; // its object, its first triangle in scene()
+    };
+    std::vector<Box> boxes;
+
+    void expand(PositionsView source, TrianglePositions& out, std::vector<Bounds>& bounds) const {
+        out.resize(corner_source.size() / 3);
+        for (std::size_t c = 0; c < corner_source.size(); ++c) {
+            const uint32_t from = corner_source[c];
+            out.x[c] = source.x[from];
+            out.y[c] = source.y[from];
+            out.z[c] = source.z[from];
+        }
+        bounds.assign(source_objects.size(), Bounds{});
+        for (std::size_t o = 0; o < source_objects.size(); ++o) {
+            const PrimitiveRange range = source_objects[o];
+            for (std::size_t c = std::size_t(range.first_triangle) * 3;
+                 c < std::size_t(range.first_triangle + range.triangle_count) * 3; ++c)
+                bounds[o].add(source.corner(c));
+        }
+        for (const Box& box : boxes)
+            writeBox(bounds[box.object], box.first_triangle, out);
+    }
+
+    static void writeBox(const Bounds& bounds, uint32_t first_triangle, TrianglePositions& out) {
+        std::size_t c = std::size_t(first_triangle) * 3;
+        for (const auto& triangle : kBoxTriangles)
+            for (uint8_t corner : triangle) {
+                const Vec3 p = boxCorner(bounds, corner);
+                out.x[c] = float(p.x);
+                out.y[c] = float(p.y);
+                out.z[c] = float(p.z);
+                ++c;
+            }
+    }
+};
+
+namespace {
+
+// A dynamic source's frames, expanded into the levels' scene.
+class DetailedAnimation final : public Animation {
+public:
+    DetailedAnimation(std::shared_ptr<const Animation> source,
+                      std::shared_ptr<const LevelsOfDetail::Expansion> expansion)
+        : source_(std::move(source)), expansion_(std::move(expansion)) {}
+
+    void positionsAt(double t, TrianglePositions& out) const override {
+        TrianglePositions frame;
+        source_->positionsAt(t, frame);
+        std::vector<Bounds> bounds;
+        expansion_->expand(frame, out, bounds);
+    }
+
+private:
+    std::shared_ptr<const Animation> source_;
+    std::shared_ptr<const LevelsOfDetail::Expansion> expansion_;
+};
+
+} // namespace
+
+std::span<const DetailLevel> LevelsOfDetail::levels(uint32_t object) const {
+    return std::span(levels_).subspan(level_start_[object],
+                                      level_start_[object + 1] - level_start_[object]);
+}
+
+void LevelsOfDetail::expand(PositionsView source, TrianglePositions& out,
+                            std::vector<Bounds>& bounds) const {
+    if (source.triangleCount() != source_triangles_)
+        throw std::invalid_argument("positions have " + std::to_string(source.triangleCount()) +
+                                    " triangles, the levels' source " +
+                                    std::to_string(source_triangles_));
+    expansion_->expand(source, out, bounds);
+}
+
+uint32_t LevelsOfDetail::detailedTriangleOf(uint32_t source_triangle) const {
+    const std::vector<PrimitiveRange>& objects = expansion_->source_objects;
+    auto after =
+        std::upper_bound(objects.begin(), objects.end(), source_triangle,
+                         [](uint32_t t, const PrimitiveRange& o) { return t < o.first_triangle; });
+    const std::size_t o = std::size_t(after - objects.begin()) - 1;
+    return expansion_->detailed_objects[o].first_triangle +
+           (source_triangle - objects[o].first_triangle);
+}
+
+LevelsOfDetail LevelsOfDetail::build(const Scene& source, const LodOptions& options,
+                                     const std::function<void(double)>& progress) {
+    if (!(options.reduction > 0.0f && options.reduction < 1.0f))
+        throw std::invalid_argument("the levels' reduction must be in (0, 1), got " +
+                                    std::to_string(options.reduction));
+    if (options.max_levels < 2 || options.max_levels > 16)
+        throw std::invalid_argument("an object has 2 to 16 levels, not " +
+                                    std::to_string(options.max_levels));
+    LevelsOfDetail lod;
+    lod.source_triangles_ = source.triangleCount();
+    lod.scene_.name = source.name;
+    lod.scene_.camera = source.camera;
+    lod.scene_.cameras = source.cameras;
+    lod.scene_.camera_path = source.camera_path;
+    lod.level_start_.push_back(0);
+    lod.expansion_ = std::make_shared<Expansion>();
+    Expansion& expansion = *lod.expansion_;
+    const PositionsView positions = source.positions;
+    std::size_t done = 0;
+    for (const SceneObject& object : source.objects) {
+        expansion.source_objects.push_back({object.first_triangle, object.triangle_count});
+        Bounds bounds;
+        for (std::size_t c = std::size_t(object.first_triangle) * 3;
+             c < std::size_t(object.first_triangle + object.triangle_count) * 3; ++c)
+            bounds.add(positions.corner(c));
+        lod.bounds_.push_back(bounds);
+
+        std::vector<PartChain> chains;
+        for (const ObjectPart& part : object.drawnParts()) {
+            PartChain chain;
+            chain.part = part;
+            chain.weld(positions);
+            chains.push_back(std::move(chain));
+        }
+        // Every part one step further while the object as a whole still shrinks; the box last,
+        // when it is coarser than the coarsest level.
+        std::size_t level_count = 1;
+        std::size_t last_triangles = object.triangle_count;
+        while (level_count + 1 < options.max_levels) {
+            std::size_t triangles = 0;
+            bool any = false;
+            for (PartChain& chain : chains) {
+                if (chain.levels.size() == level_count)
+                    any = chain.simplify(options.reduction) || any;
+                if (chain.levels.size() == level_count) { // this part stays as it was
+                    chain.levels.push_back(chain.levels.back());
+                    chain.errors.push_back(chain.errors.back());
+                }
+                triangles += chain.levels.back().size() / 3;
+            }
+            if (!any || double(triangles) > kLeastProgress * double(last_triangles)) {
+                for (PartChain& chain : chains) {
+                    chain.levels.pop_back();
+                    chain.errors.pop_back();
+                }
+                break;
+            }
+            ++level_count;
+            last_triangles = triangles;
+        }
+
+        SceneObject detailed;
+        detailed.name = object.name;
+        detailed.colour = object.colour;
+        detailed.transparent = object.transparent;
+        detailed.first_triangle = uint32_t(lod.scene_.triangleCount());
+        TrianglePositions& out = lod.scene_.positions;
+        const auto addTriangle = [&](const std::array<uint32_t, 3>& source_corners) {
+            for (uint32_t corner : source_corners) {
+                out.x.push_back(positions.x[corner]);
+                out.y.push_back(positions.y[corner]);
+                out.z.push_back(positions.z[corner]);
+                expansion.corner_source.push_back(corner);
+            }
+        };
+        for (std::size_t level = 0; level < level_count; ++level) {
+            DetailLevel entry;
+            entry.first_triangle = uint32_t(out.triangleCount());
+            for (const PartChain& chain : chains) {
+                ObjectPart part = chain.part;
+                part.first_triangle = uint32_t(out.triangleCount());
+                const std::vector<uint32_t>& indices = chain.levels[level];
+                for (std::size_t i = 0; i < indices.size(); i += 3) {
+                    if (level == 0) { // the source's corners, in order
+                        const uint32_t c = chain.part.first_triangle * 3 + uint32_t(i);
+                        addTriangle({c, c + 1, c + 2});
+                    } else {
+                        addTriangle({chain.vertex_corner[indices[i]],
+                                     chain.vertex_corner[indices[i + 1]],
+                                     chain.vertex_corner[indices[i + 2]]});
+                    }
+                }
+                part.triangle_count = uint32_t(out.triangleCount()) - part.first_triangle;
+                entry.error = std::max(entry.error, chain.errors[level]);
+                if (part.triangle_count > 0)
+                    detailed.parts.push_back(part);
+            }
+            entry.triangle_count = uint32_t(out.triangleCount()) - entry.first_triangle;
+            lod.levels_.push_back(entry);
+        }
+        if (last_triangles > kBoxTriangles.size()) {
+            DetailLevel box;
+            box.box = true;
+            box.first_triangle = uint32_t(out.triangleCount());
+            box.triangle_count = uint32_t(kBoxTriangles.size());
+            box.error = float(diagonal(bounds));
+            out.resize(out.triangleCount() + kBoxTriangles.size());
+            expansion.corner_source.resize(expansion.corner_source.size() + 36, 0);
+            Expansion::writeBox(bounds, box.first_triangle, out);
+            expansion.boxes.push_back({uint32_t(lod.scene_.objects.size()), box.first_triangle});
+            detailed.parts.push_back(
+                {object.name + " (box)", object.colour, box.first_triangle, box.triangle_count});
+            lod.levels_.push_back(box);
+        }
+        detailed.triangle_count = uint32_t(out.triangleCount()) - detailed.first_triangle;
+        expansion.detailed_objects.push_back({detailed.first_triangle, detailed.triangle_count});
+        lod.scene_.objects.push_back(std::move(detailed));
+        lod.level_start_.push_back(uint32_t(lod.levels_.size()));
+        done += object.triangle_count;
+        if (progress)
+            progress(double(done) / double(std::max<std::size_t>(1, lod.source_triangles_)));
+    }
+    if (source.animation)
+        lod.scene_.animation =
+            std::make_shared<DetailedAnimation>(source.animation, lod.expansion_);
+    return lod;
+}
+
+} // namespace vissort
