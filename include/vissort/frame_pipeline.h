@@ -51,9 +51,12 @@ struct PipelineFrame {
 class FramePipeline {
 public:
     /// A pipeline of scene through context; scene must outlive it. Throws as
-    /// TransparencyRenderer's constructor does for settings it refuses.
+    /// TransparencyRenderer's constructor does for settings it refuses. levels: the scene's
+    /// levels of detail for settings with a lod_error, shared by every renderer of the
+    /// pipeline; built when first needed when null.
     FramePipeline(std::shared_ptr<GlContext> context, const Scene& scene,
-                  const FramePipelineDef& def);
+                  const FramePipelineDef& def,
+                  std::shared_ptr<const LevelsOfDetail> levels = nullptr);
     ~FramePipeline();
     FramePipeline(const FramePipeline&) = delete;
     FramePipeline& operator=(const FramePipeline&) = delete;

@@ -108,4 +108,47 @@ private:
     std::vector<uint8_t> chosen_;
 };
 
+/// A frame at the levels chosen, compact: each object's chosen level's triangles, one object
+/// after another (none for an object out of view), for orderers and detectors that take an
+/// object's triangles as one contiguous range (SceneOrderer::setObjects).
+struct DetailFrame {
+    TrianglePositions positions;
+    std::vector<PrimitiveRange> objects;     // each object's range of positions (empty: culled)
+    std::vector<uint32_t> detailed_triangle; // positions' triangle -> LevelsOfDetail::scene()'s
+    uint64_t triangles = 0;                  // positions.triangleCount()
+    uint32_t boxed_objects = 0, culled_objects = 0;
+};
+
+/// Levels of detail frame by frame for one source scene: each frame's positions of the levels'
+/// scene, every object's level (LevelChooser), and the frame gathered compactly on request.
+class DetailSelection {
+public:
+    /// source must outlive the selection; levels are source's (std::invalid_argument when their
+    /// object or triangle counts are not); max_error_px > 0 (LevelChooser).
+    DetailSelection(const Scene& source, std::shared_ptr<const LevelsOfDetail> levels,
+                    float max_error_px);
+
+    /// Chooses the levels of the frame at source_positions (the source's triangle count) seen
+    /// through view. The source's own positions (a static scene's frames, FrameDriver passing
+    /// them without a copy) cost no expansion: the levels' scene holds them already.
+    void select(PositionsView source_positions, const ViewProjection& view);
+
+    /// This frame's positions of the levels' scene; valid until the next select.
+    PositionsView levelsPositions() const { return positions_; }
+    std::span<const uint8_t> chosen() const { return chooser_.chosen(); }
+    const LevelsOfDetail& levels() const { return *levels_; }
+    const std::shared_ptr<const LevelsOfDetail>& sharedLevels() const { return levels_; }
+    /// The chosen levels gathered (DetailFrame), into a buffer reused from frame to frame.
+    const DetailFrame& gather();
+
+private:
+    const Scene* source_;
+    std::shared_ptr<const LevelsOfDetail> levels_;
+    LevelChooser chooser_;
+    TrianglePositions expanded_;
+    std::vector<Bounds> bounds_;
+    PositionsView positions_;
+    DetailFrame frame_;
+};
+
 } // namespace vissort

@@ -98,12 +98,22 @@ public:
     /// std::invalid_argument when start is not such a permutation.
     void seed(std::span<const uint32_t> start);
 
+    /// New ranges for the same objects (as many as the orderer was made with), from the next
+    /// frame on: a level of detail switched, or an object left out of view (an empty range). The
+    /// next frame's positions hold triangle_count triangles. Object ids keep their meaning, so
+    /// object orders (object level, multistage's first stage) still start from last frame's;
+    /// triangle orders start again from the depth-key order when any range changed. Throws
+    /// std::invalid_argument for another number of objects.
+    void setObjects(std::span<const PrimitiveRange> objects, uint32_t triangle_count);
+
     /// Reports the share of the frame's primitives ordered so far (0 to 1), after each Vis-sort
     /// iteration, on the thread that orders; for a progress display of a long frame. Multistage
     /// reports its triangle stage. An empty function stops the reports.
     void setProgress(std::function<void(double fraction)> report);
 
 private:
+    /// Multistage: each triangle's object (object_of_triangle_), from objects_.
+    void indexObjects();
     void orderMultistage(PositionsView positions, const ViewProjection& view, FrameOrder& frame);
     /// Multistage: the end of the group (an object, or the objects of one cycle of cycle_of_)
     /// that starts at object_order[first].
@@ -144,9 +154,10 @@ private:
     VisibilityOrder sorted_, group_sorted_;
     std::vector<PrimitiveRange> group_;
     std::vector<uint32_t> group_start_;
-    std::vector<PrimitiveRange> bound_; // primitives in start order, as bound
-    std::vector<uint32_t> identity_;    // 0..n-1: the start list of the bound primitives
-    std::vector<int32_t> cycle_of_;     // multistage: object -> its cycle in stage 1, or -1
+    std::vector<PrimitiveRange> bound_;     // primitives in start order, as bound
+    std::vector<uint32_t> identity_;        // 0..n-1: the start list of the bound primitives
+    std::vector<uint32_t> visible_, empty_; // stage 1's objects with triangles, and without
+    std::vector<int32_t> cycle_of_;         // multistage: object -> its cycle in stage 1, or -1
     // Multistage's groups (an object, or the objects of a cycle) and their start lists.
     static constexpr uint32_t kNoObject = 0xFFFFFFFFu;
     // Each triangle's object, or kNoObject (a triangle of no object); empty when objects share

@@ -35,6 +35,7 @@
 #include "vissort/geometry_oracle.h"
 #include "vissort/gl_context.h"
 #include "vissort/image.h"
+#include "vissort/levels_of_detail.h"
 #include "vissort/oracles.h"
 #include "vissort/scene.h"
 #include "vissort/scene_orderer.h"
@@ -137,6 +138,10 @@ struct RenderSettings {
     /// off for unsorted and centroid (measured as the wrong answers they are). The other methods
     /// ignore it.
     enum class OrderCheck { automatic, on, off } check = OrderCheck::automatic;
+    /// Levels of detail (levels_of_detail.h, docs/lod.md): each object drawn, and ordered, at the
+    /// coarsest level whose geometric error projects to at most this many pixels, and objects
+    /// wholly out of view left out; 0: every triangle of every object, as without levels.
+    float lod_error = 0.0f;
 
     /// Every setting equal: a renderer made with one renders the other's images (the viewer
     /// keeps its renderer while the settings stay the same).
@@ -173,6 +178,9 @@ struct RenderStats {
     uint64_t repaired_pixels = 0; // vissort: pixels where the GPU's depths contradicted the
                                   // order (near an edge, or a tie), composited again
     VisSortStats order;           // vissort: the ordering's statistics
+    uint64_t triangles = 0;       // triangles drawn (opaque and transparent), every level chosen
+    uint32_t boxed_objects = 0;   // with lod_error: objects drawn as their bounding box
+    uint32_t culled_objects = 0;  // with lod_error: objects wholly out of view, not drawn
 };
 
 /// Every field of RenderStats but `order` (whose own table is vis_sort.h's) by name, in one
@@ -185,15 +193,21 @@ template <class Visit> void forEachStat(const RenderStats& s, Visit&& visit) {
     visit("fragments", s.fragments);
     visit("groups", s.groups);
     visit("repaired_pixels", s.repaired_pixels);
+    visit("triangles", s.triangles);
+    visit("boxed_objects", s.boxed_objects);
+    visit("culled_objects", s.culled_objects);
 }
 
 class TransparencyRenderer {
 public:
     /// A renderer of scene through context. Throws std::invalid_argument for bad settings (alpha
-    /// outside (0, 1], samples not 1, 2, 4 or 8) and std::runtime_error when OpenGL lacks what a
-    /// method needs.
+    /// outside (0, 1], samples not 1, 2, 4 or 8, lod_error negative or not finite) and
+    /// std::runtime_error when OpenGL lacks what a method needs. With settings.lod_error, levels
+    /// are scene's levels of detail (LevelsOfDetail::build(scene), shared by the renderers of
+    /// one scene: building them takes a while), built here when null.
     TransparencyRenderer(std::shared_ptr<GlContext> context, const Scene& scene,
-                         const RenderSettings& settings);
+                         const RenderSettings& settings,
+                         std::shared_ptr<const LevelsOfDetail> levels = nullptr);
     ~TransparencyRenderer();
     TransparencyRenderer(const TransparencyRenderer&) = delete;
     TransparencyRenderer& operator=(const TransparencyRenderer&) = delete;
@@ -211,6 +225,12 @@ public:
     /// empty: none, nothing dimmed. Ids beyond the scene are ignored. Drawn over colour_cycles'
     /// colours, which are not dimmed.
     void setHighlightedTriangles(std::span<const uint32_t> triangles);
+
+    /// With levels of detail: the last frame's level of each object (an index into
+    /// LevelsOfDetail::levels(o), or LevelChooser::kCulled), and the levels; empty and null
+    /// without (RenderSettings::lod_error 0).
+    std::span<const uint8_t> chosenLevels() const;
+    const LevelsOfDetail* levels() const;
 
     /// Reports the share of a frame's order done (SceneOrderer::setProgress) while vissort
     /// orders; other methods order nothing and never call it.

@@ -9,7 +9,9 @@
 //    and the collision time per frame (vissort's detector);
 //  - figure 6: frame time against depth complexity, vissort against depth peeling and the other
 //    methods (transparency_bench.h);
-//  - queries per primitive per coherent frame on each path (the paper's "almost linear" claim).
+//  - queries per primitive per coherent frame on each path (the paper's "almost linear" claim);
+//  - the power plant ten times over (builtin:powerplant?scale=10, 7.9M triangles) along the same
+//    walkthrough with levels of detail (levels_of_detail.h, issue 37): the paper's future work.
 
 #include <cstdint>
 #include <functional>
@@ -46,6 +48,7 @@ struct PaperFrame {
     std::optional<double> gl_order_ms;
     std::optional<double> render_ms;  // vissort's transparency renderer, whole frame (OpenGL)
     std::optional<double> collide_ms; // vissort's collision detector (PaperPath::collide)
+    uint64_t triangles_drawn = 0;     // ordered and drawn: every triangle, or the levels chosen
 };
 
 /// A scene walked frame by frame along a camera path.
@@ -60,6 +63,11 @@ struct PaperPath {
     uint64_t triangles = 0;
     std::vector<PaperReported> reported;
     bool collide = false; // measure vissort's collision detector too (a dynamic scene)
+    /// Levels of detail within this many pixels (0: every triangle); the ordering's time then
+    /// includes choosing the levels and gathering their triangles.
+    float lod_error = 0.0f;
+    double levels_ms = 0;  // building the levels of detail, once
+    bool gl_oracle = true; // ordered through the gl oracle too (its first gl_frames frames)
     std::vector<PaperFrame> frames;
 };
 
@@ -69,6 +77,9 @@ struct PaperBenchSettings {
     int frames = 0;                     // per path; 0: 60 (quick: 6)
     int gl_frames = -1;                 // of those through the gl oracle; -1: paperGlFrames's
     uint32_t width = 0, height = 0;     // 0: 1600x1200, the paper's (quick: 320x240)
+    /// The scale-10 plant's level of detail error in pixels (0: every triangle, slow); the
+    /// paper's own paths are measured at full detail, as the paper's were.
+    float lod_error = 1.0f;
 };
 
 struct PaperBenchResult {

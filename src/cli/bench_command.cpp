@@ -58,6 +58,12 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options) {
         ->add_option("--out", options.out_dir,
                      "paper: the folder for paper.json, paper.csv, figure6.csv and the plots")
         ->capture_default_str();
+    command
+        ->add_option("--lod-error", options.lod_error,
+                     "paper: the ten-times plant's levels of detail, within PX pixels (0: every "
+                     "triangle); the paper's own paths are at full detail")
+        ->option_text("PX")
+        ->capture_default_str();
     command->add_flag("--quick", options.quick,
                       "paper: a small power plant, 320x240, 6 frames a path, figure 6 at two "
                       "depths (under two minutes)");

@@ -67,7 +67,8 @@ nlohmann::json pathJson(const PaperPath& path) {
                           {"gl_queries", f.gl_queries ? nlohmann::json(*f.gl_queries) : nullptr},
                           {"gl_order_ms", optionalJson(f.gl_order_ms)},
                           {"render_ms", optionalJson(f.render_ms)},
-                          {"collide_ms", optionalJson(f.collide_ms)}});
+                          {"collide_ms", optionalJson(f.collide_ms)},
+                          {"triangles_drawn", f.triangles_drawn}});
     nlohmann::json reported = nlohmann::json::array();
     for (const bench::PaperReported& r : path.reported)
         reported.push_back({{"what", r.what}, {"low_ms", r.low_ms}, {"high_ms", r.high_ms}});
@@ -80,6 +81,8 @@ nlohmann::json pathJson(const PaperPath& path) {
             {"height", path.height},
             {"primitives", path.primitives},
             {"triangles", path.triangles},
+            {"lod_error", path.lod_error},
+            {"levels_ms", path.levels_ms},
             {"paper", reported},
             {"coherent_medians",
              {{"cpu_order_ms", optionalJson(s.cpu_order_ms)},
@@ -108,7 +111,7 @@ std::string pathsCsv(const std::vector<PaperPath>& paths) {
     std::ostringstream csv;
     csv << "path,figure,scene,level,width,height,primitives,frame,cpu_queries,cpu_cycle_queries,"
            "cpu_order_ms,"
-           "gl_queries,gl_order_ms,render_ms,collide_ms\n";
+           "gl_queries,gl_order_ms,render_ms,collide_ms,lod_error,triangles_drawn\n";
     for (const PaperPath& path : paths)
         for (const PaperFrame& f : path.frames)
             csv << path.name << ',' << path.figure << ',' << path.specification << ','
@@ -117,7 +120,7 @@ std::string pathsCsv(const std::vector<PaperPath>& paths) {
                 << f.cpu_cycle_queries << ',' << f.cpu_order_ms << ','
                 << (f.gl_queries ? std::to_string(*f.gl_queries) : std::string()) << ','
                 << cell(f.gl_order_ms) << ',' << cell(f.render_ms) << ',' << cell(f.collide_ms)
-                << '\n';
+                << ',' << path.lod_error << ',' << f.triangles_drawn << '\n';
     return csv.str();
 }
 
@@ -167,6 +170,13 @@ Status writePlots(const std::filesystem::path& out, const bench::PaperBenchResul
         frameSeries("ordering, cpu oracle", plant, cpu_order_ms),
         frameSeries("ordering, gl oracle", plant, gl_order_ms),
         frameSeries("frame with transparency", plant, render_ms)};
+    for (const PaperPath& path : result.paths)
+        if (path.lod_error > 0) { // the ten-times plant, on the same walkthrough
+            plant_ms.push_back(
+                frameSeries("x10, levels of detail: ordering, cpu oracle", path, cpu_order_ms));
+            plant_ms.push_back(
+                frameSeries("x10, levels of detail: frame with transparency", path, render_ms));
+        }
     addReported(plant_ms, plant);
     const std::string plant_what = "figure 5 (left): " + plant.specification + " walkthrough, " +
                                    std::to_string(plant.width) + "x" + std::to_string(plant.height);
@@ -185,6 +195,8 @@ Status writePlots(const std::filesystem::path& out, const bench::PaperBenchResul
     std::vector<samples::PlotSeries> bunnies_ms, bunnies_queries;
     for (std::size_t i = 1; i < result.paths.size(); ++i) {
         const PaperPath& path = result.paths[i];
+        if (path.name.rfind("bunnies", 0) != 0)
+            continue;
         const std::string viewer = path.path == CameraPath::fixed ? "static" : "moving";
         bunnies_ms.push_back(frameSeries(viewer + ": ordering", path, cpu_order_ms));
         bunnies_ms.push_back(frameSeries(viewer + ": with transparency", path, render_ms));
@@ -281,6 +293,28 @@ void printSummary(const std::vector<PaperPath>& paths) {
                   << std::setw(13) << shown(s.render_ms) << std::setw(12) << shown(s.collide_ms)
                   << "   " << paper << '\n';
     }
+    // The levels of detail against the plant at full detail (issue 37's targets: at most 2x).
+    const bench::PaperSummary plant = bench::summarize(paths[0]);
+    for (const PaperPath& path : paths) {
+        if (!(path.lod_error > 0))
+            continue;
+        const bench::PaperSummary s = bench::summarize(path);
+        std::cout << path.name << ": " << path.specification << ", " << path.triangles
+                  << " triangles, levels of detail within " << path.lod_error << " px (built in "
+                  << shown(path.levels_ms / 1000, 1) << " s)";
+        std::vector<double> drawn;
+        for (const PaperFrame& f : path.frames)
+            if (f.frame > 0)
+                drawn.push_back(double(f.triangles_drawn));
+        if (!drawn.empty())
+            std::cout << ", " << shown(bench::median(drawn), 0) << " ordered a frame";
+        const auto ratio = [](const std::optional<double>& a, const std::optional<double>& b) {
+            return a && b && *b > 0 ? std::optional(*a / *b) : std::nullopt;
+        };
+        std::cout << "; against " << paths[0].name << " at full detail: ordering "
+                  << shown(ratio(s.cpu_order_ms, plant.cpu_order_ms), 2) << "x, frame "
+                  << shown(ratio(s.render_ms, plant.render_ms), 2) << "x\n";
+    }
 }
 
 } // namespace
@@ -302,6 +336,11 @@ int runPaperBench(const BenchOptions& options) {
         if (auto error = parseSize(*options.size, settings.width, settings.height); !error.empty())
             return fail(kExitUsage, error);
     }
+    if (!(options.lod_error >= 0 && options.lod_error <= 1e6))
+        return fail(kExitUsage, "--lod-error must be 0 (every triangle) or a number of pixels up "
+                                "to 1e6, got " +
+                                    std::to_string(options.lod_error));
+    settings.lod_error = float(options.lod_error);
     const std::filesystem::path out = options.out_dir;
     std::error_code error;
     std::filesystem::create_directories(out, error);

@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <memory>
 #include <string>
 
 #include "cli/cli_common.h"
@@ -10,7 +11,9 @@
 
 namespace vissort {
 struct RenderSettings; // transparency_renderer.h: builds with OpenGL only
-}
+struct RenderStats;
+class LevelsOfDetail;
+} // namespace vissort
 
 namespace vissort::cli {
 
@@ -24,6 +27,7 @@ struct OrderOptions {
     JsonOutput json;
     std::string csv;
     std::string dump_path;
+    double lod_error = 0; // pixels; 0: every triangle
 };
 CLI::App* addOrderCommand(CLI::App& app, OrderOptions& options);
 int runOrder(const OrderOptions& options);
@@ -54,6 +58,7 @@ struct BenchOptions {
     JsonOutput json;
     std::string out_dir = "paper-bench"; // paper: where its files go
     bool quick = false;                  // paper: small scenes, few frames
+    double lod_error = 1;                // paper: the scale-10 plant's levels of detail
 };
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options);
 int runBench(const BenchOptions& options);
@@ -93,9 +98,10 @@ struct RendererOptions {
     double list_memory_mib = 3072;
     bool colour_cycles = false;
     std::string background; // empty: kDefaultBackground
+    double lod_error = 0;   // pixels; 0: no levels of detail
 };
 /// Adds --method (its help: method_help) --level --oracle --all-transparent --alpha
-/// --background --shading --samples --check --list-memory --colour-cycles.
+/// --background --shading --samples --check --list-memory --colour-cycles --lod-error.
 void addRendererOptions(CLI::App& command, RendererOptions& options,
                         const std::string& method_help);
 /// Empty on success, else a one-line message naming the bad option. The method is left to the
@@ -106,6 +112,14 @@ std::string resolveRendererOptions(const RendererOptions& options, bool allow_al
 /// note when nothing is transparent, a warning when transparent objects have alpha 0 (unseen).
 void printRenderHeader(const std::string& specification, const Scene& scene,
                        const RenderSettings& settings, const ChosenView& view);
+/// The scene's levels of detail when --lod-error asks for them (lod_error > 0), built with a
+/// progress bar; null otherwise.
+std::shared_ptr<const LevelsOfDetail> buildLevels(const Scene& scene, double lod_error);
+/// "313060 of 817948 triangles drawn (2 objects as boxes, 1164 out of view)" (verb: "drawn").
+std::string levelsLine(uint64_t triangles, uint32_t boxed_objects, uint32_t culled_objects,
+                       std::size_t scene_triangles, const std::string& verb);
+/// Empty when --lod-error's value is usable (0 to 1e6 pixels), else why not.
+std::string checkLodError(double lod_error);
 
 struct RenderOptions {
     std::string scene;

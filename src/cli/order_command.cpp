@@ -1,10 +1,12 @@
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <iostream>
 #include <numeric>
 
 #include <nlohmann/json.hpp>
 
+#include "cli/command_line_errors.h"
 #include "cli/commands.h"
 #include "cli/csv_output.h"
 #include "cli/environment.h"
@@ -15,6 +17,7 @@
 #include "cli/stats_output.h"
 #include "cli/text_output.h"
 #include "vissort/frame_driver.h"
+#include "vissort/levels_of_detail.h"
 #include "vissort/oracles.h"
 #include "vissort/scene_orderer.h"
 
@@ -98,6 +101,13 @@ CLI::App* addOrderCommand(CLI::App& app, OrderOptions& options) {
     addCsvOption(*command, options.csv, columnList(orderCsvColumns()));
     command->add_option("--dump-primitives", options.dump_path,
                         "Write the last frame's primitives as OBJ, one group per id");
+    command
+        ->add_option("--lod-error", options.lod_error,
+                     "Levels of detail: order each object at its coarsest level whose error "
+                     "projects to at most PX pixels, objects out of view last without a query "
+                     "(docs/lod.md); triangle ids are then the levels' scene's; 0: every triangle")
+        ->option_text("PX")
+        ->capture_default_str();
     return command;
 }
 
@@ -110,6 +120,8 @@ int runOrder(const OrderOptions& options) {
     if (!parsed_oracle)
         return fail(kExitUsage, "--oracle: " + parsed_oracle.error);
     const OracleKind oracle_kind = *parsed_oracle.value;
+    if (std::string error = checkLodError(options.lod_error); !error.empty())
+        return fail(kExitUsage, error);
     std::optional<Scene> scene;
     ChosenView view;
     if (const int code =
@@ -124,6 +136,10 @@ int runOrder(const OrderOptions& options) {
     std::unique_ptr<GeometryOracle> oracle = std::move(*made.value);
     SceneOrderer orderer(scene->objectPrimitives(), uint32_t(scene->triangleCount()), level,
                          *oracle);
+    // With levels of detail each frame orders the levels chosen, gathered (DetailSelection).
+    std::unique_ptr<DetailSelection> selection;
+    if (const std::shared_ptr<const LevelsOfDetail> levels = buildLevels(*scene, options.lod_error))
+        selection = std::make_unique<DetailSelection>(*scene, levels, float(options.lod_error));
     const std::size_t object_count = scene->objects.size();
     std::vector<std::string> object_names;
     for (const SceneObject& object : scene->objects)
@@ -136,7 +152,10 @@ int runOrder(const OrderOptions& options) {
     std::cout << options.scene << ": " << counted(object_count, "object") << ", "
               << counted(scene->triangleCount(), "triangle") << "; " << orderLevelName(level)
               << " level, " << oracleName(oracle_kind) << " oracle, " << view.width << 'x'
-              << view.height << ", " << counted(view.frames, "frame") << '\n'
+              << view.height
+              << (selection ? ", levels of detail within " + formatNumber(options.lod_error) + " px"
+                            : std::string())
+              << ", " << counted(view.frames, "frame") << '\n'
               << cameraLine(view) << '\n';
     FrameDriver driver(*scene, view.camera, view.path, view.width, view.height);
     nlohmann::json frames = nlohmann::json::array();
@@ -150,7 +169,28 @@ int runOrder(const OrderOptions& options) {
     for (int f = 0; f < view.frames; ++f) {
         frame = f;
         driver.seek(f);
-        orderer.orderFrame(driver.positions(), driver.view(), last);
+        PositionsView ordered = driver.positions();
+        if (selection) {
+            const auto start = std::chrono::steady_clock::now();
+            selection->select(driver.positions(), driver.view());
+            const DetailFrame& chosen = selection->gather();
+            orderer.setObjects(chosen.objects, uint32_t(chosen.triangles));
+            orderer.orderFrame(chosen.positions, driver.view(), last);
+            // Triangle ids as the levels' scene's; the time includes choosing and gathering.
+            if (level != OrderLevel::object) {
+                for (uint32_t& t : last.order)
+                    t = chosen.detailed_triangle[t];
+                for (std::vector<uint32_t>& cycle : last.cycles)
+                    for (uint32_t& t : cycle)
+                        t = chosen.detailed_triangle[t];
+            }
+            last.milliseconds =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count();
+            ordered = chosen.positions;
+        } else {
+            orderer.orderFrame(driver.positions(), driver.view(), last);
+        }
         progress.update(f + 1);
         total_ms += last.milliseconds;
         std::vector<double> row = withStatValues(
@@ -161,6 +201,13 @@ int runOrder(const OrderOptions& options) {
         if (view.frames > 1) {
             progress.clear();
             printFrame(f, last);
+            if (selection) {
+                const DetailFrame& chosen = selection->gather();
+                std::cout << "  "
+                          << levelsLine(chosen.triangles, chosen.boxed_objects,
+                                        chosen.culled_objects, scene->triangleCount(), "ordered")
+                          << '\n';
+            }
             if (!options.json.path.empty()) {
                 frames.push_back(frameRecord(last, frame_orders.size(), driver.camera()));
                 frame_orders.push_back(last.order);
@@ -204,11 +251,25 @@ int runOrder(const OrderOptions& options) {
         if (const int code = csv.write(options.csv); code != kExitOk)
             return code;
     if (!options.dump_path.empty()) {
-        const auto primitives = primitivesOf(*scene, level);
+        // With levels: the levels' scene at the last frame, each object's chosen level.
+        std::vector<PrimitiveRange> primitives = primitivesOf(*scene, level);
+        PositionsView positions = driver.positions();
+        if (selection) {
+            positions = selection->levelsPositions();
+            const std::span<const uint8_t> chosen = selection->chosen();
+            primitives.assign(level == OrderLevel::object ? chosen.size() : 0, {});
+            for (uint32_t o = 0; o < chosen.size() && level == OrderLevel::object; ++o)
+                if (chosen[o] != LevelChooser::kCulled) {
+                    const DetailLevel& l = selection->levels().levels(o)[chosen[o]];
+                    primitives[o] = {l.first_triangle, l.triangle_count};
+                }
+            if (level != OrderLevel::object)
+                primitives = primitivesOf(selection->levels().scene(), level);
+        }
         errno = 0;
         if (!writePrimitivesObj(options.dump_path,
                                 "vissort primitives: one group per primitive id, world space",
-                                driver.positions(), primitives))
+                                positions, primitives))
             return fail(kExitFailure, cannotWrite(options.dump_path));
     }
     return kExitOk;

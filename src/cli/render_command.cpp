@@ -205,8 +205,8 @@ int runRender(const RenderOptions& options) {
     def.highlight_collisions = options.highlight_collisions;
     if (!options.reference.empty())
         def.reference = reference_method;
-    FramePipeline pipeline(*context.value, *scene, def);
     printRenderHeader(options.scene, *scene, settings, view);
+    FramePipeline pipeline(*context.value, *scene, def, buildLevels(*scene, settings.lod_error));
     FrameDriver driver(*scene, view.camera, view.path, view.width, view.height);
     nlohmann::json frames = nlohmann::json::array();
     std::vector<double> total_ms;
@@ -236,6 +236,10 @@ int runRender(const RenderOptions& options) {
             std::cout << ", " << counted(stats.groups, "group") << " composited per pixel";
         if (stats.repaired_pixels > 0)
             std::cout << ", " << counted(stats.repaired_pixels, "pixel") << " repaired";
+        if (settings.lod_error > 0)
+            std::cout << "; "
+                      << levelsLine(stats.triangles, stats.boxed_objects, stats.culled_objects,
+                                    scene->triangleCount(), "drawn");
         total_ms.push_back(stats.total_ms);
         std::vector<double> row =
             withStatValues(withStatValues({double(f), driver.time()}, stats), stats.order);

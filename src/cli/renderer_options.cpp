@@ -8,7 +8,9 @@
 #include "cli/command_line_errors.h"
 #include "cli/commands.h"
 #include "cli/environment.h"
+#include "cli/progress.h"
 #include "cli/text_output.h"
+#include "vissort/levels_of_detail.h"
 #include "vissort/transparency_renderer.h" // names and settings only: header-only without GL
 
 namespace vissort::cli {
@@ -54,9 +56,39 @@ void addRendererOptions(CLI::App& command, RendererOptions& options,
     command.add_flag("--colour-cycles", options.colour_cycles,
                      "vissort: draw the primitives of each cycle of the order in a colour of "
                      "their own (at their alpha)");
+    command
+        .add_option("--lod-error", options.lod_error,
+                    "Levels of detail: draw and order each object at its coarsest level whose "
+                    "error projects to at most PX pixels, objects out of view left out "
+                    "(docs/lod.md); 0: every triangle")
+        ->option_text("PX")
+        ->capture_default_str();
+}
+
+std::shared_ptr<const LevelsOfDetail> buildLevels(const Scene& scene, double lod_error) {
+    if (!(lod_error > 0))
+        return nullptr;
+    Progress progress("levels of detail", scene.triangleCount(), "triangle");
+    return std::make_shared<const LevelsOfDetail>(LevelsOfDetail::build(
+        scene, {}, [&](double share) { progress.update(share * double(scene.triangleCount())); }));
+}
+
+std::string levelsLine(uint64_t triangles, uint32_t boxed_objects, uint32_t culled_objects,
+                       std::size_t scene_triangles, const std::string& verb) {
+    return std::to_string(triangles) + " of " + std::to_string(scene_triangles) + " triangles " +
+           verb + " (" + counted(boxed_objects, "object") + " as boxes, " +
+           std::to_string(culled_objects) + " out of view)";
+}
+
+std::string checkLodError(double lod_error) {
+    if (lod_error >= 0 && lod_error <= 1e6)
+        return "";
+    return "--lod-error must be 0 (every triangle) or a number of pixels up to 1e6, got " +
+           formatNumber(lod_error);
 }
 
 #if VISSORT_WITH_GL
+
 void printRenderHeader(const std::string& specification, const Scene& scene,
                        const RenderSettings& settings, const ChosenView& view) {
     std::size_t transparent = 0, invisible = 0;
@@ -74,6 +106,9 @@ void printRenderHeader(const std::string& specification, const Scene& scene,
               << " level, " << view.width << 'x' << view.height
               << (settings.samples > 1 ? " at " + std::to_string(settings.samples) + " samples"
                                        : std::string())
+              << (settings.lod_error > 0
+                      ? ", levels of detail within " + formatNumber(settings.lod_error) + " px"
+                      : std::string())
               << ", " << counted(view.frames, "frame") << '\n'
               << cameraLine(view) << '\n';
     if (transparent == 0) // a hint, not a problem: the picture is right
@@ -133,6 +168,9 @@ std::string resolveRendererOptions(const RendererOptions& options, bool allow_al
     if (options.colour_cycles && options.method != "vissort")
         return "--colour-cycles colours vissort's cycles: not with --method " + options.method;
     settings.colour_cycles = options.colour_cycles;
+    if (std::string error = checkLodError(options.lod_error); !error.empty())
+        return error;
+    settings.lod_error = float(options.lod_error);
     settings.all_transparent = options.all_transparent;
     settings.alpha = float(options.alpha);
     const Result<Rgba> background = parseBackground(options.background);

@@ -3,6 +3,7 @@
 // scene_orderer_coherence.cpp (stage 1 from last frame's order and cycles) and
 // scene_orderer_multistage.cpp (the triangles of each object or object cycle).
 
+#include <algorithm>
 #include <cassert>
 #include <chrono>
 #include <stdexcept>
@@ -26,6 +27,37 @@ SceneOrderer::SceneOrderer(std::span<const PrimitiveRange> objects, uint32_t tri
                            OrderLevel level, GeometryOracle& oracle)
     : objects_(objects.begin(), objects.end()), triangle_count_(triangle_count), level_(level),
       oracle_(oracle) {
+    indexObjects();
+}
+
+void SceneOrderer::setObjects(std::span<const PrimitiveRange> objects, uint32_t triangle_count) {
+    if (objects.size() != objects_.size())
+        throw std::invalid_argument("SceneOrderer::setObjects: " + std::to_string(objects.size()) +
+                                    " objects, the orderer orders " +
+                                    std::to_string(objects_.size()));
+    const bool same = triangle_count == triangle_count_ &&
+                      std::equal(objects.begin(), objects.end(), objects_.begin(),
+                                 [](const PrimitiveRange& a, const PrimitiveRange& b) {
+                                     return a.first_triangle == b.first_triangle &&
+                                            a.triangle_count == b.triangle_count;
+                                 });
+    if (same)
+        return;
+    objects_.assign(objects.begin(), objects.end());
+    triangle_count_ = triangle_count;
+    // Object ids keep their meaning: last frame's object order still seeds this one. Triangle
+    // ids do not: orders of triangles start again from the depth-key order.
+    previous_triangle_order_.clear();
+    if (level_ == OrderLevel::triangle) {
+        previous_order_.clear();
+        sorted_.cycles.clear();
+        sorted_.cycle_witnesses.clear();
+    }
+    indexObjects();
+}
+
+void SceneOrderer::indexObjects() {
+    object_of_triangle_.clear();
     if (level_ != OrderLevel::multistage)
         return;
     object_of_triangle_.assign(triangle_count_, kNoObject);

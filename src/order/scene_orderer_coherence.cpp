@@ -2,6 +2,7 @@
 // frame's order, with last frame's cycles as hints to confirm (hinted_cycles.h); the first frame,
 // or one whose primitives changed, starts from the depth-key order.
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -19,30 +20,18 @@ void SceneOrderer::sortStage1(PositionsView positions, const ViewProjection& vie
     const auto primitive = [&](uint32_t i) {
         return triangles ? PrimitiveRange{i, 1} : objects_[i];
     };
-    if (previous_order_.size() == n) {
-        // Last frame's cycles (still in sorted_: stage 2 sorts into group_sorted_), as hints in
-        // this frame's bound ids (positions in its order). Not triangles': on the deforming
-        // bunnies 1 to 3 of their 45 to 70 cycles a frame survive to the next, and confirming the
-        // rest cost 4 to 7% of the frame (docs/benchmarks.md). A frame after one without cycles
-        // holds no map.
-        const std::size_t hints = triangles ? 0 : sorted_.cycles.size();
-        if (hints != 0) {
-            bound_id_.resize(n);
-            for (uint32_t i = 0; i < n; ++i)
-                bound_id_[previous_order_[i]] = i;
-        }
-        hint_cycles_.resize(hints);
-        hint_witnesses_.resize(hints);
-        for (std::size_t c = 0; c < hints; ++c) {
-            hint_cycles_[c].clear();
-            for (uint32_t p : sorted_.cycles[c])
-                hint_cycles_[c].push_back(bound_id_[p]);
-            hint_witnesses_[c].clear();
-            for (const Occlusion& o : sorted_.cycle_witnesses[c])
-                hint_witnesses_[c].push_back({bound_id_[o.front], bound_id_[o.back]});
-        }
-        sortFrom(positions, view, n, primitive, previous_order_, sorted_, Bind::new_frame,
-                 {hint_cycles_, hint_witnesses_});
+    // Objects without triangles (out of view, setObjects) neither occlude nor are occluded:
+    // they go to the end of the order, in last frame's order, without a query, and Vis-sort
+    // sorts the rest. The ids it binds are then positions in that list (sortFrom's start).
+    const auto empty = [&](uint32_t i) { return !triangles && objects_[i].triangle_count == 0; };
+    bool any_empty = false;
+    for (std::size_t i = 0; !triangles && !any_empty && i < n; ++i)
+        any_empty = empty(uint32_t(i));
+    std::span<const uint32_t> start;
+    std::vector<uint32_t> depth_start; // the first frame's: freed with the frame
+    const bool coherent = previous_order_.size() == n;
+    if (coherent) {
+        start = previous_order_;
     } else {
         std::span<const PrimitiveRange> primitives = objects_;
         if (triangles) { // bound_ as scratch: sortFrom overwrites it
@@ -51,9 +40,54 @@ void SceneOrderer::sortStage1(PositionsView positions, const ViewProjection& vie
                 bound_[t] = {t, 1};
             primitives = bound_;
         }
-        const std::vector<uint32_t> start = depthKeyOrder(positions, view, primitives);
-        sortFrom(positions, view, n, primitive, start, sorted_);
+        depth_start = depthKeyOrder(positions, view, primitives);
+        start = depth_start;
     }
+    empty_.clear();
+    if (any_empty) {
+        visible_.clear();
+        for (uint32_t p : start)
+            (empty(p) ? empty_ : visible_).push_back(p);
+        start = visible_;
+    }
+    if (coherent) {
+        // Last frame's cycles (still in sorted_: stage 2 sorts into group_sorted_), as hints in
+        // this frame's bound ids (positions in its start list). Not triangles': on the deforming
+        // bunnies 1 to 3 of their 45 to 70 cycles a frame survive to the next, and confirming the
+        // rest cost 4 to 7% of the frame (docs/benchmarks.md). A frame after one without cycles
+        // holds no map. A cycle with a member now empty is no cycle: it is no hint.
+        std::size_t hints = triangles ? 0 : sorted_.cycles.size();
+        if (hints != 0) {
+            bound_id_.assign(n, kNoObject);
+            for (uint32_t i = 0; i < start.size(); ++i)
+                bound_id_[start[i]] = i;
+        }
+        // The hints' vectors keep their capacity from frame to frame.
+        std::size_t kept = 0;
+        for (std::size_t c = 0; c < hints; ++c) {
+            const auto gone = [&](uint32_t p) { return bound_id_[p] == kNoObject; };
+            if (std::any_of(sorted_.cycles[c].begin(), sorted_.cycles[c].end(), gone))
+                continue;
+            if (hint_cycles_.size() <= kept) {
+                hint_cycles_.emplace_back();
+                hint_witnesses_.emplace_back();
+            }
+            hint_cycles_[kept].clear();
+            for (uint32_t p : sorted_.cycles[c])
+                hint_cycles_[kept].push_back(bound_id_[p]);
+            hint_witnesses_[kept].clear();
+            for (const Occlusion& o : sorted_.cycle_witnesses[c])
+                hint_witnesses_[kept].push_back({bound_id_[o.front], bound_id_[o.back]});
+            ++kept;
+        }
+        hint_cycles_.resize(kept);
+        hint_witnesses_.resize(kept);
+        sortFrom(positions, view, start.size(), primitive, start, sorted_, Bind::new_frame,
+                 {hint_cycles_, hint_witnesses_});
+    } else {
+        sortFrom(positions, view, start.size(), primitive, start, sorted_);
+    }
+    sorted_.order.insert(sorted_.order.end(), empty_.begin(), empty_.end());
     // The order becomes the previous one; sorted_ keeps the old buffer for the next frame.
     std::swap(previous_order_, sorted_.order);
 }

@@ -18,10 +18,15 @@ struct RendererSlot {
 
     TransparencyRenderer& prepare(const std::shared_ptr<GlContext>& context, const Scene& scene,
                                   const RenderSettings& wanted,
-                                  const std::vector<uint32_t>& highlighted) {
+                                  const std::vector<uint32_t>& highlighted,
+                                  std::shared_ptr<const LevelsOfDetail>& levels) {
         if (!renderer || settings != wanted) {
             renderer.reset();
-            renderer = std::make_unique<TransparencyRenderer>(context, scene, wanted);
+            // The scene's levels of detail are built once, when first needed, and shared by
+            // every renderer of the pipeline.
+            if (wanted.lod_error > 0.0f && !levels)
+                levels = std::make_shared<const LevelsOfDetail>(LevelsOfDetail::build(scene));
+            renderer = std::make_unique<TransparencyRenderer>(context, scene, wanted, levels);
             settings = wanted;
             highlighting = false;
             if (progress)
@@ -42,14 +47,17 @@ struct FramePipeline::Impl {
     RendererSlot picture, reference;
     std::unique_ptr<CollisionDetector> collisions; // made when first asked for
     CollisionResult collided;
-    std::vector<uint32_t> highlighted; // this frame's colliding triangles
+    std::vector<uint32_t> highlighted;            // this frame's colliding triangles
+    std::shared_ptr<const LevelsOfDetail> levels; // made when a renderer first needs them
 };
 
 FramePipeline::FramePipeline(std::shared_ptr<GlContext> context, const Scene& scene,
-                             const FramePipelineDef& def)
-    : impl_(std::make_unique<Impl>(Impl{std::move(context), scene, def, {}, {}, {}, {}, {}})) {
+                             const FramePipelineDef& def,
+                             std::shared_ptr<const LevelsOfDetail> levels)
+    : impl_(std::make_unique<Impl>(
+          Impl{std::move(context), scene, def, {}, {}, {}, {}, {}, std::move(levels)})) {
     // The method's renderer now, so that settings it refuses are refused before a frame.
-    impl_->picture.prepare(impl_->context, scene, def.settings, {});
+    impl_->picture.prepare(impl_->context, scene, def.settings, {}, impl_->levels);
 }
 
 FramePipeline::~FramePipeline() = default;
@@ -86,15 +94,16 @@ void FramePipeline::render(PositionsView positions, const ViewProjection& view,
         frame.colliding_triangles = p.highlighted.size();
         frame.collision_ms = p.collided.stats.total_ms;
     }
-    frame.rgba = p.picture.prepare(p.context, p.scene, p.def.settings, p.highlighted)
+    frame.rgba = p.picture.prepare(p.context, p.scene, p.def.settings, p.highlighted, p.levels)
                      .render(positions, view, frame.stats)
                      .toRgba8();
     if (p.def.reference) {
         RenderSettings settings = p.def.settings;
         settings.method = *p.def.reference;
-        frame.reference_rgba = p.reference.prepare(p.context, p.scene, settings, p.highlighted)
-                                   .render(positions, view, frame.reference_stats)
-                                   .toRgba8();
+        frame.reference_rgba =
+            p.reference.prepare(p.context, p.scene, settings, p.highlighted, p.levels)
+                .render(positions, view, frame.reference_stats)
+                .toRgba8();
         frame.error = compareImages(frame.rgba, frame.reference_rgba);
     }
 }

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -88,6 +89,7 @@ struct TransparencyRenderer::Impl {
     SampleGrid grid{1, 1}; // settings.samples' grid
     uint32_t triangle_count = 0;
     std::vector<uint32_t> opaque_triangles;
+    std::vector<uint8_t> transparent; // per object: drawn transparent
     TransparentPart part;
     std::vector<PrimitiveRange> primitives; // the part's, at the ordering level
     // vissort's ordering, over the transparent part only.
@@ -100,6 +102,11 @@ struct TransparencyRenderer::Impl {
     std::vector<uint32_t> repair_transparent;           // triangles a repair draws again
     std::vector<std::vector<uint32_t>> cycle_triangles; // colour_cycles: each cycle's, scene ids
     bool triangles_uploaded = false;
+    // Levels of detail (settings.lod_error > 0): the levels' scene is the one drawn; each frame
+    // chooses every object's range of it.
+    std::unique_ptr<DetailSelection> selection;
+    const LevelsOfDetail* levels = nullptr; // selection's
+    std::vector<uint32_t> highlighted;      // the highlights in the levels' scene's ids
 
     std::unique_ptr<detail::SceneGeometry> geometry;
     detail::GlProgram shade_program;
@@ -111,6 +118,51 @@ struct TransparencyRenderer::Impl {
     std::unique_ptr<detail::WeightedBlended> weighted;
     std::unique_ptr<detail::VerifiedBlending> verified;
     std::unique_ptr<detail::SampleResolve> resolve; // more than one sample a pixel
+
+    // Levels of detail: this frame's positions of the levels' scene (source: the source scene's
+    // frame), every object's level chosen through view, and the opaque triangles and the
+    // transparent part made of the chosen levels. An object out of view keeps its place in the
+    // part with no triangles, so that the orderer's object ids keep their meaning.
+    PositionsView chooseLevels(PositionsView source_positions, const ViewProjection& view,
+                               RenderStats& stats) {
+        const Scene& scene = levels->scene();
+        selection->select(source_positions, view);
+        const std::span<const uint8_t> chosen = selection->chosen();
+        opaque_triangles.clear();
+        part.objects.clear();
+        part.scene_triangle.clear();
+        part.whole = false;
+        for (uint32_t o = 0; o < scene.objects.size(); ++o) {
+            PrimitiveRange range{0, 0};
+            if (chosen[o] == LevelChooser::kCulled) {
+                ++stats.culled_objects;
+            } else {
+                const DetailLevel& level = levels->levels(o)[chosen[o]];
+                range = {level.first_triangle, level.triangle_count};
+                stats.boxed_objects += level.box ? 1 : 0;
+            }
+            stats.triangles += range.triangle_count;
+            if (!transparent[o]) {
+                for (uint32_t t = 0; t < range.triangle_count; ++t)
+                    opaque_triangles.push_back(range.first_triangle + t);
+                continue;
+            }
+            part.objects.push_back({uint32_t(part.scene_triangle.size()), range.triangle_count});
+            for (uint32_t t = 0; t < range.triangle_count; ++t)
+                part.scene_triangle.push_back(range.first_triangle + t);
+        }
+        const uint32_t part_triangles = uint32_t(part.scene_triangle.size());
+        primitives = levelPrimitives(part.objects, part_triangles, settings.level);
+        if (orderer)
+            orderer->setObjects(part.objects, part_triangles);
+        if (settings.method == BlendMethod::unsorted) {
+            sequence.clear();
+            sequence.triangles = part.scene_triangle;
+            if (part_triangles > 0)
+                sequence.segments.push_back({0, part_triangles, false, {}});
+        }
+        return selection->levelsPositions();
+    }
 
     // This frame's back-to-front sequence of transparent triangles (scene triangle ids), for the
     // methods that order per frame: ordered through view, its pixels; its groups' rectangles in
@@ -367,13 +419,18 @@ struct TransparencyRenderer::Impl {
 };
 
 TransparencyRenderer::TransparencyRenderer(std::shared_ptr<GlContext> context, const Scene& scene,
-                                           const RenderSettings& settings) {
+                                           const RenderSettings& settings,
+                                           std::shared_ptr<const LevelsOfDetail> levels) {
     if (!(settings.alpha > 0.0f && settings.alpha <= 1.0f))
         throw std::invalid_argument("alpha must be in (0, 1], got " +
                                     std::to_string(settings.alpha));
     const Result<SampleGrid> grid = sampleGridOf(settings.samples);
     if (!grid)
         throw std::invalid_argument(grid.error);
+    if (!(settings.lod_error >= 0.0f) || !std::isfinite(settings.lod_error))
+        throw std::invalid_argument("the level of detail's error must be 0 (off) or a positive "
+                                    "number of pixels, got " +
+                                    std::to_string(settings.lod_error));
     if (context == nullptr)
         throw std::invalid_argument("no OpenGL context");
     if (scene.triangleCount() > std::size_t(std::numeric_limits<GLint>::max()) / 3)
@@ -385,11 +442,21 @@ TransparencyRenderer::TransparencyRenderer(std::shared_ptr<GlContext> context, c
     d.settings = settings;
     d.grid = *grid.value;
     d.triangle_count = uint32_t(scene.triangleCount());
+    if (settings.lod_error > 0.0f) {
+        if (!levels)
+            levels = std::make_shared<const LevelsOfDetail>(LevelsOfDetail::build(scene));
+        d.selection =
+            std::make_unique<DetailSelection>(scene, std::move(levels), settings.lod_error);
+        d.levels = &d.selection->levels();
+    }
+    // With levels, the levels' scene is drawn: its objects are the scene's, each with its levels.
+    const Scene& drawn = d.levels ? d.levels->scene() : scene;
 
-    std::vector<uint8_t> transparent(scene.objects.size());
+    std::vector<uint8_t>& transparent = d.transparent;
+    transparent.assign(drawn.objects.size(), 0);
     std::vector<float> colours;
-    for (uint32_t o = 0; o < scene.objects.size(); ++o) {
-        const SceneObject& object = scene.objects[o];
+    for (uint32_t o = 0; o < drawn.objects.size(); ++o) {
+        const SceneObject& object = drawn.objects[o];
         const bool is_transparent = drawnTransparent(object, settings);
         transparent[o] = is_transparent ? 1 : 0;
         for (const ObjectPart& part : object.drawnParts()) {
@@ -399,10 +466,11 @@ TransparencyRenderer::TransparencyRenderer(std::shared_ptr<GlContext> context, c
                                                          : 1.0f;
             colours.insert(colours.end(), {part.colour.r, part.colour.g, part.colour.b, alpha});
         }
-        if (!is_transparent)
+        if (!is_transparent && !d.levels) // with levels: chosen per frame
             for (uint32_t t = 0; t < object.triangle_count; ++t)
                 d.opaque_triangles.push_back(object.first_triangle + t);
     }
+    // With levels, the part starts as every object at level 0; frames choose their own.
     d.part = transparentPart(scene, transparent);
     d.primitives =
         levelPrimitives(d.part.objects, uint32_t(d.part.scene_triangle.size()), settings.level);
@@ -422,7 +490,7 @@ TransparencyRenderer::TransparencyRenderer(std::shared_ptr<GlContext> context, c
             d.part.objects, uint32_t(d.part.scene_triangle.size()), settings.level, *d.oracle);
         d.context->makeCurrent(); // a gl oracle made it current too; the same context
     }
-    d.geometry = std::make_unique<detail::SceneGeometry>(scene, colours);
+    d.geometry = std::make_unique<detail::SceneGeometry>(drawn, colours);
     d.geometry->setShading(settings.shading);
     d.shade_program = detail::linkProgram(detail::kShadeVertexShader, detail::kShadeFragmentShader);
 }
@@ -432,9 +500,28 @@ void TransparencyRenderer::setOrderProgress(std::function<void(double fraction)>
         impl_->orderer->setProgress(std::move(report));
 }
 
+std::span<const uint8_t> TransparencyRenderer::chosenLevels() const {
+    return impl_->selection ? impl_->selection->chosen() : std::span<const uint8_t>{};
+}
+
+const LevelsOfDetail* TransparencyRenderer::levels() const {
+    return impl_->levels;
+}
+
 void TransparencyRenderer::setHighlightedTriangles(std::span<const uint32_t> triangles) {
-    impl_->context->makeCurrent();
-    impl_->geometry->setHighlighted(triangles);
+    Impl& d = *impl_;
+    d.context->makeCurrent();
+    if (!d.levels) {
+        d.geometry->setHighlighted(triangles);
+        return;
+    }
+    // The scene's triangles are the levels' scene's level 0: a coarser level has no triangle of
+    // its own to light up.
+    d.highlighted.clear();
+    for (uint32_t t : triangles)
+        if (t < d.triangle_count)
+            d.highlighted.push_back(d.levels->detailedTriangleOf(t));
+    d.geometry->setHighlighted(d.highlighted);
 }
 
 TransparencyRenderer::~TransparencyRenderer() {
@@ -458,6 +545,10 @@ Image TransparencyRenderer::render(PositionsView positions, const ViewProjection
     // Every method draws on the samples as on pixels; only the order is made through view.
     const ViewProjection sampled = sampledView(view, d.grid);
     const auto start = std::chrono::steady_clock::now();
+    if (d.levels) // the levels' scene from here on
+        positions = d.chooseLevels(positions, view, stats);
+    else
+        stats.triangles = d.triangle_count;
     if (ordersPerFrame(d.settings.method)) {
         d.buildSequence(positions, view, sampled, stats);
         stats.order_ms = millisecondsSince(start);
@@ -470,7 +561,7 @@ Image TransparencyRenderer::render(PositionsView positions, const ViewProjection
         d.geometry->setTriangles(d.opaque_triangles, d.sequence.triangles);
         if (d.settings.colour_cycles && d.settings.method == BlendMethod::vissort)
             d.colourCycles();
-    } else if (!d.triangles_uploaded) { // submission order, every frame the same
+    } else if (!d.triangles_uploaded || d.levels) { // submission order, every frame the same
         d.geometry->setTriangles(d.opaque_triangles, d.part.scene_triangle);
         d.triangles_uploaded = true;
     }

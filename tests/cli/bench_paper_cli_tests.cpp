@@ -42,7 +42,8 @@ TEST_F(Cli, BenchPaperQuickWritesEveryFigure) {
     const RunResult r =
         run({"bench", "paper", "--quick", "--out", out}, 60, "env VISSORT_PROGRESS_SECONDS=0");
     ASSERT_EQ(r.code, 0) << r;
-    for (const char* name : {"plant-walkthrough", "bunnies-static", "bunnies-moving"})
+    for (const char* name :
+         {"plant-walkthrough", "bunnies-static", "bunnies-moving", "plant-x10-lod"})
         EXPECT_NE(r.out.find(name), std::string::npos) << name << r;
     // Not a terminal: plain progress lines on stderr (at once here; by default after a second,
     // then every five).
@@ -57,13 +58,18 @@ TEST_F(Cli, BenchPaperQuickWritesEveryFigure) {
 #else
     EXPECT_EQ(doc["gl_frames"], 0);
 #endif
-    ASSERT_EQ(doc["paths"].size(), 3u);
+    ASSERT_EQ(doc["paths"].size(), 4u);
+    // Ten times the quick plant, with levels of detail within 1 pixel (the default).
+    EXPECT_NE(r.out.find("plant-x10-lod: builtin:powerplant?scale=0.5"), std::string::npos) << r;
     std::size_t frames_seen = 0;
     for (const json& path : doc["paths"]) {
         const std::string name = path["name"];
+        const bool levels = name == "plant-x10-lod";
         ASSERT_EQ(path["frames"].size(), 6u) << name;
         EXPECT_GT(path["primitives"].get<uint64_t>(), 0u) << name;
-        EXPECT_FALSE(path["paper"].empty()) << name;
+        EXPECT_EQ(path["paper"].empty(), levels) << name;
+        EXPECT_EQ(path["lod_error"].get<double>(), levels ? 1.0 : 0.0) << name;
+        EXPECT_EQ(path["levels_ms"].get<double>() > 0, levels) << name;
         // Collisions do not depend on the camera: measured once, with the static viewer.
         const bool collides = name == "bunnies-static";
         std::vector<double> order_ms, queries, cycle_queries;
@@ -75,6 +81,12 @@ TEST_F(Cli, BenchPaperQuickWritesEveryFigure) {
                 << name;
             EXPECT_GT(frame["cpu_order_ms"].get<double>(), 0.0) << name;
             EXPECT_EQ(frame["collide_ms"].is_number(), collides) << name;
+            // Levels of detail order fewer triangles than the scene has; else every one.
+            if (levels)
+                EXPECT_LT(frame["triangles_drawn"].get<uint64_t>(),
+                          path["triangles"].get<uint64_t>());
+            else
+                EXPECT_EQ(frame["triangles_drawn"], path["triangles"]);
             if (frame["frame"].get<int>() > 0) {
                 order_ms.push_back(frame["cpu_order_ms"].get<double>());
                 queries.push_back(double(frame["cpu_queries"].get<uint64_t>()));
@@ -82,7 +94,8 @@ TEST_F(Cli, BenchPaperQuickWritesEveryFigure) {
             }
 #if VISSORT_WITH_GL
             EXPECT_TRUE(frame["render_ms"].is_number()) << name;
-            EXPECT_EQ(frame["gl_queries"].is_number(), frame["frame"].get<int>() < 2) << name;
+            EXPECT_EQ(frame["gl_queries"].is_number(), frame["frame"].get<int>() < 2 && !levels)
+                << name;
 #else
             EXPECT_TRUE(frame["render_ms"].is_null()) << name;
             EXPECT_TRUE(frame["gl_queries"].is_null()) << name;

@@ -1,0 +1,197 @@
+// The renderer with levels of detail: every coherent frame exact for the geometry it drew (its
+// own A-buffer, ray cast through the triangles of the levels the frame chose), fewer triangles
+// drawn than the scene has, levels that follow the distance, and lod_error 0 drawing what the
+// renderer draws without levels, bit for bit.
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "a_buffer.h"
+#include "render_cases.h"
+#include "vissort/camera_path.h"
+#include "vissort/levels_of_detail.h"
+#include "vissort/transparency_renderer.h"
+
+namespace vissort {
+namespace {
+
+using test::context;
+using test::kHeight;
+using test::kWidth;
+using test::triangleColours;
+
+// The frame's drawn geometry: each object's chosen level (none when culled), with the colours of
+// the levels' scene (test::triangleColours: each part's).
+struct DrawnGeometry {
+    TrianglePositions positions;
+    std::vector<Rgba> colours;
+    uint64_t triangles = 0;
+};
+
+DrawnGeometry drawnGeometry(const TransparencyRenderer& renderer, PositionsView frame,
+                            const RenderSettings& settings) {
+    const LevelsOfDetail& levels = *renderer.levels();
+    const std::vector<Rgba> colours = triangleColours(levels.scene(), settings);
+    const std::span<const uint8_t> chosen = renderer.chosenLevels();
+    DrawnGeometry drawn;
+    for (uint32_t o = 0; o < chosen.size(); ++o) {
+        if (chosen[o] == LevelChooser::kCulled)
+            continue;
+        const DetailLevel& level = levels.levels(o)[chosen[o]];
+        for (uint32_t t = level.first_triangle; t < level.first_triangle + level.triangle_count;
+             ++t) {
+            for (std::size_t c = std::size_t(t) * 3; c < std::size_t(t) * 3 + 3; ++c) {
+                drawn.positions.x.push_back(frame.x[c]);
+                drawn.positions.y.push_back(frame.y[c]);
+                drawn.positions.z.push_back(frame.z[c]);
+            }
+            drawn.colours.push_back(colours[t]);
+        }
+        drawn.triangles += level.triangle_count;
+    }
+    return drawn;
+}
+
+TEST(LevelOfDetailRender, WalkthroughFramesAreExactForTheLevelsDrawn) {
+    const Scene scene = test::loadTestScene("builtin:powerplant?scale=0.05");
+    const Bounds bounds = scene.positions.bounds();
+    const auto levels = std::make_shared<const LevelsOfDetail>(LevelsOfDetail::build(scene));
+    for (OrderLevel level : {OrderLevel::object, OrderLevel::multistage}) {
+        SCOPED_TRACE(orderLevelName(level));
+        RenderSettings settings;
+        settings.shading = Shading::flat;
+        settings.level = level;
+        settings.lod_error = 4.0f; // coarse enough that many objects change level on the way
+        TransparencyRenderer renderer(context(), scene, settings, levels);
+        std::vector<uint8_t> previous;
+        uint32_t switched = 0, coarser = 0;
+        for (int f : {0, 1, 2, 150, 151, 450}) {
+            SCOPED_TRACE("frame " + std::to_string(f));
+            const ViewProjection view = frameCamera(
+                cameraOnPath(*scene.camera, CameraPath::scene, f, bounds, scene.camera_path),
+                bounds, kWidth, kHeight);
+            RenderStats stats;
+            const std::vector<uint8_t> image =
+                renderer.render(scene.positions, view, stats).toRgba8();
+            const std::span<const uint8_t> chosen = renderer.chosenLevels();
+            ASSERT_EQ(chosen.size(), scene.objects.size());
+            if (!previous.empty())
+                for (std::size_t o = 0; o < chosen.size(); ++o)
+                    switched += chosen[o] != previous[o];
+            for (uint8_t c : chosen)
+                coarser += c != 0 && c != LevelChooser::kCulled;
+            previous.assign(chosen.begin(), chosen.end());
+            const DrawnGeometry drawn =
+                drawnGeometry(renderer, levels->scene().positions, settings);
+            EXPECT_EQ(stats.triangles, drawn.triangles);
+            EXPECT_LT(stats.triangles, scene.triangleCount());
+            EXPECT_GT(stats.culled_objects, 0u);
+            const test::ABufferComparison compared = test::compareWithABuffer(
+                image,
+                test::rayCastComposite(drawn.positions, view, drawn.colours, settings.background));
+            EXPECT_GT(compared.compared, uint64_t(kWidth) * kHeight / 2);
+            EXPECT_LE(compared.max_abs, 1)
+                << "worst at (" << compared.worst_x << ", " << compared.worst_y << ")";
+        }
+        EXPECT_GT(coarser, 0u) << "no object was drawn coarser than its source";
+        EXPECT_GT(switched, 0u) << "no object changed level along the path";
+    }
+}
+
+TEST(LevelOfDetailRender, DeformingBunniesStayExactFrameByFrame) {
+    const Scene scene = test::loadTestScene("builtin:bunnies?n=6");
+    const Bounds bounds = scene.positions.bounds();
+    RenderSettings settings;
+    settings.shading = Shading::flat;
+    settings.level = OrderLevel::multistage;
+    settings.lod_error = 2.0f;
+    TransparencyRenderer renderer(context(), scene, settings); // builds its own levels
+    ASSERT_NE(renderer.levels(), nullptr);
+    TrianglePositions positions;
+    for (int f = 0; f < 3; ++f) {
+        SCOPED_TRACE("frame " + std::to_string(f));
+        scene.frame(f * kFrameInterval, positions);
+        const ViewProjection view =
+            frameCamera(cameraOnPath(*scene.camera, CameraPath::orbit, f, bounds),
+                        positions.bounds(), kWidth, kHeight);
+        RenderStats stats;
+        const std::vector<uint8_t> image = renderer.render(positions, view, stats).toRgba8();
+        // The levels' scene at this frame, independently: the source frame expanded.
+        const TrianglePositions expanded = renderer.levels()->scene().frame(f * kFrameInterval);
+        const DrawnGeometry drawn = drawnGeometry(renderer, expanded, settings);
+        EXPECT_LT(stats.triangles, scene.triangleCount());
+        const test::ABufferComparison compared = test::compareWithABuffer(
+            image,
+            test::rayCastComposite(drawn.positions, view, drawn.colours, settings.background));
+        EXPECT_GT(compared.compared, uint64_t(kWidth) * kHeight / 4);
+        EXPECT_LE(compared.max_abs, 1)
+            << "worst at (" << compared.worst_x << ", " << compared.worst_y << ")";
+    }
+}
+
+TEST(LevelOfDetailRender, ZeroErrorIsTheRendererWithoutLevels) {
+    const Scene scene = test::loadTestScene("builtin:bunnies?n=4");
+    const ViewProjection view =
+        frameCamera(*scene.camera, scene.positions.bounds(), kWidth, kHeight);
+    for (BlendMethod method : {BlendMethod::vissort, BlendMethod::unsorted, BlendMethod::peel}) {
+        RenderSettings settings;
+        settings.method = method;
+        RenderSettings zero = settings;
+        zero.lod_error = 0.0f;
+        TransparencyRenderer plain(context(), scene, settings), off(context(), scene, zero);
+        RenderStats a, b;
+        EXPECT_EQ(plain.render(scene.positions, view, a).rgba,
+                  off.render(scene.positions, view, b).rgba);
+        EXPECT_EQ(b.triangles, scene.triangleCount());
+        EXPECT_TRUE(off.chosenLevels().empty());
+    }
+}
+
+TEST(LevelOfDetailRender, FarAwayObjectsAreBoxesAndEveryMethodDrawsTheSameLevels) {
+    const Scene scene = test::loadTestScene("builtin:bunnies?n=4");
+    const Bounds bounds = scene.positions.bounds();
+    CameraSpec far = *scene.camera;
+    const Vec3 c = bounds.centre();
+    far.eye = {c.x + (far.eye.x - c.x) * 400, c.y + (far.eye.y - c.y) * 400,
+               c.z + (far.eye.z - c.z) * 400};
+    far.target = c;
+    const ViewProjection view = frameCamera(far, bounds, kWidth, kHeight);
+    RenderSettings settings;
+    settings.shading = Shading::flat;
+    settings.lod_error = 1.0f;
+    RenderSettings linked = settings;
+    linked.method = BlendMethod::linked_list;
+    const auto levels = std::make_shared<const LevelsOfDetail>(LevelsOfDetail::build(scene));
+    TransparencyRenderer vissort(context(), scene, settings, levels),
+        reference(context(), scene, linked, levels);
+    RenderStats stats, reference_stats;
+    const std::vector<uint8_t> image = vissort.render(scene.positions, view, stats).toRgba8();
+    const std::vector<uint8_t> expected =
+        reference.render(scene.positions, view, reference_stats).toRgba8();
+    EXPECT_EQ(stats.triangles, reference_stats.triangles);
+    EXPECT_LE(compareImages(image, expected).max_abs, 1);
+    uint32_t boxes = 0;
+    for (uint32_t o = 0; o < scene.objects.size(); ++o)
+        boxes += levels->levels(o).back().box &&
+                 vissort.chosenLevels()[o] == levels->levels(o).size() - 1;
+    EXPECT_EQ(stats.boxed_objects, boxes);
+    EXPECT_LT(stats.triangles, scene.triangleCount() / 20);
+}
+
+TEST(LevelOfDetailRender, BadErrorsAndLevelsOfAnotherSceneAreRefused) {
+    const Scene scene = test::loadTestScene("builtin:bunnies?n=2");
+    const Scene other = test::loadTestScene("builtin:bunnies?n=3");
+    RenderSettings settings;
+    settings.lod_error = -1.0f;
+    EXPECT_THROW(TransparencyRenderer(context(), scene, settings), std::invalid_argument);
+    settings.lod_error = INFINITY;
+    EXPECT_THROW(TransparencyRenderer(context(), scene, settings), std::invalid_argument);
+    settings.lod_error = 1.0f;
+    const auto levels = std::make_shared<const LevelsOfDetail>(LevelsOfDetail::build(other));
+    EXPECT_THROW(TransparencyRenderer(context(), scene, settings, levels), std::invalid_argument);
+}
+
+} // namespace
+} // namespace vissort
