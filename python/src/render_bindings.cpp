@@ -25,7 +25,8 @@ namespace {
 FramePipelineDef pipelineDefOf(const std::string& method, const std::string& level,
                                const std::string& oracle, bool all_transparent, double alpha,
                                const std::string& shading, int samples, const std::string& check,
-                               const py::handle& background, bool highlight_collisions) {
+                               const py::handle& background, bool highlight_collisions,
+                               double lod_error) {
     FramePipelineDef def;
     def.highlight_collisions = highlight_collisions;
     RenderSettings& settings = def.settings;
@@ -55,6 +56,11 @@ FramePipelineDef pipelineDefOf(const std::string& method, const std::string& lev
         throw py::value_error(parsed_check.error);
     settings.check = *parsed_check.value;
     settings.background = readColour(background, "background");
+    if (!(lod_error >= 0 && lod_error <= 1e6))
+        throw py::value_error("lod_error must be 0 (every triangle) or a number of pixels up to "
+                              "1e6, got " +
+                              std::to_string(lod_error));
+    settings.lod_error = float(lod_error);
     return def;
 }
 
@@ -140,8 +146,9 @@ constexpr const char* kSettingsDoc =
     "(anti-aliasing). check: auto, on or off (vissort's per-pixel check and repair). "
     "background: (r, g, b[, a]) in [0, 1], a dark slate grey by default. highlight_collisions: "
     "the triangles that intersect another object's in opaque magenta, the rest dimmed, each "
-    "frame (stats then count the collisions). As the command "
-    "line's render options.";
+    "frame (stats then count the collisions). lod_error: levels of detail within that many "
+    "pixels, objects out of view left out (0: every triangle; stats count the triangles "
+    "drawn). As the command line's render options.";
 
 } // namespace
 
@@ -151,12 +158,12 @@ void bindRender(py::module_& m) {
                          const std::string& level, const std::string& oracle, bool all_transparent,
                          double alpha, const std::string& shading, int samples,
                          const std::string& check, const py::object& background,
-                         bool highlight_collisions) {
+                         bool highlight_collisions, double lod_error) {
         if (!scene)
             throw py::value_error("render needs a Scene (vissort.load or vissort.builtin)");
         return std::make_unique<Renderer>(
             scene, pipelineDefOf(method, level, oracle, all_transparent, alpha, shading, samples,
-                                 check, background, highlight_collisions));
+                                 check, background, highlight_collisions, lod_error));
     };
     py::class_<Renderer>(m, "Renderer",
                          "Renders frames of one scene with transparency; each frame starts "
@@ -166,7 +173,7 @@ void bindRender(py::module_& m) {
              py::arg("all_transparent") = false, py::arg("alpha") = 0.5, py::arg("shading") = "lit",
              py::arg("samples") = 1, py::arg("check") = "auto",
              py::arg("background") = defaultBackground(), py::arg("highlight_collisions") = false,
-             kSettingsDoc)
+             py::arg("lod_error") = 0.0, kSettingsDoc)
         .def("render", &Renderer::render, py::arg("camera") = py::none(),
              py::arg("size") = py::make_tuple(1024, 1024), py::kw_only(),
              py::arg("time") = py::none(), py::arg("positions") = py::none(),
@@ -181,10 +188,10 @@ void bindRender(py::module_& m) {
                const py::object& size, const std::string& method, const std::string& level,
                const std::string& oracle, bool all_transparent, double alpha,
                const std::string& shading, int samples, const std::string& check,
-               const py::object& background, bool highlight_collisions, const py::object& time,
-               const py::object& positions, const py::object& triangles) {
+               const py::object& background, bool highlight_collisions, double lod_error,
+               const py::object& time, const py::object& positions, const py::object& triangles) {
             auto renderer = make(scene, method, level, oracle, all_transparent, alpha, shading,
-                                 samples, check, background, highlight_collisions);
+                                 samples, check, background, highlight_collisions, lod_error);
             return renderer->render(camera, size, time, positions, triangles);
         },
         py::arg("scene"), py::arg("camera") = py::none(),
@@ -192,8 +199,9 @@ void bindRender(py::module_& m) {
         py::arg("level") = "object", py::arg("oracle") = "cpu", py::arg("all_transparent") = false,
         py::arg("alpha") = 0.5, py::arg("shading") = "lit", py::arg("samples") = 1,
         py::arg("check") = "auto", py::arg("background") = defaultBackground(),
-        py::arg("highlight_collisions") = false, py::arg("time") = py::none(),
-        py::arg("positions") = py::none(), py::arg("triangles") = py::none(),
+        py::arg("highlight_collisions") = false, py::arg("lod_error") = 0.0,
+        py::arg("time") = py::none(), py::arg("positions") = py::none(),
+        py::arg("triangles") = py::none(),
         ("One frame as an (H, W, 4) uint8 RGBA image (Renderer renders many). " +
          std::string(kSettingsDoc))
             .c_str());

@@ -131,3 +131,19 @@ def test_highlighted_collisions_equal_the_cli(cli, tmp_path):
     plain = vissort.Renderer(scene)
     assert np.abs(plain.render(size=(96, 72)).astype(int) - image.astype(int)).max() > 1
     assert "colliding_pairs" not in plain.stats
+
+
+def test_levels_of_detail_equal_the_cli_and_zero_is_every_triangle(cli, tmp_path):
+    scene = vissort.builtin("powerplant", scale=0.05)
+    image = vissort.render(scene, size=(96, 72), lod_error=2)
+    expected = cli_image(cli, tmp_path, "builtin:powerplant?scale=0.05", "--size", "96x72",
+                         "--lod-error", "2")
+    np.testing.assert_array_equal(image, expected)
+    renderer = vissort.Renderer(scene, lod_error=2)
+    renderer.render(size=(96, 72))
+    assert 0 < renderer.stats["triangles"] < scene.triangle_count
+    full = vissort.Renderer(scene, lod_error=0)
+    np.testing.assert_array_equal(full.render(size=(96, 72)), vissort.render(scene, size=(96, 72)))
+    assert full.stats["triangles"] == scene.triangle_count
+    with pytest.raises(ValueError, match="lod_error"):
+        vissort.Renderer(scene, lod_error=-1)

@@ -96,6 +96,9 @@ _RenderStats = TypedDict(
         "fragments": int,
         "groups": int,
         "repaired_pixels": int,
+        "triangles": int,
+        "boxed_objects": int,
+        "culled_objects": int,
         "queries": int,
         "draws": int,
         "clears": int,
@@ -354,6 +357,7 @@ class Renderer:
         check: _Check = "auto",
         background: npt.ArrayLike = (0.3, 0.32, 0.36, 1.0),
         highlight_collisions: bool = False,
+        lod_error: float = 0.0,
     ) -> None:
         """method: vissort, unsorted, centroid, peel, dual-peel, linked-list or weighted. level
         and oracle: vissort's ordering (centroid's unit). all_transparent with alpha: every
@@ -361,7 +365,9 @@ class Renderer:
         averaged (anti-aliasing). check: auto, on or off (vissort's per-pixel check and repair).
         background: (r, g, b[, a]) in [0, 1]. highlight_collisions: the triangles that
         intersect another object's in magenta, each frame (stats then count the collisions).
-        As the command line's render options."""
+        lod_error: levels of detail within that many pixels, objects out of view left out (0:
+        every triangle; stats count the triangles drawn). As the command line's render
+        options."""
     def render(
         self,
         camera: Optional[Camera] = None,
@@ -394,6 +400,7 @@ def render(
     check: _Check = "auto",
     background: npt.ArrayLike = (0.3, 0.32, 0.36, 1.0),
     highlight_collisions: bool = False,
+    lod_error: float = 0.0,
     time: Optional[_Seconds] = None,
     positions: Optional[npt.ArrayLike] = None,
     triangles: Optional[npt.ArrayLike] = None,

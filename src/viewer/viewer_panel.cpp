@@ -96,6 +96,11 @@ PanelActions drawPanel(const PanelState& state, RenderSettings& settings, Overla
             ImGui::SameLine();
             ImGui::TextDisabled("(vissort only)");
         }
+        // Levels of detail (docs/lod.md): 0 draws every triangle. The levels are built once, when
+        // first asked for, and kept for the window's life.
+        actions.settings_changed |=
+            ImGui::SliderFloat("level of detail (px)", &settings.lod_error, 0.0f, 16.0f, "%.2f");
+        settings.lod_error = std::clamp(settings.lod_error, 0.0f, 16.0f);
         actions.settings_changed |=
             ImGui::Checkbox("colliding triangles (K)", &overlays.highlight_collisions);
         actions.settings_changed |=
@@ -118,6 +123,10 @@ PanelActions drawPanel(const PanelState& state, RenderSettings& settings, Overla
                         stats.groups == 1 ? "group" : "groups");
             ImGui::Text("%llu pixels repaired",
                         static_cast<unsigned long long>(stats.repaired_pixels));
+            if (settings.lod_error > 0)
+                ImGui::Text("%llu triangles drawn, %u boxes, %u out of view",
+                            static_cast<unsigned long long>(stats.triangles), stats.boxed_objects,
+                            stats.culled_objects);
             const RenderedFrame& last = *state.last;
             if (last.request.overlays.highlight_collisions)
                 ImGui::Text("collisions: %llu pairs, %llu triangles, %.1f ms",

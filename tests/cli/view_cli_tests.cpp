@@ -68,6 +68,24 @@ TEST_F(View, ScreenshotEqualsRenderOfTheSameFrame) {
     EXPECT_EQ(maxDifference(shown, render({"builtin:bunnies?n=6", "--size", "256x192"}, 2)), 0);
 }
 
+// Levels of detail in the window: the levels chosen by render for the same frames.
+TEST_F(View, LevelsOfDetailShowWhatRenderDraws) {
+    const std::vector<std::string> args = {"builtin:powerplant?scale=0.05",
+                                           "--path",
+                                           "scene",
+                                           "--size",
+                                           "200x150",
+                                           "--lod-error",
+                                           "3"};
+    const RunResult r = view(args, 2, path("lod.png"));
+    ASSERT_EQ(r.code, 0) << r;
+    EXPECT_EQ(maxDifference(readPng(path("lod.png")), render(args, 2)), 0);
+    std::vector<std::string> full = args;
+    full.back() = "0";
+    EXPECT_GT(maxDifference(readPng(path("lod.png")), render(full, 2)), 0)
+        << "3 pixels of error should show somewhere";
+}
+
 // With its panel, the window draws the scene right of it (panel_layout.h: 240 of 800 pixels
 // at 800x600), framed for that part: the screenshot's right 560 columns are render's picture at
 // 560x600; Tab (scripted) hides the panel and the scene takes the whole window.
