@@ -140,6 +140,8 @@ public:
     const std::shared_ptr<const LevelsOfDetail>& sharedLevels() const { return levels_; }
     /// The chosen levels gathered (DetailFrame), into a buffer reused from frame to frame.
     const DetailFrame& gather();
+    /// The last gather's frame, without gathering again.
+    const DetailFrame& frame() const { return frame_; }
 
 private:
     const Scene* source_;

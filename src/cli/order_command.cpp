@@ -202,7 +202,7 @@ int runOrder(const OrderOptions& options) {
             progress.clear();
             printFrame(f, last);
             if (selection) {
-                const DetailFrame& chosen = selection->gather();
+                const DetailFrame& chosen = selection->frame(); // gathered above
                 std::cout << "  "
                           << levelsLine(chosen.triangles, chosen.boxed_objects,
                                         chosen.culled_objects, scene->triangleCount(), "ordered")

@@ -68,9 +68,24 @@ void addRendererOptions(CLI::App& command, RendererOptions& options,
 std::shared_ptr<const LevelsOfDetail> buildLevels(const Scene& scene, double lod_error) {
     if (!(lod_error > 0))
         return nullptr;
-    Progress progress("levels of detail", scene.triangleCount(), "triangle");
-    return std::make_shared<const LevelsOfDetail>(LevelsOfDetail::build(
-        scene, {}, [&](double share) { progress.update(share * double(scene.triangleCount())); }));
+    auto levels = [&] {
+        Progress progress("levels of detail", scene.triangleCount(), "triangle");
+        return std::make_shared<const LevelsOfDetail>(
+            LevelsOfDetail::build(scene, {}, [&](double share) {
+                progress.update(share * double(scene.triangleCount()));
+            }));
+    }();
+    // What the levels hold (docs/lod.md, "Memory").
+    std::size_t chained = 0;
+    for (uint32_t o = 0; o < levels->objectCount(); ++o)
+        chained += levels->levels(o).size();
+    const double objects = double(std::max<std::size_t>(1, levels->objectCount()));
+    std::cout << "levels of detail: " << levels->scene().triangleCount() << " triangles ("
+              << formatNumber(double(levels->scene().triangleCount()) /
+                              double(std::max<std::size_t>(1, scene.triangleCount())))
+              << "x the scene's), " << formatNumber(double(chained) / objects)
+              << " levels an object\n";
+    return levels;
 }
 
 std::string levelsLine(uint64_t triangles, uint32_t boxed_objects, uint32_t culled_objects,
