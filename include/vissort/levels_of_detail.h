@@ -6,7 +6,10 @@
 //
 // The levels live in a scene of their own (LevelsOfDetail::scene): the same objects, in the same
 // order, each holding its levels one after another, finest first. Level 0 is the source object's
-// own triangles, in order. Renderers and orderers draw a frame's chosen range of each object.
+// own triangles. An object of many triangles is cut into pieces (LodOptions::piece_triangles),
+// simplified each with their shared borders kept, so that the far end of a long pipe run can be
+// coarser than its near end: each piece takes its own level every frame, and renderers and
+// orderers draw each object's chosen pieces (DetailSelection::chosenRanges).
 //
 // Layer: vissort::scene (the package's `scene` component; docs/architecture.md).
 
@@ -29,16 +32,32 @@ struct LodOptions {
     float reduction = 0.25f;
     /// At most this many levels an object, level 0 and the box included (2 to 16).
     uint32_t max_levels = 8;
+    /// An object of more triangles is cut into pieces of at most this many (at least 16),
+    /// halving it across its longest extent, each piece choosing its own level every frame.
+    uint32_t piece_triangles = 1024;
 };
 
-/// One level of an object: its range of LevelsOfDetail::scene's triangles and its geometric
-/// error in world units (how far its surface may lie from the source's: meshoptimizer's error,
-/// summed along the chain, as a bound; the box's is its diagonal).
+/// One level of an object, every piece at that level: its range of LevelsOfDetail::scene's
+/// triangles and its geometric error in world units (how far its surface may lie from the
+/// source's: meshoptimizer's error, summed along the chain, as a bound; the largest of its
+/// pieces'; the box's is its diagonal).
 struct DetailLevel {
     uint32_t first_triangle = 0;
     uint32_t triangle_count = 0;
     float error = 0.0f;
     bool box = false; // the object's bounding box (12 triangles, made from each frame's corners)
+};
+
+/// One level of one piece of an object: its triangles (a range for each drawn part of the
+/// object that the piece holds, within the object's DetailLevel) and its error in world units.
+struct PieceLevel {
+    std::span<const PrimitiveRange> ranges;
+    float error = 0.0f;
+};
+
+/// The pieces of one object: indices [first, first + count) of LevelsOfDetail's pieces.
+struct PieceSpan {
+    uint32_t first = 0, count = 0;
 };
 
 class LevelsOfDetail {
@@ -57,11 +76,21 @@ public:
     std::size_t objectCount() const { return level_start_.size() - 1; }
     std::size_t sourceTriangleCount() const { return source_triangles_; }
 
+    /// The pieces of an object (one when it has at most LodOptions::piece_triangles triangles).
+    /// Each piece has the object's levels but its box: levels(object) less a last box level.
+    PieceSpan pieces(uint32_t object) const {
+        return {piece_start_[object], piece_start_[object + 1] - piece_start_[object]};
+    }
+    std::size_t pieceCount() const { return piece_bounds_.size(); }
+    PieceLevel pieceLevel(uint32_t piece, uint32_t level) const;
+
     /// The positions of scene() for a frame of the source (positions with the source's triangle
-    /// count) into out, and each object's bounds at that frame into bounds.
-    void expand(PositionsView source, TrianglePositions& out, std::vector<Bounds>& bounds) const;
-    /// The objects' bounds at t = 0 (the source's positions).
+    /// count) into out, and each object's and each piece's bounds at that frame.
+    void expand(PositionsView source, TrianglePositions& out, std::vector<Bounds>& bounds,
+                std::vector<Bounds>& piece_bounds) const;
+    /// The objects' and the pieces' bounds at t = 0 (the source's positions).
     const std::vector<Bounds>& bounds() const { return bounds_; }
+    const std::vector<Bounds>& pieceBounds() const { return piece_bounds_; }
     /// The triangle of scene() that is source triangle t at level 0 (t < sourceTriangleCount()).
     uint32_t detailedTriangleOf(uint32_t source_triangle) const;
 
@@ -74,25 +103,39 @@ private:
     std::vector<uint32_t> level_start_; // object -> its first entry of levels_; one past the last
     std::vector<DetailLevel> levels_;
     std::vector<Bounds> bounds_;
+    std::vector<uint32_t> piece_start_; // object -> its first piece; one past the last
+    struct PieceEntry {
+        uint32_t first_range, range_count;
+        float error;
+    };
+    std::vector<uint32_t> piece_level_start_; // piece -> its level 0 in piece_levels_
+    std::vector<PieceEntry> piece_levels_;
+    std::vector<PrimitiveRange> piece_ranges_;
+    std::vector<Bounds> piece_bounds_;
+    std::vector<uint32_t> detailed_triangle_; // source triangle -> scene()'s at level 0
     std::size_t source_triangles_ = 0;
     std::shared_ptr<Expansion> expansion_;
 };
 
-/// The level of detail of each object, frame by frame: the coarsest level whose error projects
-/// to at most max_error_px pixels, seen through the frame's view from the nearest corner of the
-/// object's bounds, with hysteresis: a level is left for a coarser one only when the coarser
-/// one's error projects to at most (1 - hysteresis) x max_error_px, so that objects at the
+/// The level of detail of each piece of each object, frame by frame: the coarsest level whose
+/// error projects to at most max_error_px pixels, seen through the frame's view from the nearest
+/// corner of the piece's bounds, with hysteresis: a level is left for a coarser one only when the
+/// coarser one's error projects to at most (1 - hysteresis) x max_error_px, so that pieces at the
 /// threshold do not switch back and forth along a path. The error never exceeds max_error_px.
+/// An object whose box is within the bound (seen from the object's bounds) is its box, every
+/// piece of it; a piece, or a whole object, outside the view is culled.
 class LevelChooser {
 public:
-    static constexpr uint8_t kCulled = 0xFF; // no corner of the object's bounds in the view
+    static constexpr uint8_t kCulled = 0xFF; // no corner of the piece's bounds in the view
 
     /// max_error_px > 0; hysteresis in [0, 1).
     explicit LevelChooser(float max_error_px, float hysteresis = 0.25f);
 
-    /// This frame's level of each object of levels (an index into levels.levels(o)), or kCulled
-    /// for an object wholly outside the view's frustum. bounds: each object's, this frame.
+    /// This frame's level of each piece of levels (an index into levels.levels(o) of its object
+    /// o: the box level when the object is its box), or kCulled for a piece wholly outside the
+    /// view's frustum. bounds and piece_bounds: each object's and each piece's, this frame.
     std::span<const uint8_t> choose(const LevelsOfDetail& levels, std::span<const Bounds> bounds,
+                                    std::span<const Bounds> piece_bounds,
                                     const ViewProjection& view);
     std::span<const uint8_t> chosen() const { return chosen_; }
 
@@ -108,7 +151,7 @@ private:
     std::vector<uint8_t> chosen_;
 };
 
-/// A frame at the levels chosen, compact: each object's chosen level's triangles, one object
+/// A frame at the levels chosen, compact: each object's chosen pieces' triangles, one object
 /// after another (none for an object out of view), for orderers and detectors that take an
 /// object's triangles as one contiguous range (SceneOrderer::setObjects).
 struct DetailFrame {
@@ -135,7 +178,18 @@ public:
 
     /// This frame's positions of the levels' scene; valid until the next select.
     PositionsView levelsPositions() const { return positions_; }
+    /// Each piece's level (LevelChooser::chosen).
     std::span<const uint8_t> chosen() const { return chooser_.chosen(); }
+    /// The triangles of the levels' scene that draw an object this frame: its box, or each piece
+    /// in view at its level (none for an object out of view).
+    std::span<const PrimitiveRange> chosenRanges(uint32_t object) const {
+        return std::span(ranges_).subspan(range_start_[object],
+                                          range_start_[object + 1] - range_start_[object]);
+    }
+    /// This frame's triangles chosen in all, objects drawn as their box, objects out of view.
+    uint64_t triangles() const { return triangles_; }
+    uint32_t boxedObjects() const { return boxed_objects_; }
+    uint32_t culledObjects() const { return culled_objects_; }
     const LevelsOfDetail& levels() const { return *levels_; }
     const std::shared_ptr<const LevelsOfDetail>& sharedLevels() const { return levels_; }
     /// The chosen levels gathered (DetailFrame), into a buffer reused from frame to frame.
@@ -148,8 +202,12 @@ private:
     std::shared_ptr<const LevelsOfDetail> levels_;
     LevelChooser chooser_;
     TrianglePositions expanded_;
-    std::vector<Bounds> bounds_;
+    std::vector<Bounds> bounds_, piece_bounds_;
     PositionsView positions_;
+    std::vector<uint32_t> range_start_; // object -> its first chosen range; one past the last
+    std::vector<PrimitiveRange> ranges_;
+    uint64_t triangles_ = 0;
+    uint32_t boxed_objects_ = 0, culled_objects_ = 0;
     DetailFrame frame_;
 };
 

@@ -226,10 +226,10 @@ public:
     /// colours, which are not dimmed.
     void setHighlightedTriangles(std::span<const uint32_t> triangles);
 
-    /// With levels of detail: the last frame's level of each object (an index into
-    /// LevelsOfDetail::levels(o), or LevelChooser::kCulled), and the levels; empty and null
-    /// without (RenderSettings::lod_error 0).
-    std::span<const uint8_t> chosenLevels() const;
+    /// With levels of detail: the last frame's choice (each piece's level, the triangles drawn
+    /// of each object: DetailSelection::chosenRanges), and the levels; null without
+    /// (RenderSettings::lod_error 0).
+    const DetailSelection* levelSelection() const;
     const LevelsOfDetail* levels() const;
 
     /// Reports the share of a frame's order done (SceneOrderer::setProgress) while vissort

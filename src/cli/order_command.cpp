@@ -251,20 +251,17 @@ int runOrder(const OrderOptions& options) {
         if (const int code = csv.write(options.csv); code != kExitOk)
             return code;
     if (!options.dump_path.empty()) {
-        // With levels: the levels' scene at the last frame, each object's chosen level.
+        // With levels: an object is its chosen triangles at the last frame (gathered); a
+        // triangle id is the levels' scene's, whose every triangle the dump holds.
         std::vector<PrimitiveRange> primitives = primitivesOf(*scene, level);
         PositionsView positions = driver.positions();
-        if (selection) {
+        if (selection && level == OrderLevel::object) {
+            const DetailFrame& chosen = selection->frame();
+            positions = chosen.positions;
+            primitives = chosen.objects;
+        } else if (selection) {
             positions = selection->levelsPositions();
-            const std::span<const uint8_t> chosen = selection->chosen();
-            primitives.assign(level == OrderLevel::object ? chosen.size() : 0, {});
-            for (uint32_t o = 0; o < chosen.size() && level == OrderLevel::object; ++o)
-                if (chosen[o] != LevelChooser::kCulled) {
-                    const DetailLevel& l = selection->levels().levels(o)[chosen[o]];
-                    primitives[o] = {l.first_triangle, l.triangle_count};
-                }
-            if (level != OrderLevel::object)
-                primitives = primitivesOf(selection->levels().scene(), level);
+            primitives = primitivesOf(selection->levels().scene(), level);
         }
         errno = 0;
         if (!writePrimitivesObj(options.dump_path,

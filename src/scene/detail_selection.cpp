@@ -27,34 +27,56 @@ void DetailSelection::select(PositionsView source_positions, const ViewProjectio
         source_positions.x.data() == own.x.data() && source_positions.y.data() == own.y.data() &&
         source_positions.z.data() == own.z.data() && source_positions.x.size() == own.x.size();
     const std::vector<Bounds>* bounds = &levels_->bounds();
+    const std::vector<Bounds>* piece_bounds = &levels_->pieceBounds();
     if (is_own) {
         positions_ = levels_->scene().positions;
     } else {
-        levels_->expand(source_positions, expanded_, bounds_);
+        levels_->expand(source_positions, expanded_, bounds_, piece_bounds_);
         positions_ = expanded_;
         bounds = &bounds_;
+        piece_bounds = &piece_bounds_;
     }
-    chooser_.choose(*levels_, *bounds, view);
+    const std::span<const uint8_t> chosen = chooser_.choose(*levels_, *bounds, *piece_bounds, view);
+
+    const std::size_t objects = levels_->objectCount();
+    range_start_.assign(1, 0);
+    ranges_.clear();
+    triangles_ = 0;
+    boxed_objects_ = culled_objects_ = 0;
+    for (uint32_t o = 0; o < objects; ++o) {
+        const PieceSpan pieces = levels_->pieces(o);
+        const std::span<const DetailLevel> chain = levels_->levels(o);
+        if (pieces.count > 0 && chosen[pieces.first] < chain.size() &&
+            chain[chosen[pieces.first]].box) {
+            const DetailLevel& box = chain[chosen[pieces.first]];
+            ranges_.push_back({box.first_triangle, box.triangle_count});
+            ++boxed_objects_;
+        } else {
+            for (uint32_t p = pieces.first; p < pieces.first + pieces.count; ++p)
+                if (chosen[p] != LevelChooser::kCulled)
+                    for (const PrimitiveRange& range : levels_->pieceLevel(p, chosen[p]).ranges)
+                        ranges_.push_back(range);
+            culled_objects_ += ranges_.size() == range_start_.back() ? 1 : 0;
+        }
+        for (std::size_t r = range_start_.back(); r < ranges_.size(); ++r)
+            triangles_ += ranges_[r].triangle_count;
+        range_start_.push_back(uint32_t(ranges_.size()));
+    }
 }
 
 const DetailFrame& DetailSelection::gather() {
-    const std::span<const uint8_t> chosen = chooser_.chosen();
+    const std::size_t objects = levels_->objectCount();
     DetailFrame& frame = frame_;
-    frame.objects.assign(chosen.size(), PrimitiveRange{});
+    frame.objects.assign(objects, PrimitiveRange{});
     frame.detailed_triangle.clear();
-    frame.boxed_objects = frame.culled_objects = 0;
-    for (uint32_t o = 0; o < chosen.size(); ++o) {
+    frame.boxed_objects = boxed_objects_;
+    frame.culled_objects = culled_objects_;
+    for (uint32_t o = 0; o < objects; ++o) {
         const uint32_t first = uint32_t(frame.detailed_triangle.size());
-        frame.objects[o] = {first, 0};
-        if (chosen[o] == LevelChooser::kCulled) {
-            ++frame.culled_objects;
-            continue;
-        }
-        const DetailLevel& level = levels_->levels(o)[chosen[o]];
-        frame.boxed_objects += level.box ? 1 : 0;
-        for (uint32_t t = 0; t < level.triangle_count; ++t)
-            frame.detailed_triangle.push_back(level.first_triangle + t);
-        frame.objects[o].triangle_count = level.triangle_count;
+        for (const PrimitiveRange& range : chosenRanges(o))
+            for (uint32_t t = 0; t < range.triangle_count; ++t)
+                frame.detailed_triangle.push_back(range.first_triangle + t);
+        frame.objects[o] = {first, uint32_t(frame.detailed_triangle.size()) - first};
     }
     frame.triangles = frame.detailed_triangle.size();
     frame.positions.resize(frame.triangles);

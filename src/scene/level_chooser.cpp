@@ -75,37 +75,62 @@ bool LevelChooser::outsideView(const Bounds& bounds, const ViewProjection& view)
 
 std::span<const uint8_t> LevelChooser::choose(const LevelsOfDetail& levels,
                                               std::span<const Bounds> bounds,
+                                              std::span<const Bounds> piece_bounds,
                                               const ViewProjection& view) {
     const std::size_t objects = levels.objectCount();
-    if (bounds.size() != objects)
+    if (bounds.size() != objects || piece_bounds.size() != levels.pieceCount())
         throw std::invalid_argument("bounds for " + std::to_string(bounds.size()) +
-                                    " objects, the levels have " + std::to_string(objects));
-    const bool first_frame = chosen_.size() != objects;
+                                    " objects and " + std::to_string(piece_bounds.size()) +
+                                    " pieces, the levels have " + std::to_string(objects) +
+                                    " and " + std::to_string(levels.pieceCount()));
+    const bool first_frame = chosen_.size() != levels.pieceCount();
     if (first_frame)
-        chosen_.assign(objects, 0);
+        chosen_.assign(levels.pieceCount(), 0);
     const double coarser_bound = double(max_error_px_) * (1.0 - double(hysteresis_));
     for (uint32_t o = 0; o < objects; ++o) {
+        const PieceSpan pieces = levels.pieces(o);
+        const std::span<uint8_t> chosen = std::span(chosen_).subspan(pieces.first, pieces.count);
         if (outsideView(bounds[o], view)) {
-            chosen_[o] = kCulled;
+            std::fill(chosen.begin(), chosen.end(), kCulled);
             continue;
         }
         const std::span<const DetailLevel> chain = levels.levels(o);
-        const double per_unit = pixelsPerUnit(bounds[o], view);
-        // The coarsest level whose error projects within `limit` pixels (level 0: none).
-        const auto coarsestWithin = [&](double limit) {
-            uint8_t best = 0;
-            for (uint8_t l = 1; l < chain.size(); ++l)
-                if (double(chain[l].error) * per_unit <= limit)
-                    best = l;
-            return best;
-        };
-        uint8_t& level = chosen_[o];
-        if (first_frame || level == kCulled) {
-            level = coarsestWithin(max_error_px_);
-        } else if (double(chain[level].error) * per_unit > max_error_px_) {
-            level = coarsestWithin(max_error_px_); // too coarse now: finer at once
-        } else {
-            level = std::max(level, coarsestWithin(coarser_bound)); // coarser with a margin
+        // The box, seen from the object's bounds: kept while within the bound, taken within the
+        // hysteresis' margin (or on a first sight).
+        if (chain.back().box) {
+            const uint8_t box = uint8_t(chain.size() - 1);
+            const bool was_box = !first_frame && chosen[0] == box;
+            const bool fresh = first_frame || chosen[0] == kCulled;
+            const double limit = was_box || fresh ? max_error_px_ : coarser_bound;
+            if (double(chain.back().error) * pixelsPerUnit(bounds[o], view) <= limit) {
+                std::fill(chosen.begin(), chosen.end(), box);
+                continue;
+            }
+        }
+        const uint32_t simplified = uint32_t(chain.size()) - (chain.back().box ? 1 : 0);
+        for (uint32_t i = 0; i < pieces.count; ++i) {
+            const uint32_t piece = pieces.first + i;
+            uint8_t& level = chosen[i];
+            if (pieces.count > 1 && outsideView(piece_bounds[piece], view)) {
+                level = kCulled;
+                continue;
+            }
+            const double per_unit = pixelsPerUnit(piece_bounds[piece], view);
+            // The coarsest level whose error projects within `limit` pixels (level 0: none).
+            const auto coarsestWithin = [&](double limit) {
+                uint8_t best = 0;
+                for (uint8_t l = 1; l < simplified; ++l)
+                    if (double(levels.pieceLevel(piece, l).error) * per_unit <= limit)
+                        best = l;
+                return best;
+            };
+            if (first_frame || level == kCulled || level >= simplified) { // fresh, or was the box
+                level = coarsestWithin(max_error_px_);
+            } else if (double(levels.pieceLevel(piece, level).error) * per_unit > max_error_px_) {
+                level = coarsestWithin(max_error_px_); // too coarse now: finer at once
+            } else {
+                level = std::max(level, coarsestWithin(coarser_bound)); // coarser with a margin
+            }
         }
     }
     return chosen_;

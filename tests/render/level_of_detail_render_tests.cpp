@@ -22,8 +22,8 @@ using test::kHeight;
 using test::kWidth;
 using test::triangleColours;
 
-// The frame's drawn geometry: each object's chosen level (none when culled), with the colours of
-// the levels' scene (test::triangleColours: each part's).
+// The frame's drawn geometry: each object's chosen triangles (its box, or each piece in view at
+// its level), with the colours of the levels' scene (test::triangleColours: each part's).
 struct DrawnGeometry {
     TrianglePositions positions;
     std::vector<Rgba> colours;
@@ -34,23 +34,21 @@ DrawnGeometry drawnGeometry(const TransparencyRenderer& renderer, PositionsView 
                             const RenderSettings& settings) {
     const LevelsOfDetail& levels = *renderer.levels();
     const std::vector<Rgba> colours = triangleColours(levels.scene(), settings);
-    const std::span<const uint8_t> chosen = renderer.chosenLevels();
+    const DetailSelection& selection = *renderer.levelSelection();
     DrawnGeometry drawn;
-    for (uint32_t o = 0; o < chosen.size(); ++o) {
-        if (chosen[o] == LevelChooser::kCulled)
-            continue;
-        const DetailLevel& level = levels.levels(o)[chosen[o]];
-        for (uint32_t t = level.first_triangle; t < level.first_triangle + level.triangle_count;
-             ++t) {
-            for (std::size_t c = std::size_t(t) * 3; c < std::size_t(t) * 3 + 3; ++c) {
-                drawn.positions.x.push_back(frame.x[c]);
-                drawn.positions.y.push_back(frame.y[c]);
-                drawn.positions.z.push_back(frame.z[c]);
+    for (uint32_t o = 0; o < levels.objectCount(); ++o)
+        for (const PrimitiveRange& range : selection.chosenRanges(o)) {
+            for (uint32_t t = range.first_triangle; t < range.first_triangle + range.triangle_count;
+                 ++t) {
+                for (std::size_t c = std::size_t(t) * 3; c < std::size_t(t) * 3 + 3; ++c) {
+                    drawn.positions.x.push_back(frame.x[c]);
+                    drawn.positions.y.push_back(frame.y[c]);
+                    drawn.positions.z.push_back(frame.z[c]);
+                }
+                drawn.colours.push_back(colours[t]);
             }
-            drawn.colours.push_back(colours[t]);
+            drawn.triangles += range.triangle_count;
         }
-        drawn.triangles += level.triangle_count;
-    }
     return drawn;
 }
 
@@ -75,8 +73,8 @@ TEST(LevelOfDetailRender, WalkthroughFramesAreExactForTheLevelsDrawn) {
             RenderStats stats;
             const std::vector<uint8_t> image =
                 renderer.render(scene.positions, view, stats).toRgba8();
-            const std::span<const uint8_t> chosen = renderer.chosenLevels();
-            ASSERT_EQ(chosen.size(), scene.objects.size());
+            const std::span<const uint8_t> chosen = renderer.levelSelection()->chosen();
+            ASSERT_EQ(chosen.size(), levels->pieceCount());
             if (!previous.empty())
                 for (std::size_t o = 0; o < chosen.size(); ++o)
                     switched += chosen[o] != previous[o];
@@ -154,7 +152,7 @@ TEST(LevelOfDetailRender, LevelZeroEverywhereDrawsThePictureWithoutLevels) {
             const std::vector<uint8_t> without = plain.render(scene.positions, view, a).toRgba8();
             const std::vector<uint8_t> with = levels.render(scene.positions, view, b).toRgba8();
             uint32_t culled = 0;
-            for (uint8_t c : levels.chosenLevels()) {
+            for (uint8_t c : levels.levelSelection()->chosen()) {
                 EXPECT_TRUE(c == 0 || c == LevelChooser::kCulled);
                 culled += c == LevelChooser::kCulled;
             }
@@ -195,10 +193,16 @@ TEST(LevelOfDetailRender, FarAwayObjectsAreBoxesAndEveryMethodDrawsTheSameLevels
         reference.render(scene.positions, view, reference_stats).toRgba8();
     EXPECT_EQ(stats.triangles, reference_stats.triangles);
     EXPECT_LE(compareImages(image, expected).max_abs, 1);
-    uint32_t boxes = 0;
-    for (uint32_t o = 0; o < scene.objects.size(); ++o)
-        boxes += levels->levels(o).back().box &&
-                 vissort.chosenLevels()[o] == levels->levels(o).size() - 1;
+    uint32_t boxes = 0; // objects whose every piece is at the box level
+    const std::span<const uint8_t> chosen = vissort.levelSelection()->chosen();
+    for (uint32_t o = 0; o < scene.objects.size(); ++o) {
+        const PieceSpan pieces = levels->pieces(o);
+        bool box = levels->levels(o).back().box;
+        for (uint32_t p = pieces.first; p < pieces.first + pieces.count; ++p)
+            box = box && chosen[p] == levels->levels(o).size() - 1;
+        boxes += box;
+    }
+    EXPECT_GT(boxes, 0u);
     EXPECT_EQ(stats.boxed_objects, boxes);
     EXPECT_LT(stats.triangles, scene.triangleCount() / 20);
 }

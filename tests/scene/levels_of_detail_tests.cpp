@@ -50,13 +50,77 @@ bool closed(PositionsView positions, PrimitiveRange range) {
     return true;
 }
 
-TEST(LevelsOfDetail, LevelZeroIsTheSourceAndCoarserLevelsShrink) {
+// The triangles of a set of ranges, as one range when they are one (tests of closedness take
+// ranges one at a time, so a union is copied into a scene of its own).
+TrianglePositions trianglesOf(PositionsView positions, std::span<const PrimitiveRange> ranges) {
+    TrianglePositions out;
+    for (const PrimitiveRange& range : ranges)
+        for (std::size_t c = std::size_t(range.first_triangle) * 3;
+             c < std::size_t(range.first_triangle + range.triangle_count) * 3; ++c) {
+            out.x.push_back(positions.x[c]);
+            out.y.push_back(positions.y[c]);
+            out.z.push_back(positions.z[c]);
+        }
+    return out;
+}
+
+bool holds(const Bounds& outer, const Bounds& inner) {
+    return inner.min.x >= outer.min.x && inner.min.y >= outer.min.y && inner.min.z >= outer.min.z &&
+           inner.max.x <= outer.max.x && inner.max.y <= outer.max.y && inner.max.z <= outer.max.z;
+}
+
+// A closed pipe along z from 0 to length, its radius waving about 0.5 (so that its rings are
+// worth keeping near the eye): rings of `segments` corners every unit, flat caps.
+Scene longPipe(double length, int segments) {
+    Scene scene;
+    scene.name = "pipe";
+    const auto corner = [&](int ring, int j) {
+        const double a = 2 * M_PI * j / segments, radius = 0.5 + 0.15 * std::sin(ring * 0.7);
+        return Vec3{radius * std::cos(a), radius * std::sin(a), double(ring)};
+    };
+    const auto add = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
+        for (const Vec3& p : {a, b, c}) {
+            scene.positions.x.push_back(float(p.x));
+            scene.positions.y.push_back(float(p.y));
+            scene.positions.z.push_back(float(p.z));
+        }
+    };
+    const int rings = int(length) + 1;
+    for (int r = 0; r + 1 < rings; ++r)
+        for (int j = 0; j < segments; ++j) {
+            const int k = (j + 1) % segments;
+            add(corner(r, j), corner(r, k), corner(r + 1, k));
+            add(corner(r, j), corner(r + 1, k), corner(r + 1, j));
+        }
+    for (int j = 0; j < segments; ++j) {
+        const int k = (j + 1) % segments;
+        add({0, 0, 0}, corner(0, k), corner(0, j));
+        add({0, 0, double(rings - 1)}, corner(rings - 1, j), corner(rings - 1, k));
+    }
+    scene.objects.push_back({"pipe",
+                             {0.6f, 0.6f, 0.7f, 1.0f},
+                             false,
+                             0,
+                             uint32_t(scene.positions.triangleCount()),
+                             {}});
+    CameraSpec camera;
+    camera.eye = {0, 2, -3};
+    camera.target = {0, 0, length / 2};
+    scene.camera = camera;
+    return scene;
+}
+
+class LevelsOfDetailPieces : public ::testing::TestWithParam<uint32_t> {};
+
+TEST_P(LevelsOfDetailPieces, LevelZeroIsTheSourceAndCoarserLevelsShrink) {
     const Scene source = load("builtin:powerplant?scale=0.1");
-    const LevelsOfDetail lod = LevelsOfDetail::build(source);
+    LodOptions options;
+    options.piece_triangles = GetParam();
+    const LevelsOfDetail lod = LevelsOfDetail::build(source, options);
     const Scene& scene = lod.scene();
     ASSERT_EQ(scene.objects.size(), source.objects.size());
     EXPECT_TRUE(validateScene(scene).ok) << validateScene(scene).error;
-    std::size_t simplified = 0, boxes = 0;
+    std::size_t simplified = 0, boxes = 0, cut = 0;
     for (uint32_t o = 0; o < source.objects.size(); ++o) {
         const SceneObject& from = source.objects[o];
         const SceneObject& to = scene.objects[o];
@@ -67,14 +131,21 @@ TEST(LevelsOfDetail, LevelZeroIsTheSourceAndCoarserLevelsShrink) {
         EXPECT_EQ(levels[0].first_triangle, to.first_triangle);
         EXPECT_EQ(levels[0].triangle_count, from.triangle_count);
         EXPECT_EQ(levels[0].error, 0.0f);
-        for (uint32_t c = 0; c < from.triangle_count * 3; ++c) {
-            const std::size_t s = std::size_t(from.first_triangle) * 3 + c;
-            const std::size_t d = std::size_t(to.first_triangle) * 3 + c;
-            ASSERT_EQ(scene.positions.x[d], source.positions.x[s]) << from.name;
-            ASSERT_EQ(scene.positions.y[d], source.positions.y[s]) << from.name;
-            ASSERT_EQ(scene.positions.z[d], source.positions.z[s]) << from.name;
+        // Level 0 holds each source triangle once, its corners bit for bit (in the pieces'
+        // order when the object is cut).
+        std::vector<uint8_t> seen(from.triangle_count, 0);
+        for (uint32_t t = from.first_triangle; t < from.first_triangle + from.triangle_count; ++t) {
+            const uint32_t d = lod.detailedTriangleOf(t);
+            ASSERT_GE(d, levels[0].first_triangle) << from.name;
+            ASSERT_LT(d - levels[0].first_triangle, from.triangle_count) << from.name;
+            ++seen[d - levels[0].first_triangle];
+            for (uint32_t k = 0; k < 3; ++k) {
+                ASSERT_EQ(scene.positions.x[d * 3 + k], source.positions.x[t * 3 + k]);
+                ASSERT_EQ(scene.positions.y[d * 3 + k], source.positions.y[t * 3 + k]);
+                ASSERT_EQ(scene.positions.z[d * 3 + k], source.positions.z[t * 3 + k]);
+            }
         }
-        EXPECT_EQ(lod.detailedTriangleOf(from.first_triangle), to.first_triangle);
+        EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), std::ptrdiff_t(from.triangle_count));
         for (std::size_t l = 1; l < levels.size(); ++l) {
             EXPECT_LT(levels[l].triangle_count, levels[l - 1].triangle_count) << from.name;
             EXPECT_GE(levels[l].error, levels[l - 1].error) << from.name;
@@ -83,6 +154,36 @@ TEST(LevelsOfDetail, LevelZeroIsTheSourceAndCoarserLevelsShrink) {
         }
         const DetailLevel& last = levels.back();
         EXPECT_EQ(last.first_triangle + last.triangle_count, to.first_triangle + to.triangle_count);
+
+        // The pieces: within the size asked for, their bounds inside the object's, and at each
+        // level together the object's level (triangles and error).
+        const PieceSpan pieces = lod.pieces(o);
+        ASSERT_GE(pieces.count, 1u);
+        cut += pieces.count > 1;
+        const std::size_t simplified_levels = levels.size() - (last.box ? 1 : 0);
+        for (uint32_t p = pieces.first; p < pieces.first + pieces.count; ++p) {
+            EXPECT_TRUE(holds(lod.bounds()[o], lod.pieceBounds()[p])) << from.name;
+            uint32_t level0 = 0;
+            for (const PrimitiveRange& range : lod.pieceLevel(p, 0).ranges)
+                level0 += range.triangle_count;
+            EXPECT_LE(level0, options.piece_triangles) << from.name;
+        }
+        for (std::size_t l = 0; l < simplified_levels; ++l) {
+            uint32_t triangles = 0;
+            float error = 0.0f;
+            for (uint32_t p = pieces.first; p < pieces.first + pieces.count; ++p) {
+                const PieceLevel level = lod.pieceLevel(p, uint32_t(l));
+                error = std::max(error, level.error);
+                for (const PrimitiveRange& range : level.ranges) {
+                    EXPECT_GE(range.first_triangle, levels[l].first_triangle);
+                    EXPECT_LE(range.first_triangle + range.triangle_count,
+                              levels[l].first_triangle + levels[l].triangle_count);
+                    triangles += range.triangle_count;
+                }
+            }
+            EXPECT_EQ(triangles, levels[l].triangle_count) << from.name << " level " << l;
+            EXPECT_EQ(error, levels[l].error) << from.name << " level " << l;
+        }
         simplified += levels.size() > 1 + (last.box ? 1 : 0);
         if (!last.box)
             continue;
@@ -104,6 +205,32 @@ TEST(LevelsOfDetail, LevelZeroIsTheSourceAndCoarserLevelsShrink) {
     }
     EXPECT_GT(simplified, source.objects.size() / 4) << "few objects were simplified";
     EXPECT_GT(boxes, 0u);
+    if (GetParam() < 100) {
+        EXPECT_GT(cut, source.objects.size() / 4) << "few objects were cut";
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(PieceSizes, LevelsOfDetailPieces, ::testing::Values(1024u, 64u));
+
+TEST(LevelsOfDetail, PiecesStayJoinedAtAnyMixOfLevels) {
+    // A closed pipe cut into pieces: any level for each piece gives a closed surface, because
+    // the borders between pieces keep their vertices at every level.
+    const Scene source = longPipe(120, 24); // 5,808 triangles
+    const LevelsOfDetail lod = LevelsOfDetail::build(source);
+    const PieceSpan pieces = lod.pieces(0);
+    ASSERT_GE(pieces.count, 4u);
+    const std::size_t simplified = lod.levels(0).size() - (lod.levels(0).back().box ? 1 : 0);
+    ASSERT_GE(simplified, 3u) << "the pipe should simplify";
+    for (uint32_t mix = 0; mix < 12; ++mix) {
+        std::vector<PrimitiveRange> ranges;
+        for (uint32_t p = 0; p < pieces.count; ++p) {
+            const uint32_t level = (p * 7 + mix * 3 + p * p * mix) % uint32_t(simplified);
+            for (const PrimitiveRange& range : lod.pieceLevel(pieces.first + p, level).ranges)
+                ranges.push_back(range);
+        }
+        const TrianglePositions joined = trianglesOf(lod.scene().positions, ranges);
+        EXPECT_TRUE(closed(joined, {0, uint32_t(joined.triangleCount())})) << "mix " << mix;
+    }
 }
 
 TEST(LevelsOfDetail, ClosedSolidsStayClosed) {
@@ -136,8 +263,8 @@ TEST(LevelsOfDetail, DynamicScenesFramesExpandTheSources) {
         const TrianglePositions from = source.frame(t);
         const TrianglePositions to = lod.scene().frame(t);
         TrianglePositions expanded;
-        std::vector<Bounds> bounds;
-        lod.expand(from, expanded, bounds);
+        std::vector<Bounds> bounds, piece_bounds;
+        lod.expand(from, expanded, bounds, piece_bounds);
         ASSERT_EQ(expanded.x, to.x);
         ASSERT_EQ(expanded.z, to.z);
         for (uint32_t o = 0; o < source.objects.size(); ++o) {
@@ -148,11 +275,22 @@ TEST(LevelsOfDetail, DynamicScenesFramesExpandTheSources) {
                 expected.add(from.corner(c));
             EXPECT_EQ(bounds[o].min.x, expected.min.x);
             EXPECT_EQ(bounds[o].max.z, expected.max.z);
-            // Level 0 is this frame's source triangles; every simplified corner is one of them.
-            const PrimitiveRange level0 = {lod.levels(o)[0].first_triangle, object.triangle_count};
-            for (uint32_t c = 0; c < level0.triangle_count * 3; ++c)
-                ASSERT_EQ(to.x[level0.first_triangle * 3 + c],
-                          from.x[object.first_triangle * 3 + c]);
+            // Level 0 is this frame's source triangles.
+            for (uint32_t t = object.first_triangle;
+                 t < object.first_triangle + object.triangle_count; ++t)
+                for (uint32_t k = 0; k < 3; ++k)
+                    ASSERT_EQ(to.x[lod.detailedTriangleOf(t) * 3 + k], from.x[t * 3 + k]);
+            // Each piece's bounds are this frame's, of its level-0 triangles.
+            const PieceSpan pieces = lod.pieces(o);
+            for (uint32_t p = pieces.first; p < pieces.first + pieces.count; ++p) {
+                Bounds piece;
+                for (const PrimitiveRange& range : lod.pieceLevel(p, 0).ranges)
+                    for (std::size_t c = std::size_t(range.first_triangle) * 3;
+                         c < std::size_t(range.first_triangle + range.triangle_count) * 3; ++c)
+                        piece.add(PositionsView(to).corner(c));
+                EXPECT_EQ(piece_bounds[p].min.y, piece.min.y);
+                EXPECT_EQ(piece_bounds[p].max.x, piece.max.x);
+            }
             const DetailLevel& box = lod.levels(o).back();
             if (box.box) { // the box follows the frame's corners
                 EXPECT_EQ(to.x[box.first_triangle * 3], float(expected.min.x));
@@ -167,6 +305,7 @@ TEST(LevelsOfDetail, BadOptionsAreRefused) {
     EXPECT_THROW(LevelsOfDetail::build(source, {0.0f, 8}), std::invalid_argument);
     EXPECT_THROW(LevelsOfDetail::build(source, {1.0f, 8}), std::invalid_argument);
     EXPECT_THROW(LevelsOfDetail::build(source, {0.25f, 1}), std::invalid_argument);
+    EXPECT_THROW(LevelsOfDetail::build(source, {0.25f, 8, 15}), std::invalid_argument);
     EXPECT_THROW(LevelChooser(0.0f), std::invalid_argument);
     EXPECT_THROW(LevelChooser(NAN), std::invalid_argument);
     EXPECT_THROW(LevelChooser(1.0f, 1.0f), std::invalid_argument);
@@ -184,7 +323,10 @@ double expectedPixelsPerUnit(const ViewProjection& view, const CameraSpec& camer
 
 TEST(LevelChooser, ChoosesTheCoarsestLevelWithinTheBoundAndHoldsItWithHysteresis) {
     const Scene source = load("builtin:bunnies?n=1");
-    const LevelsOfDetail lod = LevelsOfDetail::build(source);
+    LodOptions whole; // one piece: the object's levels are the piece's
+    whole.piece_triangles = source.triangleCount();
+    const LevelsOfDetail lod = LevelsOfDetail::build(source, whole);
+    ASSERT_EQ(lod.pieceCount(), 1u);
     const std::span<const DetailLevel> levels = lod.levels(0);
     ASSERT_GE(levels.size(), 3u);
     const Bounds bounds = lod.bounds()[0];
@@ -210,7 +352,8 @@ TEST(LevelChooser, ChoosesTheCoarsestLevelWithinTheBoundAndHoldsItWithHysteresis
     uint8_t last = 0;
     for (std::size_t f = 0; f < distances.size(); ++f) {
         const auto [view, camera] = viewAt(distances[f]);
-        const uint8_t level = chooser.choose(lod, std::span(&bounds, 1), view)[0];
+        const uint8_t level =
+            chooser.choose(lod, std::span(&bounds, 1), std::span(&bounds, 1), view)[0];
         ASSERT_NE(level, LevelChooser::kCulled);
         const double nearest = distances[f] - (bounds.max.z - centre.z);
         const double per_unit = expectedPixelsPerUnit(view, camera, nearest);
@@ -236,13 +379,69 @@ TEST(LevelChooser, ChoosesTheCoarsestLevelWithinTheBoundAndHoldsItWithHysteresis
         const double depth = threshold * (i % 2 ? 1.05 : 0.95);
         const double distance = depth + (bounds.max.z - centre.z);
         const ViewProjection view = viewAt(distance).first;
-        chosen.push_back(steady.choose(lod, std::span(&bounds, 1), view)[0]);
-        without.push_back(flickering.choose(lod, std::span(&bounds, 1), view)[0]);
+        chosen.push_back(steady.choose(lod, std::span(&bounds, 1), std::span(&bounds, 1), view)[0]);
+        without.push_back(
+            flickering.choose(lod, std::span(&bounds, 1), std::span(&bounds, 1), view)[0]);
     }
     for (std::size_t i = 2; i < chosen.size(); ++i) {
         EXPECT_EQ(chosen[i], chosen[1]) << "flickered at step " << i;
         EXPECT_NE(without[i], without[i - 1]) << "without hysteresis the level should switch";
     }
+}
+
+TEST(LevelChooser, EachPieceTakesItsOwnLevelAndPiecesBehindTheEyeAreLeftOut) {
+    // From inside a pipe 200 long, at z = 30 looking along it: the pieces behind the eye are
+    // culled, the near ones fine, the far ones coarse, each within the bound from its own depth.
+    const Scene source = longPipe(200, 24);
+    auto lod = std::make_shared<const LevelsOfDetail>(LevelsOfDetail::build(source));
+    const PieceSpan pieces = lod->pieces(0);
+    ASSERT_GE(pieces.count, 8u);
+    CameraSpec camera;
+    camera.eye = {0, 0, 30};
+    camera.target = {0, 0, 100};
+    camera.up = {0, 1, 0};
+    const ViewProjection view = frameCamera(camera, lod->bounds()[0], 800, 600);
+    const float bound = 1.0f;
+    DetailSelection selection(source, lod, bound);
+    selection.select(source.positions, view);
+    const std::span<const uint8_t> chosen = selection.chosen();
+    ASSERT_EQ(chosen.size(), lod->pieceCount());
+    uint32_t culled = 0, drawn_triangles = 0;
+    uint8_t nearest_level = 0xFF, farthest_level = 0;
+    double nearest_depth = INFINITY, farthest_depth = 0;
+    for (uint32_t p = pieces.first; p < pieces.first + pieces.count; ++p) {
+        const Bounds& piece = lod->pieceBounds()[p];
+        if (piece.max.z < 30 - 1e-3) { // wholly behind the eye
+            EXPECT_EQ(chosen[p], LevelChooser::kCulled) << "piece " << p;
+            ++culled;
+            continue;
+        }
+        ASSERT_NE(chosen[p], LevelChooser::kCulled) << "piece " << p;
+        for (const PrimitiveRange& range : lod->pieceLevel(p, chosen[p]).ranges)
+            drawn_triangles += range.triangle_count;
+        const double depth = piece.min.z - 30;
+        if (depth <= view.near) {
+            EXPECT_EQ(chosen[p], 0) << "piece " << p << " reaches the eye";
+            continue;
+        }
+        const double per_unit = expectedPixelsPerUnit(view, camera, depth);
+        EXPECT_LE(lod->pieceLevel(p, chosen[p]).error * per_unit, bound * 1.0001) << "piece " << p;
+        if (depth < nearest_depth)
+            nearest_depth = depth, nearest_level = chosen[p];
+        if (depth > farthest_depth)
+            farthest_depth = depth, farthest_level = chosen[p];
+    }
+    EXPECT_GT(culled, 0u);
+    EXPECT_GT(farthest_level, nearest_level) << "the far end should be coarser";
+    // The selection draws exactly the chosen pieces, and the gathered frame holds them.
+    const std::span<const PrimitiveRange> ranges = selection.chosenRanges(0);
+    uint32_t selected = 0;
+    for (const PrimitiveRange& range : ranges)
+        selected += range.triangle_count;
+    EXPECT_EQ(selected, drawn_triangles);
+    EXPECT_EQ(selection.triangles(), drawn_triangles);
+    EXPECT_EQ(selection.gather().objects[0].triangle_count, drawn_triangles);
+    EXPECT_LT(drawn_triangles, source.triangleCount() / 2);
 }
 
 TEST(LevelChooser, ObjectsOutOfViewAreCulledAndOthersAreNot) {
