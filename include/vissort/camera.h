@@ -75,6 +75,13 @@ struct ScreenExtent {
     bool isEmpty() const { return !(low_x <= high_x && low_y <= high_y); }
 };
 
+/// Whether no point of box can be seen in view: every corner is outside one plane of the clip
+/// volume, the same plane (left, right, bottom, top: |x|, |y| <= w; or near: z >= 0), so their
+/// hull is too. Conservative: a box within a rounding error of a plane (1e-5 of the corner's
+/// clip coordinates, the GPU's float transform) counts as seen; the far plane is not tested
+/// (perspective views have none). An empty box is outside.
+bool boxOutsideView(const Bounds& box, const ViewProjection& view);
+
 /// The default view of a scene: perspective, 45 degrees vertically, looking at the bounding
 /// sphere's centre from the direction (0.6, 0.5, 1), far enough that the whole sphere fits in an
 /// image of the given aspect ratio (width / height) with a 5% margin.

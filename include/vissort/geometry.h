@@ -67,6 +67,11 @@ struct Bounds {
     Vec3 centre() const;
     /// Half the diagonal: the radius of the bounding sphere the cameras frame.
     double radius() const;
+    /// Corner i (0 to 7) of a box that is not empty: bit 0 of i picks max.x over min.x, bit 1
+    /// max.y, bit 2 max.z.
+    Vec3 corner(unsigned i) const {
+        return {i & 1 ? max.x : min.x, i & 2 ? max.y : min.y, i & 4 ? max.z : min.z};
+    }
 };
 
 /// World-space triangle corners as a structure of arrays, seen, not owned: what every oracle,

@@ -143,8 +143,6 @@ public:
     /// depths, with the perspective's stretch at the frustum's edges); infinite when the box
     /// reaches the eye plane.
     static double pixelsPerUnit(const Bounds& bounds, const ViewProjection& view);
-    /// Whether no point of bounds can be in the view's frustum (conservative: false when unsure).
-    static bool outsideView(const Bounds& bounds, const ViewProjection& view);
 
 private:
     float max_error_px_, hysteresis_;

@@ -89,6 +89,9 @@ struct VisSortWorkspace {
     std::vector<uint32_t> unsorted, outside, candidates, targets, position;
     std::vector<uint8_t> in_monotone_run, query, behind, in_cycle, walk_state;
     std::vector<int32_t> path_index;
+    // The cycle search's coverage: per primitive, the list positions [first, last] whose other
+    // primitives it was tested behind, in the current call (src/core/source_cycle.cpp).
+    std::vector<uint32_t> covered_first, covered_last;
     // The cycle search's path below the last source it found, resumed at the next stuck
     // iteration of the same visSort call (src/core/source_cycle.h).
     std::vector<CycleSearchStep> pending_path;

@@ -273,6 +273,28 @@ std::array<double, 4> ViewProjection::toClip(const Vec3& world) const {
     return {clip.x, clip.y, clip.z, clip.w};
 }
 
+bool boxOutsideView(const Bounds& box, const ViewProjection& view) {
+    if (box.isEmpty())
+        return true;
+    const glm::dmat4 clip = toMat(view.projection_matrix) * toMat(view.view);
+    glm::dvec4 corners[8];
+    for (unsigned i = 0; i < 8; ++i)
+        corners[i] = clip * glm::dvec4(toGlm(box.corner(i)), 1.0);
+    // Inside each plane: w - x, w + x, w - y, w + y, z all >= 0.
+    const auto outside = [&](auto distance) {
+        for (const glm::dvec4& c : corners)
+            if (distance(c) >=
+                -1e-5 * (std::abs(c.x) + std::abs(c.y) + std::abs(c.z) + std::abs(c.w)))
+                return false;
+        return true;
+    };
+    return outside([](const glm::dvec4& c) { return c.w - c.x; }) ||
+           outside([](const glm::dvec4& c) { return c.w + c.x; }) ||
+           outside([](const glm::dvec4& c) { return c.w - c.y; }) ||
+           outside([](const glm::dvec4& c) { return c.w + c.y; }) ||
+           outside([](const glm::dvec4& c) { return c.z; });
+}
+
 double ViewProjection::depthOf(const Vec3& world) const {
     const double z = -(toMat(view) * glm::dvec4(toGlm(world), 1.0)).z;
     if (projection == Projection::perspective)

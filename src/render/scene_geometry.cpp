@@ -214,12 +214,11 @@ void SceneGeometry::bind() const {
 }
 
 void SceneGeometry::drawOpaque(const ViewProjection& view) {
-    const glm::dmat4 clip = clipTransform(view);
     draw_counts_.clear();
     draw_offsets_.clear();
     uint32_t end = 0; // where the last range drawn ends, in triangles
     for (const ObjectRun& run : opaque_runs_) {
-        if (boxOutsideView(object_bounds_[run.object], clip))
+        if (boxOutsideView(object_bounds_[run.object], view))
             continue;
         if (!draw_counts_.empty() && end == run.first) {
             draw_counts_.back() += GLsizei(run.count * 3);

@@ -10,17 +10,6 @@
 #include "vissort/levels_of_detail.h"
 
 namespace vissort {
-namespace {
-
-std::array<Vec3, 8> cornersOf(const Bounds& bounds) {
-    std::array<Vec3, 8> corners;
-    for (uint8_t c = 0; c < 8; ++c)
-        corners[c] = {c & 1 ? bounds.max.x : bounds.min.x, c & 2 ? bounds.max.y : bounds.min.y,
-                      c & 4 ? bounds.max.z : bounds.min.z};
-    return corners;
-}
-
-} // namespace
 
 LevelChooser::LevelChooser(float max_error_px, float hysteresis)
     : max_error_px_(max_error_px), hysteresis_(hysteresis) {
@@ -42,8 +31,9 @@ double LevelChooser::pixelsPerUnit(const Bounds& bounds, const ViewProjection& v
     if (view.projection == Projection::orthographic)
         return scale;
     double nearest = std::numeric_limits<double>::infinity();
-    for (const Vec3& corner : cornersOf(bounds))
-        nearest = std::min(nearest, view.toClip(corner)[3]); // w: the depth along the view
+    for (unsigned c = 0; c < 8; ++c)
+        nearest =
+            std::min(nearest, view.toClip(bounds.corner(c))[3]); // w: the depth along the view
     if (!(nearest > 0.0))
         return std::numeric_limits<double>::infinity();
     // Nothing is drawn nearer than the near plane. A length at depth w spans scale / w pixels
@@ -53,24 +43,6 @@ double LevelChooser::pixelsPerUnit(const Bounds& bounds, const ViewProjection& v
     const double tx = p[0] != 0 ? 1.0 / std::abs(p[0]) : 0.0;
     const double ty = p[5] != 0 ? 1.0 / std::abs(p[5]) : 0.0;
     return scale / nearest * std::sqrt(1.0 + tx * tx + ty * ty);
-}
-
-bool LevelChooser::outsideView(const Bounds& bounds, const ViewProjection& view) {
-    if (bounds.isEmpty())
-        return true;
-    // Outside when every corner fails the same plane of the clip volume (-w <= x, y <= w,
-    // 0 <= z): then so does their hull. A margin keeps corners on a plane inside.
-    std::array<bool, 5> all_outside{true, true, true, true, true};
-    for (const Vec3& corner : cornersOf(bounds)) {
-        const std::array<double, 4> c = view.toClip(corner);
-        const double margin = 1e-6 * (std::abs(c[3]) + std::abs(c[0]) + std::abs(c[1]) + 1.0);
-        all_outside[0] = all_outside[0] && c[0] < -c[3] - margin;
-        all_outside[1] = all_outside[1] && c[0] > c[3] + margin;
-        all_outside[2] = all_outside[2] && c[1] < -c[3] - margin;
-        all_outside[3] = all_outside[3] && c[1] > c[3] + margin;
-        all_outside[4] = all_outside[4] && c[2] < -margin;
-    }
-    return std::find(all_outside.begin(), all_outside.end(), true) != all_outside.end();
 }
 
 std::span<const uint8_t> LevelChooser::choose(const LevelsOfDetail& levels,
@@ -90,7 +62,7 @@ std::span<const uint8_t> LevelChooser::choose(const LevelsOfDetail& levels,
     for (uint32_t o = 0; o < objects; ++o) {
         const PieceSpan pieces = levels.pieces(o);
         const std::span<uint8_t> chosen = std::span(chosen_).subspan(pieces.first, pieces.count);
-        if (outsideView(bounds[o], view)) {
+        if (boxOutsideView(bounds[o], view)) {
             std::fill(chosen.begin(), chosen.end(), kCulled);
             continue;
         }
@@ -111,7 +83,7 @@ std::span<const uint8_t> LevelChooser::choose(const LevelsOfDetail& levels,
         for (uint32_t i = 0; i < pieces.count; ++i) {
             const uint32_t piece = pieces.first + i;
             uint8_t& level = chosen[i];
-            if (pieces.count > 1 && outsideView(piece_bounds[piece], view)) {
+            if (pieces.count > 1 && boxOutsideView(piece_bounds[piece], view)) {
                 level = kCulled;
                 continue;
             }

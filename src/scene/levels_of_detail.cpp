@@ -34,11 +34,6 @@ constexpr std::array<std::array<uint8_t, 3>, 12> kBoxTriangles = {{
     {3, 7, 5}, // x max
 }};
 
-Vec3 boxCorner(const Bounds& bounds, uint8_t corner) {
-    return {corner & 1 ? bounds.max.x : bounds.min.x, corner & 2 ? bounds.max.y : bounds.min.y,
-            corner & 4 ? bounds.max.z : bounds.min.z};
-}
-
 double diagonal(const Bounds& bounds) {
     const double dx = bounds.max.x - bounds.min.x, dy = bounds.max.y - bounds.min.y,
                  dz = bounds.max.z - bounds.min.z;
@@ -205,7 +200,7 @@ struct LevelsOfDetail::Expansion {
         std::size_t c = std::size_t(first_triangle) * 3;
         for (const auto& triangle : kBoxTriangles)
             for (uint8_t corner : triangle) {
-                const Vec3 p = boxCorner(bounds, corner);
+                const Vec3 p = bounds.corner(corner);
                 out.x[c] = float(p.x);
                 out.y[c] = float(p.y);
                 out.z[c] = float(p.z);

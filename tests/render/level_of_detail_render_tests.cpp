@@ -164,8 +164,9 @@ TEST(LevelOfDetailRender, LevelZeroEverywhereDrawsThePictureWithoutLevels) {
             EXPECT_LE(compareImages(without, with).max_abs,
                       method == BlendMethod::unsorted ? 255 : 1)
                 << "frame " << f;
-            if (method != BlendMethod::unsorted)
+            if (method != BlendMethod::unsorted) {
                 EXPECT_EQ(compareImages(without, with).pixels_over_one, 0u) << "frame " << f;
+            }
         }
     }
 }

@@ -452,20 +452,20 @@ TEST(LevelChooser, ObjectsOutOfViewAreCulledAndOthersAreNot) {
     camera.eye = {0, 0, 10};
     camera.target = {0, 0, 0};
     const ViewProjection view = frameCamera(camera, box, 400, 300);
-    EXPECT_FALSE(LevelChooser::outsideView(box, view));
+    EXPECT_FALSE(boxOutsideView(box, view));
     const auto moved = [&](double x, double y, double z) {
         Bounds b;
         b.add({box.min.x + x, box.min.y + y, box.min.z + z});
         b.add({box.max.x + x, box.max.y + y, box.max.z + z});
         return b;
     };
-    EXPECT_TRUE(LevelChooser::outsideView(moved(0, 0, 30), view)); // behind the eye
-    EXPECT_TRUE(LevelChooser::outsideView(moved(100, 0, 0), view));
-    EXPECT_TRUE(LevelChooser::outsideView(moved(0, -100, 0), view));
+    EXPECT_TRUE(boxOutsideView(moved(0, 0, 30), view)); // behind the eye
+    EXPECT_TRUE(boxOutsideView(moved(100, 0, 0), view));
+    EXPECT_TRUE(boxOutsideView(moved(0, -100, 0), view));
     // The near plane is at about 8.2 (frameCamera): a box in front of it is out, one across it in.
-    EXPECT_TRUE(LevelChooser::outsideView(moved(0, 0, 9.5), view));
-    EXPECT_FALSE(LevelChooser::outsideView(moved(0, 0, 2), view));
-    EXPECT_FALSE(LevelChooser::outsideView(moved(3.5, 0, 0), view)); // at the edge, partly in
+    EXPECT_TRUE(boxOutsideView(moved(0, 0, 9.5), view));
+    EXPECT_FALSE(boxOutsideView(moved(0, 0, 2), view));
+    EXPECT_FALSE(boxOutsideView(moved(3.5, 0, 0), view)); // at the edge, partly in
     EXPECT_EQ(LevelChooser::pixelsPerUnit(moved(0, 0, 10), view), INFINITY); // across the eye
 }
 

@@ -1,16 +1,16 @@
-// The renderer's view culling (no OpenGL): a box is culled only when no point of it is in the
-// view volume, checked with the camera's own clip transform (ViewProjection::toClip) on its
-// corners and points inside it, over random perspective and orthographic views; and culling
-// does happen, on boxes beside, behind and straddling the eye.
+// View culling (boxOutsideView, camera.h; the renderer's draws and the levels of detail's
+// choice): a box is culled only when no point of it is in the view volume, checked with the
+// camera's own clip transform (ViewProjection::toClip) on its corners and points inside it, over
+// random perspective and orthographic views; and culling does happen, on boxes beside, behind and
+// straddling the eye.
 
 #include <gtest/gtest.h>
 
 #include <random>
 
-#include "render/view_culling.h"
 #include "vissort/camera.h"
 
-namespace vissort::detail {
+namespace vissort {
 namespace {
 
 // Inside the clip volume the renderer draws: |x|, |y| <= w and z >= 0 (zero-to-one depth).
@@ -36,7 +36,6 @@ TEST(ViewCulling, ABoxIsCulledOnlyWhenNoPointOfItIsInView) {
         }
         SCOPED_TRACE(testing::Message() << "view " << v);
         const ViewProjection view = frameCamera(camera, scene, 64, 48);
-        const glm::dmat4 clip = clipTransform(view);
         for (int b = 0; b < 300; ++b, ++boxes) {
             const Vec3 centre{place(random), place(random), place(random)};
             // Sizes from 0.01 to 5 a side, one side in ten flat (a wall seen edge-on).
@@ -48,15 +47,13 @@ TEST(ViewCulling, ABoxIsCulledOnlyWhenNoPointOfItIsInView) {
             box.add(centre - h);
             box.add(centre + h);
             bool any_in_view = false;
-            for (int i = 0; i < 8 && !any_in_view; ++i)
-                any_in_view =
-                    inView(view, {i & 1 ? box.max.x : box.min.x, i & 2 ? box.max.y : box.min.y,
-                                  i & 4 ? box.max.z : box.min.z});
+            for (unsigned i = 0; i < 8 && !any_in_view; ++i)
+                any_in_view = inView(view, box.corner(i));
             for (int i = 0; i < 40 && !any_in_view; ++i)
                 any_in_view = inView(view, {box.min.x + unit(random) * (box.max.x - box.min.x),
                                             box.min.y + unit(random) * (box.max.y - box.min.y),
                                             box.min.z + unit(random) * (box.max.z - box.min.z)});
-            const bool outside = boxOutsideView(box, clip);
+            const bool outside = boxOutsideView(box, view);
             if (outside) {
                 EXPECT_FALSE(any_in_view) << "box " << b << " culled with a point in view";
             }
@@ -72,16 +69,15 @@ TEST(ViewCulling, ABoxIsCulledOnlyWhenNoPointOfItIsInView) {
 TEST(ViewCulling, BoxesBehindTheEyeAreCulledAndOnesAroundItAreNot) {
     CameraSpec camera; // at (0, 0, 5) looking along -z
     const ViewProjection view = frameCamera(camera, Bounds{{-1, -1, -1}, {1, 1, 1}}, 64, 48);
-    const glm::dmat4 clip = clipTransform(view);
-    EXPECT_TRUE(boxOutsideView(Bounds{{-1, -1, 6}, {1, 1, 8}}, clip));   // behind
-    EXPECT_TRUE(boxOutsideView(Bounds{{40, -1, -1}, {42, 1, 1}}, clip)); // far right
+    EXPECT_TRUE(boxOutsideView(Bounds{{-1, -1, 6}, {1, 1, 8}}, view));   // behind
+    EXPECT_TRUE(boxOutsideView(Bounds{{40, -1, -1}, {42, 1, 1}}, view)); // far right
     // Near plane at 3.2 from the eye (frameCamera): a box around the eye but not past it is not
     // drawn; one from the eye into the view is.
-    EXPECT_TRUE(boxOutsideView(Bounds{{-1, -1, 4}, {1, 1, 6}}, clip));
-    EXPECT_FALSE(boxOutsideView(Bounds{{-1, -1, -1}, {1, 1, 6}}, clip));
-    EXPECT_FALSE(boxOutsideView(Bounds{{-1, -1, -1}, {1, 1, 1}}, clip)); // ahead
-    EXPECT_TRUE(boxOutsideView(Bounds{}, clip));                         // empty
+    EXPECT_TRUE(boxOutsideView(Bounds{{-1, -1, 4}, {1, 1, 6}}, view));
+    EXPECT_FALSE(boxOutsideView(Bounds{{-1, -1, -1}, {1, 1, 6}}, view));
+    EXPECT_FALSE(boxOutsideView(Bounds{{-1, -1, -1}, {1, 1, 1}}, view)); // ahead
+    EXPECT_TRUE(boxOutsideView(Bounds{}, view));                         // empty
 }
 
 } // namespace
-} // namespace vissort::detail
+} // namespace vissort
