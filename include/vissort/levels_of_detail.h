@@ -74,6 +74,9 @@ public:
     const Scene& scene() const { return scene_; }
     std::span<const DetailLevel> levels(uint32_t object) const;
     std::size_t objectCount() const { return level_start_.size() - 1; }
+    /// Every object's levels together (the box included): levelCount() / objectCount() is the
+    /// levels an object on average.
+    std::size_t levelCount() const { return levels_.size(); }
     std::size_t sourceTriangleCount() const { return source_triangles_; }
 
     /// The pieces of an object (one when it has at most LodOptions::piece_triangles triangles).

@@ -76,15 +76,12 @@ std::shared_ptr<const LevelsOfDetail> buildLevels(const Scene& scene, double lod
             }));
     }();
     // What the levels hold (docs/lod.md, "Memory").
-    std::size_t chained = 0;
-    for (uint32_t o = 0; o < levels->objectCount(); ++o)
-        chained += levels->levels(o).size();
+    const double chained = double(levels->levelCount());
     const double objects = double(std::max<std::size_t>(1, levels->objectCount()));
     std::cout << "levels of detail: " << levels->scene().triangleCount() << " triangles ("
               << formatNumber(double(levels->scene().triangleCount()) /
                               double(std::max<std::size_t>(1, scene.triangleCount())))
-              << "x the scene's), " << formatNumber(double(chained) / objects)
-              << " levels an object\n";
+              << "x the scene's), " << formatNumber(chained / objects) << " levels an object\n";
     return levels;
 }
 

@@ -203,6 +203,10 @@ TEST_P(LevelsOfDetailPieces, LevelZeroIsTheSourceAndCoarserLevelsShrink) {
                      dz = bounds.max.z - bounds.min.z;
         EXPECT_NEAR(last.error, std::sqrt(dx * dx + dy * dy + dz * dz), 1e-3 * last.error);
     }
+    std::size_t chained = 0;
+    for (uint32_t o = 0; o < source.objects.size(); ++o)
+        chained += lod.levels(o).size();
+    EXPECT_EQ(lod.levelCount(), chained);
     EXPECT_GT(simplified, source.objects.size() / 4) << "few objects were simplified";
     EXPECT_GT(boxes, 0u);
     if (GetParam() < 100) {
