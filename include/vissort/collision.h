@@ -55,6 +55,28 @@ std::vector<CollisionMethod> collisionMethods();
 /// The object stage's default directions: the three axes, then the four cube diagonals.
 std::vector<Vec3> defaultCollisionDirections();
 
+/// When the vissort method runs its object stage (the paper's lists S and C along view
+/// directions). On a CPU it costs about what the tree descents it saves cost, more on scenes
+/// whose box pairs the trees separate at once: docs/collision.md measures it.
+enum class ObjectStage {
+    adaptive, // every frame while it saves more descent time than it takes; else skipped for 2,
+              // 4, ... up to 32 frames, then tried again (its cost and savings timed each time)
+    always,   // every frame: the paper's method
+    never,    // boxes, then the trees: the pairs are the same, only the time differs
+};
+inline constexpr EnumName<ObjectStage> kObjectStageNames[] = {
+    {ObjectStage::adaptive, "adaptive"},
+    {ObjectStage::always, "always"},
+    {ObjectStage::never, "never"},
+};
+/// "adaptive", "always" or "never", or "unknown object stage 'NAME' (expected ...)".
+inline Result<ObjectStage> parseObjectStage(std::string_view name) {
+    return parseEnum<ObjectStage>(kObjectStageNames, name, "object stage");
+}
+inline const char* objectStageName(ObjectStage stage) {
+    return enumName<ObjectStage>(kObjectStageNames, stage);
+}
+
 /// Two intersecting triangles: global triangle ids, first < second, of different objects.
 struct TrianglePair {
     uint32_t first = 0, second = 0;
@@ -72,13 +94,17 @@ struct CollisionSettings {
     /// shrinking. On two CPU cores a direction costs about as much as the tree descents of the
     /// pairs it culls, so later directions rarely pay (docs/collision.md).
     float min_cull_fraction = 0.25f;
+    /// vissort: when the object stage runs.
+    ObjectStage object_stage = ObjectStage::adaptive;
     /// vissort: image size in pixels of each object-stage view (1 to 4096 each way).
     uint32_t width = 64, height = 64;
-    /// vissort: threads for the per-object and per-pair work, the calling thread included;
-    /// 0: one per core (std::thread::hardware_concurrency). The pairs never depend on it.
+    /// vissort and bullet: threads for the per-object and per-pair work, the calling thread
+    /// included; 0: one per core (std::thread::hardware_concurrency). The pairs never depend on
+    /// it.
     uint32_t threads = 1;
-    /// vissort: the pool those threads come from (it must outlive the detector); null: the
-    /// process's shared pool (WorkerPool::shared), grown to `threads`. Never one per detector.
+    /// vissort and bullet: the pool those threads come from (it must outlive the detector);
+    /// null: the process's shared pool (WorkerPool::shared), grown to `threads`. Never one per
+    /// detector.
     WorkerPool* pool = nullptr;
 };
 
@@ -92,6 +118,7 @@ struct CollisionStats {
     uint64_t colliding_object_pairs = 0; // object pairs with some intersecting triangle pair
     uint32_t candidate_objects = 0;      // objects in some candidate object pair (the paper's C)
     uint32_t directions = 0;             // vissort: object-stage directions used this frame
+                                         // (0: the object stage did not run)
     uint64_t queries = 0;                // vissort: occlusion queries of the object stage
     double update_ms = 0;                // per-frame structures from the positions (boxes, refits)
     double cull_ms = 0;                  // every culling stage

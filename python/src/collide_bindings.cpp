@@ -35,7 +35,7 @@ template <class Pair> py::array_t<uint32_t> pairsArray(std::vector<Pair>&& pairs
 class Detector {
 public:
     Detector(const py::object& objects, const std::string& method, uint32_t threads,
-             const py::object& size, double min_cull) {
+             const py::object& size, double min_cull, const std::string& object_stage) {
         const Result<CollisionMethod> parsed = parseCollisionMethod(method);
         if (!parsed)
             throw py::value_error(parsed.error);
@@ -45,6 +45,10 @@ public:
         settings_.width = width;
         settings_.height = height;
         settings_.min_cull_fraction = float(min_cull);
+        const Result<ObjectStage> stage = parseObjectStage(object_stage);
+        if (!stage)
+            throw py::value_error(stage.error);
+        settings_.object_stage = *stage.value;
         if (Status valid = validateCollisionSettings(settings_); !valid)
             throw py::value_error(valid.error);
         if (py::isinstance<Scene>(objects)) {
@@ -97,10 +101,13 @@ private:
 
 constexpr const char* kDetectorDoc =
     "objects: a Scene (kept alive by the detector), or integer (first, count) ranges (K, 2) or "
-    "counts (K,). method: vissort, brute, bullet or fcl. vissort's settings, as the command "
-    "line's collide options: threads (the calling one included; 0: one per core), size (each "
-    "object-stage view, pixels) and min_cull (the next direction only while the last culled at "
-    "least this fraction of its object pairs). The pairs never depend on them.";
+    "counts (K,). method: vissort, brute, bullet or fcl. The settings, as the command line's "
+    "collide options: threads (vissort and bullet; the calling one included; 0: one per core), "
+    "and vissort's size (each object-stage view, pixels) and min_cull (the next direction only "
+    "while the last culled at "
+    "least this fraction of its object pairs) and object_stage (adaptive, always or never: when "
+    "the "
+    "object stage runs). The pairs never depend on them.";
 
 constexpr const char* kCollideDoc =
     "Every pair of intersecting triangles of different objects (touching counts), as a (K, 2) "
@@ -115,10 +122,11 @@ void bindCollide(py::module_& m) {
     py::class_<Detector>(m, "CollisionDetector",
                          "Finds the intersecting triangle pairs of the same objects frame after "
                          "frame, reusing what each frame learnt")
-        .def(py::init<const py::object&, const std::string&, uint32_t, const py::object&, double>(),
+        .def(py::init<const py::object&, const std::string&, uint32_t, const py::object&, double,
+                      const std::string&>(),
              py::arg("objects"), py::kw_only(), py::arg("method") = "vissort",
              py::arg("threads") = 1, py::arg("size") = py::make_tuple(64, 64),
-             py::arg("min_cull") = 0.25, kDetectorDoc)
+             py::arg("min_cull") = 0.25, py::arg("object_stage") = "adaptive", kDetectorDoc)
         .def("collide", &Detector::collide, py::arg("positions") = py::none(),
              py::arg("triangles") = py::none(), py::kw_only(), py::arg("time") = py::none(),
              kCollideDoc)
@@ -131,17 +139,18 @@ void bindCollide(py::module_& m) {
         "collide",
         [](const py::object& positions, const py::object& objects, const std::string& method,
            const py::object& triangles, const py::object& time, uint32_t threads,
-           const py::object& size, double min_cull) {
+           const py::object& size, double min_cull, const std::string& object_stage) {
             const bool scene = py::isinstance<Scene>(positions);
             if (scene && !objects.is_none())
                 throw py::value_error("a Scene brings its own objects: objects must be None");
-            Detector detector(scene ? positions : objects, method, threads, size, min_cull);
+            Detector detector(scene ? positions : objects, method, threads, size, min_cull,
+                              object_stage);
             return detector.collide(positions, triangles, time);
         },
         py::arg("positions"), py::arg("objects") = py::none(), py::arg("method") = "vissort",
         py::kw_only(), py::arg("triangles") = py::none(), py::arg("time") = py::none(),
         py::arg("threads") = 1, py::arg("size") = py::make_tuple(64, 64),
-        py::arg("min_cull") = 0.25,
+        py::arg("min_cull") = 0.25, py::arg("object_stage") = "adaptive",
         ("One frame's pairs (CollisionDetector follows frames). objects as "
          "CollisionDetector's. " +
          std::string(kCollideDoc))

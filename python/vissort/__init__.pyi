@@ -426,14 +426,16 @@ class CollisionDetector:
         threads: int = 1,
         size: _Size = (64, 64),
         min_cull: float = 0.25,
+        object_stage: Literal["adaptive", "always", "never"] = "adaptive",
     ) -> None:
         """objects: a Scene (kept alive by the detector), or integer (first, count) ranges
         (K, 2) or counts (K,) of disjoint objects (triangles in none never collide). method:
-        vissort, brute, bullet or fcl. vissort's settings, as the command line's collide
-        options: threads (the calling one included; 0: one per core), size (each object-stage
-        view, 1..4096 pixels a side) and min_cull (in [0, 1]: the next direction only while
-        the last culled at least this fraction of its object pairs). The pairs never depend on
-        them."""
+        vissort, brute, bullet or fcl. The settings, as the command line's collide options:
+        threads (vissort and bullet; the calling one included; 0: one per core), and vissort's
+        size (each object-stage view, 1..4096 pixels a side), min_cull (in [0, 1]: the next
+        direction only while the last culled at least this fraction of its object pairs) and
+        object_stage (when the object stage runs: while it pays, every frame, or never). The
+        pairs never depend on them."""
     def collide(
         self,
         positions: Union[Scene, npt.ArrayLike, None] = None,
@@ -463,12 +465,14 @@ def collide(
     threads: int = 1,
     size: _Size = (64, 64),
     min_cull: float = 0.25,
+    object_stage: Literal["adaptive", "always", "never"] = "adaptive",
 ) -> npt.NDArray[np.uint32]:
     """One frame's pairs (CollisionDetector follows frames). objects as CollisionDetector's
     (None with a Scene, which brings its own). Every pair of intersecting triangles of
     different objects (touching counts), as a (K, 2) uint32 array of triangle ids,
     first < second, ascending. positions: a Scene (at time, default 0) or corners (T, 3, 3),
-    or (V, 3) with triangles=(T, 3). threads, size and min_cull as CollisionDetector's.
+    or (V, 3) with triangles=(T, 3). threads, size, min_cull and object_stage as
+    CollisionDetector's.
     Releases the GIL."""
 
 

@@ -60,7 +60,8 @@ std::string number(double v) {
 
 Strip plotLines(const std::vector<PlotSeries>& series, const std::string& title,
                 const std::string& x_label, const std::string& y_label, uint32_t width,
-                uint32_t height) {
+                uint32_t height, AxisScale x_scale) {
+    const bool log_x = x_scale == AxisScale::logarithmic;
     std::size_t longest = 0;
     for (const PlotSeries& line : series)
         longest = std::max(longest, line.name.size());
@@ -70,10 +71,13 @@ Strip plotLines(const std::vector<PlotSeries>& series, const std::string& title,
     s.width = width;
     s.height = height;
     s.rgba.assign(std::size_t(width) * height * 4, 255);
-    double x_top = 0, y_low = INFINITY, y_high = 0;
+    double x_low = INFINITY, x_top = 0, y_low = INFINITY, y_high = 0;
     for (const PlotSeries& line : series) {
-        for (double x : line.x)
+        for (double x : line.x) {
             x_top = std::max(x_top, x);
+            if (x > 0)
+                x_low = std::min(x_low, x);
+        }
         for (double y : line.y)
             if (y > 0) {
                 y_low = std::min(y_low, y);
@@ -82,13 +86,25 @@ Strip plotLines(const std::vector<PlotSeries>& series, const std::string& title,
     }
     if (!(y_high > 0))
         y_low = y_high = 1;
-    const double x_step = tickStep(x_top > 0 ? x_top : 1);
-    x_top = std::ceil((x_top > 0 ? x_top : 1) / x_step) * x_step;
+    if (!(x_top > 0))
+        x_low = x_top = 1;
+    // Linear x: from 0 to the largest x rounded up to a tick; logarithmic: the powers of ten
+    // around the values, as y.
+    const double x_step = tickStep(x_top);
+    const double x_decade_low = std::floor(std::log10(x_low));
+    const double x_decades = std::max(std::ceil(std::log10(x_top)) - x_decade_low, 1.0);
+    const double x_left = log_x ? std::pow(10.0, x_decade_low) : 0;
+    x_top = log_x ? std::pow(10.0, x_decade_low + x_decades) : std::ceil(x_top / x_step) * x_step;
     const double decade_low = std::floor(std::log10(y_low)),
                  decade_high = std::ceil(std::log10(y_high));
     const double decades = std::max(decade_high - decade_low, 1.0);
     const double plot_w = double(width - kLeft - kRight), plot_h = double(height - kTop - kBottom);
-    const auto px = [&](double x) { return kLeft + x / x_top * plot_w; };
+    const auto px = [&](double x) {
+        if (!log_x)
+            return kLeft + x / x_top * plot_w;
+        const double t = (std::log10(std::max(x, 1e-300)) - x_decade_low) / x_decades;
+        return kLeft + std::clamp(t, 0.0, 1.0) * plot_w;
+    };
     const auto py = [&](double y) {
         const double t = (std::log10(std::max(y, 1e-300)) - decade_low) / decades;
         return kTop + plot_h - std::clamp(t, 0.0, 1.0) * plot_h;
@@ -99,18 +115,30 @@ Strip plotLines(const std::vector<PlotSeries>& series, const std::string& title,
     for (double decade = decade_low; decade <= decade_low + decades + 1e-9; ++decade) {
         const double y = std::pow(10.0, decade);
         for (int m = 2; m < 10 && decade < decade_low + decades; ++m)
-            drawLine(s, px(0), py(m * y), px(x_top), py(m * y), kFaintGrid, 1);
-        drawLine(s, px(0), py(y), px(x_top), py(y), kGrid, 1);
+            drawLine(s, px(x_left), py(m * y), px(x_top), py(m * y), kFaintGrid, 1);
+        drawLine(s, px(x_left), py(y), px(x_top), py(y), kGrid, 1);
         drawText(s, 8, uint32_t(py(y)) - 6, number(y), kInk);
     }
-    for (double x = 0; x <= x_top + 1e-9; x += x_step) {
+    const auto x_tick = [&](double x) {
         drawLine(s, px(x), py(y_bottom), px(x), py(y_top), kGrid, 1);
         drawText(s, uint32_t(px(x)) - 8, uint32_t(py(y_bottom)) + 8, number(x), kInk);
+    };
+    if (log_x) {
+        for (double decade = x_decade_low; decade <= x_decade_low + x_decades + 1e-9; ++decade) {
+            const double x = std::pow(10.0, decade);
+            for (int m = 2; m < 10 && decade < x_decade_low + x_decades; ++m)
+                drawLine(s, px(m * x), py(y_bottom), px(m * x), py(y_top), kFaintGrid, 1);
+            x_tick(x);
+        }
+    } else {
+        for (double x = 0; x <= x_top + 1e-9; x += x_step)
+            x_tick(x);
     }
-    drawLine(s, px(0), py(y_bottom), px(x_top), py(y_bottom), kInk, 1);
-    drawLine(s, px(0), py(y_bottom), px(0), py(y_top), kInk, 1);
+    drawLine(s, px(x_left), py(y_bottom), px(x_top), py(y_bottom), kInk, 1);
+    drawLine(s, px(x_left), py(y_bottom), px(x_left), py(y_top), kInk, 1);
     drawText(s, kLeft, 8, title, kInk);
-    drawText(s, uint32_t(kLeft + plot_w / 2 - 40), height - 28, x_label, kInk);
+    drawText(s, uint32_t(kLeft + plot_w / 2 - 40), height - 28,
+             log_x ? x_label + " (log scale)" : x_label, kInk);
     drawText(s, kLeft + 8, kTop - 22, y_label + " (log scale)", kInk);
 
     for (std::size_t i = 0; i < series.size(); ++i) {

@@ -2,6 +2,7 @@
 
 #include "harnesses/collision_bench.h"
 
+#include <algorithm>
 #include <memory>
 #include <stdexcept>
 
@@ -34,11 +35,16 @@ uint64_t pairsMissing(const std::vector<TrianglePair>& from, const std::vector<T
 
 // Frame 0 builds what later frames refit, so it is not timed; methods take turns in a rotating
 // order so that none always runs on a cold cache.
-std::vector<Measured> measure(const std::vector<CollisionContender>& methods, uint32_t bunnies,
-                              int frames, std::size_t& triangles) {
-    const Result<Scene> scene = samples::loadScene("builtin:bunnies?n=" + std::to_string(bunnies));
+std::vector<Measured> measure(const std::vector<CollisionContender>& methods,
+                              const std::string& scene_name, uint32_t n, int frames,
+                              std::size_t& triangles,
+                              const std::function<void(uint32_t)>& on_count) {
+    const Result<Scene> scene =
+        samples::loadScene("builtin:" + scene_name + "?n=" + std::to_string(n));
     if (!scene)
         throw std::runtime_error(scene.error);
+    if (on_count) // once the scene is made: an error is then the only line
+        on_count(n);
     triangles = scene.value->triangleCount();
     const std::vector<PrimitiveRange> objects = scene.value->objectPrimitives();
     std::vector<std::unique_ptr<CollisionDetector>> detectors;
@@ -75,16 +81,21 @@ std::vector<Measured> measure(const std::vector<CollisionContender>& methods, ui
 
 } // namespace
 
-std::vector<CollisionContender> collisionContenders() {
+std::vector<CollisionContender> collisionContenders(const std::vector<CollisionMethod>& methods,
+                                                    const std::vector<uint32_t>& threads) {
     std::vector<CollisionContender> list;
     for (CollisionMethod m : collisionMethods()) {
+        const bool asked = std::find(methods.begin(), methods.end(), m) != methods.end();
+        if (!asked && m != CollisionMethod::brute)
+            continue;
         CollisionSettings settings;
         settings.method = m;
-        if (m == CollisionMethod::vissort) {
-            settings.threads = 0;
-            list.push_back({"vissort", settings});
-            settings.threads = 1;
-            list.push_back({"vissort-1t", settings});
+        if (m == CollisionMethod::vissort || m == CollisionMethod::bullet) {
+            for (uint32_t t : threads) {
+                settings.threads = t;
+                list.push_back({std::string(collisionMethodName(m)) + "-" + std::to_string(t) + "t",
+                                settings});
+            }
         } else {
             list.push_back({collisionMethodName(m), settings});
         }
@@ -97,19 +108,20 @@ runCollisionBench(const CollisionBenchSettings& settings,
                   const std::function<void(uint32_t)>& on_count,
                   const std::function<void(const CollisionBenchRow&)>& on_row) {
     registerPeerColliders(); // Bullet and FCL are among the contenders
-    const std::vector<CollisionContender> methods = collisionContenders();
+    const std::vector<CollisionContender> methods =
+        collisionContenders(settings.methods, settings.threads);
     std::vector<CollisionBenchRow> rows;
     for (uint32_t n : settings.counts) {
-        if (on_count)
-            on_count(n);
         std::size_t triangles = 0;
-        const std::vector<Measured> measured = measure(methods, n, settings.frames, triangles);
+        const std::vector<Measured> measured =
+            measure(methods, settings.scene, n, settings.frames, triangles, on_count);
         for (std::size_t i = 0; i < methods.size(); ++i) {
             const Measured& m = measured[i];
             CollisionBenchRow row;
-            row.bunnies = n;
+            row.n = n;
             row.triangles = triangles;
             row.method = methods[i].name;
+            row.threads = methods[i].settings.threads;
             row.median_ms = median(m.ms);
             row.object_pairs = m.object_pairs;
             row.triangle_pairs = m.triangle_pairs;

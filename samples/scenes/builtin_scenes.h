@@ -67,6 +67,9 @@ private:
 
 /// n (18), seed (1): the paper's dynamic scene, bouncing and deforming Stanford bunnies.
 Result<Scene> makeBunniesScene(const SceneParameters& parameters);
+/// n (1000), seed (1): small rigid and deforming bodies falling into a pile on a floor and
+/// settling, for collision benchmarks.
+Result<Scene> makePileScene(const SceneParameters& parameters);
 /// layers (8), seed (1): rows of pipe racks, tanks and steel; depth complexity about 2 layers.
 Result<Scene> makePlantScene(const SceneParameters& parameters);
 /// scale (1), seed (1): a multi-storey process plant with the paper's power plant's proportions

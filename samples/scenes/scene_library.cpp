@@ -23,6 +23,10 @@ constexpr BuiltinScene kBuiltinScenes[] = {
      "n (18, 1..10000), seed (1): the paper's dynamic scene, n deforming Stanford bunnies "
      "bouncing in a cube",
      detail::makeBunniesScene},
+    {"pile",
+     "n (1000, 1..100000), seed (1): n small bodies (rigid ellipsoids and capsules, deforming "
+     "blobs) of 256 triangles falling into a pile on a floor and settling, for collisions",
+     detail::makePileScene},
     {"plant",
      "layers (8, 1..1000), seed (1): rows of pipe racks, tanks, pumps and steel on a floor, "
      "transparent pipes and tanks, opaque steel; max depth complexity about 2 layers",

@@ -22,6 +22,7 @@ std::vector<BuiltinSceneInfo> builtinScenes();
 /// names, unknown keys, malformed or absurd values (negative counts, more than 10 million
 /// triangles) give an error naming the problem.
 ///   bunnies: n (18), seed (1): the paper's dynamic scene of deforming, bouncing bunnies.
+///   pile:    n (1000), seed (1): small rigid and deforming bodies settling into a pile.
 ///   slabs:   layers (8), seed (1): a stack of large, slightly tilted quads; acyclic.
 ///   soup:    n (1000), seed (1): random non-intersecting triangles.
 ///   plant:   layers (8), seed (1): CAD-like rows of pipes, tanks and steel, opaque and

@@ -20,7 +20,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options) {
         ->capture_default_str();
     command->add_option("--frames", options.frames,
                         "Frames of the real workloads (oracle: 11), of each method and scene "
-                        "(transparency: 3), of each bunny count (collision: 30, after one "
+                        "(transparency: 3), of each count (collision: 30, after one "
                         "untimed), of each path (paper: 60, quick 6) or of each grid's orbit "
                         "(volume: 5, after one untimed); the first is not timed");
     command->add_option("--gl-frames", options.gl_frames,
@@ -44,7 +44,22 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options) {
         ->capture_default_str();
     command
         ->add_option("--counts", options.counts,
-                     "collision: numbers of bunnies to measure, comma-separated")
+                     "collision: numbers of bodies (the scene's n) to measure, comma-separated")
+        ->capture_default_str();
+    command
+        ->add_option("--scene", options.collision_scene,
+                     "collision: builtin:bunnies (the paper's deforming bunnies) or builtin:pile "
+                     "(thousands of small bodies settling), given as bunnies or pile")
+        ->capture_default_str();
+    command
+        ->add_option("--methods", options.methods,
+                     "collision: methods to measure besides brute (the ground truth, always "
+                     "run), comma-separated: vissort, bullet, fcl")
+        ->capture_default_str();
+    command
+        ->add_option("--threads", options.threads,
+                     "collision: thread counts of vissort and bullet, comma-separated, each "
+                     "measured")
         ->capture_default_str();
     command
         ->add_option("--cells", options.cells,

@@ -84,8 +84,13 @@ CLI::App* addCollideCommand(CLI::App& app, CollideOptions& options) {
         ->check(CLI::Range(0.0, 1.0))
         ->capture_default_str();
     command
+        ->add_option("--object-stage", options.object_stage,
+                     "vissort: when the object stage runs: adaptive (while it saves more "
+                     "descent time than it takes), always (the paper's method) or never")
+        ->capture_default_str();
+    command
         ->add_option("--threads", options.threads,
-                     "vissort: threads, 0 = one per core (the pairs never depend on it)")
+                     "vissort and bullet: threads, 0 = one per core (the pairs never depend on it)")
         ->check(CLI::Range(0, 256))
         ->capture_default_str();
     addJsonOptions(*command, options.json, "Write per-frame statistics as JSON");
@@ -111,6 +116,10 @@ int runCollide(const CollideOptions& options) {
         return fail(kExitUsage, error);
     settings.threads = uint32_t(options.threads);
     settings.min_cull_fraction = float(options.min_cull);
+    const Result<ObjectStage> object_stage = parseObjectStage(options.object_stage);
+    if (!object_stage)
+        return fail(kExitUsage, "--object-stage: " + object_stage.error);
+    settings.object_stage = *object_stage.value;
     const std::vector<Vec3> all_directions = defaultCollisionDirections();
     settings.directions.assign(all_directions.begin(), all_directions.begin() + options.directions);
     if (Status valid = validateCollisionSettings(settings); !valid)

@@ -51,9 +51,12 @@ struct BenchOptions {
     std::optional<std::string> size; // each benchmark has its own default
     std::string level = "multistage";
     std::string depths = "2,4,8,16,32,64";
-    int samples = 1; // transparency: samples a pixel measured next to 1
-    std::string counts = "18,36,72,144";
-    std::string cells = "10000,100000"; // volume: about this many tetrahedra a grid
+    int samples = 1;                         // transparency: samples a pixel measured next to 1
+    std::string counts = "18,36,72,144";     // collision: the scene's n
+    std::string collision_scene = "bunnies"; // collision: bunnies or pile
+    std::string methods = "vissort,bullet";  // collision: besides brute, the ground truth
+    std::string threads = "1,2";             // collision: vissort's and bullet's
+    std::string cells = "10000,100000";      // volume: about this many tetrahedra a grid
     std::string plot_path;
     JsonOutput json;
     std::string out_dir = "paper-bench"; // paper: where its files go
@@ -76,6 +79,7 @@ struct CollideOptions {
     std::string size = "64x64";
     int directions = 7;
     double min_cull = 0.25;
+    std::string object_stage = "adaptive";
     int threads = 0;
     JsonOutput json;
     std::string csv;

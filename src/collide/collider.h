@@ -29,8 +29,8 @@ std::unique_ptr<Collider> makeVisibilityCollider(std::span<const PrimitiveRange>
 /// The peers (Bullet, FCL) are a library of their own, vissort_peers (the package's `peers`
 /// component), so that a consumer of the collision layer needs neither: it makes the bullet and
 /// fcl colliders once registerPeerColliders (collision_peers.h) has put its factory here.
-using PeerColliderFactory = std::unique_ptr<Collider> (*)(CollisionMethod method,
-                                                          std::span<const PrimitiveRange> objects);
+using PeerColliderFactory = std::unique_ptr<Collider> (*)(std::span<const PrimitiveRange> objects,
+                                                          const CollisionSettings& settings);
 void setPeerColliderFactory(PeerColliderFactory factory);
 
 /// Milliseconds since construction or the last lap, for the stage timings.

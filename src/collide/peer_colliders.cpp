@@ -10,11 +10,12 @@
 namespace vissort {
 namespace {
 
-std::unique_ptr<detail::Collider> makePeerCollider(CollisionMethod method,
-                                                   std::span<const PrimitiveRange> objects) {
+std::unique_ptr<detail::Collider> makePeerCollider(std::span<const PrimitiveRange> objects,
+                                                   const CollisionSettings& settings) {
+    const CollisionMethod method = settings.method;
     switch (method) {
     case CollisionMethod::bullet:
-        return detail::makeBulletCollider(objects);
+        return detail::makeBulletCollider(objects, settings);
     case CollisionMethod::fcl:
         return detail::makeFclCollider(objects);
     case CollisionMethod::vissort:

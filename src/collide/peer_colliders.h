@@ -8,7 +8,9 @@
 
 namespace vissort::detail {
 
-std::unique_ptr<Collider> makeBulletCollider(std::span<const PrimitiveRange> objects);
+/// settings.threads and settings.pool as the vissort method takes them.
+std::unique_ptr<Collider> makeBulletCollider(std::span<const PrimitiveRange> objects,
+                                             const CollisionSettings& settings);
 std::unique_ptr<Collider> makeFclCollider(std::span<const PrimitiveRange> objects);
 
 } // namespace vissort::detail

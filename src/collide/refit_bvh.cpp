@@ -86,8 +86,18 @@ uint32_t RefitBvh::buildRange(uint32_t first, uint32_t size) {
 void RefitBvh::refit(PositionsView positions) {
     // The triangles' boxes in id order (the corners are read forward), then in leaf order from
     // that small array.
-    for (std::size_t i = 0; i < boxes_.size(); ++i)
-        boxes_[i] = triangleBox(positions, first_triangle_ + uint32_t(i));
+    // One coordinate array at a time: three streams read forward, a loop that vectorizes.
+    const std::size_t count = boxes_.size(), first_corner = 3 * std::size_t(first_triangle_);
+    const float* axes[3] = {positions.x.data(), positions.y.data(), positions.z.data()};
+    for (int k = 0; k < 3; ++k) {
+        const float* c = axes[k] + first_corner;
+        Box3f* boxes = boxes_.data();
+        for (std::size_t t = 0; t < count; ++t) {
+            const float p = c[3 * t], q = c[3 * t + 1], r = c[3 * t + 2];
+            boxes[t].min[k] = std::min(std::min(p, q), r);
+            boxes[t].max[k] = std::max(std::max(p, q), r);
+        }
+    }
     for (std::size_t i = 0; i < triangles_.size(); ++i)
         leaf_boxes_[i] = boxes_[triangles_[i] - first_triangle_];
     // Children come after their parent: back to front, every child is refitted first.
@@ -127,11 +137,31 @@ void RefitBvh::appendCut(const Box3f& region, uint32_t max_size, std::vector<uin
 
 uint64_t overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b, PositionsView positions,
                                   std::vector<std::pair<uint32_t, uint32_t>>& pairs,
-                                  std::vector<std::pair<uint32_t, uint32_t>>& stack) {
+                                  TrianglePairScratch& scratch) {
     const auto na = a.nodes(), nb = b.nodes();
     const auto ta = a.triangles(), tb = b.triangles();
     const auto ba = a.triangleBoxes(), bb = b.triangleBoxes();
     uint64_t box_pairs = 0;
+    if (++scratch.call == 0) { // wrapped: old marks could match again
+        for (auto& computed : scratch.computed)
+            std::fill(computed.begin(), computed.end(), 0);
+        scratch.call = 1;
+    }
+    const std::span<const uint32_t> triangles[2] = {ta, tb};
+    for (int side = 0; side < 2; ++side)
+        if (scratch.computed[side].size() < triangles[side].size()) {
+            scratch.computed[side].resize(triangles[side].size(), 0);
+            scratch.diagonals[side].resize(triangles[side].size());
+        }
+    const auto diagonals = [&](int side, uint32_t leaf_index) -> const DiagonalExtents& {
+        DiagonalExtents& extents = scratch.diagonals[side][leaf_index];
+        if (scratch.computed[side][leaf_index] != scratch.call) {
+            scratch.computed[side][leaf_index] = scratch.call;
+            extents = diagonalExtents(positions, triangles[side][leaf_index]);
+        }
+        return extents;
+    };
+    auto& stack = scratch.stack;
     stack.clear();
     if (!boxesOverlap(na[0].box, nb[0].box))
         return 0;
@@ -150,9 +180,8 @@ uint64_t overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b, Position
                     if (!boxesOverlap(ba[p], bb[q]))
                         continue;
                     ++box_pairs;
-                    // The diagonals only for boxes that meet: few pairs, so computed here.
-                    if (diagonalsOverlap(diagonalExtents(positions, ta[p]),
-                                         diagonalExtents(positions, tb[q])))
+                    // The diagonals only for boxes that meet, once per triangle.
+                    if (diagonalsOverlap(diagonals(0, p), diagonals(1, q)))
                         pairs.emplace_back(ta[p], tb[q]);
                 }
             }

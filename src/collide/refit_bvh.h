@@ -58,11 +58,21 @@ private:
 /// The box of triangle t of positions.
 Box3f triangleBox(PositionsView positions, uint32_t t);
 
+/// The scratch of overlappingTrianglePairs, one per thread: its stack, and each triangle's
+/// diagonal extents, computed once per call at most (a triangle near the other object meets
+/// several of its triangles' boxes).
+struct TrianglePairScratch {
+    std::vector<std::pair<uint32_t, uint32_t>> stack;
+    std::vector<DiagonalExtents> diagonals[2]; // per leaf-order triangle of a, of b
+    std::vector<uint32_t> computed[2];         // per leaf-order triangle: the call that set it
+    uint32_t call = 0;
+};
+
 /// Every pair (ta, tb) of a triangle of a and one of b whose boxes overlap and whose diagonal
-/// extents overlap too (triangle_boxes.h), appended to pairs; stack is scratch. Returns how many
-/// pairs' boxes overlapped (before the diagonals).
+/// extents overlap too (triangle_boxes.h), appended to pairs. Returns how many pairs' boxes
+/// overlapped (before the diagonals).
 uint64_t overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b, PositionsView positions,
                                   std::vector<std::pair<uint32_t, uint32_t>>& pairs,
-                                  std::vector<std::pair<uint32_t, uint32_t>>& stack);
+                                  TrianglePairScratch& scratch);
 
 } // namespace vissort::detail

@@ -57,6 +57,10 @@ DiagonalExtents diagonalExtents(PositionsView positions, uint32_t t);
 /// boxes[t] = the box of triangle t, for every triangle of positions (boxes is resized).
 void computeTriangleBoxes(PositionsView positions, std::vector<Box3f>& boxes);
 
+/// The box of the triangles of range (triangle_count >= 1), from their corners: the same box as
+/// the union of their triangle boxes, in one streaming pass.
+Box3f boxOfCorners(PositionsView positions, PrimitiveRange range);
+
 /// The box of the triangles of range (triangle_count >= 1), from their boxes.
 Box3f boxOfRange(std::span<const Box3f> triangle_boxes, PrimitiveRange range);
 

@@ -1,22 +1,21 @@
 // The vissort collision method: object boxes, then visibility ordering of the objects along
-// view directions (object_culling.h), then the pairs of triangles of each surviving object pair
-// whose boxes meet (refitted trees, refit_bvh.h) and whose extents meet along the four
-// diagonals too (the object stage's other directions), then the exact test. Every stage is
-// conservative, so the pairs are exactly brute force's: docs/collision.md.
+// view directions (object_culling.h) on the frames where it pays (object_stage_schedule.h),
+// then the pairs of triangles of each surviving object pair whose boxes meet (refitted trees,
+// refit_bvh.h) and whose extents meet along the four diagonals too (the object stage's other
+// directions), then the exact test. Every stage is conservative, so the pairs are exactly brute
+// force's: docs/collision.md.
 //
-// Threads (CollisionSettings::threads) share the per-object work (boxes, refits, extents) and
-// the per-pair work (tree descent, exact tests); the object stage is sequential and cheap. Each
-// thread collects its own pairs: the detector sorts them, so the result does not depend on the
-// thread count.
-
-#include <atomic>
-#include <thread>
+// Threads (CollisionSettings::threads) share the per-object work (boxes, refits) and the
+// per-pair work (tree descent, exact tests); the object stage is sequential. Each thread
+// collects its own pairs: the detector sorts them, so the result does not depend on the thread
+// count.
 
 #include "collide/collider.h"
+#include "collide/collision_threads.h"
 #include "collide/object_culling.h"
+#include "collide/object_stage_schedule.h"
 #include "collide/refit_bvh.h"
 #include "collide/triangle_intersection.h"
-#include "vissort/worker_pool.h"
 
 namespace vissort::detail {
 namespace {
@@ -25,58 +24,80 @@ class VisibilityCollider final : public Collider {
 public:
     VisibilityCollider(std::span<const PrimitiveRange> objects, const CollisionSettings& settings)
         : objects_(objects.begin(), objects.end()), object_culling_(objects, settings),
-          trees_(objects.size()),
-          threads_(settings.threads != 0 ? settings.threads
-                                         : std::max(1u, std::thread::hardware_concurrency())),
-          workers_(threads_) {
-        if (threads_ > 1) {
-            pool_ = settings.pool != nullptr ? settings.pool : &WorkerPool::shared();
-            pool_->reserve(threads_);
-            threads_ = std::min(threads_, pool_->threadCount());
-        }
-    }
+          schedule_(settings.object_stage), trees_(objects.size()), threads_(settings) {}
 
     void collide(PositionsView positions, CollisionResult& result) override {
         CollisionStats& stats = result.stats;
         StageClock clock;
-        // Every tree is built on the first frame and refitted on every frame after (the shape
-        // stays, the boxes follow the deformation); an object's box is its tree's root.
+        // Only the objects of a pair whose boxes overlap need their tree this frame. Coherence
+        // guesses which: an object paired last frame is refitted at once (its box is its tree's
+        // root), any other gets its box straight from its corners (one streaming pass); an
+        // object the guess missed is refitted after the pairs are known. A tree is built the
+        // first time its object needs it and refitted every later time (the shape stays, the
+        // boxes follow the deformation); a skipped frame leaves nothing stale, as a refit
+        // recomputes every box from the positions.
         object_boxes_.resize(objects_.size());
-        parallelFor(objects_.size(), [&](std::size_t o, Worker&) {
-            if (objects_[o].triangle_count == 0) {
-                object_boxes_[o] = kEmptyBox;
-                return;
-            }
+        refitted_.assign(objects_.size(), 0);
+        const auto refit = [&](uint32_t o) {
             if (trees_[o].isBuilt())
                 trees_[o].refit(positions);
             else
                 trees_[o].build(positions, objects_[o]);
-            object_boxes_[o] = trees_[o].bounds();
+            refitted_[o] = 1;
+        };
+        threads_.forEach(objects_.size(), [&](std::size_t o, Worker&) {
+            if (objects_[o].triangle_count == 0) {
+                object_boxes_[o] = kEmptyBox;
+            } else if (in_pair_.size() == objects_.size() && in_pair_[o]) {
+                refit(uint32_t(o));
+                object_boxes_[o] = trees_[o].bounds();
+            } else {
+                object_boxes_[o] = boxOfCorners(positions, objects_[o]);
+            }
         });
         overlappingBoxPairs(object_boxes_, candidates_.objects, sweep_order_);
         candidates_.alive.assign(candidates_.objects.size(), 1);
         stats.box_object_pairs = candidates_.objects.size();
+        in_pair_.assign(objects_.size(), 0);
+        for (const auto& [a, b] : candidates_.objects)
+            in_pair_[a] = in_pair_[b] = 1;
+        unrefitted_.clear();
+        for (uint32_t o = 0; o < objects_.size(); ++o)
+            if (in_pair_[o] && !refitted_[o])
+                unrefitted_.push_back(o);
+        threads_.forEach(unrefitted_.size(),
+                         [&](std::size_t i, Worker&) { refit(unrefitted_[i]); });
         stats.update_ms = clock.lap();
 
-        object_culling_.cull(trees_, object_boxes_, candidates_, stats);
+        const bool object_stage = schedule_.runsThisFrame();
+        if (object_stage)
+            object_culling_.cull(trees_, object_boxes_, candidates_, stats);
+        const double object_stage_ms = clock.lap();
         live_.clear();
-        in_pair_.assign(objects_.size(), 0);
+        in_live_pair_.assign(objects_.size(), 0);
         for (std::size_t i = 0; i < candidates_.objects.size(); ++i) {
             if (!candidates_.alive[i])
                 continue;
             live_.push_back(uint32_t(i));
-            in_pair_[candidates_.objects[i].first] = in_pair_[candidates_.objects[i].second] = 1;
+            in_live_pair_[candidates_.objects[i].first] =
+                in_live_pair_[candidates_.objects[i].second] = 1;
         }
         stats.object_pairs = live_.size();
-        for (uint8_t in : in_pair_)
+        for (uint8_t in : in_live_pair_)
             stats.candidate_objects += in;
-        for (Worker& w : workers_)
+        for (Worker& w : threads_.workers())
             w.clear();
-        parallelFor(live_.size(), [&](std::size_t i, Worker& w) {
+        threads_.forEach(live_.size(), [&](std::size_t i, Worker& w) {
             const auto [a, b] = candidates_.objects[live_[i]];
             w.candidates.clear();
-            w.box_triangle_pairs +=
-                overlappingTrianglePairs(trees_[a], trees_[b], positions, w.candidates, w.stack);
+            StageClock pair_clock;
+            const uint64_t box_pairs =
+                overlappingTrianglePairs(trees_[a], trees_[b], positions, w.candidates, w.scratch);
+            if (box_pairs == 0) { // what a pair the object stage culls is like: see below
+                w.empty_pair_ms += pair_clock.lap();
+                ++w.empty_pairs;
+            }
+            w.box_triangle_pairs += box_pairs;
             w.triangle_pairs += w.candidates.size();
             StageClock exact_clock;
             for (const auto& [ta, tb] : w.candidates)
@@ -84,66 +105,65 @@ public:
                     w.pairs.push_back({std::min(ta, tb), std::max(ta, tb)});
             w.exact_ms += exact_clock.lap();
         });
-        double exact_ms = 0;
-        for (const Worker& w : workers_) {
+        double exact_ms = 0, empty_pair_ms = 0;
+        uint64_t empty_pairs = 0;
+        for (const Worker& w : threads_.workers()) {
+            empty_pair_ms += w.empty_pair_ms;
+            empty_pairs += w.empty_pairs;
             result.pairs.insert(result.pairs.end(), w.pairs.begin(), w.pairs.end());
             stats.triangle_pairs += w.triangle_pairs;
             stats.box_triangle_pairs += w.box_triangle_pairs;
             exact_ms = std::max(exact_ms, w.exact_ms); // the threads' exact tests overlap
         }
+        const double descent_ms = clock.lap();
+        if (object_stage) {
+            // What the stage saved: the descents of the pairs it culled, which would have found
+            // no box pair of triangles (they cannot touch), so each costs about what a live pair
+            // that found none cost this frame (on one thread: the culled descents would have
+            // been shared over the threads too). Without such a pair, the mean of all pairs,
+            // which overstates it.
+            const std::size_t culled = candidates_.objects.size() - live_.size();
+            const double per_pair_ms = empty_pairs > 0 ? empty_pair_ms / double(empty_pairs)
+                                       : live_.empty()
+                                           ? 0.0
+                                           : descent_ms * threads_.count() / double(live_.size());
+            schedule_.record(object_stage_ms,
+                             double(culled) * per_pair_ms / double(threads_.count()));
+        }
         stats.exact_ms = exact_ms;
-        stats.cull_ms = clock.lap() - exact_ms;
+        stats.cull_ms = object_stage_ms + descent_ms - exact_ms;
     }
 
 private:
     // One thread's scratch and results in the parallel parts.
     struct Worker {
-        std::vector<std::pair<uint32_t, uint32_t>> candidates, stack;
+        std::vector<std::pair<uint32_t, uint32_t>> candidates;
+        TrianglePairScratch scratch;
         std::vector<TrianglePair> pairs;
         uint64_t triangle_pairs = 0, box_triangle_pairs = 0;
         double exact_ms = 0;
+        uint64_t empty_pairs = 0; // descended pairs without a box pair of triangles
+        double empty_pair_ms = 0; // their descents' time
         void clear() {
             pairs.clear();
-            triangle_pairs = box_triangle_pairs = 0;
-            exact_ms = 0;
+            triangle_pairs = box_triangle_pairs = empty_pairs = 0;
+            exact_ms = empty_pair_ms = 0;
         }
     };
 
-    /// body(i, worker) for i = 0..count-1, items claimed one at a time by the threads (pairs
-    /// differ widely in cost).
-    template <class Body> void parallelFor(std::size_t count, Body&& body) {
-        if (!pool_ || count < 2) {
-            for (std::size_t i = 0; i < count; ++i)
-                body(i, workers_[0]);
-            return;
-        }
-        struct Context {
-            Body* body;
-            std::vector<Worker>* workers;
-            std::size_t count;
-            std::atomic<std::size_t> next{0};
-        } context{&body, &workers_, count};
-        pool_->run(
-            uint32_t(std::min<std::size_t>(threads_, count)),
-            [](void* c, uint32_t thread) {
-                Context& context = *static_cast<Context*>(c);
-                for (std::size_t i;
-                     (i = context.next.fetch_add(1, std::memory_order_relaxed)) < context.count;)
-                    (*context.body)(i, (*context.workers)[thread]);
-            },
-            &context);
-    }
-
     std::vector<PrimitiveRange> objects_;
     ObjectCulling object_culling_;
+    ObjectStageSchedule schedule_;
     std::vector<RefitBvh> trees_;
-    uint32_t threads_;
-    std::vector<Worker> workers_;
-    WorkerPool* pool_ = nullptr; // the caller's or the shared one; null: single-threaded
+    CollisionThreads<Worker> threads_;
     CandidatePairs candidates_;
     std::vector<Box3f> object_boxes_;
     std::vector<uint32_t> sweep_order_; // overlappingBoxPairs' scratch
-    std::vector<uint8_t> in_pair_;
+    std::vector<uint8_t> in_pair_;     // per object: in some pair whose boxes overlap (last frame's
+                                       // until this frame's pairs are known)
+    std::vector<uint8_t> refitted_;    // per object: its tree is refitted to this frame
+    std::vector<uint32_t> unrefitted_; // paired objects whose trees the guess left out
+    std::vector<uint8_t> in_live_pair_; // per object: in some pair the object stage left alive
     std::vector<uint32_t> live_;
 };
 

@@ -143,6 +143,8 @@ TEST_F(Cli, CollideDumpsOneGroupPerObjectInTriangleOrder) {
 TEST_F(Cli, CollideErrorsAreOneLine) {
     expectError({"collide", "builtin:bunnies", "--method", "gjk"}, kUsage, {"--method", "gjk"});
     expectError({"collide", "builtin:bunnies", "--size", "0x5"}, kUsage, {"--size"});
+    expectError({"collide", "builtin:bunnies", "--object-stage", "sometimes"}, kUsage,
+                {"--object-stage", "sometimes"});
     expectError({"collide", "builtin:bunnies", "--size", "5000x64"}, kUsage, {"--size"});
     expectError({"collide", "no_such_file.obj"}, kInput, {"no_such_file.obj"});
     expectError({"collide", dataPath("cli/nan_coordinate.obj")}, kInput, {"nan_coordinate.obj"});
@@ -159,7 +161,9 @@ TEST_F(Cli, BenchCollisionMeasuresEveryMethod) {
     const RunResult r = run(args);
     ASSERT_EQ(r.code, 0) << r;
     const json doc = json::parse(readFile(path("b.json")));
+    // vissort and bullet at 1 and 2 threads, and brute, for each count.
     ASSERT_EQ(doc["rows"].size(), 2u * 5);
+    EXPECT_EQ(doc["speedups"].size(), 2u * 2);
     for (const json& row : doc["rows"]) {
         const std::string method = row.value("method", "");
         EXPECT_GT(row.value("median_ms", 0.0), 0.0) << method;
@@ -176,6 +180,32 @@ TEST_F(Cli, BenchCollisionMeasuresEveryMethod) {
     stbi_image_free(png);
 #endif
     expectError({"bench", "collision", "--counts", "0"}, kUsage, {"--counts"});
+    expectError({"bench", "collision", "--scene", "soup"}, kUsage, {"--scene", "soup"});
+    expectError({"bench", "collision", "--methods", "vissort,gjk"}, kUsage, {"--methods", "gjk"});
+    expectError({"bench", "collision", "--threads", "1,0"}, kUsage, {"--threads"});
+    expectError({"bench", "collision", "--counts", "5000", "--frames", "1"}, kInput,
+                {"builtin:bunnies", "n=5000"});
+}
+
+// The pile of small bodies, the methods asked for (brute always: the ground truth), one thread
+// count.
+TEST_F(Cli, BenchCollisionOnThePileWithChosenMethods) {
+    const RunResult r =
+        run({"bench", "collision", "--scene", "pile", "--counts", "6", "--frames", "2", "--methods",
+             "vissort,fcl", "--threads", "1", "--json", path("pile.json")});
+    ASSERT_EQ(r.code, 0) << r;
+    const json doc = json::parse(readFile(path("pile.json")));
+    EXPECT_EQ(doc.value("scene", ""), "pile");
+    std::vector<std::string> methods;
+    for (const json& row : doc["rows"]) {
+        methods.push_back(row.value("method", ""));
+        EXPECT_EQ(row.value("n", 0), 6);
+        if (row.value("method", "") != "fcl") {
+            EXPECT_EQ(row.value("missed", -1), 0) << row.value("method", "");
+        }
+    }
+    EXPECT_EQ(methods, (std::vector<std::string>{"vissort-1t", "brute", "fcl"}));
+    EXPECT_TRUE(doc["speedups"].empty()); // no bullet to compare with
 }
 
 } // namespace

@@ -72,7 +72,9 @@ TEST(CollisionDetector, BunniesMatchBruteForceFrameByFrame) {
     ASSERT_TRUE(scene) << scene.error;
     const auto objects = scene.value->objectPrimitives();
     CollisionDetector brute(objects, method(CollisionMethod::brute));
-    CollisionDetector vissort(objects, method(CollisionMethod::vissort));
+    CollisionSettings paper = method(CollisionMethod::vissort);
+    paper.object_stage = ObjectStage::always; // the object stage on every frame, coherent ones
+    CollisionDetector vissort(objects, paper);
     TrianglePositions positions;
     CollisionResult expected, actual;
     uint64_t total = 0;
@@ -155,6 +157,81 @@ TEST(CollisionThreads, EveryThreadCountGivesThePairsOfOne) {
         }
     }
     EXPECT_GT(total, 100u);
+}
+
+// An object that meets others on some frames only: the vissort method refits the trees of
+// last frame's paired objects first and the others once this frame's pairs are known, and
+// Bullet's broad phase adds and drops the pair; every frame must still be brute force's.
+TEST(CollisionDetector, ObjectsThatMeetOnSomeFramesOnlyMatchBruteForce) {
+    Objects scene;
+    scene.addBox({0, 0, 0}, {1, 1, 1});
+    scene.addBox({3, 0, 0}, {4, 1, 1});
+    scene.addBox({0, 0, 0}, {1, 1, 1}, 0.3, {0.5, 0.5, 0.5}); // moved each frame
+    const std::size_t moving_first = 3 * scene.ranges[2].first_triangle;
+    // Apart, through the first box, apart, through the second, through the first again.
+    const double offsets[] = {1.6, 0.4, 1.6, 3.3, 0.6, 10};
+    std::vector<std::pair<std::string, CollisionSettings>> methods;
+    for (CollisionMethod m : {CollisionMethod::vissort, CollisionMethod::bullet})
+        for (uint32_t threads : {1u, 2u}) {
+            CollisionSettings settings = method(m);
+            settings.threads = threads;
+            methods.emplace_back(std::string(collisionMethodName(m)) + " on " +
+                                     std::to_string(threads) + " threads",
+                                 settings);
+        }
+    CollisionDetector brute(scene.ranges, method(CollisionMethod::brute));
+    std::vector<std::unique_ptr<CollisionDetector>> detectors;
+    for (const auto& [name, settings] : methods)
+        detectors.push_back(std::make_unique<CollisionDetector>(scene.ranges, settings));
+    std::size_t frames_with_pairs = 0;
+    for (double offset : offsets) {
+        TrianglePositions frame = scene.positions;
+        for (std::size_t c = moving_first; c < frame.x.size(); ++c)
+            frame.x[c] += float(offset);
+        const CollisionResult expected = brute.collide(frame);
+        frames_with_pairs += !expected.pairs.empty();
+        for (std::size_t i = 0; i < methods.size(); ++i)
+            expectSamePairs(expected, detectors[i]->collide(frame),
+                            methods[i].first + " at offset " + std::to_string(offset));
+    }
+    EXPECT_EQ(frames_with_pairs, 3u); // the frames meant to touch do
+}
+
+// The object stage's schedule changes the time, never the pairs: every frame of every mode is
+// brute force's; always runs it every frame, never on none, adaptive on the first at least.
+TEST(CollisionDetector, EveryObjectStageScheduleGivesBruteForcesPairs) {
+    const Result<Scene> scene = samples::loadScene("builtin:bunnies?n=18");
+    ASSERT_TRUE(scene) << scene.error;
+    const auto objects = scene.value->objectPrimitives();
+    CollisionDetector brute(objects, method(CollisionMethod::brute));
+    for (ObjectStage stage : {ObjectStage::adaptive, ObjectStage::always, ObjectStage::never}) {
+        CollisionSettings settings;
+        settings.object_stage = stage;
+        CollisionDetector vissort(objects, settings);
+        uint32_t frames_with_stage = 0;
+        TrianglePositions positions;
+        const int frames = 12;
+        for (int f = 0; f < frames; ++f) {
+            scene.value->frame(f / 30.0, positions);
+            const CollisionResult result = vissort.collide(positions);
+            expectSamePairs(brute.collide(positions), result,
+                            std::string(objectStageName(stage)) + " frame " + std::to_string(f));
+            frames_with_stage += result.stats.directions > 0;
+            if (f == 0 && stage != ObjectStage::never) {
+                EXPECT_GT(result.stats.directions, 0u) << objectStageName(stage);
+            }
+            if (result.stats.directions == 0) {
+                EXPECT_EQ(result.stats.object_pairs, result.stats.box_object_pairs);
+            }
+        }
+        if (stage == ObjectStage::always) {
+            EXPECT_EQ(frames_with_stage, uint32_t(frames));
+        }
+        if (stage == ObjectStage::never) {
+            EXPECT_EQ(frames_with_stage, 0u);
+        }
+    }
+    EXPECT_TRUE(parseObjectStage("sometimes").error.find("sometimes") != std::string::npos);
 }
 
 TEST(CollisionDetector, VisibilityCullsObjectPairsThatBoxesKeep) {
@@ -356,6 +433,13 @@ TEST(CollisionDetector, RejectsPositionsThatDoNotFit) {
         not_finite.y[40] = NAN;
         EXPECT_THROW(detector.collide(not_finite), std::invalid_argument);
         not_finite.y[40] = INFINITY;
+        EXPECT_THROW(detector.collide(not_finite), std::invalid_argument);
+        // At either end of an array too (the check runs in blocks, the last one partial).
+        not_finite = two.positions;
+        not_finite.x.front() = -INFINITY;
+        EXPECT_THROW(detector.collide(not_finite), std::invalid_argument);
+        not_finite = two.positions;
+        not_finite.z.back() = NAN;
         EXPECT_THROW(detector.collide(not_finite), std::invalid_argument);
         EXPECT_FALSE(detector.collide(two.positions).pairs.empty()) << "still usable";
     }

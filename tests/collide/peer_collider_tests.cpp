@@ -13,6 +13,7 @@
 #include "scenes/scene_library.h"
 #include "vissort/collision.h"
 #include "vissort/scene.h"
+#include "vissort/worker_pool.h"
 
 namespace vissort {
 namespace {
@@ -122,6 +123,28 @@ TEST(PeerColliders, BulletStaysEqualToBruteFrameAfterFrame) {
         expectConsistent(actual);
         EXPECT_EQ(actual.pairs, expected.pairs);
         EXPECT_EQ(actual.stats.triangle_pairs, expected.stats.triangle_pairs);
+    }
+}
+
+// The refits and the object pairs are shared over the threads, as the vissort method's are:
+// the answer must not depend on how many, nor on the pool they come from.
+TEST(PeerColliders, BulletOnAnyThreadsEqualsBrute) {
+    const Scene scene = loadBunnies(18);
+    const std::vector<PrimitiveRange> objects = scene.objectPrimitives();
+    CollisionDetector brute(objects, settingsFor(CollisionMethod::brute));
+    WorkerPool own_pool(3);
+    for (uint32_t threads : {2u, 3u, 0u}) {
+        for (WorkerPool* pool : {static_cast<WorkerPool*>(nullptr), &own_pool}) {
+            CollisionSettings settings = settingsFor(CollisionMethod::bullet);
+            settings.threads = threads;
+            settings.pool = pool;
+            CollisionDetector bullet(objects, settings);
+            for (double t : {0.0, 1.0 / 30, 2.0})
+                expectBulletEqualsBrute(bullet, brute, scene.frame(t),
+                                        std::to_string(threads) + " threads" +
+                                            (pool ? " of its own pool" : "") +
+                                            ", t = " + std::to_string(t));
+        }
     }
 }
 

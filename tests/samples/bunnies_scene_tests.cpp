@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "scene_checks.h"
 #include "scenes/builtin_scenes.h"
 #include "scenes/scene_library.h"
 
@@ -57,16 +58,10 @@ std::vector<Vec3> referenceBunnyCorners() {
 }
 
 Scene makeBunnies(const std::string& n, const std::string& seed = "1") {
-    Result<Scene> scene = samples::makeBuiltinScene("bunnies", {{"n", n}, {"seed", seed}});
-    EXPECT_TRUE(scene) << scene.error;
-    return scene ? std::move(*scene.value) : Scene{};
+    return test::makeCountedScene("bunnies", n, seed);
 }
 
-TrianglePositions frameAt(const Scene& scene, double t) {
-    TrianglePositions positions;
-    scene.animation->positionsAt(t, positions);
-    return positions;
-}
+using test::frameAt;
 
 Vec3 centreOf(const Scene& scene, std::size_t bunny, double t) {
     Vec3 centre;
@@ -82,17 +77,7 @@ TEST(BunniesScene, CountsObjectsAndMaterials) {
     const Scene scene = makeBunnies("3");
     EXPECT_EQ(scene.name, "builtin:bunnies");
     EXPECT_TRUE(scene.isDynamic());
-    EXPECT_EQ(scene.triangleCount(), 3 * kTrianglesPerBunny);
-    ASSERT_EQ(scene.objects.size(), 3u);
-    for (uint32_t i = 0; i < 3; ++i) {
-        EXPECT_EQ(scene.objects[i].name, "bunny_" + std::to_string(i));
-        EXPECT_EQ(scene.objects[i].first_triangle, i * kTrianglesPerBunny);
-        EXPECT_EQ(scene.objects[i].triangle_count, kTrianglesPerBunny);
-        EXPECT_TRUE(scene.objects[i].transparent);
-        EXPECT_FLOAT_EQ(scene.objects[i].colour.a, 0.5f);
-    }
-    const Rgba a = scene.objects[0].colour, b = scene.objects[1].colour;
-    EXPECT_GT(std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b), 0.1f);
+    test::expectNumberedObjects(scene, "bunny_", 3, kTrianglesPerBunny, 0.5f);
 
     const Result<Scene> defaults = samples::makeBuiltinScene("bunnies", {});
     ASSERT_TRUE(defaults);

@@ -79,5 +79,31 @@ TEST(LinePlot, EachSeriesInItsColourHigherValuesHigherUp) {
     EXPECT_LT(high.mean_y, low.mean_y - 50); // a hundred times larger: well above
 }
 
+// On a logarithmic x axis a decade is as wide wherever it lies; on a linear one, ten times wider
+// from 10 to 100 than from 1 to 10. Each decade is a series of its own colour: their mean x are a
+// decade apart.
+TEST(LinePlot, LogarithmicXGivesEachDecadeTheSameWidth) {
+    const std::vector<PlotSeries> series = {
+        {"a", {1, 10}, {1, 1}}, {"b", {10, 100}, {10, 10}}, {"c", {100, 1000}, {100, 100}}};
+    const uint8_t colours[3][3] = {{214, 39, 40}, {31, 119, 180}, {44, 160, 44}};
+    const uint32_t plot_right = 900 - 170; // the legend, on the right, left out
+    const auto decade_steps = [&](const Strip& plot) {
+        double mean_x[3];
+        for (int i = 0; i < 3; ++i) {
+            const Found found = find(plot, colours[i], plot_right);
+            EXPECT_GT(found.count, 20u) << i;
+            mean_x[i] = found.mean_x;
+        }
+        return std::pair(mean_x[1] - mean_x[0], mean_x[2] - mean_x[1]);
+    };
+    const auto [log_first, log_second] =
+        decade_steps(plotLines(series, "title", "x", "y", 900, 400, AxisScale::logarithmic));
+    EXPECT_GT(log_first, 100);
+    EXPECT_NEAR(log_second / log_first, 1.0, 0.1);
+    const auto [linear_first, linear_second] =
+        decade_steps(plotLines(series, "title", "x", "y", 900, 400));
+    EXPECT_GT(linear_second, 5 * linear_first);
+}
+
 } // namespace
 } // namespace vissort::samples

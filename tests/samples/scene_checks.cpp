@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace vissort::test {
 namespace {
 
@@ -51,6 +53,35 @@ void expectSameScene(const Scene& a, const Scene& b) {
     for (std::size_t k = 0; k < a.camera_path.size(); ++k) {
         EXPECT_EQ(a.camera_path[k].time, b.camera_path[k].time);
         expectSameCamera(a.camera_path[k].camera, b.camera_path[k].camera);
+    }
+}
+
+Scene makeCountedScene(const std::string& name, const std::string& n, const std::string& seed) {
+    Result<Scene> scene = samples::makeBuiltinScene(name, {{"n", n}, {"seed", seed}});
+    EXPECT_TRUE(scene) << scene.error;
+    return scene ? std::move(*scene.value) : Scene{};
+}
+
+TrianglePositions frameAt(const Scene& scene, double t) {
+    TrianglePositions positions;
+    scene.animation->positionsAt(t, positions);
+    return positions;
+}
+
+void expectNumberedObjects(const Scene& scene, const std::string& prefix, uint32_t count,
+                           uint32_t triangles_each, float alpha) {
+    ASSERT_EQ(scene.objects.size(), count);
+    EXPECT_EQ(scene.triangleCount(), std::size_t(count) * triangles_each);
+    for (uint32_t i = 0; i < count; ++i) {
+        EXPECT_EQ(scene.objects[i].name, prefix + std::to_string(i));
+        EXPECT_EQ(scene.objects[i].first_triangle, i * triangles_each);
+        EXPECT_EQ(scene.objects[i].triangle_count, triangles_each);
+        EXPECT_TRUE(scene.objects[i].transparent);
+        EXPECT_FLOAT_EQ(scene.objects[i].colour.a, alpha);
+    }
+    if (count >= 2) {
+        const Rgba a = scene.objects[0].colour, b = scene.objects[1].colour;
+        EXPECT_GT(std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b), 0.1f);
     }
 }
 

@@ -2,6 +2,7 @@
 // Checks every built-in scene generator's tests make: its parameter errors, and that one seed
 // gives the same scene bit for bit.
 
+#include <cstdint>
 #include <span>
 #include <string>
 
@@ -22,5 +23,16 @@ void expectParameterErrors(const std::string& scene, std::span<const ParameterEr
 /// The same positions (bit for bit), objects (names, ranges, every colour channel, transparency),
 /// camera and camera path.
 void expectSameScene(const Scene& a, const Scene& b);
+
+/// builtin:NAME?n=N&seed=SEED, failing the test (and giving an empty scene) when it is refused.
+Scene makeCountedScene(const std::string& name, const std::string& n, const std::string& seed);
+
+/// The scene's animation at t.
+TrianglePositions frameAt(const Scene& scene, double t);
+
+/// Objects PREFIX0 .. PREFIX(count-1), triangles_each triangles each in order, transparent with
+/// the given alpha, the first two in clearly different colours.
+void expectNumberedObjects(const Scene& scene, const std::string& prefix, uint32_t count,
+                           uint32_t triangles_each, float alpha);
 
 } // namespace vissort::test
