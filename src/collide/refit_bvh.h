@@ -25,7 +25,7 @@ public:
         uint32_t first = 0, size = 0, right = 0, after = 0;
         bool isLeaf() const { return size <= kLeafSize; }
     };
-    static constexpr uint32_t kLeafSize = 4;
+    static constexpr uint32_t kLeafSize = 8;
 
     /// Builds the tree of object's triangles (at least one) at positions: median splits of the
     /// triangles' box centres, on the axis whose halves have the least surface area. The boxes
