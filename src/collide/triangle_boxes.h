@@ -62,10 +62,16 @@ struct DiagonalExtents {
 };
 
 inline bool diagonalsOverlap(const DiagonalExtents& a, const DiagonalExtents& b) {
+#if defined(__SSE2__)
+    const __m128 meet = _mm_and_ps(_mm_cmple_ps(_mm_loadu_ps(a.min), _mm_loadu_ps(b.max)),
+                                   _mm_cmple_ps(_mm_loadu_ps(b.min), _mm_loadu_ps(a.max)));
+    return _mm_movemask_ps(meet) == 15;
+#else
     bool overlap = true;
     for (int k = 0; k < 4; ++k)
         overlap &= a.min[k] <= b.max[k] && b.min[k] <= a.max[k];
     return overlap;
+#endif
 }
 
 /// The diagonal extents of triangle t of positions.
