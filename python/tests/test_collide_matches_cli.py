@@ -45,6 +45,29 @@ def test_methods_agree_with_brute_force_on_arrays(method):
     np.testing.assert_array_equal(vissort.collide(scene, time=1.0), reference)
 
 
+@pytest.mark.parametrize("object_stage", ["adaptive", "always", "never"])
+def test_every_object_stage_gives_brute_forces_pairs(object_stage):
+    scene = vissort.builtin("bunnies", n=10, seed=1)
+    brute = vissort.CollisionDetector(scene, method="brute")
+    detector = vissort.CollisionDetector(scene, object_stage=object_stage, threads=2)
+    stage_frames = 0
+    for f in range(8):
+        np.testing.assert_array_equal(detector.collide(time=f / 30), brute.collide(time=f / 30))
+        stage_frames += detector.stats["directions"] > 0
+    assert stage_frames == {"adaptive": stage_frames, "always": 8, "never": 0}[object_stage]
+    assert object_stage != "adaptive" or stage_frames >= 1  # the first frame tries it
+    with pytest.raises(ValueError, match="unknown object stage 'sometimes'"):
+        vissort.CollisionDetector(scene, object_stage="sometimes")
+
+
+def test_bullet_on_threads_gives_brute_forces_pairs():
+    scene = vissort.builtin("bunnies", n=10, seed=1)
+    for threads in (1, 2, 0):
+        np.testing.assert_array_equal(
+            vissort.collide(scene, time=0.5, method="bullet", threads=threads),
+            vissort.collide(scene, time=0.5, method="brute"))
+
+
 def test_two_triangles_through_each_other():
     # A vertical triangle pierces a horizontal one; a third, far away, touches nothing.
     triangles = np.array([[[-1, 0, -1], [1, 0, -1], [0, 0, 1]],
