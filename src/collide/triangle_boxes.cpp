@@ -11,12 +11,17 @@
 namespace vissort::detail {
 
 void computeTriangleBoxes(PositionsView positions, std::vector<Box3f>& boxes) {
-    const std::size_t n = positions.triangleCount();
-    boxes.resize(n);
+    boxes.resize(positions.triangleCount());
+    computeTriangleBoxes(positions, {0, uint32_t(boxes.size())}, boxes);
+}
+
+void computeTriangleBoxes(PositionsView positions, PrimitiveRange range, std::span<Box3f> boxes) {
+    // One coordinate array at a time: three streams read forward, a loop that vectorizes.
     const float* axes[3] = {positions.x.data(), positions.y.data(), positions.z.data()};
     for (int k = 0; k < 3; ++k) {
         const float* c = axes[k];
-        for (std::size_t t = 0; t < n; ++t) {
+        for (std::size_t t = range.first_triangle; t < range.first_triangle + range.triangle_count;
+             ++t) {
             const float a = c[3 * t], b = c[3 * t + 1], d = c[3 * t + 2];
             boxes[t].min[k] = std::min(std::min(a, b), d);
             boxes[t].max[k] = std::max(std::max(a, b), d);

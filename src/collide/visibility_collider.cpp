@@ -15,6 +15,7 @@
 #include "collide/object_culling.h"
 #include "collide/object_stage_schedule.h"
 #include "collide/refit_bvh.h"
+#include "collide/small_pair_scan.h"
 #include "collide/triangle_intersection.h"
 
 namespace vissort::detail {
@@ -29,28 +30,43 @@ public:
     void collide(PositionsView positions, CollisionResult& result) override {
         CollisionStats& stats = result.stats;
         StageClock clock;
-        // Only the objects of a pair whose boxes overlap need their tree this frame. Coherence
-        // guesses which: an object paired last frame is refitted at once (its box is its tree's
-        // root), any other gets its box straight from its corners (one streaming pass); an
-        // object the guess missed is refitted after the pairs are known. A tree is built the
-        // first time its object needs it and refitted every later time (the shape stays, the
-        // boxes follow the deformation); a skipped frame leaves nothing stale, as a refit
-        // recomputes every box from the positions.
+        // Only the objects of a pair whose boxes overlap need anything more than their box this
+        // frame: their tree, or for a pair of small objects when the object stage does not run,
+        // their triangles' boxes (small_pair_scan.h). Coherence guesses which: what an object
+        // needed last frame is made at once (a tree's root, or the union of the triangle boxes,
+        // is then its box), any other object gets its box straight from its corners (one
+        // streaming pass), and what the guess missed is made once the pairs are known. A tree
+        // is built the first time its object needs it and refitted every later time (the shape
+        // stays, the boxes follow the deformation); a skipped frame leaves nothing stale, as a
+        // refit recomputes every box from the positions.
+        const bool object_stage = schedule_.runsThisFrame();
         object_boxes_.resize(objects_.size());
-        refitted_.assign(objects_.size(), 0);
-        const auto refit = [&](uint32_t o) {
-            if (trees_[o].isBuilt())
-                trees_[o].refit(positions);
-            else
-                trees_[o].build(positions, objects_[o]);
-            refitted_[o] = 1;
+        made_.assign(objects_.size(), 0);
+        if (triangle_boxes_.empty())
+            for (const PrimitiveRange& o : objects_)
+                triangle_boxes_.resize(std::max<std::size_t>(
+                    triangle_boxes_.size(), std::size_t(o.first_triangle) + o.triangle_count));
+        const auto make = [&](uint32_t o, uint8_t what) {
+            if (what & kTree) {
+                if (trees_[o].isBuilt())
+                    trees_[o].refit(positions);
+                else
+                    trees_[o].build(positions, objects_[o]);
+            }
+            if (what & kTriangleBoxes)
+                computeTriangleBoxes(positions, objects_[o], triangle_boxes_);
+            made_[o] |= what;
         };
         threads_.forEach(objects_.size(), [&](std::size_t o, Worker&) {
+            const uint8_t guess = needs_.size() == objects_.size() ? needs_[o] : 0;
             if (objects_[o].triangle_count == 0) {
                 object_boxes_[o] = kEmptyBox;
-            } else if (in_pair_.size() == objects_.size() && in_pair_[o]) {
-                refit(uint32_t(o));
+            } else if (guess & kTree) {
+                make(uint32_t(o), guess);
                 object_boxes_[o] = trees_[o].bounds();
+            } else if (guess & kTriangleBoxes) {
+                make(uint32_t(o), guess);
+                object_boxes_[o] = boxOfRange(triangle_boxes_, objects_[o]);
             } else {
                 object_boxes_[o] = boxOfCorners(positions, objects_[o]);
             }
@@ -58,18 +74,22 @@ public:
         overlappingBoxPairs(object_boxes_, candidates_.objects, sweep_order_);
         candidates_.alive.assign(candidates_.objects.size(), 1);
         stats.box_object_pairs = candidates_.objects.size();
-        in_pair_.assign(objects_.size(), 0);
-        for (const auto& [a, b] : candidates_.objects)
-            in_pair_[a] = in_pair_[b] = 1;
-        unrefitted_.clear();
+        needs_.assign(objects_.size(), 0);
+        for (const auto& [a, b] : candidates_.objects) {
+            const uint8_t need = scans(a, b, object_stage) ? kTriangleBoxes : kTree;
+            needs_[a] |= need;
+            needs_[b] |= need;
+        }
+        unmade_.clear();
         for (uint32_t o = 0; o < objects_.size(); ++o)
-            if (in_pair_[o] && !refitted_[o])
-                unrefitted_.push_back(o);
-        threads_.forEach(unrefitted_.size(),
-                         [&](std::size_t i, Worker&) { refit(unrefitted_[i]); });
+            if (needs_[o] & ~made_[o])
+                unmade_.push_back(o);
+        threads_.forEach(unmade_.size(), [&](std::size_t i, Worker&) {
+            const uint32_t o = unmade_[i];
+            make(o, uint8_t(needs_[o] & ~made_[o]));
+        });
         stats.update_ms = clock.lap();
 
-        const bool object_stage = schedule_.runsThisFrame();
         if (object_stage)
             object_culling_.cull(trees_, object_boxes_, candidates_, stats);
         const double object_stage_ms = clock.lap();
@@ -92,7 +112,12 @@ public:
             w.candidates.clear();
             StageClock pair_clock;
             const uint64_t box_pairs =
-                overlappingTrianglePairs(trees_[a], trees_[b], positions, w.candidates, w.scratch);
+                scans(a, b, object_stage)
+                    ? scannedTrianglePairs(positions, triangle_boxes_, objects_[a], objects_[b],
+                                           object_boxes_[a], object_boxes_[b], w.candidates,
+                                           w.small_pair_scratch)
+                    : overlappingTrianglePairs(trees_[a], trees_[b], positions, w.candidates,
+                                               w.scratch);
             if (box_pairs == 0) { // what a pair the object stage culls is like: see below
                 w.empty_pair_ms += pair_clock.lap();
                 ++w.empty_pairs;
@@ -135,10 +160,21 @@ public:
     }
 
 private:
+    // What an object needs made from this frame's positions, besides its box.
+    static constexpr uint8_t kTree = 1, kTriangleBoxes = 2;
+
+    /// Whether the pair of objects a and b takes the scan of small objects rather than their
+    /// trees: both small, and no object stage this frame (it draws the trees' parts).
+    bool scans(uint32_t a, uint32_t b, bool object_stage) const {
+        return !object_stage && objects_[a].triangle_count <= kScanTriangles &&
+               objects_[b].triangle_count <= kScanTriangles;
+    }
+
     // One thread's scratch and results in the parallel parts.
     struct Worker {
         std::vector<std::pair<uint32_t, uint32_t>> candidates;
         TrianglePairScratch scratch;
+        SmallPairScratch small_pair_scratch;
         std::vector<TrianglePair> pairs;
         uint64_t triangle_pairs = 0, box_triangle_pairs = 0;
         double exact_ms = 0;
@@ -159,10 +195,11 @@ private:
     CandidatePairs candidates_;
     std::vector<Box3f> object_boxes_;
     std::vector<uint32_t> sweep_order_; // overlappingBoxPairs' scratch
-    std::vector<uint8_t> in_pair_;     // per object: in some pair whose boxes overlap (last frame's
-                                       // until this frame's pairs are known)
-    std::vector<uint8_t> refitted_;    // per object: its tree is refitted to this frame
-    std::vector<uint32_t> unrefitted_; // paired objects whose trees the guess left out
+    std::vector<uint8_t> needs_; // per object: what it needs (kTree, kTriangleBoxes), this frame's
+                                 // once the pairs are known, last frame's until then
+    std::vector<uint8_t> made_;  // per object: what is made from this frame's positions
+    std::vector<uint32_t> unmade_;      // objects needing what the guess did not make
+    std::vector<Box3f> triangle_boxes_; // by triangle id: this frame's, for the scanned objects
     std::vector<uint8_t> in_live_pair_; // per object: in some pair the object stage left alive
     std::vector<uint32_t> live_;
 };

@@ -234,6 +234,53 @@ TEST(CollisionDetector, EveryObjectStageScheduleGivesBruteForcesPairs) {
     EXPECT_TRUE(parseObjectStage("sometimes").error.find("sometimes") != std::string::npos);
 }
 
+// Small objects (boxes of 12 triangles) pair with each other by the scan of their triangle
+// boxes and with large ones (bunnies of 3,674) by the trees; objects switch between the two as
+// their partners and the object stage's frames change. Every frame must be brute force's.
+TEST(CollisionDetector, SmallAndLargeObjectsTogetherMatchBruteForce) {
+    const Result<Scene> bunnies = samples::loadScene("builtin:bunnies?n=6");
+    ASSERT_TRUE(bunnies) << bunnies.error;
+    Objects scene;
+    scene.positions = bunnies.value->positions;
+    scene.ranges = bunnies.value->objectPrimitives();
+    const std::size_t bunny_corners = scene.positions.x.size();
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> place(-2.5, 2.5), turn(0, 3);
+    for (int i = 0; i < 40; ++i) { // boxes of side 0.6, many overlapping each other or a bunny
+        const Vec3 lo{place(random), place(random), place(random)};
+        scene.addBox(lo, {lo.x + 0.6, lo.y + 0.6, lo.z + 0.6}, turn(random), lo);
+    }
+    CollisionDetector brute(scene.ranges, method(CollisionMethod::brute));
+    for (ObjectStage stage : {ObjectStage::adaptive, ObjectStage::always, ObjectStage::never})
+        for (uint32_t threads : {1u, 2u}) {
+            CollisionSettings settings;
+            settings.object_stage = stage;
+            settings.threads = threads;
+            CollisionDetector vissort(scene.ranges, settings);
+            uint64_t small_pairs_found = 0;
+            for (int f = 0; f < 8; ++f) {
+                TrianglePositions frame = bunnies.value->frame(f / 10.0);
+                frame.x.resize(scene.positions.x.size());
+                frame.y.resize(scene.positions.y.size());
+                frame.z.resize(scene.positions.z.size());
+                for (std::size_t c = bunny_corners; c < frame.x.size(); ++c) {
+                    frame.x[c] = scene.positions.x[c] + float(0.05 * f);
+                    frame.y[c] = scene.positions.y[c];
+                    frame.z[c] = scene.positions.z[c];
+                }
+                const CollisionResult expected = brute.collide(frame);
+                expectSamePairs(expected, vissort.collide(frame),
+                                std::string(objectStageName(stage)) + ", " +
+                                    std::to_string(threads) + " threads, frame " +
+                                    std::to_string(f));
+                const uint32_t first_box_triangle = uint32_t(bunny_corners / 3);
+                for (const TrianglePair& p : expected.pairs)
+                    small_pairs_found += p.first >= first_box_triangle;
+            }
+            EXPECT_GT(small_pairs_found, 0u) << "boxes meet boxes: the scan is exercised";
+        }
+}
+
 TEST(CollisionDetector, VisibilityCullsObjectPairsThatBoxesKeep) {
     const Result<Scene> scene = samples::loadScene("builtin:bunnies?n=36");
     ASSERT_TRUE(scene) << scene.error;
