@@ -86,18 +86,7 @@ uint32_t RefitBvh::buildRange(uint32_t first, uint32_t size) {
 void RefitBvh::refit(PositionsView positions) {
     // The triangles' boxes in id order (the corners are read forward), then in leaf order from
     // that small array.
-    // One coordinate array at a time: three streams read forward, a loop that vectorizes.
-    const std::size_t count = boxes_.size(), first_corner = 3 * std::size_t(first_triangle_);
-    const float* axes[3] = {positions.x.data(), positions.y.data(), positions.z.data()};
-    for (int k = 0; k < 3; ++k) {
-        const float* c = axes[k] + first_corner;
-        Box3f* boxes = boxes_.data();
-        for (std::size_t t = 0; t < count; ++t) {
-            const float p = c[3 * t], q = c[3 * t + 1], r = c[3 * t + 2];
-            boxes[t].min[k] = std::min(std::min(p, q), r);
-            boxes[t].max[k] = std::max(std::max(p, q), r);
-        }
-    }
+    computeTriangleBoxes(positions, {first_triangle_, uint32_t(boxes_.size())}, boxes_);
     for (std::size_t i = 0; i < triangles_.size(); ++i)
         leaf_boxes_[i] = boxes_[triangles_[i] - first_triangle_];
     // Children come after their parent: back to front, every child is refitted first.

@@ -15,16 +15,16 @@ void computeTriangleBoxes(PositionsView positions, std::vector<Box3f>& boxes) {
     computeTriangleBoxes(positions, {0, uint32_t(boxes.size())}, boxes);
 }
 
-void computeTriangleBoxes(PositionsView positions, PrimitiveRange range, std::span<Box3f> boxes) {
+void computeTriangleBoxes(PositionsView positions, PrimitiveRange range, std::span<Box3f> out) {
     // One coordinate array at a time: three streams read forward, a loop that vectorizes.
+    const std::size_t first_corner = 3 * std::size_t(range.first_triangle);
     const float* axes[3] = {positions.x.data(), positions.y.data(), positions.z.data()};
     for (int k = 0; k < 3; ++k) {
-        const float* c = axes[k];
-        for (std::size_t t = range.first_triangle; t < range.first_triangle + range.triangle_count;
-             ++t) {
-            const float a = c[3 * t], b = c[3 * t + 1], d = c[3 * t + 2];
-            boxes[t].min[k] = std::min(std::min(a, b), d);
-            boxes[t].max[k] = std::max(std::max(a, b), d);
+        const float* c = axes[k] + first_corner;
+        for (std::size_t i = 0; i < range.triangle_count; ++i) {
+            const float p = c[3 * i], q = c[3 * i + 1], r = c[3 * i + 2];
+            out[i].min[k] = std::min(std::min(p, q), r);
+            out[i].max[k] = std::max(std::max(p, q), r);
         }
     }
 }

@@ -79,9 +79,9 @@ DiagonalExtents diagonalExtents(PositionsView positions, uint32_t t);
 
 /// boxes[t] = the box of triangle t, for every triangle of positions (boxes is resized).
 void computeTriangleBoxes(PositionsView positions, std::vector<Box3f>& boxes);
-/// boxes[t] = the box of triangle t, for the triangles of range only (boxes is indexed by
-/// triangle id and holds them).
-void computeTriangleBoxes(PositionsView positions, PrimitiveRange range, std::span<Box3f> boxes);
+/// out[i] = the box of triangle range.first_triangle + i, for every triangle of range (out holds
+/// range.triangle_count boxes): the loop every refit and scan shares.
+void computeTriangleBoxes(PositionsView positions, PrimitiveRange range, std::span<Box3f> out);
 
 /// The box of the triangles of range (triangle_count >= 1), from their corners: the same box as
 /// the union of their triangle boxes, in one streaming pass.

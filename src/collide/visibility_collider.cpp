@@ -54,7 +54,10 @@ public:
                     trees_[o].build(positions, objects_[o]);
             }
             if (what & kTriangleBoxes)
-                computeTriangleBoxes(positions, objects_[o], triangle_boxes_);
+                computeTriangleBoxes(
+                    positions, objects_[o],
+                    std::span(triangle_boxes_)
+                        .subspan(objects_[o].first_triangle, objects_[o].triangle_count));
             made_[o] |= what;
         };
         threads_.forEach(objects_.size(), [&](std::size_t o, Worker&) {
