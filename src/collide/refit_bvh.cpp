@@ -4,6 +4,7 @@
 #include "collide/refit_bvh.h"
 
 #include <algorithm>
+#include <bit>
 #include <numeric>
 
 namespace vissort::detail {
@@ -25,12 +26,20 @@ void RefitBvh::build(PositionsView positions, PrimitiveRange object) {
     triangles_.resize(object.triangle_count);
     std::iota(triangles_.begin(), triangles_.end(), object.first_triangle);
     leaf_boxes_.resize(object.triangle_count);
-    boxes_.resize(object.triangle_count);
     for (uint32_t i = 0; i < object.triangle_count; ++i)
         leaf_boxes_[i] = triangleBox(positions, triangles_[i]);
     nodes_.clear();
     nodes_.reserve(2 * std::size_t(object.triangle_count) / kLeafSize + 1);
     buildRange(0, object.triangle_count);
+    leaf_boxes_ = {}; // the triangles' boxes are not kept: see overlappingTrianglePairs
+    leaf_of_.resize(object.triangle_count);
+    leaves_.clear();
+    for (uint32_t i = 0; i < nodes_.size(); ++i)
+        if (nodes_[i].isLeaf()) {
+            leaves_.push_back(i);
+            for (uint32_t k = nodes_[i].first; k < nodes_[i].first + nodes_[i].size; ++k)
+                leaf_of_[triangles_[k] - first_triangle_] = i;
+        }
     refit(positions);
 }
 
@@ -84,19 +93,25 @@ uint32_t RefitBvh::buildRange(uint32_t first, uint32_t size) {
 }
 
 void RefitBvh::refit(PositionsView positions) {
-    // The triangles' boxes in id order (the corners are read forward), then in leaf order from
-    // that small array.
-    computeTriangleBoxes(positions, {first_triangle_, uint32_t(boxes_.size())}, boxes_);
-    for (std::size_t i = 0; i < triangles_.size(); ++i)
-        leaf_boxes_[i] = boxes_[triangles_[i] - first_triangle_];
+    // One forward pass over the corners: each triangle's box goes straight into its leaf's (the
+    // leaves' boxes are a few kilobytes, so they stay in the cache while the corners stream).
+    for (uint32_t leaf : leaves_)
+        nodes_[leaf].box = kEmptyBox;
+    const std::size_t first_corner = 3 * std::size_t(first_triangle_);
+    const float* axes[3] = {positions.x.data() + first_corner, positions.y.data() + first_corner,
+                            positions.z.data() + first_corner};
+    for (std::size_t i = 0; i < leaf_of_.size(); ++i) {
+        Box3f& box = nodes_[leaf_of_[i]].box;
+        for (int k = 0; k < 3; ++k) {
+            const float* c = axes[k] + 3 * i;
+            box.min[k] = std::min(box.min[k], std::min(std::min(c[0], c[1]), c[2]));
+            box.max[k] = std::max(box.max[k], std::max(std::max(c[0], c[1]), c[2]));
+        }
+    }
     // Children come after their parent: back to front, every child is refitted first.
     for (std::size_t i = nodes_.size(); i-- > 0;) {
         Node& n = nodes_[i];
-        if (n.isLeaf()) {
-            n.box = leaf_boxes_[n.first];
-            for (uint32_t k = 1; k < n.size; ++k)
-                includeBox(n.box, leaf_boxes_[n.first + k]);
-        } else {
+        if (!n.isLeaf()) {
             n.box = nodes_[i + 1].box;
             includeBox(n.box, nodes_[n.right].box);
         }
@@ -129,11 +144,12 @@ uint64_t overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b, Position
                                   TrianglePairScratch& scratch) {
     const auto na = a.nodes(), nb = b.nodes();
     const auto ta = a.triangles(), tb = b.triangles();
-    const auto ba = a.triangleBoxes(), bb = b.triangleBoxes();
     uint64_t box_pairs = 0;
     if (++scratch.call == 0) { // wrapped: old marks could match again
         for (auto& computed : scratch.computed)
             std::fill(computed.begin(), computed.end(), 0);
+        for (auto& boxed : scratch.boxed)
+            std::fill(boxed.begin(), boxed.end(), 0);
         scratch.call = 1;
     }
     const std::span<const uint32_t> triangles[2] = {ta, tb};
@@ -142,6 +158,23 @@ uint64_t overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b, Position
             scratch.computed[side].resize(triangles[side].size(), 0);
             scratch.diagonals[side].resize(triangles[side].size());
         }
+    // The triangles' boxes of a leaf, from the positions, the first time this call reaches it:
+    // the descent reaches few leaves, and a refit that kept every triangle's box would write
+    // (and the descent read) a box per triangle of every tree every frame.
+    for (int side = 0; side < 2; ++side) {
+        if (scratch.boxed[side].size() < triangles[side].size())
+            scratch.boxed[side].resize(triangles[side].size(), 0);
+        scratch.boxes[side].resize(triangles[side].size());
+    }
+    const auto leafBoxes = [&](int side, const RefitBvh::Node& leaf) -> const BoxColumns& {
+        BoxColumns& boxes = scratch.boxes[side];
+        if (scratch.boxed[side][leaf.first] != scratch.call) {
+            scratch.boxed[side][leaf.first] = scratch.call;
+            for (uint32_t k = leaf.first; k < leaf.first + leaf.size; ++k)
+                boxes.set(k, triangleBox(positions, triangles[side][k]));
+        }
+        return boxes;
+    };
     const auto diagonals = [&](int side, uint32_t leaf_index) -> const DiagonalExtents& {
         DiagonalExtents& extents = scratch.diagonals[side][leaf_index];
         if (scratch.computed[side][leaf_index] != scratch.call) {
@@ -162,12 +195,15 @@ uint64_t overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b, Position
         const RefitBvh::Node& x = na[i];
         const RefitBvh::Node& y = nb[j];
         if (x.isLeaf() && y.isLeaf()) {
-            for (uint32_t p = x.first; p < x.first + x.size; ++p) {
-                if (!boxesOverlap(ba[p], y.box))
-                    continue;
-                for (uint32_t q = y.first; q < y.first + y.size; ++q) {
-                    if (!boxesOverlap(ba[p], bb[q]))
-                        continue;
+            const BoxColumns& ba = leafBoxes(0, x);
+            const BoxColumns& bb = leafBoxes(1, y);
+            // The triangles of x that meet y's box, each against y's triangles four at a time.
+            for (unsigned near = overlapMask8(BoxLanes(y.box), ba, x.first, x.size); near != 0;
+                 near &= near - 1) {
+                const uint32_t p = x.first + uint32_t(std::countr_zero(near));
+                for (unsigned meet = overlapMask8(BoxLanes(ba.box(p)), bb, y.first, y.size);
+                     meet != 0; meet &= meet - 1) {
+                    const uint32_t q = y.first + uint32_t(std::countr_zero(meet));
                     ++box_pairs;
                     // The diagonals only for boxes that meet, once per triangle.
                     if (diagonalsOverlap(diagonals(0, p), diagonals(1, q)))

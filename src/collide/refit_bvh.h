@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "collide/box_columns.h"
 #include "collide/triangle_boxes.h"
 #include "vissort/geometry.h"
 
@@ -26,6 +27,7 @@ public:
         bool isLeaf() const { return size <= kLeafSize; }
     };
     static constexpr uint32_t kLeafSize = 8;
+    static_assert(kLeafSize <= 2 * BoxColumns::kLanes, "a leaf is tested in at most two masks");
 
     /// Builds the tree of object's triangles (at least one) at positions: median splits of the
     /// triangles' box centres, on the axis whose halves have the least surface area. The boxes
@@ -37,9 +39,8 @@ public:
 
     const Box3f& bounds() const { return nodes_.front().box; }
     std::span<const Node> nodes() const { return nodes_; }
-    /// Global triangle ids in leaf order, and their boxes in the same order.
+    /// Global triangle ids in leaf order.
     std::span<const uint32_t> triangles() const { return triangles_; }
-    std::span<const Box3f> triangleBoxes() const { return leaf_boxes_; }
 
     /// Appends the boxes of the shallowest nodes of at most max_size triangles that meet
     /// region, once each (marks: per node, round: this call's mark).
@@ -51,8 +52,9 @@ private:
     std::vector<Node> nodes_; // pre-order: a parent before its children
     std::vector<uint32_t> triangles_;
     uint32_t first_triangle_ = 0;
-    std::vector<Box3f> boxes_;      // in triangle id order, from first_triangle_
-    std::vector<Box3f> leaf_boxes_; // leaf_boxes_[i]: the box of triangles_[i]
+    std::vector<uint32_t> leaf_of_; // per triangle, in id order from first_triangle_: its leaf
+    std::vector<uint32_t> leaves_;  // the leaf nodes
+    std::vector<Box3f> leaf_boxes_; // while building: leaf_boxes_[i] is the box of triangles_[i]
 };
 
 /// The box of triangle t of positions.
@@ -65,6 +67,8 @@ struct TrianglePairScratch {
     std::vector<std::pair<uint32_t, uint32_t>> stack;
     std::vector<DiagonalExtents> diagonals[2]; // per leaf-order triangle of a, of b
     std::vector<uint32_t> computed[2];         // per leaf-order triangle: the call that set it
+    BoxColumns boxes[2];                       // per leaf-order triangle of a, of b: its box
+    std::vector<uint32_t> boxed[2]; // per leaf's first triangle: the call that set its boxes
     uint32_t call = 0;
 };
 

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "collide/box_columns.h"
 #include "collide/triangle_boxes.h"
 
 namespace vissort::detail {
@@ -18,9 +19,11 @@ namespace vissort::detail {
 /// Objects of at most this many triangles take the scan when both of a pair do.
 inline constexpr uint32_t kScanTriangles = 1024;
 
-/// One thread's scratch: the triangles near the common box, and the second object's extents.
+/// One thread's scratch: the triangles near the common box, and the second object's boxes and
+/// extents.
 struct SmallPairScratch {
     std::vector<uint32_t> near_a, near_b;
+    BoxColumns columns_b;
     std::vector<DiagonalExtents> diagonals_b;
 };
 
