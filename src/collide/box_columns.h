@@ -58,21 +58,6 @@ public:
     const float* min(int axis) const { return min_[axis].data(); }
     const float* max(int axis) const { return max_[axis].data(); }
 
-    /// The union of boxes [first, first + count), count >= 1.
-    Box3f unionOf(std::size_t first, std::size_t count) const {
-        Box3f b;
-        for (int k = 0; k < 3; ++k) {
-            float low = min_[k][first], high = max_[k][first];
-            for (std::size_t i = first + 1; i < first + count; ++i) {
-                low = std::min(low, min_[k][i]);
-                high = std::max(high, max_[k][i]);
-            }
-            b.min[k] = low;
-            b.max[k] = high;
-        }
-        return b;
-    }
-
 private:
     void reserve(std::size_t size) {
         if (min_[0].size() < size + kPadding)

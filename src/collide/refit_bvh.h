@@ -33,7 +33,8 @@ public:
     /// triangles' box centres, on the axis whose halves have the least surface area. The boxes
     /// are then current.
     void build(PositionsView positions, PrimitiveRange object);
-    /// Recomputes every triangle's and node's box from positions (the same triangle count).
+    /// Recomputes every node's box from positions (the same triangle count); the triangles'
+    /// boxes are not kept (overlappingTrianglePairs makes those of the leaves it reaches).
     void refit(PositionsView positions);
     bool isBuilt() const { return !nodes_.empty(); }
 
