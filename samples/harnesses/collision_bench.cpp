@@ -136,4 +136,27 @@ runCollisionBench(const CollisionBenchSettings& settings,
     return rows;
 }
 
+std::vector<CollisionSpeedup> bulletOverVissort(const std::vector<CollisionBenchRow>& rows,
+                                                const CollisionBenchSettings& settings) {
+    const auto find = [&](uint32_t n, const std::string& method) -> const CollisionBenchRow* {
+        for (const CollisionBenchRow& row : rows)
+            if (row.n == n && row.method == method)
+                return &row;
+        return nullptr;
+    };
+    std::vector<CollisionSpeedup> speedups;
+    for (uint32_t n : settings.counts)
+        for (uint32_t threads : settings.threads) {
+            const std::string suffix = std::to_string(threads) + "t";
+            const CollisionBenchRow* vissort = find(n, std::string("vissort-") + suffix);
+            const CollisionBenchRow* bullet = find(n, std::string("bullet-") + suffix);
+            if (vissort == nullptr || bullet == nullptr)
+                continue;
+            speedups.push_back(
+                {n, threads,
+                 vissort->median_ms > 0 ? bullet->median_ms / vissort->median_ms : 0.0});
+        }
+    return speedups;
+}
+
 } // namespace vissort::bench

@@ -56,4 +56,15 @@ runCollisionBench(const CollisionBenchSettings& settings,
                   const std::function<void(uint32_t n)>& on_count = {},
                   const std::function<void(const CollisionBenchRow&)>& on_row = {});
 
+/// Bullet's median over vissort's on the same threads at one n: issue 38's figure.
+struct CollisionSpeedup {
+    uint32_t n = 0, threads = 1;
+    double bullet_over_vissort = 0; // 0 when vissort's median is 0
+};
+
+/// Every (n, threads) of settings, in their order, where rows hold both vissort's and bullet's
+/// median; none unless settings measured both methods.
+std::vector<CollisionSpeedup> bulletOverVissort(const std::vector<CollisionBenchRow>& rows,
+                                                const CollisionBenchSettings& settings);
+
 } // namespace vissort::bench

@@ -40,15 +40,6 @@ bool parseMethods(const std::string& text, std::vector<CollisionMethod>& methods
     return true;
 }
 
-// The median of method at n among rows; 0 when it was not measured.
-double medianOf(const std::vector<bench::CollisionBenchRow>& rows, uint32_t n,
-                const std::string& method) {
-    for (const bench::CollisionBenchRow& row : rows)
-        if (row.n == n && row.method == method)
-            return row.median_ms;
-    return 0;
-}
-
 } // namespace
 
 int runCollisionBench(const BenchOptions& options) {
@@ -125,22 +116,18 @@ int runCollisionBench(const BenchOptions& options) {
     }
     // The target of docs/collision.md: bullet's median over vissort's on the same threads.
     nlohmann::json speedups = nlohmann::json::array();
-    if (std::find(settings.methods.begin(), settings.methods.end(), CollisionMethod::vissort) !=
-            settings.methods.end() &&
-        std::find(settings.methods.begin(), settings.methods.end(), CollisionMethod::bullet) !=
-            settings.methods.end()) {
+    const std::vector<bench::CollisionSpeedup> ratios =
+        bench::bulletOverVissort(measured, settings);
+    if (!ratios.empty()) {
         std::cout << "bullet / vissort, same threads:";
-        for (uint32_t n : settings.counts)
-            for (uint32_t t : settings.threads) {
-                const std::string suffix = "-" + std::to_string(t) + "t";
-                const double vissort = medianOf(measured, n, "vissort" + suffix),
-                             bullet = medianOf(measured, n, "bullet" + suffix);
-                const double ratio = vissort > 0 ? bullet / vissort : 0;
-                std::cout << "  N=" << n << " " << t << "t " << std::fixed << std::setprecision(2)
-                          << ratio << "x";
-                std::cout.unsetf(std::ios::fixed);
-                speedups.push_back({{"n", n}, {"threads", t}, {"bullet_over_vissort", ratio}});
-            }
+        for (const bench::CollisionSpeedup& r : ratios) {
+            std::cout << "  N=" << r.n << " " << r.threads << "t " << std::fixed
+                      << std::setprecision(2) << r.bullet_over_vissort << "x";
+            std::cout.unsetf(std::ios::fixed);
+            speedups.push_back({{"n", r.n},
+                                {"threads", r.threads},
+                                {"bullet_over_vissort", r.bullet_over_vissort}});
+        }
         std::cout << '\n';
     }
     if (!options.json.path.empty()) {
