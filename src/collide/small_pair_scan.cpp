@@ -34,23 +34,27 @@ uint64_t scannedTrianglePairs(PositionsView positions, std::span<const Box3f> tr
     for (std::size_t k = 0; k < scratch.near_b.size(); ++k)
         scratch.diagonals_b[k] = diagonalExtents(positions, scratch.near_b[k]);
     uint64_t box_pairs = 0;
+    std::vector<uint32_t>& hits = scratch.hits;
+    hits.resize(columns_b.size() + BoxColumns::kLanes);
     for (uint32_t ta : scratch.near_a) {
         const BoxLanes box(triangle_boxes[ta]);
-        bool have_diagonals = false; // computed at its first box pair: many have none
-        DiagonalExtents diagonals;
+        // The near triangles of b whose boxes meet ta's, listed without a branch per mask (an
+        // empty mask is a coin toss the predictor loses); the padding's empty boxes meet nothing.
+        std::size_t count = 0;
         for (std::size_t first = 0; first < columns_b.size(); first += BoxColumns::kLanes) {
-            // The padding's empty boxes meet nothing, so every bit is one of near_b.
-            for (unsigned mask = overlapMask4(box, columns_b, first); mask != 0; mask &= mask - 1) {
-                const std::size_t k = first + std::size_t(std::countr_zero(mask));
-                ++box_pairs;
-                if (!have_diagonals) {
-                    diagonals = diagonalExtents(positions, ta);
-                    have_diagonals = true;
-                }
-                if (diagonalsOverlap(diagonals, scratch.diagonals_b[k]))
-                    pairs.emplace_back(ta, scratch.near_b[k]);
+            const unsigned mask = overlapMask4(box, columns_b, first);
+            for (uint32_t lane = 0; lane < BoxColumns::kLanes; ++lane) {
+                hits[count] = uint32_t(first) + lane;
+                count += (mask >> lane) & 1;
             }
         }
+        if (count == 0)
+            continue;
+        box_pairs += count;
+        const DiagonalExtents diagonals = diagonalExtents(positions, ta);
+        for (std::size_t h = 0; h < count; ++h)
+            if (diagonalsOverlap(diagonals, scratch.diagonals_b[hits[h]]))
+                pairs.emplace_back(ta, scratch.near_b[hits[h]]);
     }
     return box_pairs;
 }

@@ -25,6 +25,7 @@ struct SmallPairScratch {
     std::vector<uint32_t> near_a, near_b;
     BoxColumns columns_b;
     std::vector<DiagonalExtents> diagonals_b;
+    std::vector<uint32_t> hits; // the near triangles of b whose boxes meet one of a's
 };
 
 /// Every pair (ta, tb), ta of a, tb of b, whose boxes overlap and whose diagonal extents
