@@ -201,14 +201,18 @@ uint64_t overlappingTrianglePairs(const RefitBvh& a, const RefitBvh& b, Position
             for (unsigned near = overlapMask8(BoxLanes(y.box), ba, x.first, x.size); near != 0;
                  near &= near - 1) {
                 const uint32_t p = x.first + uint32_t(std::countr_zero(near));
+                // The diagonals only for boxes that meet, once per triangle; the pairs they
+                // keep (about half: a coin toss the predictor loses) written without a branch.
+                std::size_t kept = pairs.size();
+                pairs.resize(kept + RefitBvh::kLeafSize);
                 for (unsigned meet = overlapMask8(BoxLanes(ba.box(p)), bb, y.first, y.size);
                      meet != 0; meet &= meet - 1) {
                     const uint32_t q = y.first + uint32_t(std::countr_zero(meet));
                     ++box_pairs;
-                    // The diagonals only for boxes that meet, once per triangle.
-                    if (diagonalsOverlap(diagonals(0, p), diagonals(1, q)))
-                        pairs.emplace_back(ta[p], tb[q]);
+                    pairs[kept] = {ta[p], tb[q]};
+                    kept += diagonalsOverlap(diagonals(0, p), diagonals(1, q));
                 }
+                pairs.resize(kept);
             }
             continue;
         }

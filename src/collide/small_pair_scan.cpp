@@ -51,10 +51,15 @@ uint64_t scannedTrianglePairs(PositionsView positions, std::span<const Box3f> tr
         if (count == 0)
             continue;
         box_pairs += count;
+        // Likewise the pairs whose diagonals meet too (about half of them).
         const DiagonalExtents diagonals = diagonalExtents(positions, ta);
-        for (std::size_t h = 0; h < count; ++h)
-            if (diagonalsOverlap(diagonals, scratch.diagonals_b[hits[h]]))
-                pairs.emplace_back(ta, scratch.near_b[hits[h]]);
+        std::size_t kept = pairs.size();
+        pairs.resize(kept + count);
+        for (std::size_t h = 0; h < count; ++h) {
+            pairs[kept] = {ta, scratch.near_b[hits[h]]};
+            kept += diagonalsOverlap(diagonals, scratch.diagonals_b[hits[h]]);
+        }
+        pairs.resize(kept);
     }
     return box_pairs;
 }
