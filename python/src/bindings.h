@@ -12,5 +12,6 @@ void bindOrder(pybind11::module_& m);
 void bindRender(pybind11::module_& m);
 void bindCollide(pybind11::module_& m);
 void bindVolume(pybind11::module_& m);
+void bindImage(pybind11::module_& m);
 
 } // namespace vissort::python

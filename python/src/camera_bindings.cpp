@@ -8,6 +8,7 @@
 #include "arrays.h"
 #include "bindings.h"
 #include "python_camera.h"
+#include "vissort/camera_path.h"
 #include "vissort/view_choice.h"
 
 namespace vissort::python {
@@ -162,6 +163,28 @@ void bindCamera(py::module_& m) {
             "--up, --fov, --ortho-dir, --azimuth, --elevation, --distance, --size, --frames): "
             "the same policy and the same errors, named as these keywords. camera: a camera "
             "the file stores, by name or index (Scene.cameras)")
+        .def(
+            "on_path",
+            [](const PythonCamera& base, const Scene& scene, const std::string& path, int frame) {
+                const Result<CameraPath> parsed = parseCameraPath(path);
+                if (!parsed)
+                    throw py::value_error(parsed.error);
+                if (frame < 0)
+                    throw py::value_error("frame must be at least 0, got " + std::to_string(frame));
+                // As every command's frames (FrameDriver): the path turns about the scene's
+                // bounds at time 0.
+                PythonCamera moved = base;
+                moved.spec = cameraOnPath(base.spec, *parsed.value, frame, scene.positions.bounds(),
+                                          scene.camera_path);
+                if (Status usable = validateCamera(moved.spec); !usable)
+                    throw py::value_error("camera of frame " + std::to_string(frame) +
+                                          " on path '" + path + "': " + usable.error);
+                return moved;
+            },
+            py::arg("scene"), py::arg("path"), py::arg("frame"),
+            "This camera moved to frame `frame` of a camera path over scene, as the command "
+            "line's --path with --frames: static, orbit, flythrough or scene (the scene's own "
+            "key frames)")
         .def_property_readonly("projection",
                                [](const PythonCamera& c) {
                                    return c.spec.projection == Projection::perspective

@@ -21,4 +21,5 @@ PYBIND11_MODULE(_vissort, m) {
     vissort::python::bindRender(m);
     vissort::python::bindCollide(m);
     vissort::python::bindVolume(m);
+    vissort::python::bindImage(m);
 }

@@ -251,6 +251,13 @@ class Camera:
         --up, --fov, --ortho-dir, --azimuth, --elevation, --distance, --size, --frames): the
         same policy and the same errors (ValueError), named as these keywords. camera: a
         camera the file stores, by name or index (Scene.cameras)."""
+    def on_path(
+        self, scene: Scene, path: Literal["static", "orbit", "flythrough", "scene"], frame: int
+    ) -> Camera:
+        """This camera moved to frame `frame` (>= 0) of a camera path over scene, as the command
+        line's --path with --frames: the path turns about the scene's bounds at time 0; scene
+        follows its own key frames. ValueError for another path, a negative frame or a camera the
+        path makes unusable."""
     @property
     def projection(self) -> Literal["perspective", "orthographic"]: ...
     @property
@@ -522,6 +529,11 @@ class Grid:
         """points, tetrahedra, file_cells, skipped_cells, bounds ((min), (max)), scalar_range
         ((min, max) or None), boundary_faces, convex: what `vissort info GRID` prints."""
 
+
+def write_image(path: Union[str, os.PathLike[str]], image: npt.NDArray[np.uint8]) -> None:
+    """Writes an (H, W, 4) uint8 RGBA image, row 0 at the top (as render returns it), as PNG or
+    JPEG by path's extension (.png, .jpg, .jpeg). ValueError naming the problem: another shape
+    or dtype, another extension, a file that cannot be written."""
 
 def load_grid(spec: Union[str, os.PathLike[str]]) -> Grid:
     """A grid from a file (.vtk, .vtu, tetgen .node/.ele, Medit .mesh) or
