@@ -28,9 +28,13 @@ case "$installed" in
   *) echo "check-python-install: vissort imported from $installed, not the environment" >&2
      exit 1 ;;
 esac
-for f in __init__.py __init__.pyi py.typed; do
+for f in __init__.py __init__.pyi py.typed batch/__init__.py batch/__main__.py; do
   [ -e "$installed/$f" ] || { echo "check-python-install: $f was not installed" >&2; exit 1; }
 done
 "$work/venv/bin/python" -m pytest -q -p no:cacheprovider --rootdir "$work" \
   "$source_dir/python/tests/test_arrays.py" "$source_dir/python/tests/test_lifetimes.py"
+# The batch command as installed, on two local Dask workers (python3-distributed).
+"$work/venv/bin/python" -m vissort.batch collide builtin:bunnies --frames 4 --chunk-frames 2 \
+  --local-workers 2 -q -o "$work/pairs.npz"
+[ -s "$work/pairs.npz" ] || { echo "check-python-install: the batch wrote no pairs" >&2; exit 1; }
 echo "check-python-install: vissort $("$work/venv/bin/python" -c 'import vissort; print(vissort.__version__)') installed in a virtual environment and tested"

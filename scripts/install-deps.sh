@@ -33,6 +33,8 @@ packages=(
   python3-numpy              # its arrays
   python3-venv python3-setuptools python3-wheel  # pip install . in a virtual environment
                              # (scripts/check-python-install.sh; pip builds a wheel with it)
+  python3-distributed        # vissort.batch: batches of frames on a Dask cluster (docs/batch.md)
+  python3-pandas             # vissort.batch's per-frame statistics as a DataFrame
   python3-pytest             # tests only: the module's tests (python/tests)
   python3-pil                # tests only: reading the command line's PNGs to compare images
   python3-matplotlib         # tests only: docs/python.md's examples show images with it

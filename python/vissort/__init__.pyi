@@ -23,6 +23,7 @@ import numpy.typing as npt
 __all__ = [
     "Camera",
     "CollisionDetector",
+    "FRAME_INTERVAL",
     "Grid",
     "OrderResult",
     "Orderer",
@@ -40,10 +41,14 @@ __all__ = [
     "order",
     "render",
     "render_volume",
+    "write_image",
 ]
 
 # The library's version, as `vissort --version` prints it.
 __version__: str
+# Seconds between frames: frame f of a run is at time f * FRAME_INTERVAL (1/30), as the command
+# line's --frames.
+FRAME_INTERVAL: float
 # Whether the module was built with OpenGL: without it, render(), Renderer and the "gl" oracle
 # raise RuntimeError.
 has_gl: bool

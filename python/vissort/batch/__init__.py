@@ -1,0 +1,138 @@
+"""vissort.batch: orders, renders and collisions of many frames of a scene, in this process or
+on a Dask cluster (docs/batch.md).
+
+The frames are cut into contiguous chunks, one task each, so that each keeps vissort's
+frame-to-frame coherence (a chunk computes the frame before it first, to seed its order). A scene
+travels as what every process can load: a builtin specification or a file's path. Results come
+back in frame order with one table of per-frame statistics: a pandas DataFrame when pandas is
+installed, else a list of dicts.
+
+    import vissort.batch
+    from distributed import Client
+    result = vissort.batch.render("builtin:bunnies", frames=300, size=(1024, 768),
+                                  path="orbit", output="out/frame_%04d.png", client=Client())
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+from typing import Any, List, Optional, Sequence, Tuple, Union
+
+import vissort
+
+from ._chunks import DEFAULT_CHUNK_FRAMES, Chunk, cut
+from ._runner import run
+from ._tasks import FrameResult, Job
+
+__all__ = ["BatchResult", "DEFAULT_CHUNK_FRAMES", "collide", "order", "render"]
+
+SceneSpec = Union[str, "os.PathLike[str]"]
+
+
+@dataclass
+class BatchResult:
+    """A batch's frames in order: their numbers, their results (orders, pair arrays, images or
+    image files) and one row of statistics each (frame, time_s, then the call's stats)."""
+
+    frame_numbers: List[int]
+    results: List[Any]
+    stats: Any  # a pandas DataFrame when pandas is installed, else a list of dicts
+    cycles: Optional[List[List[Any]]] = None  # order: each frame's cycles (uint32 id arrays)
+
+    def __len__(self) -> int:
+        return len(self.results)
+
+
+def _table(rows: List[dict]) -> Any:
+    try:
+        import pandas
+    except ImportError:
+        return rows
+    return pandas.DataFrame(rows)
+
+
+def _scene_spec(scene: Any) -> str:
+    """What travels to the workers: a builtin specification or a path, checked here first so
+    that a scene that cannot be loaded fails the batch at once with the loader's error, not once
+    per task."""
+    if isinstance(scene, vissort.Scene):
+        raise ValueError("scene must be a builtin specification or a file's path that every "
+                         "worker can load, not a loaded vissort.Scene")
+    if not isinstance(scene, (str, os.PathLike)):
+        raise ValueError(f"scene must be a builtin specification or a path, got {scene!r}")
+    spec = os.fspath(scene)
+    vissort.load(spec)  # raises the loader's one-line error
+    return spec
+
+
+def _size(size: Sequence[int]) -> Tuple[int, int]:
+    if (len(size) != 2 or any(isinstance(v, bool) or not isinstance(v, int) or v < 1
+                              for v in size)):
+        raise ValueError(f"size must be (width, height), two positive integers, got {size!r}")
+    return int(size[0]), int(size[1])
+
+
+def _check_pattern(output: str, frames: int) -> None:
+    try:
+        names = {output % 0, output % 1}
+    except (TypeError, ValueError):
+        raise ValueError(f"output must hold one integer field such as %04d for the frame, got "
+                         f"'{output}'") from None
+    if frames > 1 and len(names) < 2:
+        raise ValueError(f"output must hold one integer field such as %04d for the frame, got "
+                         f"'{output}'")
+    folder = os.path.dirname(output % 0) or "."
+    if not os.path.isdir(folder):
+        raise ValueError(f"output folder '{folder}' does not exist")
+
+
+def _run(job: Job, first: int, frames: int, chunk_frames: Optional[int], client: Any,
+         progress: Optional[bool]) -> BatchResult:
+    chunks: List[Chunk] = cut(first, frames, chunk_frames)
+    done: List[FrameResult] = run(job, chunks, client=client, progress=progress)
+    rows = [dict(frame=r.frame, time_s=r.time_s, **r.stats) for r in done]
+    cycles = [r.cycles for r in done] if job.kind == "order" else None
+    return BatchResult([r.frame for r in done], [r.value for r in done], _table(rows), cycles)
+
+
+def order(scene: SceneSpec, frames: int, *, first: int = 0, path: str = "static",
+          size: Sequence[int] = (1024, 1024), level: str = "object", oracle: str = "cpu",
+          chunk_frames: Optional[int] = None, client: Any = None,
+          progress: Optional[bool] = None) -> BatchResult:
+    """The visibility orders of frames [first, first + frames) of scene, each from the camera
+    the command line picks (Camera.default over the batch's frames) moved along path (static,
+    orbit, flythrough or scene). results: each frame's order (uint32 ids, front to back);
+    cycles: each frame's cycles.
+    client: a distributed.Client, or None to run here. chunk_frames: frames per task (default
+    DEFAULT_CHUNK_FRAMES). progress: a bar on standard error (None: when it is a terminal)."""
+    spec = _scene_spec(scene)
+    job = Job("order", spec, path, _size(size), first + frames, dict(level=level, oracle=oracle))
+    return _run(job, first, frames, chunk_frames, client, progress)
+
+
+def render(scene: SceneSpec, frames: int, *, first: int = 0, path: str = "static",
+           size: Sequence[int] = (1024, 1024), output: Optional[str] = None,
+           chunk_frames: Optional[int] = None, client: Any = None,
+           progress: Optional[bool] = None, **options: Any) -> BatchResult:
+    """Frames [first, first + frames) of scene rendered with transparency, as order's cameras.
+    output: a file pattern with one integer field (out/frame_%04d.png, .png or .jpg): each frame
+    is written there atomically and results are the files; None: results are the (H, W, 4) uint8
+    images. options: Renderer's (method, samples, level, oracle, shading, ...)."""
+    spec = _scene_spec(scene)
+    if output is not None:
+        output = os.fspath(output)
+        _check_pattern(output, frames)
+    job = Job("render", spec, path, _size(size), first + frames, dict(options), output)
+    return _run(job, first, frames, chunk_frames, client, progress)
+
+
+def collide(scene: SceneSpec, frames: int, *, first: int = 0, method: str = "vissort",
+            threads: int = 1, chunk_frames: Optional[int] = None, client: Any = None,
+            progress: Optional[bool] = None, **options: Any) -> BatchResult:
+    """The intersecting triangle pairs of frames [first, first + frames) of scene. results: each
+    frame's (K, 2) uint32 pairs. method and threads (per task), and options (size, min_cull,
+    object_stage): CollisionDetector's."""
+    spec = _scene_spec(scene)
+    job = Job("collide", spec, options=dict(method=method, threads=threads, **options))
+    return _run(job, first, frames, chunk_frames, client, progress)

@@ -1,0 +1,73 @@
+"""Running a batch's chunks: in this process one after the other, or as one Dask task each on
+a distributed.Client's workers; either way the frames come back in frame order, with a progress
+bar on long work (tqdm on a terminal when it is installed, else a line on standard error)."""
+
+from __future__ import annotations
+
+import sys
+from typing import Any, Callable, List, Optional
+
+from ._chunks import Chunk
+from ._tasks import FrameResult, Job, run_chunk
+
+
+class _Progress:
+    """Chunks done out of a total: tqdm's bar when tqdm is installed, else a line rewritten on
+    standard error; nothing when off."""
+
+    def __init__(self, total: int, label: str, on: bool):
+        self._bar = None
+        self._total, self._done, self._label, self._on = total, 0, label, on
+        if not on:
+            return
+        try:
+            from tqdm import tqdm
+        except ImportError:
+            return
+        self._bar = tqdm(total=total, desc=label, unit="chunk", file=sys.stderr)
+
+    def advance(self) -> None:
+        self._done += 1
+        if self._bar is not None:
+            self._bar.update(1)
+        elif self._on:
+            end = "\n" if self._done == self._total else ""
+            print(f"\r{self._label}: {self._done}/{self._total} chunks", end=end, file=sys.stderr,
+                  flush=True)
+
+    def close(self) -> None:
+        if self._bar is not None:
+            self._bar.close()
+
+
+def progress_wanted(progress: Optional[bool]) -> bool:
+    """progress as given, or when None: on when standard error is a terminal."""
+    return sys.stderr.isatty() if progress is None else bool(progress)
+
+
+def run(job: Job, chunks: List[Chunk], client: Any = None, progress: Optional[bool] = None,
+        task: Callable[[Job, Chunk], List[FrameResult]] = run_chunk) -> List[FrameResult]:
+    """Every frame of chunks, in frame order. client: a distributed.Client (one task per chunk;
+    a worker that dies has its chunks run again elsewhere, by Dask) or None (this process)."""
+    bar = _Progress(len(chunks), f"vissort.batch {job.kind}", progress_wanted(progress))
+    try:
+        if client is None:
+            per_chunk = []
+            for chunk in chunks:
+                per_chunk.append(task(job, chunk))
+                bar.advance()
+        else:
+            from distributed import as_completed
+
+            # pure=False: two batches with the same arguments are still two runs (files may have
+            # been removed in between).
+            futures = client.map(task, [job] * len(chunks), chunks, pure=False)
+            for future in as_completed(futures):
+                if future.status == "error": # the first failure ends the batch at once
+                    client.cancel(futures)
+                    future.result() # raises the chunk's exception
+                bar.advance()
+            per_chunk = client.gather(futures)
+    finally:
+        bar.close()
+    return [frame for results in per_chunk for frame in results]

@@ -1,0 +1,116 @@
+"""What one chunk of a batch does, on whichever process runs it: load the scene (once per
+process), compute the chunk's seed frame and then its frames in order with one orderer,
+renderer or collision detector (so each frame starts from the last one's order), and return each
+frame's result and statistics. Everything here travels to Dask workers by pickling: the job is
+plain data, never a vissort object."""
+
+from __future__ import annotations
+
+import os
+from collections import OrderedDict
+from dataclasses import dataclass, field
+from typing import Any, Dict, List, Optional, Tuple
+
+import vissort
+
+from ._chunks import Chunk
+
+KINDS = ("order", "render", "collide")
+
+
+@dataclass(frozen=True)
+class Job:
+    """A batch, as plain data. scene: a builtin specification or a path every worker can read.
+    camera_frames: the frames the default camera is framed over (the whole batch's, so that
+    every chunk frames the same camera). output: render's file pattern (printf style, one
+    integer field) or None to return the images."""
+
+    kind: str
+    scene: str
+    path: str = "static"
+    size: Tuple[int, int] = (1024, 1024)
+    camera_frames: int = 1
+    options: Dict[str, Any] = field(default_factory=dict)
+    output: Optional[str] = None
+
+
+@dataclass
+class FrameResult:
+    """One frame: its number, its time in seconds, its result (an order, a pair array, an image
+    or the image's file) and the statistics of the call that made it."""
+
+    frame: int
+    time_s: float
+    value: Any
+    stats: Dict[str, Any]
+    cycles: Optional[List[Any]] = None  # an order's cycles (uint32 id arrays)
+
+
+# The scenes this process has loaded, most recent last: a worker keeps the scene of its chunks
+# (loading the power plant takes seconds), two at most.
+_scenes: "OrderedDict[str, vissort.Scene]" = OrderedDict()
+_KEPT_SCENES = 2
+
+
+def load_scene(spec: str) -> vissort.Scene:
+    """The scene spec names, loaded once per process."""
+    if spec in _scenes:
+        _scenes.move_to_end(spec)
+        return _scenes[spec]
+    scene = vissort.load(spec)
+    _scenes[spec] = scene
+    while len(_scenes) > _KEPT_SCENES:
+        _scenes.popitem(last=False)
+    return scene
+
+
+def write_atomically(path: str, image) -> None:
+    """Writes image to path through a temporary file in the same folder, renamed over path once
+    complete: a failure (a killed worker) leaves no half-written frame, and a frame written
+    twice (a retried chunk) is replaced whole."""
+    folder, name = os.path.split(path)
+    stem, extension = os.path.splitext(name)
+    partial = os.path.join(folder, f".{stem}.{os.getpid()}.partial{extension}")
+    try:
+        vissort.write_image(partial, image)
+        os.replace(partial, path)
+    finally:
+        if os.path.exists(partial):
+            os.remove(partial)
+
+
+def run_chunk(job: Job, chunk: Chunk) -> List[FrameResult]:
+    """The results of chunk's frames, in order (the seed frame's are computed and dropped)."""
+    if job.kind not in KINDS:
+        raise ValueError(f"unknown batch kind '{job.kind}' (expected {', '.join(KINDS)})")
+    scene = load_scene(job.scene)
+    frames = ([chunk.seed] if chunk.seed is not None else []) + list(chunk.frames)
+    results = []
+    if job.kind == "collide":
+        detector = vissort.CollisionDetector(scene, **job.options)
+        for f in frames:
+            pairs = detector.collide(scene, time=f * vissort.FRAME_INTERVAL)
+            results.append(FrameResult(f, f * vissort.FRAME_INTERVAL, pairs, dict(detector.stats)))
+    else:
+        base = vissort.Camera.default(scene, job.size, frames=job.camera_frames)
+        if job.kind == "order":
+            orderer = vissort.Orderer(scene, **job.options)
+        else:
+            renderer = vissort.Renderer(scene, **job.options)
+        for f in frames:
+            camera = base.on_path(scene, job.path, f)
+            t = f * vissort.FRAME_INTERVAL
+            cycles = None
+            if job.kind == "order":
+                result = orderer.order(scene, camera, job.size, time=t)
+                value, stats, cycles = result.order, dict(result.stats), result.cycles
+                stats["cycles"] = len(cycles)
+            else:
+                value = renderer.render(camera, job.size, time=t)
+                stats = dict(renderer.stats)
+                if job.output is not None and f != chunk.seed:
+                    path = job.output % f
+                    write_atomically(path, value)
+                    value = path
+            results.append(FrameResult(f, t, value, stats, cycles))
+    return [r for r in results if r.frame != chunk.seed]
