@@ -23,7 +23,7 @@ import vissort
 
 from ._chunks import DEFAULT_CHUNK_FRAMES, Chunk, cut
 from ._runner import run
-from ._tasks import FrameResult, Job
+from ._tasks import FrameResult, Job, load_scene
 
 __all__ = ["BatchResult", "DEFAULT_CHUNK_FRAMES", "collide", "order", "render"]
 
@@ -53,17 +53,14 @@ def _table(rows: List[dict]) -> Any:
 
 
 def _scene_spec(scene: Any) -> str:
-    """What travels to the workers: a builtin specification or a path, checked here first so
-    that a scene that cannot be loaded fails the batch at once with the loader's error, not once
-    per task."""
+    """What travels to the workers: a builtin specification or a path (loaded here too, while
+    the tasks start: see _run)."""
     if isinstance(scene, vissort.Scene):
         raise ValueError("scene must be a builtin specification or a file's path that every "
                          "worker can load, not a loaded vissort.Scene")
     if not isinstance(scene, (str, os.PathLike)):
         raise ValueError(f"scene must be a builtin specification or a path, got {scene!r}")
-    spec = os.fspath(scene)
-    vissort.load(spec)  # raises the loader's one-line error
-    return spec
+    return os.fspath(scene)
 
 
 def _size(size: Sequence[int]) -> Tuple[int, int]:
@@ -90,7 +87,11 @@ def _check_pattern(output: str, frames: int) -> None:
 def _run(job: Job, first: int, frames: int, chunk_frames: Optional[int], client: Any,
          progress: Optional[bool]) -> BatchResult:
     chunks: List[Chunk] = cut(first, frames, chunk_frames)
-    done: List[FrameResult] = run(job, chunks, client=client, progress=progress)
+    # The scene is loaded here as well, so that one that cannot be loaded fails the batch at once
+    # with the loader's one-line error rather than once per task: before anything runs when the
+    # batch runs here (which then uses it), while the workers start on it otherwise.
+    done: List[FrameResult] = run(job, chunks, client=client, progress=progress,
+                                  check=lambda: load_scene(job.scene))
     rows = [dict(frame=r.frame, time_s=r.time_s, **r.stats) for r in done]
     cycles = [r.cycles for r in done] if job.kind == "order" else None
     return BatchResult([r.frame for r in done], [r.value for r in done], _table(rows), cycles)

@@ -46,9 +46,14 @@ def progress_wanted(progress: Optional[bool]) -> bool:
 
 
 def run(job: Job, chunks: List[Chunk], client: Any = None, progress: Optional[bool] = None,
-        task: Callable[[Job, Chunk], List[FrameResult]] = run_chunk) -> List[FrameResult]:
+        task: Callable[[Job, Chunk], List[FrameResult]] = run_chunk,
+        check: Callable[[], Any] = lambda: None) -> List[FrameResult]:
     """Every frame of chunks, in frame order. client: a distributed.Client (one task per chunk;
-    a worker that dies has its chunks run again elsewhere, by Dask) or None (this process)."""
+    a worker that dies has its chunks run again elsewhere, by Dask) or None (this process).
+    check: raises when the batch cannot run; called before the first chunk here, or once the
+    tasks are submitted (which are then cancelled)."""
+    if client is None:
+        check()
     bar = _Progress(len(chunks), f"vissort.batch {job.kind}", progress_wanted(progress))
     try:
         if client is None:
@@ -62,6 +67,11 @@ def run(job: Job, chunks: List[Chunk], client: Any = None, progress: Optional[bo
             # pure=False: two batches with the same arguments are still two runs (files may have
             # been removed in between).
             futures = client.map(task, [job] * len(chunks), chunks, pure=False)
+            try:
+                check()
+            except BaseException:
+                client.cancel(futures)
+                raise
             for future in as_completed(futures):
                 if future.status == "error": # the first failure ends the batch at once
                     client.cancel(futures)

@@ -79,38 +79,66 @@ def write_atomically(path: str, image) -> None:
             os.remove(partial)
 
 
+class _Engine:
+    """What a process keeps between the chunks of one job: the scene, the base camera, and the
+    orderer, renderer or detector, with the last frame it computed. A worker given the next
+    chunk goes on where it stopped (no seed frame, no trees or GL context made again)."""
+
+    def __init__(self, job: Job):
+        self.scene = load_scene(job.scene)
+        self.last_frame: Optional[int] = None
+        self.base = None
+        if job.kind == "collide":
+            self.worker = vissort.CollisionDetector(self.scene, **job.options)
+            return
+        self.base = vissort.Camera.default(self.scene, job.size, frames=job.camera_frames)
+        if job.kind == "order":
+            self.worker = vissort.Orderer(self.scene, **job.options)
+        else:
+            self.worker = vissort.Renderer(self.scene, **job.options)
+
+
+# The engine of the last job this process ran chunks of (one: a renderer holds a GL context).
+_engine: Optional[Tuple[Job, _Engine]] = None
+
+
+def _engine_for(job: Job) -> _Engine:
+    global _engine
+    if _engine is None or _engine[0] != job:
+        _engine = None  # the old one goes first: one GL context at a time
+        _engine = (job, _Engine(job))
+    return _engine[1]
+
+
+def _frame(job: Job, engine: _Engine, f: int, keep: bool) -> FrameResult:
+    t = f * vissort.FRAME_INTERVAL
+    scene, cycles = engine.scene, None
+    if job.kind == "collide":
+        value = engine.worker.collide(scene, time=t)
+        stats = dict(engine.worker.stats)
+    else:
+        camera = engine.base.on_path(scene, job.path, f)
+        if job.kind == "order":
+            result = engine.worker.order(scene, camera, job.size, time=t)
+            value, stats, cycles = result.order, dict(result.stats), result.cycles
+            stats["cycles"] = len(cycles)
+        else:
+            value = engine.worker.render(camera, job.size, time=t)
+            stats = dict(engine.worker.stats)
+            if job.output is not None and keep:
+                path = job.output % f
+                write_atomically(path, value)
+                value = path
+    engine.last_frame = f
+    return FrameResult(f, t, value, stats, cycles)
+
+
 def run_chunk(job: Job, chunk: Chunk) -> List[FrameResult]:
-    """The results of chunk's frames, in order (the seed frame's are computed and dropped)."""
+    """The results of chunk's frames, in order. The seed frame is computed first (and dropped)
+    unless this process has just computed it."""
     if job.kind not in KINDS:
         raise ValueError(f"unknown batch kind '{job.kind}' (expected {', '.join(KINDS)})")
-    scene = load_scene(job.scene)
-    frames = ([chunk.seed] if chunk.seed is not None else []) + list(chunk.frames)
-    results = []
-    if job.kind == "collide":
-        detector = vissort.CollisionDetector(scene, **job.options)
-        for f in frames:
-            pairs = detector.collide(scene, time=f * vissort.FRAME_INTERVAL)
-            results.append(FrameResult(f, f * vissort.FRAME_INTERVAL, pairs, dict(detector.stats)))
-    else:
-        base = vissort.Camera.default(scene, job.size, frames=job.camera_frames)
-        if job.kind == "order":
-            orderer = vissort.Orderer(scene, **job.options)
-        else:
-            renderer = vissort.Renderer(scene, **job.options)
-        for f in frames:
-            camera = base.on_path(scene, job.path, f)
-            t = f * vissort.FRAME_INTERVAL
-            cycles = None
-            if job.kind == "order":
-                result = orderer.order(scene, camera, job.size, time=t)
-                value, stats, cycles = result.order, dict(result.stats), result.cycles
-                stats["cycles"] = len(cycles)
-            else:
-                value = renderer.render(camera, job.size, time=t)
-                stats = dict(renderer.stats)
-                if job.output is not None and f != chunk.seed:
-                    path = job.output % f
-                    write_atomically(path, value)
-                    value = path
-            results.append(FrameResult(f, t, value, stats, cycles))
-    return [r for r in results if r.frame != chunk.seed]
+    engine = _engine_for(job)
+    if chunk.seed is not None and engine.last_frame != chunk.seed:
+        _frame(job, engine, chunk.seed, keep=False)
+    return [_frame(job, engine, f, keep=True) for f in chunk.frames]
