@@ -61,7 +61,7 @@ def main():
     for workers in (1, 2):
         started = time.perf_counter()
         cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                               dashboard_address=None)
+                               dashboard_address=":0")
         clusters[workers] = (cluster, Client(cluster))
         print(f"cluster of {workers} started in {time.perf_counter() - started:.1f} s",
               file=sys.stderr)

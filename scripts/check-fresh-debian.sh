@@ -5,6 +5,7 @@
 # (with /dev, /proc and /sys mounted and /etc/resolv.conf copied in), then the module installed
 # with pip in a virtual environment and imported. Run it before calling a change to packaging or
 # dependencies done. Needs root and Debian's mirror; took 13 minutes on the 2-core VM.
+# Then docs/batch.md's command on two local Dask workers, with the installed module.
 #   bash scripts/check-fresh-debian.sh [DIR]     DIR: the new root (default /var/tmp/vissort-fresh,
 #                                                removed first)
 #   VISSORT_FRESH_SKIP_TESTS=1                   the demo and the pip install only
@@ -72,6 +73,11 @@ in_root "python3 -m venv --system-site-packages .venv &&
   .venv/bin/pip install --no-build-isolation . &&
   cd / && /root/vissort/.venv/bin/python -c 'import vissort; print(vissort.__version__)'" ||
   fail "docs/python.md's pip install failed in the fresh root"
+# docs/batch.md's command, on two local Dask workers (python3-distributed, from install-deps.sh).
+say "docs/batch.md: python3 -m vissort.batch on two local workers"
+in_root "cd / && /root/vissort/.venv/bin/python -m vissort.batch collide builtin:bunnies \
+  --frames 4 --chunk-frames 2 --local-workers 2 -q -o /tmp/pairs.npz && test -s /tmp/pairs.npz" ||
+  fail "python3 -m vissort.batch failed in the fresh root"
 if [ -z "${VISSORT_FRESH_SKIP_TESTS:-}" ]; then
   say "both README commands and the pip install passed on a fresh Debian 12 ($root)"
 else

@@ -48,7 +48,7 @@ def assert_images_close(images, expected):
 @pytest.fixture(scope="module")
 def client():
     cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                           dashboard_address=None)
+                           dashboard_address=":0")
     with Client(cluster) as c:
         yield c
     cluster.close()
@@ -62,6 +62,21 @@ def test_chunks_cover_the_frames_in_order_each_seeded_by_the_one_before():
     for bad in [(-1, 3, 2), (0, 0, 2), (0, 3, 0), (0, 3, 1.5), (0, True, 2)]:
         with pytest.raises(ValueError):
             cut(*bad)
+
+
+def test_chunks_are_dealt_so_each_worker_gets_a_contiguous_run():
+    from vissort.batch._runner import dealt
+
+    assert dealt(7, 2) == [0, 4, 1, 5, 2, 6, 3]
+    assert dealt(3, 8) == [0, 1, 2] and dealt(0, 2) == [] and dealt(4, 1) == [0, 1, 2, 3]
+    for count in range(20):
+        for workers in range(1, 6):
+            order = dealt(count, workers)
+            assert sorted(order) == list(range(count))
+            # Taken in turns, worker w gets order[w::workers]: consecutive chunks.
+            for w in range(min(workers, count)):
+                mine = order[w::min(workers, count)]
+                assert mine == list(range(mine[0], mine[0] + len(mine)))
 
 
 def test_camera_on_a_path_moves_as_the_command_line_moves_it():
@@ -188,6 +203,21 @@ def test_a_scene_that_cannot_be_loaded_fails_at_once(client):
         batch.collide(vissort.load(SCENE), 2)
 
 
+def test_a_frame_that_fails_to_be_written_leaves_no_file(tmp_path, monkeypatch):
+    from vissort.batch import _tasks
+
+    def write_half_then_fail(path, image):
+        with open(path, "wb") as partial:
+            partial.write(b"\x89PNG half")
+        raise OSError("disk full")
+
+    monkeypatch.setattr(_tasks.vissort, "write_image", write_half_then_fail)
+    with pytest.raises(OSError, match="disk full"):
+        _tasks.write_atomically(str(tmp_path / "frame_0001.png"),
+                                np.zeros((2, 2, 4), np.uint8))
+    assert os.listdir(tmp_path) == []
+
+
 def test_bad_outputs_and_sizes_are_refused(tmp_path):
     with pytest.raises(ValueError, match="integer field"):
         batch.render(SCENE, 3, output=str(tmp_path / "frame.png"))
@@ -202,7 +232,7 @@ def test_a_worker_killed_in_the_middle_still_gives_every_frame(tmp_path):
     frames, size = 24, (160, 120)
     expected = plain_renders(frames, "orbit", size)
     cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                           dashboard_address=None)
+                           dashboard_address=":0")
     killed = []
     with Client(cluster) as client:
         client.run(lambda: vissort.load(SCENE) and None)  # both workers' imports done

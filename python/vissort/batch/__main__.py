@@ -63,7 +63,7 @@ def _client(args: argparse.Namespace) -> Any:
     if args.local_workers < 1:
         raise ValueError(f"--local-workers must be at least 1, got {args.local_workers}")
     return Client(LocalCluster(n_workers=args.local_workers, threads_per_worker=1,
-                               processes=True, dashboard_address=None))
+                               processes=True, dashboard_address=":0"))
 
 
 def _options(args: argparse.Namespace, names: List[str]) -> dict:

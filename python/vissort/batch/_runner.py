@@ -40,6 +40,20 @@ class _Progress:
             self._bar.close()
 
 
+def dealt(count: int, workers: int) -> List[int]:
+    """0..count-1 cut into `workers` contiguous runs and taken one from each run in turn:
+    dealt(7, 2) is [0, 4, 1, 5, 2, 6, 3]."""
+    runs = min(max(workers, 1), max(count, 1))
+    # The longer runs first, so that taking turns stays aligned to the end.
+    size, longer = divmod(count, runs)
+    starts = [0]
+    for r in range(runs):
+        starts.append(starts[-1] + size + (1 if r < longer else 0))
+    longest = size + (1 if longer else 0)
+    return [starts[r] + step for step in range(longest) for r in range(runs)
+            if starts[r] + step < starts[r + 1]]
+
+
 def progress_wanted(progress: Optional[bool]) -> bool:
     """progress as given, or when None: on when standard error is a terminal."""
     return sys.stderr.isatty() if progress is None else bool(progress)
@@ -66,7 +80,15 @@ def run(job: Job, chunks: List[Chunk], client: Any = None, progress: Optional[bo
 
             # pure=False: two batches with the same arguments are still two runs (files may have
             # been removed in between).
-            futures = client.map(task, [job] * len(chunks), chunks, pure=False)
+            # In the order that deals each worker a contiguous run of chunks (Dask hands tasks
+            # out in turn), so that a worker's next chunk follows its last: no seed frame.
+            workers = max(1, len(client.scheduler_info().get("workers", {})))
+            order = dealt(len(chunks), workers)
+            submitted = client.map(task, [job] * len(chunks), [chunks[i] for i in order],
+                                   pure=False)
+            futures = [None] * len(chunks)
+            for i, future in zip(order, submitted):
+                futures[i] = future
             try:
                 check()
             except BaseException:

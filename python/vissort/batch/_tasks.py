@@ -1,11 +1,13 @@
 """What one chunk of a batch does, on whichever process runs it: load the scene (once per
-process), compute the chunk's seed frame and then its frames in order with one orderer,
-renderer or collision detector (so each frame starts from the last one's order), and return each
-frame's result and statistics. Everything here travels to Dask workers by pickling: the job is
+process), compute the chunk's seed frame (unless this process has just computed it) and then its
+frames in order with one orderer, renderer or collision detector (so each frame starts from the
+last one's order), and return each frame's result and statistics. Everything here travels to Dask workers by pickling: the job is
 plain data, never a vissort object."""
 
 from __future__ import annotations
 
+import ctypes
+import ctypes.util
 import os
 from collections import OrderedDict
 from dataclasses import dataclass, field
@@ -79,12 +81,37 @@ def write_atomically(path: str, image) -> None:
             os.remove(partial)
 
 
+_allocator_tuned = False
+
+
+def _keep_freed_memory() -> None:
+    """Undoes, in this process, what Dask's nanny sets for its workers: MALLOC_TRIM_THRESHOLD_=
+    65536 (distributed.nanny.pre-spawn-environ) makes glibc give memory back to the system at
+    every free and fixes its mmap threshold at 128 KiB, so a renderer's large per-frame buffers
+    are mapped and zeroed again every frame: 9% slower renders on the bunnies at 1024x768
+    (docs/batch.md). The thresholds are set to the largest glibc's own adaptive ones reach.
+    Nothing happens elsewhere (no such variable, or not glibc)."""
+    global _allocator_tuned
+    if _allocator_tuned or "MALLOC_TRIM_THRESHOLD_" not in os.environ:
+        return
+    _allocator_tuned = True
+    try:
+        libc = ctypes.CDLL(ctypes.util.find_library("c") or "libc.so.6")
+        mallopt = libc.mallopt
+    except (OSError, AttributeError):
+        return
+    m_trim_threshold, m_mmap_threshold = -1, -3  # malloc.h
+    mallopt(m_mmap_threshold, 32 * 1024 * 1024)
+    mallopt(m_trim_threshold, 64 * 1024 * 1024)
+
+
 class _Engine:
     """What a process keeps between the chunks of one job: the scene, the base camera, and the
     orderer, renderer or detector, with the last frame it computed. A worker given the next
     chunk goes on where it stopped (no seed frame, no trees or GL context made again)."""
 
     def __init__(self, job: Job):
+        _keep_freed_memory()
         self.scene = load_scene(job.scene)
         self.last_frame: Optional[int] = None
         self.base = None
