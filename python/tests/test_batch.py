@@ -64,19 +64,18 @@ def test_chunks_cover_the_frames_in_order_each_seeded_by_the_one_before():
             cut(*bad)
 
 
-def test_chunks_are_dealt_so_each_worker_gets_a_contiguous_run():
-    from vissort.batch._runner import dealt
+def test_each_worker_is_asked_for_a_contiguous_run_of_chunks():
+    from vissort.batch._runner import contiguous_runs
 
-    assert dealt(7, 2) == [0, 4, 1, 5, 2, 6, 3]
-    assert dealt(3, 8) == [0, 1, 2] and dealt(0, 2) == [] and dealt(4, 1) == [0, 1, 2, 3]
+    assert contiguous_runs(7, 2) == [[0, 1, 2, 3], [4, 5, 6]]
+    assert contiguous_runs(3, 8) == [[0], [1], [2]]
+    assert contiguous_runs(0, 2) == [] and contiguous_runs(4, 0) == [[0, 1, 2, 3]]
     for count in range(20):
         for workers in range(1, 6):
-            order = dealt(count, workers)
-            assert sorted(order) == list(range(count))
-            # Taken in turns, worker w gets order[w::workers]: consecutive chunks.
-            for w in range(min(workers, count)):
-                mine = order[w::min(workers, count)]
-                assert mine == list(range(mine[0], mine[0] + len(mine)))
+            runs = contiguous_runs(count, workers)
+            assert [i for run in runs for i in run] == list(range(count))
+            assert len(runs) <= workers
+            assert max(map(len, runs), default=0) - min(map(len, runs), default=0) <= 1
 
 
 def test_camera_on_a_path_moves_as_the_command_line_moves_it():

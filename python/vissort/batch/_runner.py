@@ -40,18 +40,17 @@ class _Progress:
             self._bar.close()
 
 
-def dealt(count: int, workers: int) -> List[int]:
-    """0..count-1 cut into `workers` contiguous runs and taken one from each run in turn:
-    dealt(7, 2) is [0, 4, 1, 5, 2, 6, 3]."""
+def contiguous_runs(count: int, workers: int) -> List[List[int]]:
+    """0..count-1 cut into at most `workers` contiguous runs of nearly equal length, the longer
+    first: contiguous_runs(7, 2) is [[0, 1, 2, 3], [4, 5, 6]]; one run without workers."""
     runs = min(max(workers, 1), max(count, 1))
-    # The longer runs first, so that taking turns stays aligned to the end.
     size, longer = divmod(count, runs)
-    starts = [0]
+    out, start = [], 0
     for r in range(runs):
-        starts.append(starts[-1] + size + (1 if r < longer else 0))
-    longest = size + (1 if longer else 0)
-    return [starts[r] + step for step in range(longest) for r in range(runs)
-            if starts[r] + step < starts[r + 1]]
+        length = size + (1 if r < longer else 0)
+        out.append(list(range(start, start + length)))
+        start += length
+    return [run for run in out if run]
 
 
 def progress_wanted(progress: Optional[bool]) -> bool:
@@ -80,15 +79,17 @@ def run(job: Job, chunks: List[Chunk], client: Any = None, progress: Optional[bo
 
             # pure=False: two batches with the same arguments are still two runs (files may have
             # been removed in between).
-            # In the order that deals each worker a contiguous run of chunks (Dask hands tasks
-            # out in turn), so that a worker's next chunk follows its last: no seed frame.
-            workers = max(1, len(client.scheduler_info().get("workers", {})))
-            order = dealt(len(chunks), workers)
-            submitted = client.map(task, [job] * len(chunks), [chunks[i] for i in order],
-                                   pure=False)
+            # Each worker is asked for a contiguous run of chunks (a loose restriction: Dask
+            # still moves them elsewhere when it dies or idles), so that its next chunk follows
+            # its last one: no seed frame in between.
+            addresses = sorted(client.scheduler_info().get("workers", {}))
             futures = [None] * len(chunks)
-            for i, future in zip(order, submitted):
-                futures[i] = future
+            for run_index, indices in enumerate(contiguous_runs(len(chunks), len(addresses))):
+                submitted = client.map(task, [job] * len(indices), [chunks[i] for i in indices],
+                                       pure=False, workers=[addresses[run_index]],
+                                       allow_other_workers=True)
+                for i, future in zip(indices, submitted):
+                    futures[i] = future
             try:
                 check()
             except BaseException:
