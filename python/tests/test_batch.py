@@ -183,6 +183,19 @@ def test_orders_on_two_workers_are_valid_on_every_frame(client):
     assert wrong["violations"] > 0
 
 
+def test_a_cluster_whose_workers_join_later_still_runs_the_batch():
+    cluster = LocalCluster(n_workers=0, threads_per_worker=1, processes=True,
+                           dashboard_address=":0")
+    with Client(cluster) as late:
+        joining = threading.Timer(1.0, lambda: cluster.scale(1))
+        joining.start()
+        result = batch.collide(SCENE, 3, chunk_frames=2, client=late, progress=False)
+        joining.join()
+    cluster.close()
+    assert result.frame_numbers == [0, 1, 2]
+    assert all(np.array_equal(a, b) for a, b in zip(result.results, plain_pairs(3)))
+
+
 def test_statistics_are_a_list_of_dicts_without_pandas(monkeypatch):
     monkeypatch.setitem(sys.modules, "pandas", None)  # import pandas now fails
     result = batch.collide(SCENE, 3, chunk_frames=2, progress=False)

@@ -77,17 +77,18 @@ def run(job: Job, chunks: List[Chunk], client: Any = None, progress: Optional[bo
         else:
             from distributed import as_completed
 
-            # pure=False: two batches with the same arguments are still two runs (files may have
-            # been removed in between).
             # Each worker is asked for a contiguous run of chunks (a loose restriction: Dask
             # still moves them elsewhere when it dies or idles), so that its next chunk follows
-            # its last one: no seed frame in between.
+            # its last one: no seed frame in between. Without workers yet, no restriction.
+            # pure=False: two batches with the same arguments are still two runs (files may have
+            # been removed in between).
             addresses = sorted(client.scheduler_info().get("workers", {}))
             futures = [None] * len(chunks)
             for run_index, indices in enumerate(contiguous_runs(len(chunks), len(addresses))):
+                where = (dict(workers=[addresses[run_index]], allow_other_workers=True)
+                         if addresses else {})
                 submitted = client.map(task, [job] * len(indices), [chunks[i] for i in indices],
-                                       pure=False, workers=[addresses[run_index]],
-                                       allow_other_workers=True)
+                                       pure=False, **where)
                 for i, future in zip(indices, submitted):
                     futures[i] = future
             try:
@@ -96,9 +97,9 @@ def run(job: Job, chunks: List[Chunk], client: Any = None, progress: Optional[bo
                 client.cancel(futures)
                 raise
             for future in as_completed(futures):
-                if future.status == "error": # the first failure ends the batch at once
+                if future.status == "error":  # the first failure ends the batch at once
                     client.cancel(futures)
-                    future.result() # raises the chunk's exception
+                    future.result()  # raises the chunk's exception
                 bar.advance()
             per_chunk = client.gather(futures)
     finally:
