@@ -5,6 +5,7 @@ in this process, on K local worker processes (--local-workers) or on a running D
 from __future__ import annotations
 
 import argparse
+import csv
 import os
 import sys
 from typing import Any, List, Optional
@@ -111,11 +112,10 @@ def _write_csv(path: str, stats: Any) -> None:
     columns: List[str] = []
     for row in rows:
         columns += [c for c in row if c not in columns]
-    with open(path, "w", encoding="utf-8") as out:
-        out.write(",".join(columns) + "\n")
-        for row in rows:
-            out.write(",".join("" if row.get(c) is None else str(row.get(c)) for c in columns)
-                      + "\n")
+    with open(path, "w", encoding="utf-8", newline="") as out:
+        writer = csv.DictWriter(out, fieldnames=columns)
+        writer.writeheader()
+        writer.writerows(rows)
 
 
 if __name__ == "__main__":

@@ -59,7 +59,6 @@ def progress_wanted(progress: Optional[bool]) -> bool:
 
 
 def run(job: Job, chunks: List[Chunk], client: Any = None, progress: Optional[bool] = None,
-        task: Callable[[Job, Chunk], List[FrameResult]] = run_chunk,
         check: Callable[[], Any] = lambda: None) -> List[FrameResult]:
     """Every frame of chunks, in frame order. client: a distributed.Client (one task per chunk;
     a worker that dies has its chunks run again elsewhere, by Dask) or None (this process).
@@ -72,7 +71,7 @@ def run(job: Job, chunks: List[Chunk], client: Any = None, progress: Optional[bo
         if client is None:
             per_chunk = []
             for chunk in chunks:
-                per_chunk.append(task(job, chunk))
+                per_chunk.append(run_chunk(job, chunk))
                 bar.advance()
         else:
             from distributed import as_completed
@@ -87,7 +86,7 @@ def run(job: Job, chunks: List[Chunk], client: Any = None, progress: Optional[bo
             for run_index, indices in enumerate(contiguous_runs(len(chunks), len(addresses))):
                 where = (dict(workers=[addresses[run_index]], allow_other_workers=True)
                          if addresses else {})
-                submitted = client.map(task, [job] * len(indices), [chunks[i] for i in indices],
+                submitted = client.map(run_chunk, [job] * len(indices), [chunks[i] for i in indices],
                                        pure=False, **where)
                 for i, future in zip(indices, submitted):
                     futures[i] = future
