@@ -10,6 +10,7 @@
 #include "arrays.h"
 #include "bindings.h"
 #include "python_camera.h"
+#include "scene_state.h"
 #include "scenes/scene_library.h"
 
 namespace vissort::python {
@@ -91,7 +92,26 @@ void bindScene(py::module_& m) {
     py::class_<Scene, std::shared_ptr<Scene>>(
         m, "Scene",
         "Objects made of triangles, with colours, transparency, cameras and, for a dynamic "
-        "scene, motion; load() and builtin() make one")
+        "scene, motion; load() and builtin() make one, and Scene(positions, objects, ...) one "
+        "from arrays. A static scene pickles as its arrays (to another process, a Dask worker)")
+        .def(py::init([](const py::handle& positions, const py::handle& objects,
+                         const py::handle& triangles, const py::handle& colours,
+                         const py::handle& transparent, const py::handle& names,
+                         const py::handle& camera, const std::string& name) {
+                 return sceneFromArrays(positions, objects, triangles, colours, transparent, names,
+                                        camera, name);
+             }),
+             py::arg("positions"), py::arg("objects") = py::none(), py::kw_only(),
+             py::arg("triangles") = py::none(), py::arg("colours") = py::none(),
+             py::arg("transparent") = py::none(), py::arg("names") = py::none(),
+             py::arg("camera") = py::none(), py::arg("name") = "arrays",
+             "A static scene from arrays: positions (T, 3, 3) or vertices (V, 3) with "
+             "triangles=(T, 3); objects (K, 2) (first triangle, count) or (K,) counts tiling "
+             "the triangles in order (None: one object); colours one (r, g, b[, a]) or (K, 3|4) "
+             "in [0, 1]; transparent one bool or (K,) (None: alpha below 1); names K strings; "
+             "camera the scene's own vissort.Camera. ValueError naming the problem")
+        .def(py::pickle([](const Scene& s) { return sceneState(s); },
+                        [](const py::dict& state) { return sceneFromState(state); }))
         .def_readonly("name", &Scene::name)
         .def_property_readonly("triangle_count", &Scene::triangleCount)
         .def_readonly("objects", &Scene::objects, "Every object, in object id order")

@@ -1,7 +1,8 @@
-"""vissort.batch (docs/batch.md): chunks, the same frames as the plain module loop (renders
-within 1/255, pairs identical, orders the same), in this process and on a LocalCluster of two
-worker processes, a worker killed in the middle of a batch, files written whole, errors at once,
-and the command python3 -m vissort.batch."""
+"""vissort.batch (docs/batch.md): chunks, renders within 1/255 of the plain module loop, pairs
+equal to brute force and orders valid by the exact ground truth on every frame, in this process
+and on a LocalCluster of two worker processes, scenes by name and as arrays, a worker killed in
+the middle of a batch, files written whole, errors at once, and the command python3 -m
+vissort.batch."""
 
 import os
 import signal
@@ -60,6 +61,9 @@ def test_chunks_cover_the_frames_in_order_each_seeded_by_the_one_before():
     assert chunks == [Chunk(5, 8, None), Chunk(8, 11, 7), Chunk(11, 12, 10)]
     assert [f for c in chunks for f in c.frames] == list(range(5, 12))
     assert cut(0, 2) == [Chunk(0, 2, None)]  # the default chunk holds them
+    # Collisions carry no order from frame to frame: no seeds.
+    assert cut(5, 7, 3, seeded=False) == [Chunk(5, 8, None), Chunk(8, 11, None),
+                                          Chunk(11, 12, None)]
     for bad in [(-1, 3, 2), (0, 0, 2), (0, 3, 0), (0, 3, 1.5), (0, True, 2)]:
         with pytest.raises(ValueError):
             cut(*bad)
@@ -153,14 +157,14 @@ def test_pairs_on_two_workers_equal_brute_force_on_every_frame(client):
     assert all(np.array_equal(a, b) for a, b in zip(here.results, expected))
 
 
-def check_order(frames, frame, order, cycles, path="orbit"):
+def check_order(frames, frame, order, cycles, path="orbit", scene=SCENE):
     """The exact ground truth's verdict on one frame's order (tests/support/order_check)."""
     tool = os.environ.get("VISSORT_ORDER_CHECK")
     if not tool:
         pytest.fail("VISSORT_ORDER_CHECK must name the built order_check tool (ctest sets it)")
     text = " ".join(map(str, order)) + "\n" + "".join(
         " ".join(map(str, c)) + "\n" for c in cycles)
-    done = subprocess.run([tool, SCENE, str(SIZE[0]), str(SIZE[1]), path, str(frames),
+    done = subprocess.run([tool, scene, str(SIZE[0]), str(SIZE[1]), path, str(frames),
                            str(frame)], input=text, capture_output=True, text=True, check=True)
     words = done.stdout.split()
     return dict(zip(words[::2], map(int, words[1::2])))
@@ -184,6 +188,39 @@ def test_orders_on_two_workers_are_valid_on_every_frame(client):
     assert wrong["violations"] > 0
 
 
+def crossing_triangles():
+    """A static Scene made from arrays: 20 objects of 10 random triangles each in a unit cube,
+    crossing one another."""
+    corners = np.random.default_rng(5).random((200, 3, 3), dtype=np.float32)
+    return vissort.Scene(corners, np.full(20, 10), colours=(0.4, 0.6, 0.9, 0.5),
+                         name="crossing triangles")
+
+
+def brute_pairs(scene):
+    return vissort.CollisionDetector(scene, method="brute").collide(scene)
+
+
+def test_a_static_scene_travels_to_the_workers_as_its_arrays(client):
+    # The plant loaded here (a static Scene): the workers get it pickled, and each frame's order
+    # is checked by the exact ground truth of the plant loaded by name.
+    frames, spec = 5, "builtin:plant"
+    result = batch.order(vissort.load(spec), frames, size=SIZE, path="orbit", chunk_frames=2,
+                         client=client, progress=False)
+    assert result.frame_numbers == list(range(frames))
+    for f in range(frames):
+        verdict = check_order(frames, f, result.results[f], result.cycles[f], scene=spec)
+        assert verdict["permutation"] == 1 and verdict["violations"] == 0, f"frame {f}"
+        assert verdict["checked"] > 0, f"frame {f}"
+    # Collisions of a Scene made from arrays, against brute force.
+    crossing = crossing_triangles()
+    expected = brute_pairs(crossing)
+    assert len(expected) > 0
+    pairs = batch.collide(crossing, 3, chunk_frames=2, client=client, progress=False)
+    assert all(np.array_equal(p, expected) for p in pairs.results)
+    here = batch.collide(crossing, 2, progress=False)  # here, the caller's Scene itself
+    assert all(np.array_equal(p, expected) for p in here.results)
+
+
 def test_a_cluster_whose_workers_join_later_still_runs_the_batch():
     cluster = LocalCluster(n_workers=0, threads_per_worker=1, processes=True,
                            dashboard_address=":0")
@@ -195,6 +232,17 @@ def test_a_cluster_whose_workers_join_later_still_runs_the_batch():
     cluster.close()
     assert result.frame_numbers == [0, 1, 2]
     assert all(np.array_equal(a, b) for a, b in zip(result.results, plain_pairs(3)))
+    # A scene of arrays waits for a worker to hold them.
+    cluster = LocalCluster(n_workers=0, threads_per_worker=1, processes=True,
+                           dashboard_address=":0")
+    with Client(cluster) as late:
+        joining = threading.Timer(1.0, lambda: cluster.scale(1))
+        joining.start()
+        crossing = batch.collide(crossing_triangles(), 2, client=late, progress=False)
+        joining.join()
+    cluster.close()
+    expected = brute_pairs(crossing_triangles())
+    assert len(expected) > 0 and all(np.array_equal(p, expected) for p in crossing.results)
 
 
 def test_statistics_are_a_list_of_dicts_without_pandas(monkeypatch):
@@ -212,8 +260,10 @@ def test_a_scene_that_cannot_be_loaded_fails_at_once(client):
     with pytest.raises((ValueError, OSError), match="missing.obj"):
         batch.order("/nonexistent/missing.obj", 100, client=client, progress=False)
     assert time.monotonic() - started < 5
-    with pytest.raises(ValueError, match="builtin specification"):
+    with pytest.raises(ValueError, match="dynamic scene 'builtin:bunnies' cannot travel"):
         batch.collide(vissort.load(SCENE), 2)
+    with pytest.raises(ValueError, match="static vissort.Scene"):
+        batch.collide(42, 2)
 
 
 def test_a_frame_that_fails_to_be_written_leaves_no_file(tmp_path, monkeypatch):

@@ -72,6 +72,8 @@ _Transfer = Union[_TransferPreset, str, npt.ArrayLike]
 # 67108864 (16384 * 16384 / 4) pixels; anything else is a ValueError.
 _Size = Sequence[SupportsIndex]
 _Vec3 = tuple[float, float, float]
+# A colour: (r, g, b) or (r, g, b, a), each in [0, 1].
+_Colour = Union[tuple[float, float, float], tuple[float, float, float, float]]
 # time=: seconds, any number (int, float, a numpy scalar); anything else is a ValueError.
 _Seconds = Union[SupportsFloat, SupportsIndex]
 
@@ -162,7 +164,28 @@ class SceneObject:
 
 class Scene:
     """Objects made of triangles, with colours, transparency, cameras and, for a dynamic scene,
-    motion; load() and builtin() make one (there is no constructor)."""
+    motion; load() and builtin() make one, Scene(positions, objects, ...) one from arrays. A
+    static scene pickles as its arrays (to another process, a Dask worker); a dynamic one
+    raises TypeError (its motion is code: pass its specification instead)."""
+
+    def __init__(
+        self,
+        positions: npt.ArrayLike,
+        objects: Optional[npt.ArrayLike] = None,
+        *,
+        triangles: Optional[npt.ArrayLike] = None,
+        colours: Optional[Union[_Colour, Sequence[_Colour], npt.ArrayLike]] = None,
+        transparent: Optional[Union[bool, npt.ArrayLike]] = None,
+        names: Optional[Sequence[str]] = None,
+        camera: Optional[Camera] = None,
+        name: str = "arrays",
+    ) -> None:
+        """A static scene from arrays: positions (T, 3, 3), or vertices (V, 3) with triangles
+        (T, 3); objects (K, 2) (first triangle, count) or (K,) counts tiling the triangles in
+        order (None: one object); colours one (r, g, b[, a]) or one per object, in [0, 1]
+        (None: grey); transparent one bool or one per object (None: alpha below 1); names one
+        string per object (None: "object 0", ...); camera the scene's own. ValueError naming
+        the problem."""
 
     @property
     def name(self) -> str: ...

@@ -3,7 +3,8 @@ on a Dask cluster (docs/batch.md).
 
 The frames are cut into contiguous chunks, one task each, so that each keeps vissort's
 frame-to-frame coherence (a chunk computes the frame before it first, to seed its order). A scene
-travels as what every process can load: a builtin specification or a file's path. Results come
+travels as what every process can load: a builtin specification, a file's path, or a static
+vissort.Scene's arrays (sent to each worker once). Results come
 back in frame order with one table of per-frame statistics: a pandas DataFrame when pandas is
 installed, else a list of dicts.
 
@@ -23,11 +24,11 @@ import vissort
 
 from ._chunks import DEFAULT_CHUNK_FRAMES, Chunk, cut
 from ._runner import run
-from ._tasks import FrameResult, Job, load_scene
+from ._tasks import FrameResult, Job, keep_scene, load_scene, scene_key
 
 __all__ = ["BatchResult", "DEFAULT_CHUNK_FRAMES", "collide", "order", "render"]
 
-SceneSpec = Union[str, "os.PathLike[str]"]
+SceneSpec = Union[str, "os.PathLike[str]", vissort.Scene]
 
 
 @dataclass
@@ -52,15 +53,28 @@ def _table(rows: List[dict]) -> Any:
     return pandas.DataFrame(rows)
 
 
-def _scene_spec(scene: Any) -> str:
-    """What travels to the workers: a builtin specification or a path (loaded here too, while
-    the tasks start: see _run)."""
+@dataclass(frozen=True)
+class _SceneSource:
+    """How a batch's scene reaches the workers: spec, a builtin specification or a path (loaded
+    by each worker; here too, while the tasks start: see _run), or for a loaded static Scene its
+    content key with its pickled arrays (data)."""
+
+    spec: str
+    data: Optional[bytes] = None
+
+
+def _scene_source(scene: Any) -> _SceneSource:
     if isinstance(scene, vissort.Scene):
-        raise ValueError("scene must be a builtin specification or a file's path that every "
-                         "worker can load, not a loaded vissort.Scene")
+        if scene.is_dynamic:
+            raise ValueError(f"the dynamic scene '{scene.name}' cannot travel as arrays (its "
+                             "motion is code): give its builtin specification or file path")
+        key, data = scene_key(scene)
+        keep_scene(key, scene)  # a batch run here uses the caller's scene as it is
+        return _SceneSource(key, data)
     if not isinstance(scene, (str, os.PathLike)):
-        raise ValueError(f"scene must be a builtin specification or a path, got {scene!r}")
-    return os.fspath(scene)
+        raise ValueError("scene must be a builtin specification, a path or a static "
+                         f"vissort.Scene, got {scene!r}")
+    return _SceneSource(os.fspath(scene))
 
 
 def _size(size: Sequence[int]) -> Tuple[int, int]:
@@ -84,14 +98,16 @@ def _check_pattern(output: str, frames: int) -> None:
         raise ValueError(f"output folder '{folder}' does not exist")
 
 
-def _run(job: Job, first: int, frames: int, chunk_frames: Optional[int], client: Any,
-         progress: Optional[bool]) -> BatchResult:
-    chunks: List[Chunk] = cut(first, frames, chunk_frames)
+def _run(job: Job, source: _SceneSource, first: int, frames: int, chunk_frames: Optional[int],
+         client: Any, progress: Optional[bool]) -> BatchResult:
+    chunks: List[Chunk] = cut(first, frames, chunk_frames, seeded=job.coherent)
     # The scene is loaded here as well, so that one that cannot be loaded fails the batch at once
     # with the loader's one-line error rather than once per task: before anything runs when the
-    # batch runs here (which then uses it), while the workers start on it otherwise.
+    # batch runs here (which then uses it), while the workers start on it otherwise. A scene
+    # given as a Scene is already loaded, and travels as its arrays.
     done: List[FrameResult] = run(job, chunks, client=client, progress=progress,
-                                  check=lambda: load_scene(job.scene))
+                                  check=lambda: load_scene(job.scene, source.data),
+                                  scene_data=source.data if client is not None else None)
     rows = [dict(frame=r.frame, time_s=r.time_s, **r.stats) for r in done]
     cycles = [r.cycles for r in done] if job.kind == "order" else None
     return BatchResult([r.frame for r in done], [r.value for r in done], _table(rows), cycles)
@@ -105,11 +121,14 @@ def order(scene: SceneSpec, frames: int, *, first: int = 0, path: str = "static"
     the command line picks (Camera.default over the batch's frames) moved along path (static,
     orbit, flythrough or scene). results: each frame's order (uint32 ids, front to back);
     cycles: each frame's cycles.
+    scene: a builtin specification or a path every worker can load, or a static vissort.Scene
+    (Scene(positions, objects, ...) or a loaded file), which travels as its arrays.
     client: a distributed.Client, or None to run here. chunk_frames: frames per task (default
     DEFAULT_CHUNK_FRAMES). progress: a bar on standard error (None: when it is a terminal)."""
-    spec = _scene_spec(scene)
-    job = Job("order", spec, path, _size(size), first + frames, dict(level=level, oracle=oracle))
-    return _run(job, first, frames, chunk_frames, client, progress)
+    source = _scene_source(scene)
+    job = Job("order", source.spec, path, _size(size), first + frames,
+              dict(level=level, oracle=oracle))
+    return _run(job, source, first, frames, chunk_frames, client, progress)
 
 
 def render(scene: SceneSpec, frames: int, *, first: int = 0, path: str = "static",
@@ -120,12 +139,12 @@ def render(scene: SceneSpec, frames: int, *, first: int = 0, path: str = "static
     output: a file pattern with one integer field (out/frame_%04d.png, .png or .jpg): each frame
     is written there atomically and results are the files; None: results are the (H, W, 4) uint8
     images. options: Renderer's (method, samples, level, oracle, shading, ...)."""
-    spec = _scene_spec(scene)
+    source = _scene_source(scene)
     if output is not None:
         output = os.fspath(output)
         _check_pattern(output, frames)
-    job = Job("render", spec, path, _size(size), first + frames, dict(options), output)
-    return _run(job, first, frames, chunk_frames, client, progress)
+    job = Job("render", source.spec, path, _size(size), first + frames, dict(options), output)
+    return _run(job, source, first, frames, chunk_frames, client, progress)
 
 
 def collide(scene: SceneSpec, frames: int, *, first: int = 0, method: str = "vissort",
@@ -134,6 +153,6 @@ def collide(scene: SceneSpec, frames: int, *, first: int = 0, method: str = "vis
     """The intersecting triangle pairs of frames [first, first + frames) of scene. results: each
     frame's (K, 2) uint32 pairs. method and threads (per task), and options (size, min_cull,
     object_stage): CollisionDetector's."""
-    spec = _scene_spec(scene)
-    job = Job("collide", spec, options=dict(method=method, threads=threads, **options))
-    return _run(job, first, frames, chunk_frames, client, progress)
+    source = _scene_source(scene)
+    job = Job("collide", source.spec, options=dict(method=method, threads=threads, **options))
+    return _run(job, source, first, frames, chunk_frames, client, progress)

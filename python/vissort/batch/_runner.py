@@ -59,11 +59,13 @@ def progress_wanted(progress: Optional[bool]) -> bool:
 
 
 def run(job: Job, chunks: List[Chunk], client: Any = None, progress: Optional[bool] = None,
-        check: Callable[[], Any] = lambda: None) -> List[FrameResult]:
+        check: Callable[[], Any] = lambda: None,
+        scene_data: Optional[bytes] = None) -> List[FrameResult]:
     """Every frame of chunks, in frame order. client: a distributed.Client (one task per chunk;
     a worker that dies has its chunks run again elsewhere, by Dask) or None (this process).
     check: raises when the batch cannot run; called before the first chunk here, or once the
-    tasks are submitted (which are then cancelled)."""
+    tasks are submitted (which are then cancelled). scene_data: a scene that travels as its
+    pickled arrays (scene_key), sent to every worker once rather than with every task."""
     if client is None:
         check()
     bar = _Progress(len(chunks), f"vissort.batch {job.kind}", progress_wanted(progress))
@@ -76,31 +78,44 @@ def run(job: Job, chunks: List[Chunk], client: Any = None, progress: Optional[bo
         else:
             from distributed import as_completed
 
-            # Each worker is asked for a contiguous run of chunks (a loose restriction: Dask
-            # still moves them elsewhere when it dies or idles), so that its next chunk follows
-            # its last one: no seed frame in between. Without workers yet, no restriction.
-            # pure=False: two batches with the same arguments are still two runs (files may have
-            # been removed in between).
+            # Every worker holds the scene's arrays (broadcast), so that one that dies takes
+            # none of them with it and one that joins copies them from a peer; they need a
+            # worker to hold them first.
+            data = None
+            if scene_data is not None:
+                client.wait_for_workers(1)
+                data = client.scatter(scene_data, broadcast=True)
             addresses = sorted(client.scheduler_info().get("workers", {}))
+            # A coherent job asks each worker for a contiguous run of chunks (a loose
+            # restriction: Dask still moves them elsewhere when it dies or idles), so that its
+            # next chunk follows its last one: no seed frame in between. Collisions have no
+            # order to carry: Dask deals their chunks to whichever worker is free, which
+            # balances frames of uneven cost. Without workers yet, no restriction either.
+            # pure=False: two batches with the same arguments are still two runs (files may
+            # have been removed in between).
+            runs = (contiguous_runs(len(chunks), len(addresses)) if job.coherent
+                    else [list(range(len(chunks)))])
             futures = [None] * len(chunks)
-            for run_index, indices in enumerate(contiguous_runs(len(chunks), len(addresses))):
+            for run_index, indices in enumerate(runs):
                 where = (dict(workers=[addresses[run_index]], allow_other_workers=True)
-                         if addresses else {})
+                         if addresses and job.coherent else {})
                 submitted = client.map(run_chunk, [job] * len(indices), [chunks[i] for i in indices],
-                                       pure=False, **where)
+                                       [data] * len(indices), pure=False, **where)
                 for i, future in zip(indices, submitted):
                     futures[i] = future
+            place = {future.key: i for i, future in enumerate(futures)}
+            per_chunk = [None] * len(chunks)
             try:
                 check()
+                # Results come back as each chunk ends, while the others run (not all at the
+                # end); the first failure ends the batch at once.
+                for future, results in as_completed(futures, with_results=True):
+                    per_chunk[place[future.key]] = results
+                    future.release()
+                    bar.advance()
             except BaseException:
                 client.cancel(futures)
                 raise
-            for future in as_completed(futures):
-                if future.status == "error":  # the first failure ends the batch at once
-                    client.cancel(futures)
-                    future.result()  # raises the chunk's exception
-                bar.advance()
-            per_chunk = client.gather(futures)
     finally:
         bar.close()
     return [frame for results in per_chunk for frame in results]

@@ -8,7 +8,9 @@ from __future__ import annotations
 
 import ctypes
 import ctypes.util
+import hashlib
 import os
+import pickle
 from collections import OrderedDict
 from dataclasses import dataclass, field
 from typing import Any, Dict, List, Optional, Tuple
@@ -22,7 +24,8 @@ KINDS = ("order", "render", "collide")
 
 @dataclass(frozen=True)
 class Job:
-    """A batch, as plain data. scene: a builtin specification or a path every worker can read.
+    """A batch, as plain data. scene: a builtin specification, a path every worker can read, or
+    the key of a scene that travels as its pickled arrays beside the job (scene_key).
     camera_frames: the frames the default camera is framed over (the whole batch's, so that
     every chunk frames the same camera). output: render's file pattern (printf style, one
     integer field) or None to return the images."""
@@ -34,6 +37,12 @@ class Job:
     camera_frames: int = 1
     options: Dict[str, Any] = field(default_factory=dict)
     output: Optional[str] = None
+
+    @property
+    def coherent(self) -> bool:
+        """Whether a frame's work starts from the last frame's result (an order), so that
+        chunks want seeds and to follow one another on a worker; collisions do not."""
+        return self.kind != "collide"
 
 
 @dataclass
@@ -54,12 +63,36 @@ _scenes: "OrderedDict[str, vissort.Scene]" = OrderedDict()
 _KEPT_SCENES = 2
 
 
-def load_scene(spec: str) -> vissort.Scene:
-    """The scene spec names, loaded once per process."""
+_ARRAYS = "arrays:"
+
+
+def scene_key(scene: vissort.Scene) -> Tuple[str, bytes]:
+    """A loaded static scene as what travels: its pickled arrays and a key naming them by
+    content (so that a worker unpickles a scene once, and two batches of it share the key)."""
+    data = pickle.dumps(scene, protocol=pickle.HIGHEST_PROTOCOL)
+    return f"{_ARRAYS}{scene.name}:{hashlib.blake2b(data, digest_size=16).hexdigest()}", data
+
+
+def keep_scene(key: str, scene: vissort.Scene) -> None:
+    """Makes scene this process's scene of key (a batch in this process uses the caller's)."""
+    _scenes[key] = scene
+    _scenes.move_to_end(key)
+    while len(_scenes) > _KEPT_SCENES:
+        _scenes.popitem(last=False)
+
+
+def load_scene(spec: str, data: Optional[bytes] = None) -> vissort.Scene:
+    """The scene spec names, loaded once per process; for a scene_key, unpickled from data."""
     if spec in _scenes:
         _scenes.move_to_end(spec)
         return _scenes[spec]
-    scene = vissort.load(spec)
+    if spec.startswith(_ARRAYS):
+        if data is None:
+            raise RuntimeError(f"vissort.batch: the arrays of scene {spec} did not reach this "
+                               "process")
+        scene = pickle.loads(data)
+    else:
+        scene = vissort.load(spec)
     _scenes[spec] = scene
     while len(_scenes) > _KEPT_SCENES:
         _scenes.popitem(last=False)
@@ -110,9 +143,9 @@ class _Engine:
     orderer, renderer or detector, with the last frame it computed. A worker given the next
     chunk goes on where it stopped (no seed frame, no trees or GL context made again)."""
 
-    def __init__(self, job: Job):
+    def __init__(self, job: Job, scene_data: Optional[bytes]):
         _keep_freed_memory()
-        self.scene = load_scene(job.scene)
+        self.scene = load_scene(job.scene, scene_data)
         self.last_frame: Optional[int] = None
         self.base = None
         if job.kind == "collide":
@@ -129,11 +162,11 @@ class _Engine:
 _engine: Optional[Tuple[Job, _Engine]] = None
 
 
-def _engine_for(job: Job) -> _Engine:
+def _engine_for(job: Job, scene_data: Optional[bytes]) -> _Engine:
     global _engine
     if _engine is None or _engine[0] != job:
         _engine = None  # the old one goes first: one GL context at a time
-        _engine = (job, _Engine(job))
+        _engine = (job, _Engine(job, scene_data))
     return _engine[1]
 
 
@@ -160,12 +193,13 @@ def _frame(job: Job, engine: _Engine, f: int, keep: bool) -> FrameResult:
     return FrameResult(f, t, value, stats, cycles)
 
 
-def run_chunk(job: Job, chunk: Chunk) -> List[FrameResult]:
+def run_chunk(job: Job, chunk: Chunk, scene_data: Optional[bytes] = None) -> List[FrameResult]:
     """The results of chunk's frames, in order. The seed frame is computed first (and dropped)
-    unless this process has just computed it."""
+    unless this process has just computed it. scene_data: the pickled scene of a job whose scene
+    travels as arrays (scene_key)."""
     if job.kind not in KINDS:
         raise ValueError(f"unknown batch kind '{job.kind}' (expected {', '.join(KINDS)})")
-    engine = _engine_for(job)
+    engine = _engine_for(job, scene_data)
     if chunk.seed is not None and engine.last_frame != chunk.seed:
         _frame(job, engine, chunk.seed, keep=False)
     return [_frame(job, engine, f, keep=True) for f in chunk.frames]
