@@ -25,13 +25,14 @@ void RefitBvh::build(PositionsView positions, PrimitiveRange object) {
     first_triangle_ = object.first_triangle;
     triangles_.resize(object.triangle_count);
     std::iota(triangles_.begin(), triangles_.end(), object.first_triangle);
-    leaf_boxes_.resize(object.triangle_count);
+    BuildScratch scratch;
+    scratch.boxes.resize(object.triangle_count);
     for (uint32_t i = 0; i < object.triangle_count; ++i)
-        leaf_boxes_[i] = triangleBox(positions, triangles_[i]);
+        scratch.boxes[i] = triangleBox(positions, triangles_[i]);
     nodes_.clear();
     nodes_.reserve(2 * std::size_t(object.triangle_count) / kLeafSize + 1);
-    buildRange(0, object.triangle_count);
-    leaf_boxes_ = {}; // the triangles' boxes are not kept: see overlappingTrianglePairs
+    buildRange(0, object.triangle_count, scratch);
+    // The triangles' boxes are not kept: see overlappingTrianglePairs.
     leaf_of_.resize(object.triangle_count);
     leaves_.clear();
     for (uint32_t i = 0; i < nodes_.size(); ++i)
@@ -44,8 +45,10 @@ void RefitBvh::build(PositionsView positions, PrimitiveRange object) {
 }
 
 // Splits at the median box centre on the best of the three axes, keeping triangles_ and
-// leaf_boxes_ in step.
-uint32_t RefitBvh::buildRange(uint32_t first, uint32_t size) {
+// scratch.boxes in step. The centres are sorted as (key, position) pairs side by side, not as
+// positions compared through the boxes: half the build time of 144 bunnies went to those
+// indirect reads.
+uint32_t RefitBvh::buildRange(uint32_t first, uint32_t size, BuildScratch& scratch) {
     const uint32_t index = uint32_t(nodes_.size());
     nodes_.push_back({{}, first, size, 0, index + 1});
     if (size <= kLeafSize)
@@ -56,37 +59,40 @@ uint32_t RefitBvh::buildRange(uint32_t first, uint32_t size) {
         const float dx = b.max[0] - b.min[0], dy = b.max[1] - b.min[1], dz = b.max[2] - b.min[2];
         return dx * dy + dy * dz + dz * dx;
     };
-    std::vector<uint32_t> order(size), best;
+    const std::vector<Box3f>& boxes = scratch.boxes;
+    const uint32_t half = size / 2;
+    int best = 0;
     float best_cost = INFINITY;
     for (int axis = 0; axis < 3; ++axis) {
-        std::iota(order.begin(), order.end(), first);
-        std::nth_element(order.begin(), order.begin() + size / 2, order.end(),
-                         [&](uint32_t p, uint32_t q) {
-                             return leaf_boxes_[p].min[axis] + leaf_boxes_[p].max[axis] <
-                                    leaf_boxes_[q].min[axis] + leaf_boxes_[q].max[axis];
-                         });
-        Box3f left = leaf_boxes_[order[0]], right = leaf_boxes_[order[size / 2]];
-        for (uint32_t i = 1; i < size / 2; ++i)
-            includeBox(left, leaf_boxes_[order[i]]);
-        for (uint32_t i = size / 2 + 1; i < size; ++i)
-            includeBox(right, leaf_boxes_[order[i]]);
+        auto& centres = scratch.centres[axis];
+        centres.resize(size);
+        for (uint32_t i = 0; i < size; ++i)
+            centres[i] = {boxes[first + i].min[axis] + boxes[first + i].max[axis], first + i};
+        std::nth_element(centres.begin(), centres.begin() + half, centres.end(),
+                         [](const auto& p, const auto& q) { return p.first < q.first; });
+        Box3f left = boxes[centres[0].second], right = boxes[centres[half].second];
+        for (uint32_t i = 1; i < half; ++i)
+            includeBox(left, boxes[centres[i].second]);
+        for (uint32_t i = half + 1; i < size; ++i)
+            includeBox(right, boxes[centres[i].second]);
         const float cost = area(left) + area(right);
-        if (cost < best_cost || best.empty()) {
+        if (axis == 0 || cost < best_cost) {
             best_cost = cost;
-            best = order;
+            best = axis;
         }
     }
-    order = std::move(best);
-    std::vector<uint32_t> triangles(size);
-    std::vector<Box3f> boxes(size);
+    const auto& order = scratch.centres[best];
+    scratch.triangles.resize(size);
+    scratch.moved_boxes.resize(size);
     for (uint32_t i = 0; i < size; ++i) {
-        triangles[i] = triangles_[order[i]];
-        boxes[i] = leaf_boxes_[order[i]];
+        scratch.triangles[i] = triangles_[order[i].second];
+        scratch.moved_boxes[i] = boxes[order[i].second];
     }
-    std::copy(triangles.begin(), triangles.end(), triangles_.begin() + first);
-    std::copy(boxes.begin(), boxes.end(), leaf_boxes_.begin() + first);
-    buildRange(first, size / 2);
-    const uint32_t right = buildRange(first + size / 2, size - size / 2);
+    std::copy(scratch.triangles.begin(), scratch.triangles.end(), triangles_.begin() + first);
+    std::copy(scratch.moved_boxes.begin(), scratch.moved_boxes.end(),
+              scratch.boxes.begin() + first);
+    buildRange(first, half, scratch);
+    const uint32_t right = buildRange(first + half, size - half, scratch);
     nodes_[index].right = right;
     nodes_[index].after = uint32_t(nodes_.size());
     return index;

@@ -49,13 +49,21 @@ public:
                    uint32_t round, std::vector<Box3f>& out) const;
 
 private:
-    uint32_t buildRange(uint32_t first, uint32_t size);
+    /// What building needs and the tree does not keep: boxes[i] is the box of triangles_[i];
+    /// the rest is one node's work space, reused by the next (a node is done with it before
+    /// its children start).
+    struct BuildScratch {
+        std::vector<Box3f> boxes;
+        std::vector<std::pair<float, uint32_t>> centres[3]; // per axis: (2 x centre, position)
+        std::vector<uint32_t> triangles;
+        std::vector<Box3f> moved_boxes;
+    };
+    uint32_t buildRange(uint32_t first, uint32_t size, BuildScratch& scratch);
     std::vector<Node> nodes_; // pre-order: a parent before its children
     std::vector<uint32_t> triangles_;
     uint32_t first_triangle_ = 0;
     std::vector<uint32_t> leaf_of_; // per triangle, in id order from first_triangle_: its leaf
     std::vector<uint32_t> leaves_;  // the leaf nodes
-    std::vector<Box3f> leaf_boxes_; // while building: leaf_boxes_[i] is the box of triangles_[i]
 };
 
 /// The box of triangle t of positions.
