@@ -266,6 +266,16 @@ def test_a_scene_that_cannot_be_loaded_fails_at_once(client):
         batch.collide(42, 2)
 
 
+def test_a_task_that_fails_ends_the_batch_with_its_error(client):
+    # The method is checked where the detector is made: on the workers, in the first task.
+    started = time.monotonic()
+    with pytest.raises(ValueError, match="nope"):
+        batch.collide(SCENE, 300, method="nope", chunk_frames=2, client=client, progress=False)
+    assert time.monotonic() - started < 10
+    # The cluster is still usable afterwards.
+    assert batch.collide(SCENE, 2, client=client, progress=False).frame_numbers == [0, 1]
+
+
 def test_a_frame_that_fails_to_be_written_leaves_no_file(tmp_path, monkeypatch):
     from vissort.batch import _tasks
 
@@ -279,6 +289,23 @@ def test_a_frame_that_fails_to_be_written_leaves_no_file(tmp_path, monkeypatch):
         _tasks.write_atomically(str(tmp_path / "frame_0001.png"),
                                 np.zeros((2, 2, 4), np.uint8))
     assert os.listdir(tmp_path) == []
+
+
+def test_a_frame_written_again_removes_what_a_killed_writer_left(tmp_path):
+    from vissort.batch import _tasks
+
+    # A writer killed mid-frame (another process: its host and pid in the name) left this.
+    (tmp_path / ".frame_0003.otherhost-4242.partial.png").write_bytes(b"\x89PNG half")
+    (tmp_path / ".frame_0004.otherhost-4242.partial.png").write_bytes(b"\x89PNG half")
+    image = np.full((2, 3, 4), 200, np.uint8)
+    _tasks.write_atomically(str(tmp_path / "frame_0003.png"), image)
+    # Frame 3's leftover is gone; frame 4's stays until frame 4 is written again.
+    assert sorted(os.listdir(tmp_path)) == [".frame_0004.otherhost-4242.partial.png",
+                                            "frame_0003.png"]
+    from PIL import Image
+
+    assert np.array_equal(np.asarray(Image.open(tmp_path / "frame_0003.png").convert("RGBA")),
+                          image)
 
 
 def test_bad_outputs_and_sizes_are_refused(tmp_path):

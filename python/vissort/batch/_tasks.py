@@ -6,11 +6,14 @@ plain data, never a vissort object."""
 
 from __future__ import annotations
 
+import contextlib
 import ctypes
 import ctypes.util
+import glob
 import hashlib
 import os
 import pickle
+import socket
 from collections import OrderedDict
 from dataclasses import dataclass, field
 from typing import Any, Dict, List, Optional, Tuple
@@ -101,16 +104,29 @@ def load_scene(spec: str, data: Optional[bytes] = None) -> vissort.Scene:
 
 def write_atomically(path: str, image) -> None:
     """Writes image to path through a temporary file in the same folder, renamed over path once
-    complete: a failure (a killed worker) leaves no half-written frame, and a frame written
-    twice (a retried chunk) is replaced whole."""
+    complete: a failure leaves no half-written frame, and a frame written twice (a retried
+    chunk) is replaced whole. A writer killed mid-frame leaves its temporary file; whoever
+    writes that frame next (the retry) removes it first. Should two writers of one frame meet
+    (a chunk Dask ran twice at once), one's removal can take the other's temporary file: the
+    frame is then the survivor's, whole."""
     folder, name = os.path.split(path)
     stem, extension = os.path.splitext(name)
-    partial = os.path.join(folder, f".{stem}.{os.getpid()}.partial{extension}")
+    mine = f"{socket.gethostname()}-{os.getpid()}"
+    partial = os.path.join(folder, f".{stem}.{mine}.partial{extension}")
+    for stale in glob.glob(os.path.join(glob.escape(folder), f".{glob.escape(stem)}.*.partial"
+                                        f"{glob.escape(extension)}")):
+        if stale != partial:
+            with contextlib.suppress(FileNotFoundError):
+                os.remove(stale)
     try:
         vissort.write_image(partial, image)
-        os.replace(partial, path)
+        try:
+            os.replace(partial, path)
+        except FileNotFoundError:
+            if not os.path.exists(path):  # not another writer's whole frame either
+                raise
     finally:
-        if os.path.exists(partial):
+        with contextlib.suppress(FileNotFoundError):
             os.remove(partial)
 
 
