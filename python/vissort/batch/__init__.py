@@ -2,11 +2,11 @@
 on a Dask cluster (docs/batch.md).
 
 The frames are cut into contiguous chunks, one task each, so that each keeps vissort's
-frame-to-frame coherence (a chunk computes the frame before it first, to seed its order). A scene
-travels as what every process can load: a builtin specification, a file's path, or a static
-vissort.Scene's arrays (sent to each worker once). Results come
-back in frame order with one table of per-frame statistics: a pandas DataFrame when pandas is
-installed, else a list of dicts.
+frame-to-frame coherence (a chunk of an order or render computes the frame before it first, to
+seed its order). A scene travels as what every process can load: a builtin specification, a
+file's path, or a static vissort.Scene's arrays (sent to each worker once). Results come back in
+frame order with one table of per-frame statistics: a pandas DataFrame when pandas is installed,
+else a list of dicts.
 
     import vissort.batch
     from distributed import Client
