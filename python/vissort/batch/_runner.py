@@ -103,19 +103,20 @@ def run(job: Job, chunks: List[Chunk], client: Any = None, progress: Optional[bo
                                        [data] * len(indices), pure=False, **where)
                 for i, future in zip(indices, submitted):
                     futures[i] = future
-            place = {future.key: i for i, future in enumerate(futures)}
-            per_chunk = [None] * len(chunks)
             try:
                 check()
-                # Results come back as each chunk ends, while the others run (not all at the
-                # end); the first failure ends the batch at once.
-                for future, results in as_completed(futures, with_results=True):
-                    per_chunk[place[future.key]] = results
-                    future.release()
-                    bar.advance()
             except BaseException:
                 client.cancel(futures)
                 raise
+            # The results are gathered once all chunks are done: as_completed(with_results=True),
+            # which would fetch each as it ends, hung a batch here (dask/distributed#7331).
+            for future in as_completed(futures):
+                if future.status == "error":  # the first failure ends the batch at once
+                    error = future.exception()  # read before cancelling, which would lose it
+                    client.cancel(futures)
+                    raise error
+                bar.advance()
+            per_chunk = client.gather(futures)
     finally:
         bar.close()
     return [frame for results in per_chunk for frame in results]
