@@ -96,9 +96,7 @@ def load_scene(spec: str, data: Optional[bytes] = None) -> vissort.Scene:
         scene = pickle.loads(data)
     else:
         scene = vissort.load(spec)
-    _scenes[spec] = scene
-    while len(_scenes) > _KEPT_SCENES:
-        _scenes.popitem(last=False)
+    keep_scene(spec, scene)
     return scene
 
 
