@@ -86,6 +86,11 @@ struct Scene {
     /// has none.
     std::vector<CameraKey> camera_path;
     std::shared_ptr<const Animation> animation; // null for static scenes
+    /// Every file its loading read, as opened: a mesh file and what its reader opened beside
+    /// it (an OBJ's .mtl, a glTF's .bin), a JSON scene and its meshes' files. Empty for
+    /// built-in scenes and scenes made from arrays. An output must be none of them (the
+    /// command line refuses to overwrite an input).
+    std::vector<std::string> source_files;
 
     bool isDynamic() const { return animation != nullptr; }
     std::size_t triangleCount() const { return positions.triangleCount(); }

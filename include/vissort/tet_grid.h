@@ -82,6 +82,11 @@ GridFacts describeGrid(const TetGrid& grid);
 /// the result passes validateGrid. Errors name the file and the problem in one line.
 Result<TetGrid> loadGrid(const std::string& spec);
 
+/// The files loadGrid(spec) reads, without reading them: the grid file; tetgen's .node and .ele
+/// (either named); Medit's .mesh and the .sol beside it when there is one; none for a built-in
+/// grid. An output must be none of them (the command line refuses to overwrite an input).
+std::vector<std::string> gridSourceFiles(const std::string& spec);
+
 /// The linear 3D cells a grid can be made of, with their corners in VTK's order (docs/volume.md):
 /// a tetrahedron's 4; a hexahedron's 8 (0-3 one quad face, 4-7 the opposite one, corner i + 4
 /// joined to i); a wedge's 6 (triangles 0-1-2 and 3-4-5, i + 3 joined to i); a pyramid's 5 (quad

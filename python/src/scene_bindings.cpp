@@ -131,6 +131,11 @@ void bindScene(py::module_& m) {
             "(T, 3) uint32: each triangle's vertices in positions.reshape(-1, 3) (scenes keep "
             "every triangle's own corners)")
         .def_property_readonly("is_dynamic", &Scene::isDynamic)
+        .def_property_readonly(
+            "source_files", [](const Scene& s) { return s.source_files; },
+            "Every file loading the scene read (a mesh file and what its reader opened beside "
+            "it, a JSON scene and its meshes' files); empty for built-in scenes and arrays. "
+            "vissort.batch refuses an output that is one of them")
         .def(
             "frame",
             [](const Scene& s, double t) {

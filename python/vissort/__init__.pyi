@@ -206,6 +206,11 @@ class Scene:
         every triangle's own corners)."""
     @property
     def is_dynamic(self) -> bool: ...
+    @property
+    def source_files(self) -> list[str]:
+        """Every file loading the scene read (a mesh file and what its reader opened beside it,
+        a JSON scene and its meshes' files); empty for built-in scenes and arrays.
+        vissort.batch refuses an output that is one of them."""
     def frame(self, t: float) -> npt.NDArray[np.float32]:
         """(T, 3, 3) float32: the corners at time t seconds (static scenes: t = 0)."""
     @property

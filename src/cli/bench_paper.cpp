@@ -98,13 +98,7 @@ nlohmann::json pathJson(const PaperPath& path) {
 }
 
 Status writeText(const std::filesystem::path& file, const std::string& text) {
-    errno = 0;
-    std::ofstream out(file);
-    out << text;
-    out.close();
-    if (!out)
-        return Status::failure(cannotWrite(file.string()));
-    return {};
+    return writeTextFile(file.string(), [&](std::ostream& out) { out << text; });
 }
 
 std::string pathsCsv(const std::vector<PaperPath>& paths) {

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "cli/cli_common.h"
+#include "cli/output_clashes.h"
 #include "cli/text_output.h"
 #include "scenes/scene_library.h"
 #include "vissort/tet_grid.h"
@@ -170,6 +171,13 @@ int loadSceneOrReport(const std::string& specification, const std::string& objec
     Result<Scene> loaded = samples::loadScene(specification, grouping);
     if (!loaded)
         return fail(kExitInput, loaded.error);
+    // The files known only now (a JSON scene's meshes, an OBJ's .mtl), against every output
+    // before any work.
+    std::vector<FileUse> read;
+    for (const std::string& file : loaded.value->source_files)
+        read.push_back({file == specification ? "the scene file" : "a file the scene reads", file});
+    if (const std::string clash = checkInputs(read); !clash.empty())
+        return fail(kExitFailure, clash);
     scene = std::move(*loaded.value);
     return kExitOk;
 }

@@ -16,6 +16,7 @@
 #include "cli/stats_output.h"
 #include "cli/text_output.h"
 #include "harnesses/measurement.h"
+#include "vissort/atomic_file.h"
 #include "vissort/collision.h"
 #include "vissort/frame_driver.h"
 
@@ -128,10 +129,17 @@ int runCollide(const CollideOptions& options) {
     if (const int code = loadSceneOrReport(options.scene, options.objects, scene); code != kExitOk)
         return code;
 
+    // Written frame by frame into a temporary file, renamed into place at the end
+    // (atomic_file.h): a failed or killed run leaves the old pairs file whole.
+    std::optional<AtomicFile> pairs_file;
     std::ofstream pairs_out;
     if (!options.pairs_path.empty()) {
+        Result<AtomicFile> begun = AtomicFile::begin(options.pairs_path);
+        if (!begun)
+            return fail(kExitFailure, begun.error);
+        pairs_file = std::move(*begun.value);
         errno = 0;
-        pairs_out.open(options.pairs_path);
+        pairs_out.open(pairs_file->writePath());
         if (!pairs_out)
             return fail(kExitFailure, cannotWrite(options.pairs_path));
     }
@@ -169,8 +177,13 @@ int runCollide(const CollideOptions& options) {
     }
     progress.clear();
     errno = 0;
-    if (pairs_out.is_open() && !pairs_out.flush())
-        return fail(kExitFailure, cannotWrite(options.pairs_path));
+    if (pairs_out.is_open()) {
+        pairs_out.close();
+        if (!pairs_out)
+            return fail(kExitFailure, cannotWrite(options.pairs_path));
+        if (Status committed = pairs_file->commit(); !committed)
+            return fail(kExitFailure, committed.error);
+    }
 
     double mean = 0;
     for (double ms : total_ms)

@@ -4,7 +4,6 @@
 #include <cassert>
 #include <cerrno>
 #include <charconv>
-#include <fstream>
 #include <iostream>
 #include <vector>
 
@@ -96,12 +95,6 @@ std::string jsonIdListPlaceholder(std::size_t index) {
 
 int writeJsonFile(const JsonOutput& output, const nlohmann::json& document,
                   std::span<const JsonIdList> lists) {
-    const bool to_standard_output = output.path == "-";
-    std::ofstream file;
-    errno = 0;
-    if (!to_standard_output)
-        file.open(output.path);
-    std::ostream out(to_standard_output ? standardOutputBuffer() : file.rdbuf());
     const std::string text = output.pretty ? document.dump(1) : document.dump();
     // Where each placeholder is, as dumped (the mark escaped, in quotes), in the text's order.
     struct Found {
@@ -117,22 +110,35 @@ int writeJsonFile(const JsonOutput& output, const nlohmann::json& document,
     }
     std::sort(found.begin(), found.end(),
               [](const Found& a, const Found& b) { return a.at < b.at; });
-    std::size_t written = 0;
-    for (const Found& f : found) {
-        const std::size_t line = text.rfind('\n', f.at) + 1; // 0 when there is none
-        std::size_t indent = 0;
-        while (text[line + indent] == ' ')
-            ++indent;
-        out.write(text.data() + written, std::streamsize(f.at - written));
-        writeIds(out, lists[f.list], output.pretty, indent);
-        written = f.at + f.length;
+    const auto emit = [&](std::ostream& out) {
+        std::size_t written = 0;
+        for (const Found& f : found) {
+            const std::size_t line = text.rfind('\n', f.at) + 1; // 0 when there is none
+            std::size_t indent = 0;
+            while (text[line + indent] == ' ')
+                ++indent;
+            out.write(text.data() + written, std::streamsize(f.at - written));
+            writeIds(out, lists[f.list], output.pretty, indent);
+            written = f.at + f.length;
+        }
+        out.write(text.data() + written, std::streamsize(text.size() - written));
+        out << '\n';
+        out.flush();
+    };
+    return writeTextOutput(output.path, emit);
+}
+
+int writeTextOutput(const std::string& path, const std::function<void(std::ostream&)>& emit) {
+    if (path == "-") {
+        std::ostream out(standardOutputBuffer());
+        errno = 0;
+        emit(out);
+        if (!out)
+            return fail(kExitFailure, cannotWrite("standard output"));
+        return kExitOk;
     }
-    out.write(text.data() + written, std::streamsize(text.size() - written));
-    out << '\n';
-    out.flush();
-    if (!out || (!to_standard_output && !file))
-        return fail(kExitFailure,
-                    cannotWrite(to_standard_output ? std::string("standard output") : output.path));
+    if (Status written = writeTextFile(path, emit); !written)
+        return fail(kExitFailure, written.error);
     return kExitOk;
 }
 

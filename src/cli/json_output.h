@@ -2,6 +2,8 @@
 // Writing the commands' JSON documents.
 
 #include <cstdint>
+#include <functional>
+#include <ostream>
 #include <span>
 #include <string>
 
@@ -37,6 +39,10 @@ void reserveStandardOutputFor(const std::string& path);
 
 /// Where "-" writes: standard output, whichever stream the people's text was moved to.
 std::streambuf* standardOutputBuffer();
+
+/// Writes what emit writes to path, whole (writeTextFile, output_paths.h), or for "-" to standard
+/// output. Returns kExitOk, or prints "cannot write PATH: REASON" and returns kExitFailure.
+int writeTextOutput(const std::string& path, const std::function<void(std::ostream&)>& emit);
 
 /// Writes document to output's path ("-": standard output), ending with a newline. Returns
 /// kExitOk, or prints "cannot write PATH" and returns kExitFailure.

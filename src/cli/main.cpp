@@ -1,17 +1,37 @@
 // vissort: visibility orderings of 3D geometry from the command line.
 
+#include <algorithm>
+#include <csignal>
+#include <filesystem>
 #include <iostream>
 
+#include "cli/command_inputs.h"
 #include "cli/command_line_errors.h"
 #include "cli/commands.h"
 #include "cli/environment.h"
 #include "cli/json_output.h"
+#include "cli/output_clashes.h"
 #include "cli/output_paths.h"
 #include "cli/progress.h"
+#include "vissort/atomic_file.h"
 #include "vissort/collision_peers.h"
+
+namespace {
+
+// Ctrl-C or a kill during a write: the temporary file goes too (the target was never touched),
+// then the signal ends the process as it would have.
+extern "C" void removeTemporaryFilesAndStop(int signal_number) {
+    vissort::removeTemporaryFilesOfWritesInProgress();
+    std::signal(signal_number, SIG_DFL);
+    std::raise(signal_number);
+}
+
+} // namespace
 
 int main(int argc, char** argv) {
     using namespace vissort::cli;
+    for (int signal_number : {SIGINT, SIGTERM, SIGHUP})
+        std::signal(signal_number, removeTemporaryFilesAndStop);
     // Each line as it is printed, also into a pipe: long runs report as they go.
     std::cout << std::unitbuf;
     // `collide --method bullet|fcl` and `bench collision` measure the peers beside vissort.
@@ -78,33 +98,57 @@ int main(int argc, char** argv) {
         if (json->path == "-" && *csv == "-")
             return fail(kExitUsage, "--json - and --csv - both want standard output: send one of "
                                     "them to a file");
-    // Every file the command will write, checked before any work.
+    // Every file the command will write, checked before any work. A frame pattern (render's
+    // and volume's -o and --error-map) names its command's frames.
     const struct {
         const CLI::App* command;
         const char* option;
         const std::string* path;
+        const int* frames = nullptr;
     } outputs[] = {{order_command, "--json", &order.json.path},
                    {order_command, "--csv", &order.csv},
                    {order_command, "--dump-primitives", &order.dump_path},
                    {info_command, "--json", &info.json.path},
                    {bench_command, "--json", &bench.json.path},
                    {bench_command, "--plot", &bench.plot_path},
-                   {render_command, "-o", &render.output},
+                   {render_command, "-o", &render.output, &render.view.frames},
                    {render_command, "--json", &render.json.path},
                    {render_command, "--csv", &render.csv},
-                   {render_command, "--error-map", &render.error_map},
+                   {render_command, "--error-map", &render.error_map, &render.view.frames},
                    {collide_command, "--json", &collide.json.path},
                    {collide_command, "--csv", &collide.csv},
                    {collide_command, "--pairs-out", &collide.pairs_path},
                    {collide_command, "--dump-primitives", &collide.dump_path},
                    {view_command, "--screenshot", &view.screenshot},
-                   {volume_command, "-o", &volume.output},
+                   {volume_command, "-o", &volume.output, &volume.view.frames},
                    {volume_command, "--json", &volume.json.path},
-                   {volume_command, "--error-map", &volume.error_map}};
+                   {volume_command, "--error-map", &volume.error_map, &volume.view.frames}};
+    std::vector<FileUse> written;
     for (const auto& output : outputs)
-        if (output.command->parsed())
+        if (output.command->parsed()) {
             if (const std::string reason = unwritableReason(*output.path); !reason.empty())
                 return fail(kExitFailure, std::string(output.option) + ": " + reason);
+            const bool pattern = output.frames && isFramePattern(*output.path);
+            written.push_back(
+                {output.option, *output.path, pattern ? std::max(1, *output.frames) : 0});
+        }
+    if (bench_command->parsed() && bench.what == "paper")
+        for (const char* name : {"paper.json", "paper.csv", "figure6.csv"})
+            written.push_back({"--out", (std::filesystem::path(bench.out_dir) / name).string()});
+    // No output is an input or another output (output_clashes.h): the files known from the
+    // command line now, a scene's own files once it is loaded (loadSceneOrReport).
+    const std::vector<FileUse> read = commandInputs({{order_command, order.scene},
+                                                     {info_command, info.scene},
+                                                     {render_command, render.scene},
+                                                     {collide_command, collide.scene},
+                                                     {view_command, view.scene},
+                                                     {volume_command, volume.grid}},
+                                                    {{volume_command, "--tf", volume.tf},
+                                                     {view_command, "--tf", view.tf},
+                                                     {view_command, "--script", view.script}});
+    if (const std::string clash = findClash(read, written); !clash.empty())
+        return fail(kExitFailure, clash);
+    declareOutputs(std::move(written));
     for (const JsonOutput* json :
          {&order.json, &info.json, &bench.json, &render.json, &collide.json, &volume.json})
         reserveStandardOutputFor(*json);

@@ -6,10 +6,13 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <regex>
 #include <system_error>
 
 #include <unistd.h>
+
+#include "vissort/atomic_file.h"
 
 namespace vissort::cli {
 namespace {
@@ -46,6 +49,19 @@ std::string unwritableReason(const std::string& path) {
 std::string cannotWrite(const std::string& path) {
     return "cannot write " + path +
            (errno == 0 ? std::string() : ": " + std::string(std::strerror(errno)));
+}
+
+Status writeTextFile(const std::string& path, const std::function<void(std::ostream&)>& emit) {
+    return writeFileAtomically(path, [&](const std::string& write_path) {
+        errno = 0;
+        std::ofstream file(write_path, std::ios::binary);
+        if (file)
+            emit(file);
+        file.close();
+        if (!file)
+            return Status::failure(cannotWrite(path));
+        return Status::ok();
+    });
 }
 
 bool isFramePattern(const std::string& path) {

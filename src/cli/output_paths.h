@@ -2,7 +2,11 @@
 // Output paths checked before any work: a run of minutes must not end in "cannot write" because
 // the folder was mistyped.
 
+#include <functional>
+#include <ostream>
 #include <string>
+
+#include "vissort/result.h"
 
 namespace vissort::cli {
 
@@ -15,6 +19,10 @@ std::string unwritableReason(const std::string& path);
 /// "cannot write PATH: REASON" after a write that failed, REASON the system's (strerror(errno))
 /// when it gave one: callers set errno to 0 before the write.
 std::string cannotWrite(const std::string& path);
+
+/// Writes the file at path whole or not at all (writeFileAtomically, atomic_file.h): emit writes
+/// the text into a stream on a temporary file beside it. "cannot write PATH: REASON" on failure.
+Status writeTextFile(const std::string& path, const std::function<void(std::ostream&)>& emit);
 
 /// Whether path is a frame pattern, "frame_%04d.png" and the like: exactly one %d conversion
 /// (flags 0-9 only), no other '%'.

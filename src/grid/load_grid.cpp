@@ -82,6 +82,23 @@ std::vector<BuiltinGridInfo> builtinGridNames() {
     return detail::builtinGrids();
 }
 
+std::vector<std::string> gridSourceFiles(const std::string& spec) {
+    if (spec.starts_with(kBuiltinPrefix))
+        return {};
+    const std::string ext = lowerExtension(spec);
+    if (ext == ".node" || ext == ".ele") { // as readTetgenPair names them
+        const fs::path stem = fs::path(spec).replace_extension();
+        return {stem.string() + ".node", stem.string() + ".ele"};
+    }
+    if (ext == ".mesh") { // as loadGrid looks for the .sol
+        const std::string sol_path = fs::path(spec).replace_extension(".sol").string();
+        std::error_code error;
+        if (fs::exists(sol_path, error))
+            return {spec, sol_path};
+    }
+    return {spec};
+}
+
 Result<TetGrid> loadGrid(const std::string& spec) {
     using R = Result<TetGrid>;
     if (spec.starts_with(kBuiltinPrefix))

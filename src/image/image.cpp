@@ -11,6 +11,8 @@
 
 #include "vissort/image.h"
 
+#include "vissort/atomic_file.h"
+
 namespace vissort {
 namespace {
 
@@ -91,10 +93,14 @@ Status writePng(const std::string& path, uint32_t width, uint32_t height,
                 const std::vector<uint8_t>& rgba8) {
     if (rgba8.size() != std::size_t(width) * height * 4 || width == 0 || height == 0)
         return Status::failure("no image to write to " + path);
-    errno = 0;
-    if (!stbi_write_png(path.c_str(), int(width), int(height), 4, rgba8.data(), int(width) * 4))
-        return Status::failure("cannot write " + path + systemReason());
-    return Status::ok();
+    // Whole or not at all (atomic_file.h): a killed run leaves no truncated picture.
+    return writeFileAtomically(path, [&](const std::string& write_path) {
+        errno = 0;
+        if (!stbi_write_png(write_path.c_str(), int(width), int(height), 4, rgba8.data(),
+                            int(width) * 4))
+            return Status::failure("cannot write " + path + systemReason());
+        return Status::ok();
+    });
 }
 
 Result<ImageFormat> imageFormatOf(const std::string& path) {
@@ -119,10 +125,12 @@ Status writeImage(const std::string& path, uint32_t width, uint32_t height,
         return writePng(path, width, height, rgba8);
     if (rgba8.size() != std::size_t(width) * height * 4 || width == 0 || height == 0)
         return Status::failure("no image to write to " + path);
-    errno = 0;
-    if (!stbi_write_jpg(path.c_str(), int(width), int(height), 4, rgba8.data(), 95))
-        return Status::failure("cannot write " + path + systemReason());
-    return Status::ok();
+    return writeFileAtomically(path, [&](const std::string& write_path) {
+        errno = 0;
+        if (!stbi_write_jpg(write_path.c_str(), int(width), int(height), 4, rgba8.data(), 95))
+            return Status::failure("cannot write " + path + systemReason());
+        return Status::ok();
+    });
 }
 
 } // namespace vissort

@@ -338,6 +338,11 @@ private:
             if (!loaded)
                 fail(where + ".mesh", loaded.error);
             cached = meshes_.emplace(key, std::move(*loaded.value)).first;
+            // The JSON scene read what the mesh's loading read.
+            for (const std::string& read : cached->second.source_files)
+                if (std::find(scene_.source_files.begin(), scene_.source_files.end(), read) ==
+                    scene_.source_files.end())
+                    scene_.source_files.push_back(read);
         }
         return cached->second;
     }
@@ -471,7 +476,9 @@ Result<Scene> loadJsonScene(const std::string& path) {
             return Result<Scene>::failure(path + ": invalid JSON: " + e.what());
         }
         JsonSceneBuilder builder(file.parent_path());
-        return {builder.build(root, file.stem().string()), {}};
+        Scene scene = builder.build(root, file.stem().string());
+        scene.source_files.insert(scene.source_files.begin(), path);
+        return {std::move(scene), {}};
     } catch (const JsonSceneError& e) {
         return Result<Scene>::failure(path + ": " + e.message);
     } catch (const std::exception& e) {

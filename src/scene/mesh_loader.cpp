@@ -9,6 +9,7 @@
 #include "scene/file_cameras.h"
 #include "scene/off_faces.h"
 
+#include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
@@ -271,6 +272,23 @@ Result<Scene> convertScene(const aiScene& ai_scene, const std::string& label,
 // rejects malformed data structures (indices out of range, empty meshes).
 constexpr unsigned kImportFlags = aiProcess_ValidateDataStructure;
 
+// assimp's own file access, noting every file it opens: a mesh file's readers open others
+// beside it (an OBJ's .mtl, a glTF's .bin), and the scene lists them all (Scene::source_files)
+// so that no output replaces one.
+class RecordingIOSystem : public Assimp::DefaultIOSystem {
+public:
+    explicit RecordingIOSystem(std::vector<std::string>& opened) : opened_(opened) {}
+    Assimp::IOStream* Open(const char* file, const char* mode) override {
+        Assimp::IOStream* stream = DefaultIOSystem::Open(file, mode);
+        if (stream && std::find(opened_.begin(), opened_.end(), file) == opened_.end())
+            opened_.push_back(file);
+        return stream;
+    }
+
+private:
+    std::vector<std::string>& opened_;
+};
+
 // Before a reason assimp gave: the file passed vissort's own checks, and assimp refused it.
 constexpr const char* kAssimpFailed = "assimp could not read it: ";
 
@@ -359,12 +377,16 @@ Result<Scene> loadMeshFile(const std::string& path, ObjectGrouping grouping) {
             !problem.empty())
             return Result<Scene>::failure(path + ": " + problem);
         Assimp::Importer importer;
+        std::vector<std::string> opened{path};
+        importer.SetIOHandler(new RecordingIOSystem(opened)); // the importer owns it
         const aiScene* ai_scene = nullptr;
         if (Status read = readWithAssimp([&] { ai_scene = importer.ReadFile(path, kImportFlags); });
             !read)
             return Result<Scene>::failure(path + ": " + read.error);
         Result<Scene> scene = finishImport(importer, ai_scene, path, file.stem().string(),
                                            lowerCase(extension), grouping);
+        if (scene)
+            scene.value->source_files = std::move(opened);
         if (!isOff(extension))
             return scene;
         std::ifstream again(file, std::ios::binary);

@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <deque>
+#include <filesystem>
 #include <string>
 #include <thread>
 
@@ -578,7 +579,12 @@ Result<ViewerSummary> Viewer::run() {
         // Screenshots read the drawn back buffer, before it is shown.
         if (screenshot_asked_) {
             screenshot_asked_ = false;
-            const std::string path = "vissort-view-" + std::to_string(++screenshot_count_) + ".png";
+            // The first free name: a screenshot never replaces a file (an earlier run's, an input).
+            std::string path;
+            std::error_code ignored;
+            do
+                path = "vissort-view-" + std::to_string(++screenshot_count_) + ".png";
+            while (std::filesystem::exists(path, ignored));
             if (Status saved = saveScreenshot(path); !saved)
                 pending_error_ = saved.error;
         }

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "viewer/transfer_editing.h"
+#include "vissort/atomic_file.h"
 
 namespace vissort::viewer {
 namespace {
@@ -56,9 +57,14 @@ std::string saveTransferFunction(const TransferFunction& tf) {
         const std::string path = "vissort-tf-" + std::to_string(n) + ".json";
         if (std::filesystem::exists(path))
             continue;
-        std::ofstream out(path);
-        out << transferFunctionJson(tf) << '\n';
-        return out ? path : std::string();
+        // Whole or not at all (atomic_file.h): never a half-written file another run then reads.
+        const Status saved = writeFileAtomically(path, [&](const std::string& write_path) {
+            std::ofstream out(write_path);
+            out << transferFunctionJson(tf) << '\n';
+            out.close();
+            return out ? Status::ok() : Status::failure("cannot write " + path);
+        });
+        return saved ? path : std::string();
     }
 }
 

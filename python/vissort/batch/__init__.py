@@ -22,6 +22,7 @@ from typing import Any, List, Optional, Sequence, Tuple, Union
 
 import vissort
 
+from . import _outputs
 from ._chunks import DEFAULT_CHUNK_FRAMES, Chunk, cut
 from ._runner import run
 from ._tasks import FrameResult, Job, keep_scene, load_scene, scene_key
@@ -98,6 +99,16 @@ def _check_pattern(output: str, frames: int) -> None:
         raise ValueError(f"output folder '{folder}' does not exist")
 
 
+def _check_inputs_kept(scene: Any, source: _SceneSource, output: str, frames: range) -> None:
+    """ValueError before any work when a frame file would replace a file the scene reads (a
+    file's scene is loaded here first, so that a JSON scene's meshes are known: load_scene
+    keeps it for a batch run in this process)."""
+    if not isinstance(scene, vissort.Scene) and not source.spec.startswith("builtin:"):
+        scene = load_scene(source.spec)
+    _outputs.check(_outputs.scene_inputs(scene, source.spec),
+                   [_outputs.FileUse("output", output, frames)])
+
+
 def _run(job: Job, source: _SceneSource, first: int, frames: int, chunk_frames: Optional[int],
          client: Any, progress: Optional[bool]) -> BatchResult:
     chunks: List[Chunk] = cut(first, frames, chunk_frames, seeded=job.coherent)
@@ -143,6 +154,7 @@ def render(scene: SceneSpec, frames: int, *, first: int = 0, path: str = "static
     if output is not None:
         output = os.fspath(output)
         _check_pattern(output, frames)
+        _check_inputs_kept(scene, source, output, range(first, first + frames))
     job = Job("render", source.spec, path, _size(size), first + frames, dict(options), output)
     return _run(job, source, first, frames, chunk_frames, client, progress)
 

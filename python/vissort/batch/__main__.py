@@ -12,7 +12,7 @@ from typing import Any, List, Optional
 
 import numpy as np
 
-from . import collide, order, render
+from . import _outputs, collide, order, render
 
 
 def _size(text: str) -> tuple:
@@ -76,6 +76,7 @@ def main(argv: Optional[List[str]] = None) -> int:
     try:
         if args.kind == "render" and args.output is None:
             raise ValueError("render needs -o, an image pattern such as out/frame_%04d.png")
+        _check_outputs(args)
         client = _client(args)
         try:
             common = dict(first=args.first, chunk_frames=args.chunk_frames, client=client,
@@ -94,17 +95,38 @@ def main(argv: Optional[List[str]] = None) -> int:
         finally:
             if client is not None:
                 client.close()
+        # Each file whole or not at all: a killed run leaves the old one.
         if args.kind != "render" and args.output is not None:
-            np.savez_compressed(args.output, **{f"frame_{f:06d}": np.asarray(v) for f, v in
-                                                zip(result.frame_numbers, result.results)})
+            arrays = {f"frame_{f:06d}": np.asarray(v) for f, v in
+                      zip(result.frame_numbers, result.results)}
+            _outputs.write_whole(_npz_path(args.output),
+                                 lambda path: np.savez_compressed(path, **arrays), suffix=".npz")
         if args.csv is not None:
-            _write_csv(args.csv, result.stats)
+            _outputs.write_whole(args.csv, lambda path: _write_csv(path, result.stats))
     except (ValueError, OSError, RuntimeError) as error:
         print(f"vissort.batch: {error}", file=sys.stderr)
         return 1
     if not args.quiet:
         print(f"vissort.batch {args.kind}: {len(result)} frames of {args.scene}")
     return 0
+
+
+def _npz_path(output: str) -> str:
+    """Where numpy saves an archive named output: it adds .npz when the name lacks it."""
+    return output if output.endswith(".npz") else output + ".npz"
+
+
+def _check_outputs(args: argparse.Namespace) -> None:
+    """Before any work: no output is the scene's file or the other output."""
+    outputs = []
+    if args.output is not None and args.kind == "render":
+        frames = range(args.first, args.first + args.frames)
+        outputs.append(_outputs.FileUse("-o", args.output, frames))
+    elif args.output is not None:
+        outputs.append(_outputs.FileUse("-o", _npz_path(args.output)))
+    if args.csv is not None:
+        outputs.append(_outputs.FileUse("--csv", args.csv))
+    _outputs.check(_outputs.scene_inputs(None, args.scene), outputs)
 
 
 def _write_csv(path: str, stats: Any) -> None:
