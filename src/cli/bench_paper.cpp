@@ -97,6 +97,17 @@ nlohmann::json pathJson(const PaperPath& path) {
             {"frames", frames}};
 }
 
+} // namespace
+
+std::vector<std::string> paperBenchFileNames() {
+    return {"paper.json",           "paper.csv",
+            "figure6.csv",          "figure6.png",
+            "figure5-plant-ms.png", "figure5-plant-queries.png",
+            "figure5-bunnies-ms.png", "figure5-bunnies-queries.png"};
+}
+
+namespace {
+
 Status writeText(const std::filesystem::path& file, const std::string& text) {
     return writeTextFile(file.string(), [&](std::ostream& out) { out << text; });
 }

@@ -5,6 +5,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "cli/cli_common.h"
 #include "cli/json_output.h"
@@ -69,6 +70,8 @@ int runOracleBench(const BenchOptions& options);
 int runTransparencyBench(const BenchOptions& options);
 int runCollisionBench(const BenchOptions& options);
 int runPaperBench(const BenchOptions& options);
+/// The files `bench paper` may write in its --out folder (bench_paper.cpp writes them).
+std::vector<std::string> paperBenchFileNames();
 int runVolumeBench(const BenchOptions& options);
 
 struct CollideOptions {

@@ -133,7 +133,7 @@ int main(int argc, char** argv) {
                 {output.option, *output.path, pattern ? std::max(1, *output.frames) : 0});
         }
     if (bench_command->parsed() && bench.what == "paper")
-        for (const char* name : {"paper.json", "paper.csv", "figure6.csv"})
+        for (const std::string& name : paperBenchFileNames())
             written.push_back({"--out", (std::filesystem::path(bench.out_dir) / name).string()});
     // No output is an input or another output (output_clashes.h): the files known from the
     // command line now, a scene's own files once it is loaded (loadSceneOrReport).
