@@ -57,11 +57,20 @@ bool sameFile(const fs::path& a, const fs::path& b) {
 }
 
 // A frame pattern split around its one %d conversion.
+// Each frame's resolved path, the folder resolved once when the conversion is in the name.
+std::vector<std::string> framePaths(const fs::path& folder, const std::string& text, int frames);
+
 struct Pattern {
     fs::path folder; // resolved; empty when the conversion is in the folder part
     std::string prefix, suffix;
     int frames = 0;
     std::string text;
+    // Frame files that exist and are symbolic or hard links (up to kFramesStatted frames): the
+    // only ones that can be an input under another name. Found once, not once an input.
+    std::vector<std::pair<int, std::string>> linked;
+    // With the conversion in the folder part: every frame's resolved path, and its frame.
+    std::vector<std::string> paths;
+    std::unordered_map<std::string, int> frame_of_path;
 };
 
 Pattern splitPattern(const FileUse& use) {
@@ -71,12 +80,25 @@ Pattern splitPattern(const FileUse& use) {
     const fs::path path(use.path);
     const std::string name = path.filename().string();
     const std::size_t percent = name.find('%');
-    if (percent == std::string::npos)
-        return pattern; // in the folder part: checked frame by frame
-    const std::size_t d = name.find('d', percent);
-    pattern.folder = resolved(path.has_parent_path() ? path.parent_path() : fs::path("."));
-    pattern.prefix = name.substr(0, percent);
-    pattern.suffix = name.substr(d + 1);
+    if (percent == std::string::npos) {
+        pattern.paths = framePaths({}, use.path, use.frames); // checked frame by frame
+        for (std::size_t f = 0; f < pattern.paths.size(); ++f)
+            pattern.frame_of_path.emplace(pattern.paths[f], int(f));
+    } else {
+        const std::size_t d = name.find('d', percent);
+        pattern.folder = resolved(path.has_parent_path() ? path.parent_path() : fs::path("."));
+        pattern.prefix = name.substr(0, percent);
+        pattern.suffix = name.substr(d + 1);
+    }
+    if (pattern.frames <= kFramesStatted)
+        for (int f = 0; f < pattern.frames; ++f) {
+            const fs::path frame(framePath(use.path, f));
+            std::error_code error;
+            const bool link = fs::is_symlink(fs::symlink_status(frame, error));
+            const auto links = fs::hard_link_count(frame, error);
+            if (link || (!error && links > 1))
+                pattern.linked.emplace_back(f, frame.string());
+        }
     return pattern;
 }
 
@@ -104,32 +126,27 @@ std::optional<int> frameNamed(const Pattern& pattern, const fs::path& folder,
 // The frame of the pattern that is the file at path, if any.
 std::optional<int> frameThatIs(const Pattern& pattern, const std::string& path) {
     const fs::path file(path);
-    if (pattern.folder.empty()) { // the conversion is in the folder part: every frame
-        for (int f = 0; f < pattern.frames; ++f)
-            if (sameFile(framePath(pattern.text, f), file))
-                return f;
-        return std::nullopt;
-    }
     const fs::path where = resolved(file);
-    if (std::optional<int> frame =
-            frameNamed(pattern, where.parent_path(), where.filename().string()))
+    if (pattern.folder.empty()) {
+        if (auto found = pattern.frame_of_path.find(where.string());
+            found != pattern.frame_of_path.end())
+            return found->second;
+    } else if (std::optional<int> frame =
+                   frameNamed(pattern, where.parent_path(), where.filename().string())) {
         return frame;
-    std::error_code error;
-    if (pattern.frames <= kFramesStatted && fs::exists(file, error))
-        for (int f = 0; f < pattern.frames; ++f)
-            if (sameFile(framePath(pattern.text, f), file))
-                return f;
+    }
+    for (const auto& [frame, frame_path] : pattern.linked)
+        if (sameFile(frame_path, file))
+            return frame;
     return std::nullopt;
 }
 
-// Each frame's resolved path: the folder resolved once when the conversion is in the name.
-std::vector<std::string> framePaths(const Pattern& pattern) {
-    std::vector<std::string> paths(std::size_t(pattern.frames));
-    for (int f = 0; f < pattern.frames; ++f) {
-        const fs::path frame(framePath(pattern.text, f));
-        paths[std::size_t(f)] = pattern.folder.empty()
-                                    ? resolved(frame).string()
-                                    : (pattern.folder / frame.filename()).string();
+std::vector<std::string> framePaths(const fs::path& folder, const std::string& text, int frames) {
+    std::vector<std::string> paths(static_cast<std::size_t>(frames));
+    for (int f = 0; f < frames; ++f) {
+        const fs::path frame(framePath(text, f));
+        paths[std::size_t(f)] =
+            folder.empty() ? resolved(frame).string() : (folder / frame.filename()).string();
     }
     return paths;
 }
@@ -140,10 +157,12 @@ std::optional<std::pair<int, int>> sharedFrame(const Pattern& a, const Pattern& 
     if (!a.folder.empty() && !b.folder.empty() && a.folder != b.folder)
         return std::nullopt;
     std::unordered_map<std::string, int> b_frames;
-    const std::vector<std::string> b_paths = framePaths(b);
+    const std::vector<std::string> b_paths =
+        b.folder.empty() ? b.paths : framePaths(b.folder, b.text, b.frames);
     for (std::size_t g = 0; g < b_paths.size(); ++g)
         b_frames.emplace(b_paths[g], int(g));
-    const std::vector<std::string> a_paths = framePaths(a);
+    const std::vector<std::string> a_paths =
+        a.folder.empty() ? a.paths : framePaths(a.folder, a.text, a.frames);
     for (std::size_t f = 0; f < a_paths.size(); ++f)
         if (auto found = b_frames.find(a_paths[f]); found != b_frames.end())
             return std::pair{int(f), found->second};
@@ -161,24 +180,35 @@ std::string described(const FileUse& use, int frame) {
     return use.what + " " + quoted(use.path) + frameNote(use, frame);
 }
 
+// An output with its pattern taken apart once (an output is checked against every input).
+struct Prepared {
+    const FileUse* use;
+    std::optional<Pattern> pattern;
+};
+
+Prepared prepared(const FileUse& use) {
+    return {&use, use.frames > 0 ? std::optional<Pattern>(splitPattern(use)) : std::nullopt};
+}
+
 // Why a (an output) and b are one file, in one line, or empty.
-std::string clashOf(const FileUse& a, const FileUse& b, bool b_is_input) {
+std::string clashOf(const Prepared& a, const Prepared& b, bool b_is_input) {
     std::optional<std::pair<int, int>> frames; // a's and b's
-    if (a.frames == 0 && b.frames == 0) {
-        if (!isSpecial(a.path) && sameFile(a.path, b.path))
+    if (!a.pattern && !b.pattern) {
+        if (!isSpecial(a.use->path) && sameFile(a.use->path, b.use->path))
             frames = std::pair{0, 0};
-    } else if (a.frames > 0 && b.frames > 0) {
-        frames = sharedFrame(splitPattern(a), splitPattern(b));
+    } else if (a.pattern && b.pattern) {
+        frames = sharedFrame(*a.pattern, *b.pattern);
     } else {
-        const FileUse& plain = a.frames > 0 ? b : a;
-        if (!isSpecial(plain.path))
-            if (std::optional<int> frame =
-                    frameThatIs(splitPattern(a.frames > 0 ? a : b), plain.path))
+        const Prepared& plain = a.pattern ? b : a;
+        const Pattern& pattern = a.pattern ? *a.pattern : *b.pattern;
+        if (!isSpecial(plain.use->path))
+            if (std::optional<int> frame = frameThatIs(pattern, plain.use->path))
                 frames = std::pair{*frame, *frame};
     }
     if (!frames)
         return {};
-    const std::string first = described(a, frames->first), second = described(b, frames->second);
+    const std::string first = described(*a.use, frames->first),
+                      second = described(*b.use, frames->second);
     return b_is_input ? first + " is " + second +
                             ": vissort never overwrites an input; choose another path"
                       : first + " and " + second + " are one file: give each output its own path";
@@ -191,19 +221,19 @@ bool isOutput(const FileUse& use) {
 } // namespace
 
 std::string findClash(const std::vector<FileUse>& inputs, const std::vector<FileUse>& outputs) {
-    for (const FileUse& output : outputs) {
-        if (!isOutput(output))
-            continue;
+    std::vector<Prepared> written;
+    for (const FileUse& output : outputs)
+        if (isOutput(output))
+            written.push_back(prepared(output));
+    for (const Prepared& output : written)
         for (const FileUse& input : inputs)
             if (!input.path.empty())
-                if (std::string clash = clashOf(output, input, true); !clash.empty())
+                if (std::string clash = clashOf(output, prepared(input), true); !clash.empty())
                     return clash;
-    }
-    for (std::size_t i = 0; i < outputs.size(); ++i)
-        for (std::size_t j = i + 1; j < outputs.size(); ++j)
-            if (isOutput(outputs[i]) && isOutput(outputs[j]))
-                if (std::string clash = clashOf(outputs[i], outputs[j], false); !clash.empty())
-                    return clash;
+    for (std::size_t i = 0; i < written.size(); ++i)
+        for (std::size_t j = i + 1; j < written.size(); ++j)
+            if (std::string clash = clashOf(written[i], written[j], false); !clash.empty())
+                return clash;
     return {};
 }
 

@@ -222,6 +222,16 @@ TEST_F(InputOutput, VolumeFramePatternsAreCheckedToo) {
     expectRefused(
         {"volume", path("v_7.vtu"), "--frames", "8", "-o", path("v_%d.vtu")},
         {"-o '" + path("v_%d.vtu") + "' (frame 7: '" + path("v_7.vtu") + "') is the grid file"});
+    // A frame file that is a hard link to the input, named unlike it.
+    fs::create_hard_link(path("grid.vtu"), path("h_2.vtu"));
+    expectRefused({"volume", path("grid.vtu"), "--frames", "4", "-o", path("h_%d.vtu")},
+                  {"-o '" + path("h_%d.vtu") + "' (frame 2: '" + path("h_2.vtu") +
+                   "') is the grid file '" + path("grid.vtu") + "'"});
+    // A plain copy is another file.
+    fs::copy_file(path("grid.vtu"), path("c_2.vtu"));
+    EXPECT_EQ(run({"volume", path("grid.vtu"), "--frames", "4", "-o", path("c_%d.vtu")})
+                  .err.find("is the grid file"),
+              std::string::npos);
 }
 
 TEST_F(InputOutput, StandardOutputAndDevNullAreNotFiles) {
