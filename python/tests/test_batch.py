@@ -297,6 +297,9 @@ def test_a_frame_written_again_removes_what_a_killed_writer_left(tmp_path):
     # A writer killed mid-frame (another process: its host and pid in the name) left this.
     (tmp_path / ".frame_0003.otherhost-4242.partial.png").write_bytes(b"\x89PNG half")
     (tmp_path / ".frame_0004.otherhost-4242.partial.png").write_bytes(b"\x89PNG half")
+    # One killed inside write_image's own whole write of its partial frame left this.
+    (tmp_path / "..frame_0003.otherhost-4243.partial.png.vissort-1234abcd.partial").write_bytes(
+        b"\x89PNG half")
     image = np.full((2, 3, 4), 200, np.uint8)
     _tasks.write_atomically(str(tmp_path / "frame_0003.png"), image)
     # Frame 3's leftover is gone; frame 4's stays until frame 4 is written again.
@@ -306,6 +309,22 @@ def test_a_frame_written_again_removes_what_a_killed_writer_left(tmp_path):
 
     assert np.array_equal(np.asarray(Image.open(tmp_path / "frame_0003.png").convert("RGBA")),
                           image)
+
+
+def test_a_frame_whose_temporary_file_another_writer_took_is_that_writers(tmp_path, monkeypatch):
+    from vissort.batch import _tasks
+
+    def taken(path, image):  # write_image's rename found its temporary file gone
+        raise ValueError(f"cannot write {path}: No such file or directory")
+
+    monkeypatch.setattr(_tasks.vissort, "write_image", taken)
+    target = tmp_path / "frame_0002.png"
+    with pytest.raises(ValueError, match="No such file"):  # and no frame: a real failure
+        _tasks.write_atomically(str(target), np.zeros((2, 2, 4), np.uint8))
+    target.write_bytes(b"the other writer's whole frame")
+    _tasks.write_atomically(str(target), np.zeros((2, 2, 4), np.uint8))
+    assert target.read_bytes() == b"the other writer's whole frame"
+    assert os.listdir(tmp_path) == ["frame_0002.png"]
 
 
 def test_bad_outputs_and_sizes_are_refused(tmp_path):

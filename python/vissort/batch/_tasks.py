@@ -111,13 +111,24 @@ def write_atomically(path: str, image) -> None:
     stem, extension = os.path.splitext(name)
     mine = f"{socket.gethostname()}-{os.getpid()}"
     partial = os.path.join(folder, f".{stem}.{mine}.partial{extension}")
-    for stale in glob.glob(os.path.join(glob.escape(folder), f".{glob.escape(stem)}.*.partial"
-                                        f"{glob.escape(extension)}")):
+    # A killed writer's partial frame, and the temporary file of write_image's own whole write
+    # of that partial (docs/cli.md, "Outputs are written whole") when it died inside it.
+    leftovers = [f".{glob.escape(stem)}.*.partial{glob.escape(extension)}",
+                 f"..{glob.escape(stem)}.*.partial{glob.escape(extension)}.vissort-*.partial"]
+    for stale in (found for leftover in leftovers
+                  for found in glob.glob(os.path.join(glob.escape(folder), leftover))):
         if stale != partial:
             with contextlib.suppress(FileNotFoundError):
                 os.remove(stale)
     try:
-        vissort.write_image(partial, image)
+        try:
+            vissort.write_image(partial, image)
+        except ValueError as error:
+            # Another writer of this frame removed write_image's temporary file as a leftover
+            # before its rename: the frame is that writer's, whole.
+            if "No such file or directory" not in str(error) or not os.path.exists(path):
+                raise
+            return
         try:
             os.replace(partial, path)
         except FileNotFoundError:
