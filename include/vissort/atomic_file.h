@@ -49,6 +49,11 @@ private:
 Status writeFileAtomically(const std::string& path,
                            const std::function<Status(const std::string& write_path)>& write);
 
+/// Calls hook with each written temporary file just before its rename (none: no call). For the
+/// tests of a run killed mid-write, which hold it there (the command line's
+/// VISSORT_TEST_PAUSE_BEFORE_RENAME); set it before any write starts.
+void setBeforeRenameHook(std::function<void(const std::string& temporary)> hook);
+
 /// Removes the temporary files of the writes in progress in this process. For a handler of
 /// SIGINT or SIGTERM that then ends the process: it only unlinks names kept in fixed slots (no
 /// allocation, no lock). A process killed by SIGKILL leaves its temporary file behind, beside

@@ -13,5 +13,6 @@ void bindRender(pybind11::module_& m);
 void bindCollide(pybind11::module_& m);
 void bindVolume(pybind11::module_& m);
 void bindImage(pybind11::module_& m);
+void bindFiles(pybind11::module_& m);
 
 } // namespace vissort::python

@@ -26,4 +26,5 @@ PYBIND11_MODULE(_vissort, m) {
     vissort::python::bindCollide(m);
     vissort::python::bindVolume(m);
     vissort::python::bindImage(m);
+    vissort::python::bindFiles(m);
 }

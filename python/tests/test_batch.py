@@ -276,55 +276,28 @@ def test_a_task_that_fails_ends_the_batch_with_its_error(client):
     assert batch.collide(SCENE, 2, client=client, progress=False).frame_numbers == [0, 1]
 
 
-def test_a_frame_that_fails_to_be_written_leaves_no_file(tmp_path, monkeypatch):
-    from vissort.batch import _tasks
-
-    def write_half_then_fail(path, image):
-        with open(path, "wb") as partial:
-            partial.write(b"\x89PNG half")
-        raise OSError("disk full")
-
-    monkeypatch.setattr(_tasks.vissort, "write_image", write_half_then_fail)
-    with pytest.raises(OSError, match="disk full"):
-        _tasks.write_atomically(str(tmp_path / "frame_0001.png"),
-                                np.zeros((2, 2, 4), np.uint8))
-    assert os.listdir(tmp_path) == []
+@pytest.mark.skipif(not vissort.has_gl, reason="render needs OpenGL; this build has none")
+def test_a_frame_that_fails_to_be_written_fails_the_batch_and_leaves_no_partial_file(tmp_path):
+    (tmp_path / "frame_0001.png").mkdir()  # a folder where frame 1 goes: its write fails
+    with pytest.raises(ValueError, match="frame_0001.png"):
+        batch.render(SCENE, 2, size=SIZE, output=str(tmp_path / "frame_%04d.png"),
+                     progress=False)
+    assert sorted(os.listdir(tmp_path)) == ["frame_0000.png", "frame_0001.png"]
+    assert (tmp_path / "frame_0001.png").is_dir()
 
 
-def test_a_frame_written_again_removes_what_a_killed_writer_left(tmp_path):
-    from vissort.batch import _tasks
-
-    # A writer killed mid-frame (another process: its host and pid in the name) left this.
-    (tmp_path / ".frame_0003.otherhost-4242.partial.png").write_bytes(b"\x89PNG half")
-    (tmp_path / ".frame_0004.otherhost-4242.partial.png").write_bytes(b"\x89PNG half")
-    # One killed inside write_image's own whole write of its partial frame left this.
-    (tmp_path / "..frame_0003.otherhost-4243.partial.png.vissort-1234abcd.partial").write_bytes(
-        b"\x89PNG half")
-    image = np.full((2, 3, 4), 200, np.uint8)
-    _tasks.write_atomically(str(tmp_path / "frame_0003.png"), image)
-    # Frame 3's leftover is gone; frame 4's stays until frame 4 is written again.
-    assert sorted(os.listdir(tmp_path)) == [".frame_0004.otherhost-4242.partial.png",
-                                            "frame_0003.png"]
-    from PIL import Image
-
-    assert np.array_equal(np.asarray(Image.open(tmp_path / "frame_0003.png").convert("RGBA")),
-                          image)
-
-
-def test_a_frame_whose_temporary_file_another_writer_took_is_that_writers(tmp_path, monkeypatch):
-    from vissort.batch import _tasks
-
-    def taken(path, image):  # write_image's rename found its temporary file gone
-        raise ValueError(f"cannot write {path}: No such file or directory")
-
-    monkeypatch.setattr(_tasks.vissort, "write_image", taken)
-    target = tmp_path / "frame_0002.png"
-    with pytest.raises(ValueError, match="No such file"):  # and no frame: a real failure
-        _tasks.write_atomically(str(target), np.zeros((2, 2, 4), np.uint8))
-    target.write_bytes(b"the other writer's whole frame")
-    _tasks.write_atomically(str(target), np.zeros((2, 2, 4), np.uint8))
-    assert target.read_bytes() == b"the other writer's whole frame"
-    assert os.listdir(tmp_path) == ["frame_0002.png"]
+@pytest.mark.skipif(not vissort.has_gl, reason="render needs OpenGL; this build has none")
+def test_a_batch_removes_what_killed_writers_left_beside_its_frames(tmp_path):
+    # write_image's temporary files (.NAME.vissort-XXXXXXXX.partial) of writers killed mid-frame.
+    for name in ("frame_0001.png", "frame_0009.png", "other.png"):
+        (tmp_path / f".{name}.vissort-1234abcd.partial").write_bytes(b"\x89PNG half")
+    result = batch.render(SCENE, 3, size=SIZE, output=str(tmp_path / "frame_%04d.png"),
+                          progress=False)
+    assert result.frame_numbers == [0, 1, 2]
+    # The batch's frames' leftovers are gone; another frame's and another file's stay.
+    assert sorted(os.listdir(tmp_path)) == [".frame_0009.png.vissort-1234abcd.partial",
+                                            ".other.png.vissort-1234abcd.partial",
+                                            "frame_0000.png", "frame_0001.png", "frame_0002.png"]
 
 
 def test_bad_outputs_and_sizes_are_refused(tmp_path):

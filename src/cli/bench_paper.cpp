@@ -100,10 +100,14 @@ nlohmann::json pathJson(const PaperPath& path) {
 } // namespace
 
 std::vector<std::string> paperBenchFileNames() {
-    return {"paper.json",           "paper.csv",
-            "figure6.csv",          "figure6.png",
-            "figure5-plant-ms.png", "figure5-plant-queries.png",
-            "figure5-bunnies-ms.png", "figure5-bunnies-queries.png"};
+    return {"paper.json",
+            "paper.csv",
+            "figure6.csv",
+            "figure6.png",
+            "figure5-plant-ms.png",
+            "figure5-plant-queries.png",
+            "figure5-bunnies-ms.png",
+            "figure5-bunnies-queries.png"};
 }
 
 namespace {

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "cli/cli_common.h"
-#include "cli/output_clashes.h"
+#include "cli/command_files.h"
 #include "cli/text_output.h"
 #include "scenes/scene_library.h"
 #include "vissort/tet_grid.h"

@@ -1,9 +1,14 @@
 #include "cli/environment.h"
 
 #include <charconv>
+#include <chrono>
 #include <cstdlib>
+#include <iostream>
 #include <string>
 #include <string_view>
+#include <thread>
+
+#include "vissort/atomic_file.h"
 
 #if VISSORT_WITH_GL
 #include "vissort/gl_context.h"
@@ -40,6 +45,18 @@ Status applyEnvironment() {
         if (simd != "0" && simd != "1")
             return Status::failure("VISSORT_SIMD must be 0 or 1, not '" + std::string(simd) + "'");
         oracle_options.allow_simd = simd == "1";
+    }
+    if (std::string_view pause = variable("VISSORT_TEST_PAUSE_BEFORE_RENAME"); !pause.empty()) {
+        double seconds = 0;
+        const auto [end, error] =
+            std::from_chars(pause.data(), pause.data() + pause.size(), seconds);
+        if (error != std::errc{} || end != pause.data() + pause.size() || !(seconds >= 0))
+            return Status::failure("VISSORT_TEST_PAUSE_BEFORE_RENAME must be seconds, not '" +
+                                   std::string(pause) + "'");
+        setBeforeRenameHook([seconds](const std::string& temporary) {
+            std::cerr << "vissort: test pause before renaming " << temporary << std::endl;
+            std::this_thread::sleep_for(std::chrono::duration<double>(seconds));
+        });
     }
 #if VISSORT_WITH_GL
     if (std::string_view platform = variable("VISSORT_GL_PLATFORM"); !platform.empty()) {

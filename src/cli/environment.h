@@ -6,6 +6,8 @@
 //   VISSORT_GL_PLATFORM  auto, device or surfaceless: where the OpenGL context is made
 //   LP_NUM_THREADS       set to 0 unless set: Mesa's llvmpipe then draws on the calling thread,
 //                        4 times faster for the oracle's many small draws and queries
+//   VISSORT_TEST_PAUSE_BEFORE_RENAME=S  for the tests of a run killed mid-write: each written
+//                        file is held S seconds before its rename (atomic_file.h), said on stderr
 
 #include "vissort/oracles.h"
 #include "vissort/result.h"

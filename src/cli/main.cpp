@@ -5,12 +5,11 @@
 #include <filesystem>
 #include <iostream>
 
-#include "cli/command_inputs.h"
+#include "cli/command_files.h"
 #include "cli/command_line_errors.h"
 #include "cli/commands.h"
 #include "cli/environment.h"
 #include "cli/json_output.h"
-#include "cli/output_clashes.h"
 #include "cli/output_paths.h"
 #include "cli/progress.h"
 #include "vissort/atomic_file.h"
@@ -123,32 +122,36 @@ int main(int argc, char** argv) {
                    {volume_command, "-o", &volume.output, &volume.view.frames},
                    {volume_command, "--json", &volume.json.path},
                    {volume_command, "--error-map", &volume.error_map, &volume.view.frames}};
-    std::vector<FileUse> written;
+    std::vector<vissort::FileUse> written;
     for (const auto& output : outputs)
         if (output.command->parsed()) {
             if (const std::string reason = unwritableReason(*output.path); !reason.empty())
                 return fail(kExitFailure, std::string(output.option) + ": " + reason);
-            const bool pattern = output.frames && isFramePattern(*output.path);
+            const bool pattern = output.frames && vissort::isFramePattern(*output.path);
             written.push_back(
                 {output.option, *output.path, pattern ? std::max(1, *output.frames) : 0});
         }
     if (bench_command->parsed() && bench.what == "paper")
         for (const std::string& name : paperBenchFileNames())
             written.push_back({"--out", (std::filesystem::path(bench.out_dir) / name).string()});
-    // No output is an input or another output (output_clashes.h): the files known from the
+    // No output is an input or another output (output_files.h): the files known from the
     // command line now, a scene's own files once it is loaded (loadSceneOrReport).
-    const std::vector<FileUse> read = commandInputs({{order_command, order.scene},
-                                                     {info_command, info.scene},
-                                                     {render_command, render.scene},
-                                                     {collide_command, collide.scene},
-                                                     {view_command, view.scene},
-                                                     {volume_command, volume.grid}},
-                                                    {{volume_command, "--tf", volume.tf},
-                                                     {view_command, "--tf", view.tf},
-                                                     {view_command, "--script", view.script}});
-    if (const std::string clash = findClash(read, written); !clash.empty())
+    const std::vector<vissort::FileUse> read =
+        commandInputs({{order_command, order.scene},
+                       {info_command, info.scene},
+                       {render_command, render.scene},
+                       {collide_command, collide.scene},
+                       {view_command, view.scene},
+                       {volume_command, volume.grid}},
+                      {{volume_command, "--tf", volume.tf},
+                       {view_command, "--tf", view.tf},
+                       {view_command, "--script", view.script}});
+    vissort::OutputFiles output_files(std::move(written));
+    if (std::string clash = output_files.clashWith(read); !clash.empty())
         return fail(kExitFailure, clash);
-    declareOutputs(std::move(written));
+    if (std::string clash = output_files.clashAmongThemselves(); !clash.empty())
+        return fail(kExitFailure, clash);
+    declareOutputs(std::move(output_files));
     for (const JsonOutput* json :
          {&order.json, &info.json, &bench.json, &render.json, &collide.json, &volume.json})
         reserveStandardOutputFor(*json);

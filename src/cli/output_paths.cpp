@@ -3,11 +3,9 @@
 #include "cli/output_paths.h"
 
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <system_error>
 
 #include <unistd.h>
@@ -62,17 +60,6 @@ Status writeTextFile(const std::string& path, const std::function<void(std::ostr
             return Status::failure(cannotWrite(path));
         return Status::ok();
     });
-}
-
-bool isFramePattern(const std::string& path) {
-    static const std::regex pattern(R"([^%]*%0?[0-9]?d[^%]*)");
-    return std::regex_match(path, pattern);
-}
-
-std::string framePath(const std::string& pattern, int frame) {
-    char buffer[4096];
-    std::snprintf(buffer, sizeof(buffer), pattern.c_str(), frame);
-    return buffer;
 }
 
 } // namespace vissort::cli

@@ -24,11 +24,4 @@ std::string cannotWrite(const std::string& path);
 /// the text into a stream on a temporary file beside it. "cannot write PATH: REASON" on failure.
 Status writeTextFile(const std::string& path, const std::function<void(std::ostream&)>& emit);
 
-/// Whether path is a frame pattern, "frame_%04d.png" and the like: exactly one %d conversion
-/// (flags 0-9 only), no other '%'.
-bool isFramePattern(const std::string& path);
-
-/// The pattern's path for one frame.
-std::string framePath(const std::string& pattern, int frame);
-
 } // namespace vissort::cli

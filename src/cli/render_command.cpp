@@ -21,6 +21,7 @@
 #include "cli/text_output.h"
 #include "vissort/frame_driver.h"
 #include "vissort/frame_pipeline.h"
+#include "vissort/output_files.h"
 #include "vissort/transparency_renderer.h"
 
 #if VISSORT_WITH_GL

@@ -12,6 +12,7 @@
 #include "cli/text_output.h"
 #include "cli/volume_options.h"
 #include "harnesses/volume_comparison.h"
+#include "vissort/output_files.h"
 #include "vissort/volume.h"
 
 namespace vissort::cli {

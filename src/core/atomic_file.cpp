@@ -5,16 +5,13 @@
 #include <array>
 #include <atomic>
 #include <cerrno>
-#include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <iostream>
+#include <functional>
 #include <optional>
 #include <random>
 #include <system_error>
-#include <thread>
 
 namespace vissort {
 namespace {
@@ -51,14 +48,11 @@ void releasePending(int slot) {
         g_pending[std::size_t(slot)].state.store(0);
 }
 
+// Eight hex digits; a name already taken is tried again ("x" mode below).
 std::string randomSuffix() {
-    static std::atomic<uint64_t> counter{0};
-    thread_local std::mt19937_64 random{
-        std::random_device{}() ^
-        (uint64_t(std::chrono::steady_clock::now().time_since_epoch().count()) << 1)};
-    const uint64_t bits = random() ^ counter.fetch_add(1);
-    char text[17];
-    std::snprintf(text, sizeof text, "%08x", unsigned(bits ^ (bits >> 32)));
+    thread_local std::mt19937 random{std::random_device{}()};
+    char text[9];
+    std::snprintf(text, sizeof text, "%08x", unsigned(random()));
     return text;
 }
 
@@ -83,15 +77,8 @@ std::string createTemporaryBeside(const fs::path& target) {
     return {};
 }
 
-// For the tests of a killed write (tests/cli/atomic_output_cli_tests.cpp): holds the written
-// temporary file this many seconds before the rename, saying so on stderr.
-void pauseBeforeRenameForTests(const std::string& temporary) {
-    const char* seconds = std::getenv("VISSORT_TEST_PAUSE_BEFORE_RENAME");
-    if (!seconds || !*seconds)
-        return;
-    std::cerr << "vissort: test pause before renaming " << temporary << std::endl;
-    std::this_thread::sleep_for(std::chrono::duration<double>(std::atof(seconds)));
-}
+// Called with each written temporary file before its rename (setBeforeRenameHook).
+std::function<void(const std::string&)> g_before_rename;
 
 } // namespace
 
@@ -158,7 +145,8 @@ Status AtomicFile::commit() {
     std::error_code error;
     if (state.permissions)
         fs::permissions(state.temporary, *state.permissions, error); // best effort
-    pauseBeforeRenameForTests(state.temporary);
+    if (g_before_rename)
+        g_before_rename(state.temporary);
     fs::rename(state.temporary, state.target, error);
     if (error) {
         state.committed = false; // the temporary file is still there: removed with the state
@@ -175,6 +163,10 @@ Status writeFileAtomically(const std::string& path,
     if (Status written = write(file.value->writePath()); !written)
         return written;
     return file.value->commit();
+}
+
+void setBeforeRenameHook(std::function<void(const std::string& temporary)> hook) {
+    g_before_rename = std::move(hook);
 }
 
 void removeTemporaryFilesOfWritesInProgress() noexcept {

@@ -15,6 +15,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "scratch_folder.h"
+
 namespace vissort {
 
 namespace fs = std::filesystem;
@@ -70,13 +72,8 @@ protected:
         // Progress lines depend on timing (a slow sanitizer build crosses the first second):
         // off unless a test asks for them (VISSORT_PROGRESS_SECONDS=0 in its wrapper).
         setenv("VISSORT_PROGRESS_SECONDS", "100000", 1);
-        std::string pattern = (fs::temp_directory_path() / "vissort_cli_XXXXXX").string();
-        ASSERT_NE(mkdtemp(pattern.data()), nullptr);
-        dir_ = pattern;
-    }
-    void TearDown() override {
-        std::error_code ignored;
-        fs::remove_all(dir_, ignored);
+        ASSERT_FALSE(scratch_.path().empty());
+        dir_ = scratch_.path();
     }
 
     std::string path(const std::string& name) const { return (dir_ / name).string(); }
@@ -138,7 +135,8 @@ protected:
         }
     }
 
-    fs::path dir_;
+    ScratchFolder scratch_;
+    fs::path dir_; // scratch_'s path
 };
 
 } // namespace vissort

@@ -3,13 +3,14 @@
 
 #include "vissort/atomic_file.h"
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
+
+#include "scratch_folder.h"
 
 namespace vissort {
 namespace {
@@ -19,13 +20,8 @@ namespace fs = std::filesystem;
 class AtomicFileTest : public testing::Test {
 protected:
     void SetUp() override {
-        std::string pattern = (fs::temp_directory_path() / "vissort_atomic_XXXXXX").string();
-        ASSERT_NE(mkdtemp(pattern.data()), nullptr);
-        dir_ = pattern;
-    }
-    void TearDown() override {
-        std::error_code ignored;
-        fs::remove_all(dir_, ignored);
+        ASSERT_FALSE(scratch_.path().empty());
+        dir_ = scratch_.path();
     }
     std::string path(const std::string& name) const { return (dir_ / name).string(); }
     static std::string read(const fs::path& file) {
@@ -48,7 +44,8 @@ protected:
         });
     }
 
-    fs::path dir_;
+    ScratchFolder scratch_;
+    fs::path dir_; // scratch_'s path
 };
 
 TEST_F(AtomicFileTest, WritesANewFileAndLeavesNothingElse) {
@@ -159,6 +156,21 @@ TEST_F(AtomicFileTest, ASignalsCleanUpRemovesTheWritesInProgress) {
     EXPECT_FALSE(fs::exists(file.value->writePath()));
     EXPECT_EQ(read(path("out.txt")), "old");
     EXPECT_EQ(entries(), 1u);
+}
+
+TEST_F(AtomicFileTest, TheHookSeesTheWholeTemporaryFileBeforeTheRename) {
+    put(path("out.txt"), "old");
+    std::string held, target_then;
+    setBeforeRenameHook([&](const std::string& temporary) {
+        held = read(temporary);
+        target_then = read(path("out.txt"));
+    });
+    const Status written = writeText(path("out.txt"), "new");
+    setBeforeRenameHook({});
+    ASSERT_TRUE(written);
+    EXPECT_EQ(held, "new");
+    EXPECT_EQ(target_then, "old");
+    EXPECT_EQ(read(path("out.txt")), "new");
 }
 
 TEST_F(AtomicFileTest, ALongNameStillGetsATemporaryFile) {

@@ -21,6 +21,7 @@ from dataclasses import dataclass
 from typing import Any, List, Optional, Sequence, Tuple, Union
 
 import vissort
+from vissort import _vissort
 
 from . import _outputs
 from ._chunks import DEFAULT_CHUNK_FRAMES, Chunk, cut
@@ -86,12 +87,8 @@ def _size(size: Sequence[int]) -> Tuple[int, int]:
 
 
 def _check_pattern(output: str, frames: int) -> None:
-    try:
-        names = {output % 0, output % 1}
-    except (TypeError, ValueError):
-        raise ValueError(f"output must hold one integer field such as %04d for the frame, got "
-                         f"'{output}'") from None
-    if frames > 1 and len(names) < 2:
+    # The command line's patterns: one %d field (flags 0-9 only), no other '%'.
+    if not _vissort._is_frame_pattern(output):
         raise ValueError(f"output must hold one integer field such as %04d for the frame, got "
                          f"'{output}'")
     folder = os.path.dirname(output % 0) or "."
@@ -156,7 +153,11 @@ def render(scene: SceneSpec, frames: int, *, first: int = 0, path: str = "static
         _check_pattern(output, frames)
         _check_inputs_kept(scene, source, output, range(first, first + frames))
     job = Job("render", source.spec, path, _size(size), first + frames, dict(options), output)
-    return _run(job, source, first, frames, chunk_frames, client, progress)
+    try:
+        return _run(job, source, first, frames, chunk_frames, client, progress)
+    finally:
+        if output is not None:  # the tasks are over: no running writer's file is taken
+            _outputs.remove_leftovers(output, range(first, first + frames))
 
 
 def collide(scene: SceneSpec, frames: int, *, first: int = 0, method: str = "vissort",

@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import argparse
 import csv
-import os
 import sys
 from typing import Any, List, Optional
 
@@ -99,8 +98,7 @@ def main(argv: Optional[List[str]] = None) -> int:
         if args.kind != "render" and args.output is not None:
             arrays = {f"frame_{f:06d}": np.asarray(v) for f, v in
                       zip(result.frame_numbers, result.results)}
-            _outputs.write_whole(_npz_path(args.output),
-                                 lambda path: np.savez_compressed(path, **arrays), suffix=".npz")
+            _outputs.write_whole(_npz_path(args.output), lambda path: _write_npz(path, arrays))
         if args.csv is not None:
             _outputs.write_whole(args.csv, lambda path: _write_csv(path, result.stats))
     except (ValueError, OSError, RuntimeError) as error:
@@ -127,6 +125,12 @@ def _check_outputs(args: argparse.Namespace) -> None:
     if args.csv is not None:
         outputs.append(_outputs.FileUse("--csv", args.csv))
     _outputs.check(_outputs.scene_inputs(None, args.scene), outputs)
+
+
+def _write_npz(path: str, arrays: dict) -> None:
+    # Through a file object: numpy adds .npz to a name without it, such as a temporary file's.
+    with open(path, "wb") as out:
+        np.savez_compressed(out, **arrays)
 
 
 def _write_csv(path: str, stats: Any) -> None:

@@ -6,14 +6,11 @@ plain data, never a vissort object."""
 
 from __future__ import annotations
 
-import contextlib
 import ctypes
 import ctypes.util
-import glob
 import hashlib
 import os
 import pickle
-import socket
 from collections import OrderedDict
 from dataclasses import dataclass, field
 from typing import Any, Dict, List, Optional, Tuple
@@ -100,45 +97,6 @@ def load_scene(spec: str, data: Optional[bytes] = None) -> vissort.Scene:
     return scene
 
 
-def write_atomically(path: str, image) -> None:
-    """Writes image to path through a temporary file in the same folder, renamed over path once
-    complete: a failure leaves no half-written frame, and a frame written twice (a retried
-    chunk) is replaced whole. A writer killed mid-frame leaves its temporary file; whoever
-    writes that frame next (the retry) removes it first. Should two writers of one frame meet
-    (a chunk Dask ran twice at once), one's removal can take the other's temporary file: the
-    frame is then the survivor's, whole."""
-    folder, name = os.path.split(path)
-    stem, extension = os.path.splitext(name)
-    mine = f"{socket.gethostname()}-{os.getpid()}"
-    partial = os.path.join(folder, f".{stem}.{mine}.partial{extension}")
-    # A killed writer's partial frame, and the temporary file of write_image's own whole write
-    # of that partial (docs/cli.md, "Outputs are written whole") when it died inside it.
-    leftovers = [f".{glob.escape(stem)}.*.partial{glob.escape(extension)}",
-                 f"..{glob.escape(stem)}.*.partial{glob.escape(extension)}.vissort-*.partial"]
-    for stale in (found for leftover in leftovers
-                  for found in glob.glob(os.path.join(glob.escape(folder), leftover))):
-        if stale != partial:
-            with contextlib.suppress(FileNotFoundError):
-                os.remove(stale)
-    try:
-        try:
-            vissort.write_image(partial, image)
-        except ValueError as error:
-            # Another writer of this frame removed write_image's temporary file as a leftover
-            # before its rename: the frame is that writer's, whole.
-            if "No such file or directory" not in str(error) or not os.path.exists(path):
-                raise
-            return
-        try:
-            os.replace(partial, path)
-        except FileNotFoundError:
-            if not os.path.exists(path):  # not another writer's whole frame either
-                raise
-    finally:
-        with contextlib.suppress(FileNotFoundError):
-            os.remove(partial)
-
-
 _allocator_tuned = False
 
 
@@ -211,8 +169,10 @@ def _frame(job: Job, engine: _Engine, f: int, keep: bool) -> FrameResult:
             value = engine.worker.render(camera, job.size, time=t)
             stats = dict(engine.worker.stats)
             if job.output is not None and keep:
+                # Whole or not at all (write_image's temporary file, renamed): a retried chunk
+                # replaces its frames whole; a killed writer's leftover goes at the batch's end.
                 path = job.output % f
-                write_atomically(path, value)
+                vissort.write_image(path, value)
                 value = path
     engine.last_frame = f
     return FrameResult(f, t, value, stats, cycles)

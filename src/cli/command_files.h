@@ -1,13 +1,13 @@
 #pragma once
-// The files a command reads, as its command line names them: checked against its outputs before
-// any work (output_clashes.h).
+// The files a command reads and writes, as its command line names them: no output may be an
+// input or another output (output_files.h), checked before any work.
 
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
-#include "cli/output_clashes.h"
+#include "vissort/output_files.h"
 
 namespace vissort::cli {
 
@@ -30,5 +30,12 @@ struct FileArgument {
 /// scene's meshes) are checked once it is loaded (loadSceneOrReport).
 std::vector<FileUse> commandInputs(const std::vector<SceneArgument>& scenes,
                                    const std::vector<FileArgument>& files);
+
+/// Keeps this run's outputs, so that the inputs known only once the scene is read (a JSON
+/// scene's meshes, an OBJ's .mtl: Scene::source_files) are checked before any work too.
+void declareOutputs(OutputFiles outputs);
+
+/// The declared outputs' clash with inputs (OutputFiles::clashWith), or empty.
+std::string checkInputs(const std::vector<FileUse>& inputs);
 
 } // namespace vissort::cli

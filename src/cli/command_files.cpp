@@ -1,12 +1,14 @@
-// The files a command reads, as its command line names them (command_inputs.h).
+// The files a command reads and writes (command_files.h).
 
-#include "cli/command_inputs.h"
+#include "cli/command_files.h"
 
 #include "vissort/tet_grid.h"
 #include "vissort/transfer_function.h"
 
 namespace vissort::cli {
 namespace {
+
+OutputFiles g_declared_outputs;
 
 bool isTransferPreset(const std::string& name) {
     for (const TransferPreset& preset : transferPresets())
@@ -37,6 +39,14 @@ std::vector<FileUse> commandInputs(const std::vector<SceneArgument>& scenes,
         inputs.push_back({"the " + file.option + " file", file.value});
     }
     return inputs;
+}
+
+void declareOutputs(OutputFiles outputs) {
+    g_declared_outputs = std::move(outputs);
+}
+
+std::string checkInputs(const std::vector<FileUse>& inputs) {
+    return g_declared_outputs.clashWith(inputs);
 }
 
 } // namespace vissort::cli
