@@ -77,7 +77,7 @@ bool CpuOracle::Impl::anyBehind(uint32_t primitive) {
     assert(primitive < primitive_count_);
     ++stats_.queries;
     makeImage<false>(primitive);
-    QueryContext context{&undecided_, clock_, &arbitration_lists_};
+    QueryContext context{&undecided_, clock_};
     return queryIn(primitive, wholeScreen(), stats_, context);
 }
 

@@ -3,6 +3,8 @@
 
 #include "raster/cpu_oracle_impl.h"
 
+#include <optional>
+
 namespace vissort {
 
 void CpuOracle::Impl::ensureTileIndex() {
@@ -11,111 +13,127 @@ void CpuOracle::Impl::ensureTileIndex() {
     const std::lock_guard<std::mutex> lock(tile_index_mutex_);
     if (tile_index_built_.load(std::memory_order_relaxed))
         return;
-    // Counting sort of (cell, set-up) over each set-up's pixel bounds.
-    const std::size_t cells = std::size_t(cellsX()) * cellsY();
-    cell_starts_.assign(cells + 1, 0);
-    const auto forEachCell = [&](const StoredSetup& s, auto&& visit) {
-        for (uint32_t cy = s.py_min >> kCellShift; cy <= uint32_t(s.py_max >> kCellShift); ++cy)
-            for (uint32_t cx = s.px_min >> kCellShift; cx <= uint32_t(s.px_max >> kCellShift); ++cx)
-                visit(std::size_t(cy) * cellsX() + cx);
+    // Counting sort of (tile, set-up) over each set-up's pixel bounds.
+    const std::size_t tiles = std::size_t(tiles_x_) * tiles_y_;
+    tile_starts_.assign(tiles + 1, 0);
+    const auto forEachTile = [&](const StoredSetup& s, auto&& visit) {
+        for (uint32_t ty = s.py_min >> kTileShift; ty <= uint32_t(s.py_max >> kTileShift); ++ty)
+            for (uint32_t tx = s.px_min >> kTileShift; tx <= uint32_t(s.px_max >> kTileShift); ++tx)
+                visit(std::size_t(ty) * tiles_x_ + tx);
     };
     for (const StoredSetup& s : setups_)
-        forEachCell(s, [&](std::size_t cell) { ++cell_starts_[cell + 1]; });
-    for (std::size_t c = 0; c < cells; ++c)
-        cell_starts_[c + 1] += cell_starts_[c];
-    cell_setups_.resize(cell_starts_[cells]);
-    std::vector<uint32_t> next(cell_starts_.begin(), cell_starts_.end() - 1);
+        forEachTile(s, [&](std::size_t tile) { ++tile_starts_[tile + 1]; });
+    for (std::size_t t = 0; t < tiles; ++t)
+        tile_starts_[t + 1] += tile_starts_[t];
+    tile_setups_.resize(tile_starts_[tiles]);
+    std::vector<uint32_t> next(tile_starts_.begin(), tile_starts_.end() - 1);
     for (uint32_t k = 0; k < setups_.size(); ++k)
-        forEachCell(setups_[k], [&](std::size_t cell) { cell_setups_[next[cell]++] = k; });
+        forEachTile(setups_[k], [&](std::size_t tile) { tile_setups_[next[tile]++] = k; });
+    // No tile's pixel lists made yet (their vectors kept: a rebind reuses their memory).
+    pixel_lists_.resize(tiles);
+    pixel_lists_made_ = std::make_unique<std::atomic<bool>[]>(tiles);
     tile_index_built_.store(true, std::memory_order_release);
 }
 
-bool CpuOracle::Impl::behindSomethingDrawn(uint32_t triangle, uint32_t px, uint32_t py,
+const uint32_t* CpuOracle::Impl::pixelList(uint32_t px, uint32_t py, uint32_t& count) {
+    const std::size_t tile = std::size_t(py >> kTileShift) * tiles_x_ + (px >> kTileShift);
+    if (!pixel_lists_made_[tile].load(std::memory_order_acquire)) {
+        const std::lock_guard<std::mutex> lock(tile_index_mutex_);
+        if (!pixel_lists_made_[tile].load(std::memory_order_relaxed)) {
+            makePixelLists(tile, pixel_lists_[tile]);
+            pixel_lists_made_[tile].store(true, std::memory_order_release);
+        }
+    }
+    const std::vector<uint32_t>& lists = pixel_lists_[tile];
+    const uint32_t pixel = (py & (kTileSize - 1)) * kTileSize + (px & (kTileSize - 1));
+    count = lists[pixel + 1] - lists[pixel];
+    return lists.data() + lists[pixel];
+}
+
+void CpuOracle::Impl::makePixelLists(std::size_t tile, std::vector<uint32_t>& lists) const {
+    // (pixel of the tile, set-up) for every pixel a set-up's draws cover, then sorted by pixel
+    // and, within a pixel, so that copies of a triangle (equal planes first of all) lie side by
+    // side: behindSomethingDrawn asks about one of a run of copies only.
+    struct Entry {
+        uint32_t pixel;
+        double d0;
+        uint32_t setup;
+    };
+    std::vector<Entry> entries;
+    const uint32_t tx = uint32_t(tile % tiles_x_), ty = uint32_t(tile / tiles_x_);
+    const uint32_t x_first = tx << kTileShift, y_first = ty << kTileShift;
+    const uint32_t x_end = std::min(x_first + kTileSize, width_);
+    const uint32_t y_end = std::min(y_first + kTileSize, height_);
+    for (uint32_t j = tile_starts_[tile]; j < tile_starts_[tile + 1]; ++j) {
+        const uint32_t k = tile_setups_[j];
+        const StoredSetup& s = setups_[k];
+        for (uint32_t py = std::max<uint32_t>(y_first, s.py_min); py < y_end && py <= s.py_max;
+             ++py)
+            for (uint32_t px = std::max<uint32_t>(x_first, s.px_min); px < x_end && px <= s.px_max;
+                 ++px)
+                if (certainlyCovers(s, px, py))
+                    entries.push_back({(py - y_first) * kTileSize + (px - x_first), s.d0, k});
+        if (s.band_first == 0)
+            continue;
+        const uint32_t count = band_pixels_[s.band_first];
+        const uint32_t* pixels = band_pixels_.data() + s.band_first + 1;
+        for (uint32_t i = 0; i < count; ++i) {
+            const uint32_t px = pixels[i] & 0xFFFF, py = pixels[i] >> 16;
+            if (px >= x_first && px < x_end && py >= y_first && py < y_end &&
+                !certainlyCovers(s, px, py))
+                entries.push_back({(py - y_first) * kTileSize + (px - x_first), s.d0, k});
+        }
+    }
+    std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+        if (a.pixel != b.pixel)
+            return a.pixel < b.pixel;
+        if (a.d0 != b.d0)
+            return a.d0 < b.d0;
+        return a.setup < b.setup;
+    });
+    lists.assign(kTilePixels + 1 + entries.size(), 0);
+    const uint32_t first = uint32_t(kTilePixels + 1);
+    for (const Entry& e : entries)
+        ++lists[e.pixel + 1];
+    lists[0] = first;
+    for (std::size_t p = 0; p < kTilePixels; ++p)
+        lists[p + 1] += lists[p];
+    for (std::size_t i = 0; i < entries.size(); ++i)
+        lists[first + i] = entries[i].setup;
+}
+
+bool CpuOracle::Impl::behindSomethingDrawn(uint32_t query_setup, uint32_t px, uint32_t py,
                                            QueryContext& context, float fragment, float error,
                                            CpuOracleStats& stats) {
     ++stats.arbitrations;
     ensureTileIndex();
-    const detail::DepthArbiter::Query query = arbiter_.query(triangle, px, py);
-    const uint32_t cell = (py >> kCellShift) * cellsX() + (px >> kCellShift);
-    // Certainly farther than the query's fragment, by the floats, or not there at all: set-up k
-    // decides nothing here.
-    const auto irrelevant = [&](uint32_t k) {
+    const uint32_t triangle = setups_[query_setup].triangle();
+    uint32_t count = 0;
+    const uint32_t* list = pixelList(px, py, count);
+    std::optional<detail::DepthArbiter::Query> query; // made at the first set-up to ask about
+    const StoredSetup* asked = nullptr;               // the last one asked about: not nearer
+    for (uint32_t i = 0; i < count; ++i) {
+        const uint32_t k = list[i];
         const StoredSetup& s = setups_[k];
-        return px < s.px_min || px > s.px_max || py < s.py_min || py > s.py_max ||
-               fragmentAt(s, px, py) - double(errors_[k]) > double(fragment) + double(error) ||
-               !setupCovers(s, px, py);
-    };
-    std::vector<uint32_t>* listed = arbitrationList(context, triangle, cell);
-    if (listed == nullptr) {
-        for (uint32_t i = cell_starts_[cell]; i < cell_starts_[cell + 1]; ++i) {
-            const uint32_t k = cell_setups_[i];
-            if (setups_[k].triangle() != triangle && !irrelevant(k) &&
-                drawnBefore(primitiveOfSetup(k), context.time) &&
-                arbiter_.nearness(query, setups_[k].triangle()) ==
-                    detail::DepthArbiter::Nearness::nearer)
-                return true;
-        }
-        return false;
-    }
-    return arbiter_.anyNearer(
-        query, *listed, [&](uint32_t k) { return setups_[k].triangle(); }, irrelevant);
-}
-
-std::vector<uint32_t>* CpuOracle::Impl::arbitrationList(QueryContext& context, uint32_t triangle,
-                                                        uint32_t cell) {
-    ArbitrationLists& lists = *context.lists;
-    if (lists.generation != arbitration_generation_ || lists.triangle != triangle ||
-        lists.time != context.time) {
-        lists.generation = arbitration_generation_;
-        lists.triangle = triangle;
-        lists.time = context.time;
-        lists.used = 0;
-    }
-    for (std::size_t i = 0; i < lists.used; ++i) {
-        CellList& found = lists.cells[i];
-        if (found.cell != cell)
+        // The query's own triangle, one certainly farther than the query's fragment by the
+        // floats, or one not drawn before the query decides nothing here.
+        if (s.triangle() == triangle ||
+            fragmentAt(s, px, py) - double(errors_[k]) > double(fragment) + double(error) ||
+            !drawnBefore(primitiveOfSetup(k), context.time))
             continue;
-        if (!found.built) {
-            found.built = true;
-            std::vector<uint32_t>& list = found.setups;
-            list.clear();
-            for (uint32_t j = cell_starts_[cell]; j < cell_starts_[cell + 1]; ++j) {
-                const uint32_t k = cell_setups_[j];
-                if (setups_[k].triangle() != triangle &&
-                    drawnBefore(primitiveOfSetup(k), context.time))
-                    list.push_back(k);
-            }
-        } else if (!found.deduplicated && ++found.scans >= kDedupeAfterScans) {
-            dropCopies(found.setups);
-            found.deduplicated = true;
-        }
-        return &found.setups;
+        // A copy of the last triangle asked about (the same shape: kSetupShapeBytes) answers
+        // alike: where a query ties with a stack of copies (assimp's OBJ/box_longline.obj has
+        // 236 of each face) a pixel costs one question, not the stack.
+        if (asked != nullptr && asked->d0 == s.d0 && std::memcmp(asked, &s, kSetupShapeBytes) == 0)
+            continue;
+        if (!query)
+            query = arbiter_.query(triangle, px, py);
+        if (arbiter_.nearnessCovering(*query, s.triangle()) ==
+            detail::DepthArbiter::Nearness::nearer)
+            return true;
+        asked = &s;
     }
-    if (lists.used == lists.cells.size())
-        lists.cells.emplace_back();
-    CellList& noted = lists.cells[lists.used++];
-    noted.cell = cell;
-    noted.scans = 1;
-    noted.built = noted.deduplicated = false;
-    return nullptr;
-}
-
-void CpuOracle::Impl::dropCopies(std::vector<uint32_t>& list) const {
-    // Copies of a triangle (the same corners in the same order) have the same set-ups but for
-    // the triangle and its band list's place, and answer alike: one of each is enough.
-    const auto bytes = [&](uint32_t k) {
-        return reinterpret_cast<const unsigned char*>(&setups_[k]);
-    };
-    const auto less = [&](uint32_t a, uint32_t b) {
-        const int c = std::memcmp(bytes(a), bytes(b), kSetupShapeBytes);
-        return c != 0 ? c < 0 : a < b;
-    };
-    std::sort(list.begin(), list.end(), less);
-    list.erase(std::unique(list.begin(), list.end(),
-                           [&](uint32_t a, uint32_t b) {
-                               return std::memcmp(bytes(a), bytes(b), kSetupShapeBytes) == 0;
-                           }),
-               list.end());
+    return false;
 }
 
 bool CpuOracle::Impl::setupCovers(const StoredSetup& s, uint32_t px, uint32_t py) const {
@@ -144,7 +162,7 @@ bool CpuOracle::Impl::resolve(QueryContext& context, const TileRect& rect, CpuOr
         case detail::Decision::behind:
             return true;
         case detail::Decision::undecided:
-            return behindSomethingDrawn(s.triangle(), px, py, context, fragment, errors_[k], stats);
+            return behindSomethingDrawn(k, px, py, context, fragment, errors_[k], stats);
         case detail::Decision::not_behind:
             return false;
         }
@@ -164,7 +182,8 @@ bool CpuOracle::Impl::resolve(QueryContext& context, const TileRect& rect, CpuOr
                     behind = certainlyCovers(s, px, py) && setupBehind(u.what, px, py);
         } else {
             // A far image's tile: each pixel whose image depth is undecided, against every
-            // triangle of the primitive the exact model says covers it.
+            // triangle of the primitive the exact model says covers it. The primitive's set-ups
+            // that may cover a pixel of the tile are a run of the tile's index (ascending).
             const detail::DepthImages& far = far_images_;
             const uint32_t tile = far.tile(u.where);
             const uint32_t slot = slotOf(u.what);
@@ -172,6 +191,13 @@ bool CpuOracle::Impl::resolve(QueryContext& context, const TileRect& rect, CpuOr
             const float band_width = bandOf(image_errors_[slot], storedError(state));
             const uint32_t tx = tile % tiles_x_, ty = tile / tiles_x_;
             const float* image = far.depths(u.where);
+            ensureTileIndex();
+            const uint32_t* const index_first = tile_setups_.data() + tile_starts_[tile];
+            const uint32_t* const index_end = tile_setups_.data() + tile_starts_[tile + 1];
+            const uint32_t* const run_first =
+                std::lower_bound(index_first, index_end, primitive_setups_[u.what]);
+            const uint32_t* const run_end =
+                std::lower_bound(run_first, index_end, primitive_setups_[u.what + 1]);
             for (uint32_t py = std::max(ty << kTileShift, row_first);
                  !behind && py < std::min((ty + 1) << kTileShift, row_end); ++py)
                 for (uint32_t px = tx << kTileShift;
@@ -184,17 +210,19 @@ bool CpuOracle::Impl::resolve(QueryContext& context, const TileRect& rect, CpuOr
                     const detail::ExactFragments& model = arbiter_.model();
                     const detail::PixelRay ray = model.rays().centre(px, py);
                     uint32_t last = std::numeric_limits<uint32_t>::max();
-                    for (uint32_t k = primitive_setups_[u.what];
-                         !behind && k < primitive_setups_[u.what + 1]; ++k) {
+                    for (const uint32_t* at = run_first; !behind && at != run_end; ++at) {
+                        const uint32_t k = *at;
                         const StoredSetup& s = setups_[k];
                         if (s.triangle() == last || px < s.px_min || px > s.px_max ||
                             py < s.py_min || py > s.py_max)
                             continue;
                         last = s.triangle();
-                        behind = model.covers(
-                                     ray, detail::TriangleCorners::of(positions_, s.triangle())) &&
-                                 behindSomethingDrawn(s.triangle(), px, py, context,
-                                                      fragmentAt(s, px, py), errors_[k], stats);
+                        // Certain coverage by the floats is the exact model's too.
+                        behind = (certainlyCovers(s, px, py) ||
+                                  model.covers(ray, detail::TriangleCorners::of(positions_,
+                                                                                s.triangle()))) &&
+                                 behindSomethingDrawn(k, px, py, context, fragmentAt(s, px, py),
+                                                      errors_[k], stats);
                     }
                 }
         }

@@ -86,17 +86,15 @@ void CpuOracle::Impl::backToFrontPass(uint32_t bands, std::span<const uint32_t> 
         query_times_[i] = clock_;
         stamp(sequence[i]);
     }
-    if (band_undecided_.size() < bands) {
+    if (band_undecided_.size() < bands)
         band_undecided_.resize(bands);
-        band_lists_.resize(bands);
-    }
     runBands(bands, [&](uint32_t b, CpuOracleStats& stats) {
         TileRect rows = wholeScreen();
         bandRows(b, bands, rows.row_first, rows.row_last);
         for (std::size_t i = sequence.size(); i-- > 0;) {
             if (query[i]) {
                 std::atomic_ref<uint8_t> answer(behind[i]);
-                QueryContext context{&band_undecided_[b], query_times_[i], &band_lists_[b]};
+                QueryContext context{&band_undecided_[b], query_times_[i]};
                 if (answer.load(std::memory_order_relaxed) == 0 &&
                     queryIn(sequence[i], rows, stats, context))
                     answer.store(1, std::memory_order_relaxed);
@@ -159,10 +157,8 @@ void CpuOracle::Impl::queryAgainst(uint32_t bands, std::span<const uint32_t> occ
     for (uint32_t p : occluders)
         stamp(p);
     const uint32_t time = clock_;
-    if (band_undecided_.size() < std::max<uint32_t>(bands, 1)) {
+    if (band_undecided_.size() < std::max<uint32_t>(bands, 1))
         band_undecided_.resize(std::max<uint32_t>(bands, 1));
-        band_lists_.resize(std::max<uint32_t>(bands, 1));
-    }
     const auto band = [&](uint32_t b, CpuOracleStats& stats) {
         TileRect rect = near_targets; // within the band's rows
         int32_t first_row, last_row;
@@ -175,7 +171,7 @@ void CpuOracle::Impl::queryAgainst(uint32_t bands, std::span<const uint32_t> occ
             drawIn(p, rect, stats);
         for (std::size_t i = 0; i < targets.size(); ++i) {
             std::atomic_ref<uint8_t> answer(behind[i]);
-            QueryContext context{&band_undecided_[b], time, &band_lists_[b]};
+            QueryContext context{&band_undecided_[b], time};
             if (answer.load(std::memory_order_relaxed) == 0 &&
                 queryIn(targets[i], rect, stats, context))
                 answer.store(1, std::memory_order_relaxed);

@@ -207,7 +207,6 @@ void CpuOracle::Impl::finishBind() {
     drawn_time_.assign(primitive_count_, 0);
     clock_ = clear_time_ = 1;
     tile_index_built_.store(false);
-    ++arbitration_generation_;
 
     imaged_.clear();
     imaged_rects_.clear();

@@ -19,10 +19,12 @@
 #include <cstddef>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <mutex>
 #include <span>
 #include <thread>
 #include <type_traits>
+#include <unordered_map>
 #include <vector>
 
 #include "raster/cpu_rasterizer.h"
@@ -216,50 +218,24 @@ struct CpuOracle::Impl {
         Kind kind;
         uint32_t what, where;
     };
-    // The set-ups one query's arbitrations may meet, per cell of the index: a cell's list is
-    // made at the query's first arbitration there (the set-ups drawn before the query, of other
-    // triangles) and thinned as pairs turn out never nearer (DepthArbiter::Nearness::never:
-    // copies of the query's triangle, faces touching or coplanar with it). Where a query ties
-    // with a stack of faces at every pixel (a duplicated face: assimp's OBJ/box_longline.obj
-    // has 236 copies of each), each pixel then costs what could still be nearer, not the stack.
-    // Copies of a triangle are dropped from a list once it has served kDedupeAfterScans
-    // arbitrations: the sort that finds them costs a dozen scans, paid only where a stack of
-    // ties arbitrates pixel after pixel, not where each triangle of a query ties at one pixel.
-    // A query's first arbitration in a cell scans the cell's index directly (most queries
-    // arbitrate once or twice, each triangle of a primitive at its own pixels); the list is made
-    // at the second.
-    struct CellList {
-        uint32_t cell = 0, scans = 0;
-        bool built = false, deduplicated = false;
-        std::vector<uint32_t> setups;
-    };
-    static constexpr uint32_t kDedupeAfterScans = 16;
-    struct ArbitrationLists {
-        uint32_t triangle = 0, time = 0;
-        uint64_t generation = 0; // arbitration_generation_ when made; 0: never
-        std::size_t used = 0;    // cells[0, used) are this query's; the rest kept for reuse
-        std::vector<CellList> cells;
-    };
-    // What a query's walks share: its undecided fragments, its time (drawnBefore) and its
-    // arbitration lists.
+    // What a query's walks share: its undecided fragments and its time (drawnBefore).
     struct QueryContext {
         std::vector<Undecided>* undecided;
         uint32_t time;
-        ArbitrationLists* lists;
     };
     /// Whether some undecided fragment of context, within rect's rows, is behind by the exact
     /// model; clears the list.
     bool resolve(QueryContext& context, const TileRect& rect, CpuOracleStats& stats);
-    /// Whether triangle's fragment at pixel (px, py) (its float `fragment`, within `error` of
-    /// the exact depth) lies strictly behind a fragment of a primitive drawn there before
-    /// `time`, by the exact model.
-    bool behindSomethingDrawn(uint32_t triangle, uint32_t px, uint32_t py, QueryContext& context,
+    /// Whether set-up query_setup's triangle's fragment at pixel (px, py) (its float
+    /// `fragment`, within `error` of the exact depth) lies strictly behind a fragment of a
+    /// primitive drawn there before `time`, by the exact model.
+    bool behindSomethingDrawn(uint32_t query_setup, uint32_t px, uint32_t py, QueryContext& context,
                               float fragment, float error, CpuOracleStats& stats);
-    /// The list of set-ups context's query may meet in a cell (ArbitrationLists).
-    /// Null at the query's first arbitration in the cell (scan the index directly).
-    std::vector<uint32_t>* arbitrationList(QueryContext& context, uint32_t triangle, uint32_t cell);
-    /// Keeps one set-up of each set of copies in list (the same shape: kSetupShapeBytes).
-    void dropCopies(std::vector<uint32_t>& list) const;
+    /// The set-ups whose draws cover pixel (px, py) (setupCovers), `count` of them: the
+    /// pixel's list, its tile's made on first need after each (re)bind; thread-safe.
+    const uint32_t* pixelList(uint32_t px, uint32_t py, uint32_t& count);
+    /// A tile's pixel lists: kTilePixels + 1 starts into the same vector, then the set-ups.
+    void makePixelLists(std::size_t tile, std::vector<uint32_t>& lists) const;
     /// Whether set-up s covers pixel (px, py) as its draws do: certainly, or as a band pixel the
     /// exact model gave it.
     bool setupCovers(const StoredSetup& s, uint32_t px, uint32_t py) const;
@@ -286,8 +262,8 @@ struct CpuOracle::Impl {
                         primitive_setups_.begin()) -
                1;
     }
-    /// The index of set-ups by cells of the screen (by their pixel bounds), made on first need
-    /// after each (re)bind; thread-safe.
+    /// The index of set-ups by tiles (by their pixel bounds), made on first need after each
+    /// (re)bind, and the pixel lists emptied; thread-safe.
     void ensureTileIndex();
     /// When primitive p was first drawn since the clear (drawnBefore): the clock of draws, which
     /// runs on across clears (a clear notes where it stood: clear_time_), at its first draw.
@@ -329,7 +305,6 @@ struct CpuOracle::Impl {
     void clearBuffer() {
         newEpoch();
         clear_time_ = clock_;
-        ++arbitration_generation_;
     }
     /// The bind's band pixel lists (forEachFastBandPixel, then the exact model's coverage):
     /// appended to band_pixels_ for set-up `setup` of triangle t; returns its band_first.
@@ -518,19 +493,20 @@ struct CpuOracle::Impl {
     // clears do not reset (4 bytes a primitive); where the clock stood at the last clear.
     std::vector<uint32_t> drawn_time_;
     uint32_t clock_ = 1, clear_time_ = 1;
-    // The index of set-ups by cells of 32 x 32 pixels (a small triangle's bounds meet one or two,
-    // so the index is about a set-up long): cell c's are cell_setups_[cell_starts_[c], [c + 1]).
-    static constexpr int kCellShift = 5;
-    uint32_t cellsX() const { return (width_ + (1u << kCellShift) - 1) >> kCellShift; }
-    uint32_t cellsY() const { return (height_ + (1u << kCellShift) - 1) >> kCellShift; }
-    std::vector<uint32_t> cell_starts_, cell_setups_;
+    // The exact rule's arbitration needs, at a pixel, the set-ups that cover it. The index of
+    // set-ups by tiles (by their pixel bounds): tile t's are
+    // tile_setups_[tile_starts_[t], [t + 1]). From it, per tile on its first arbitration after
+    // a (re)bind, every pixel's list of the set-ups covering it (pixelList). A pixel's list is
+    // the fragments there, a few in most scenes; a tile's index holds every set-up whose bounds
+    // meet it, hundreds where a CAD assembly's long thin triangles cross, and scanning it per
+    // arbitration cost 45% of ordering assimp's 2CylinderEngine.glb (issue 57).
+    std::vector<uint32_t> tile_starts_, tile_setups_;
     std::atomic<bool> tile_index_built_{false};
-    std::mutex tile_index_mutex_;
+    std::mutex tile_index_mutex_;                    // also makes pixel lists
+    std::vector<std::vector<uint32_t>> pixel_lists_; // per tile
+    std::unique_ptr<std::atomic<bool>[]> pixel_lists_made_;
     std::vector<Undecided> undecided_;                   // a sequential query's
     std::vector<std::vector<Undecided>> band_undecided_; // per band
-    ArbitrationLists arbitration_lists_;                 // a sequential query's
-    std::vector<ArbitrationLists> band_lists_;           // per band
-    uint64_t arbitration_generation_ = 1;                // a clear or bind makes every list stale
     std::vector<uint32_t> query_times_;                  // a banded pass's, per element
 
     // For rebind, once one has been asked for (an oracle never rebound pays nothing for it):

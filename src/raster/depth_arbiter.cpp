@@ -23,13 +23,22 @@ DepthArbiter::Query DepthArbiter::query(uint32_t triangle, uint32_t px, uint32_t
 }
 
 DepthArbiter::Nearness DepthArbiter::nearness(const Query& query, uint32_t drawn) {
+    return nearness(query, drawn, false);
+}
+
+DepthArbiter::Nearness DepthArbiter::nearnessCovering(const Query& query, uint32_t drawn) {
+    return nearness(query, drawn, true);
+}
+
+DepthArbiter::Nearness DepthArbiter::nearness(const Query& query, uint32_t drawn,
+                                              bool known_to_cover) {
     if (drawn == query.triangle)
         return Nearness::never; // a fragment is never in front of itself
     const TriangleCorners corners = TriangleCorners::of(positions_, drawn);
     // A copy of the query's triangle ties with it everywhere: cheaper to see than to arbitrate.
     if (corners.sameCornersAs(query.corners))
         return Nearness::never;
-    if (!model_->covers(query.ray, corners))
+    if (!known_to_cover && !model_->covers(query.ray, corners))
         return Nearness::not_here;
     const RayHit hit = model_->hit(query.ray, corners);
     switch (pairOrder(query, drawn, corners, hit)) {

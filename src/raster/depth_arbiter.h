@@ -41,6 +41,9 @@ public:
     /// about. Safe to call from several threads at once.
     enum class Nearness : uint8_t { nearer, not_here, never };
     Nearness nearness(const Query& query, uint32_t drawn);
+    /// nearness for a drawn triangle known to cover the query's pixel (by its draws' coverage,
+    /// which is the exact model's): the coverage test skipped.
+    Nearness nearnessCovering(const Query& query, uint32_t drawn);
 
     /// Whether a candidate's triangle is nearer at the query's pixel: candidates are a caller's
     /// entries (triangles, set-ups) for the query, triangleOf(entry) their triangle, and
@@ -71,6 +74,7 @@ public:
     }
 
 private:
+    Nearness nearness(const Query& query, uint32_t drawn, bool known_to_cover);
     // How two triangles order at every pixel they share, or kPerPixel.
     enum Order : uint8_t { kDrawnNearer, kNotNearer, kPerPixel };
     Order pairOrder(const Query& query, uint32_t drawn, const TriangleCorners& corners,

@@ -133,6 +133,7 @@ std::size_t compareInterleavingWith(const CpuOracleOptions& options, const Trian
         totals->tiles_culled += fast.stats().tiles_culled;
         totals->tiles_accepted += fast.stats().tiles_accepted;
         totals->images_built += fast.stats().images_built;
+        totals->arbitrations += fast.stats().arbitrations;
     }
     return behind;
 }
@@ -420,6 +421,96 @@ TEST(CpuOracle, SpotMeshBothProjections) {
         }
     EXPECT_GT(behind, 0u);
     EXPECT_GT(totals.tiles_culled, 0u);
+}
+
+// Faces that meet where the floats cannot tell them apart, as CAD assemblies' parts do: boxes
+// sharing faces, coplanar overlapping squares, stacks of copies of one face, squares crossing
+// along a line, all on a lattice of quarters so that the ties are exact; and squares apart by a
+// few units in the last place, or crossing at such an angle, which the exact model finds nearer.
+// Every pixel they share is arbitrated by the exact model from the pixel's own list of covering
+// set-ups (and, through depth images, the primitive's set-ups from the tile's index); the answers
+// must be the reference's, which arbitrates against every drawn triangle.
+TrianglePositions touchingCoplanarAndCrossingFaces(uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<int> lattice(-4, 3);
+    TrianglePositions p;
+    const auto corner = [&](double x, double y, double z) {
+        p.x.push_back(float(x));
+        p.y.push_back(float(y));
+        p.z.push_back(float(z));
+    };
+    // The square [x0, x0 + s] x [y0, y0 + s] at depth z (axis 2), or its turns onto the other axes.
+    const auto square = [&](double a0, double b0, double c, double s, int axis) {
+        const auto at = [&](double a, double b) {
+            if (axis == 2)
+                corner(a, b, c);
+            else if (axis == 1)
+                corner(a, c, b);
+            else
+                corner(c, a, b);
+        };
+        at(a0, b0), at(a0 + s, b0), at(a0 + s, b0 + s);
+        at(a0, b0), at(a0 + s, b0 + s), at(a0, b0 + s);
+    };
+    for (int i = 0; i < 24; ++i) {
+        const double a = lattice(rng) * 0.25, b = lattice(rng) * 0.25, c = lattice(rng) * 0.25;
+        const double s = 0.25 * (1 + rng() % 4);
+        // A few units in the last place: apart by less than the floats can see at a pixel.
+        const double nudge = double(std::nextafter(std::nextafter(float(c), 9.0f), 9.0f)) - c;
+        switch (rng() % 6) {
+        case 0: // a box: its six faces, sharing planes with the boxes beside it
+            for (int axis = 0; axis < 3; ++axis) {
+                square(a, b, c, s, axis);
+                square(a, b, c + s, s, axis);
+            }
+            break;
+        case 1: // coplanar squares overlapping
+            square(a, b, c, s, 2);
+            square(a + 0.25, b + 0.25, c, s, 2);
+            break;
+        case 2: // a stack of copies of one square
+            for (int copy = 0; copy < 5; ++copy)
+                square(a, b, c, s, 2);
+            break;
+        case 3: // two squares apart by a nudge, the second nearer or farther by the camera
+            square(a, b, c, s, 2);
+            square(a + 0.25, b, c + nudge, s, 2);
+            break;
+        case 4: // two squares crossing at an angle too shallow for the floats
+            square(a, b, c, s, 2);
+            corner(a, b, c - nudge), corner(a + s, b, c + nudge), corner(a + s, b + s, c + nudge);
+            corner(a, b, c - nudge), corner(a + s, b + s, c + nudge), corner(a, b + s, c - nudge);
+            break;
+        default: // two squares crossing along a line
+            square(a, b, c, s, 2);
+            corner(a, b, c - s / 2), corner(a + s, b, c + s / 2), corner(a + s, b + s, c + s / 2);
+            corner(a, b, c - s / 2), corner(a + s, b + s, c + s / 2), corner(a, b + s, c - s / 2);
+            break;
+        }
+    }
+    return p;
+}
+
+TEST(CpuOracle, TiesOfTouchingCoplanarAndCrossingFacesAreDecidedAsTheReferenceDoes) {
+    for (uint32_t seed : {1u, 2u, 3u}) {
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        const TrianglePositions p = touchingCoplanarAndCrossingFaces(seed);
+        std::vector<PrimitiveRange> per_triangle, per_group;
+        for (uint32_t t = 0; t < p.triangleCount(); ++t)
+            per_triangle.push_back({t, 1});
+        for (uint32_t t = 0; t < p.triangleCount(); t += 12)
+            per_group.push_back({t, std::min<uint32_t>(12, uint32_t(p.triangleCount()) - t)});
+        for (Projection projection : {Projection::perspective, Projection::orthographic}) {
+            const ViewProjection view = viewOf(p.bounds(), projection, 157, 93);
+            CpuOracleStats totals;
+            compareInterleaving(p, view, per_triangle, seed, 1500, &totals);
+            compareInterleaving(p, view, per_group, seed + 10, 300, &totals);
+            EXPECT_GT(totals.arbitrations, 0u); // the ties were the exact model's to decide
+            comparePasses(p, view, per_group, seed + 20);
+            compareDrawAllThenQueryAll(p, view, per_triangle);
+            compareDrawAllThenQueryAll(p, view, per_group);
+        }
+    }
 }
 
 TEST(CpuOracle, LargeViewportWithBigTriangles) {
