@@ -10,6 +10,12 @@ files are over 1.5x and 2x, and the files either build refused or failed.
 
     python3 scripts/sweep-order-speed.py BASELINE_VISSORT NEW_VISSORT [--level object]
         [--size 512x512] [--runs 2] [--models /usr/share/assimp/models] [--tsv FILE]
+        [--files RELATIVE_PATH ...] [--check build/check_every_frame]
+
+--files measures those files of --models only (whatever their object count). --check also
+checks NEW's order of every measured file, at the same level and size, against the exact
+ground truth (the test build's check_every_frame, cpu oracle): a figure of a wrong order counts
+for nothing, and the sweep exits 1.
 """
 
 import argparse
@@ -42,6 +48,16 @@ def run_order(tool, model, args, out):
     return sum(frame["stats"]["ms"] for frame in frames), seconds
 
 
+def order_is_exact(check_tool, model, args):
+    """Whether the test build's every-frame check finds the cpu oracle's order exact."""
+    command = [check_tool, model, "--size", args.size, "--oracles", "cpu", "--levels",
+               args.level]
+    try:
+        return subprocess.run(command, capture_output=True, timeout=args.timeout * 4).returncode == 0
+    except subprocess.TimeoutExpired:
+        return False
+
+
 def object_count(tool, model, timeout):
     try:
         done = subprocess.run([tool, "info", model, "--json", "-", "--quiet"],
@@ -64,17 +80,25 @@ def main():
     parser.add_argument("--min-objects", type=int, default=2)
     parser.add_argument("--timeout", type=float, default=300)
     parser.add_argument("--tsv", help="also write the per-file figures here")
+    parser.add_argument("--files", nargs="+", help="these files of --models only")
+    parser.add_argument("--check", metavar="CHECK_EVERY_FRAME",
+                        help="check NEW's orders against the exact ground truth with this tool")
     args = parser.parse_args()
     for tool in (args.baseline, args.new):
         if not os.access(tool, os.X_OK):
             sys.exit(f"sweep-order-speed: no vissort at {tool}")
     if not os.path.isdir(args.models):
         sys.exit(f"sweep-order-speed: no folder {args.models} (apt-get install assimp-testmodels)")
-    models = sorted(os.path.join(root, name) for root, _, names in os.walk(args.models)
-                    for name in names)
-    chosen = [m for m in models if object_count(args.new, m, args.timeout) >= args.min_objects]
-    print(f"{len(chosen)} of {len(models)} files have {args.min_objects} or more objects; "
-          f"{args.runs} runs each, builds alternated", flush=True)
+    if args.files:
+        chosen = [os.path.join(args.models, name) for name in args.files]
+        print(f"{len(chosen)} files; {args.runs} runs each, builds alternated", flush=True)
+    else:
+        models = sorted(os.path.join(root, name) for root, _, names in os.walk(args.models)
+                        for name in names)
+        chosen = [m for m in models
+                  if object_count(args.new, m, args.timeout) >= args.min_objects]
+        print(f"{len(chosen)} of {len(models)} files have {args.min_objects} or more objects; "
+              f"{args.runs} runs each, builds alternated", flush=True)
     rows, failed = [], []
     with tempfile.TemporaryDirectory() as scratch:
         out = os.path.join(scratch, "order.json")
@@ -94,6 +118,11 @@ def main():
             base_s = statistics.median(f[1] for f in figures["baseline"])
             new_s = statistics.median(f[1] for f in figures["new"])
             ratio = new_ms / base_ms if base_ms > 0 else float("nan")
+            if args.check and not order_is_exact(args.check, model, args):
+                failed.append(model)
+                print(f"wrong order (check_every_frame) {os.path.relpath(model, args.models)}",
+                      flush=True)
+                continue
             rows.append((os.path.relpath(model, args.models), base_ms, new_ms, base_s, new_s,
                          ratio))
             print(f"{ratio:7.2f}x  {base_ms:10.1f} -> {new_ms:10.1f} ms  ({base_s:.2f} -> "
@@ -112,6 +141,8 @@ def main():
             f.write("file\tbaseline_ms\tnew_ms\tbaseline_s\tnew_s\tratio\n")
             for row in rows:
                 f.write("\t".join([row[0]] + [f"{v:.4g}" for v in row[1:]]) + "\n")
+    if failed:
+        sys.exit(1)
 
 
 if __name__ == "__main__":

@@ -26,12 +26,21 @@ void CpuOracle::Impl::ensureTileIndex() {
     for (std::size_t t = 0; t < tiles; ++t)
         tile_starts_[t + 1] += tile_starts_[t];
     tile_setups_.resize(tile_starts_[tiles]);
-    std::vector<uint32_t> next(tile_starts_.begin(), tile_starts_.end() - 1);
+    // Each tile's start serves as its cursor (ascending set-ups: a primitive's are a run), then
+    // the starts, each moved to the next tile's, are moved back: no scratch array to allocate.
     for (uint32_t k = 0; k < setups_.size(); ++k)
-        forEachTile(setups_[k], [&](std::size_t tile) { tile_setups_[next[tile]++] = k; });
+        forEachTile(setups_[k], [&](std::size_t tile) { tile_setups_[tile_starts_[tile]++] = k; });
+    for (std::size_t t = tiles; t > 0; --t)
+        tile_starts_[t] = tile_starts_[t - 1];
+    tile_starts_[0] = 0;
     // No tile's pixel lists made yet (their vectors kept: a rebind reuses their memory).
     pixel_lists_.resize(tiles);
-    pixel_lists_made_ = std::make_unique<std::atomic<bool>[]>(tiles);
+    if (tiles > pixel_lists_made_capacity_) {
+        pixel_lists_made_ = std::make_unique<std::atomic<bool>[]>(tiles);
+        pixel_lists_made_capacity_ = tiles;
+    }
+    for (std::size_t t = 0; t < tiles; ++t)
+        pixel_lists_made_[t].store(false, std::memory_order_relaxed);
     tile_index_built_.store(true, std::memory_order_release);
 }
 
@@ -50,16 +59,12 @@ const uint32_t* CpuOracle::Impl::pixelList(uint32_t px, uint32_t py, uint32_t& c
     return lists.data() + lists[pixel];
 }
 
-void CpuOracle::Impl::makePixelLists(std::size_t tile, std::vector<uint32_t>& lists) const {
+void CpuOracle::Impl::makePixelLists(std::size_t tile, std::vector<uint32_t>& lists) {
     // (pixel of the tile, set-up) for every pixel a set-up's draws cover, then sorted by pixel
     // and, within a pixel, so that copies of a triangle (equal planes first of all) lie side by
     // side: behindSomethingDrawn asks about one of a run of copies only.
-    struct Entry {
-        uint32_t pixel;
-        double d0;
-        uint32_t setup;
-    };
-    std::vector<Entry> entries;
+    std::vector<PixelEntry>& entries = pixel_list_entries_;
+    entries.clear();
     const uint32_t tx = uint32_t(tile % tiles_x_), ty = uint32_t(tile / tiles_x_);
     const uint32_t x_first = tx << kTileShift, y_first = ty << kTileShift;
     const uint32_t x_end = std::min(x_first + kTileSize, width_);
@@ -84,7 +89,7 @@ void CpuOracle::Impl::makePixelLists(std::size_t tile, std::vector<uint32_t>& li
                 entries.push_back({(py - y_first) * kTileSize + (px - x_first), s.d0, k});
         }
     }
-    std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+    std::sort(entries.begin(), entries.end(), [](const PixelEntry& a, const PixelEntry& b) {
         if (a.pixel != b.pixel)
             return a.pixel < b.pixel;
         if (a.d0 != b.d0)
@@ -93,7 +98,7 @@ void CpuOracle::Impl::makePixelLists(std::size_t tile, std::vector<uint32_t>& li
     });
     lists.assign(kTilePixels + 1 + entries.size(), 0);
     const uint32_t first = uint32_t(kTilePixels + 1);
-    for (const Entry& e : entries)
+    for (const PixelEntry& e : entries)
         ++lists[e.pixel + 1];
     lists[0] = first;
     for (std::size_t p = 0; p < kTilePixels; ++p)
@@ -134,16 +139,6 @@ bool CpuOracle::Impl::behindSomethingDrawn(uint32_t query_setup, uint32_t px, ui
         asked = &s;
     }
     return false;
-}
-
-bool CpuOracle::Impl::setupCovers(const StoredSetup& s, uint32_t px, uint32_t py) const {
-    if (certainlyCovers(s, px, py))
-        return true;
-    if (s.band_first == 0)
-        return false;
-    const uint32_t count = band_pixels_[s.band_first];
-    const uint32_t* pixels = band_pixels_.data() + s.band_first + 1;
-    return std::find(pixels, pixels + count, py << 16 | px) != pixels + count;
 }
 
 bool CpuOracle::Impl::resolve(QueryContext& context, const TileRect& rect, CpuOracleStats& stats) {

@@ -231,14 +231,13 @@ struct CpuOracle::Impl {
     /// primitive drawn there before `time`, by the exact model.
     bool behindSomethingDrawn(uint32_t query_setup, uint32_t px, uint32_t py, QueryContext& context,
                               float fragment, float error, CpuOracleStats& stats);
-    /// The set-ups whose draws cover pixel (px, py) (setupCovers), `count` of them: the
-    /// pixel's list, its tile's made on first need after each (re)bind; thread-safe.
+    /// The set-ups whose draws cover pixel (px, py) (certainly, or as a band pixel the exact
+    /// model gave them), `count` of them: the pixel's list, its tile's made on first need after
+    /// each (re)bind; thread-safe.
     const uint32_t* pixelList(uint32_t px, uint32_t py, uint32_t& count);
     /// A tile's pixel lists: kTilePixels + 1 starts into the same vector, then the set-ups.
-    void makePixelLists(std::size_t tile, std::vector<uint32_t>& lists) const;
-    /// Whether set-up s covers pixel (px, py) as its draws do: certainly, or as a band pixel the
-    /// exact model gave it.
-    bool setupCovers(const StoredSetup& s, uint32_t px, uint32_t py) const;
+    /// Under tile_index_mutex_ (its scratch is pixel_list_entries_).
+    void makePixelLists(std::size_t tile, std::vector<uint32_t>& lists);
     /// The set-up's fragment value at a pixel (rule 6, no offset) and whether it certainly
     /// covers it (every edge function beyond the margin).
     float fragmentAt(const StoredSetup& s, uint32_t px, uint32_t py) const {
@@ -504,7 +503,18 @@ struct CpuOracle::Impl {
     std::atomic<bool> tile_index_built_{false};
     std::mutex tile_index_mutex_;                    // also makes pixel lists
     std::vector<std::vector<uint32_t>> pixel_lists_; // per tile
+    // Per tile, whether its pixel lists are made since the index was; as many as the largest
+    // screen's tiles, kept across binds (a coherent frame allocates nothing: they and the
+    // lists' vectors are reused).
     std::unique_ptr<std::atomic<bool>[]> pixel_lists_made_;
+    std::size_t pixel_lists_made_capacity_ = 0;
+    // makePixelLists' (pixel of the tile, plane's d0, set-up) entries, reused.
+    struct PixelEntry {
+        uint32_t pixel;
+        double d0;
+        uint32_t setup;
+    };
+    std::vector<PixelEntry> pixel_list_entries_;
     std::vector<Undecided> undecided_;                   // a sequential query's
     std::vector<std::vector<Undecided>> band_undecided_; // per band
     std::vector<uint32_t> query_times_;                  // a banded pass's, per element

@@ -2,6 +2,9 @@
 
 #include "raster/depth_arbiter.h"
 
+#include <algorithm>
+#include <functional>
+
 #include "geometry/exact_predicates.h"
 
 namespace vissort::detail {
@@ -10,7 +13,39 @@ void DepthArbiter::bind(const ViewProjection& view, PositionsView positions) {
     model_.emplace(view);
     positions_ = positions;
     const std::lock_guard<std::mutex> lock(mutex_);
-    orders_.clear();
+    std::fill(orders_.begin(), orders_.end(), Slot{});
+    order_count_ = 0;
+}
+
+const DepthArbiter::Order* DepthArbiter::findOrder(uint64_t key) const {
+    if (orders_.empty())
+        return nullptr;
+    const std::size_t mask = orders_.size() - 1;
+    for (std::size_t i = std::hash<uint64_t>{}(key * 0x9E3779B97F4A7C15ull) & mask;;
+         i = (i + 1) & mask) {
+        if (orders_[i].key == key)
+            return &orders_[i].order;
+        if (orders_[i].key == kNoPair)
+            return nullptr;
+    }
+}
+
+void DepthArbiter::addOrder(uint64_t key, Order order) {
+    if (2 * (order_count_ + 1) > orders_.size()) {
+        std::vector<Slot> old(std::max<std::size_t>(64, 2 * orders_.size()));
+        old.swap(orders_);
+        order_count_ = 0;
+        for (const Slot& slot : old)
+            if (slot.key != kNoPair)
+                addOrder(slot.key, slot.order);
+    }
+    const std::size_t mask = orders_.size() - 1;
+    std::size_t i = std::hash<uint64_t>{}(key * 0x9E3779B97F4A7C15ull) & mask;
+    while (orders_[i].key != kNoPair && orders_[i].key != key)
+        i = (i + 1) & mask;
+    if (orders_[i].key == kNoPair)
+        ++order_count_;
+    orders_[i] = {key, order};
 }
 
 DepthArbiter::Query DepthArbiter::query(uint32_t triangle, uint32_t px, uint32_t py) const {
@@ -59,8 +94,8 @@ DepthArbiter::Order DepthArbiter::pairOrder(const Query& query, uint32_t drawn,
     const uint64_t key = uint64_t(query.triangle) << 32 | drawn;
     {
         const std::lock_guard<std::mutex> lock(mutex_);
-        if (const auto found = orders_.find(key); found != orders_.end())
-            return found->second;
+        if (const Order* found = findOrder(key))
+            return *found;
     }
     // Which way a triangle faces every ray that meets it: the sign of Q = n . D, the same for
     // every such ray (they all start at the eye, or share one direction). Both triangles cover
@@ -95,7 +130,7 @@ DepthArbiter::Order DepthArbiter::pairOrder(const Query& query, uint32_t drawn,
         order = kNotNearer; // the query before or in the drawn's plane (coplanar: a tie), or the
                             // drawn beyond or in the query's
     const std::lock_guard<std::mutex> lock(mutex_);
-    orders_.emplace(key, order);
+    addOrder(key, order);
     return order;
 }
 

@@ -10,7 +10,6 @@
 #include <cstdint>
 #include <mutex>
 #include <optional>
-#include <unordered_map>
 #include <vector>
 
 #include "geometry/exact_fragments.h"
@@ -82,8 +81,18 @@ private:
 
     std::optional<ExactFragments> model_; // in place: a bind allocates nothing
     PositionsView positions_;
+    // The pairs' orders this bind: (query << 32 | drawn) -> its order, by open addressing in a
+    // table kept across binds (a coherent frame's pairs allocate nothing; a node per pair did).
+    static constexpr uint64_t kNoPair = ~uint64_t(0); // no triangle index is 2^32 - 1
+    struct Slot {
+        uint64_t key = kNoPair;
+        Order order = kPerPixel;
+    };
+    const Order* findOrder(uint64_t key) const;
+    void addOrder(uint64_t key, Order order);
     std::mutex mutex_;
-    std::unordered_map<uint64_t, Order> orders_; // (query << 32 | drawn) -> its order
+    std::vector<Slot> orders_; // a power of two long, at most half full
+    std::size_t order_count_ = 0;
 };
 
 } // namespace vissort::detail
