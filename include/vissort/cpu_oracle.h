@@ -131,6 +131,11 @@ public:
     void queryAgainst(std::span<const uint32_t> occluders, std::span<const uint32_t> targets,
                       std::span<uint8_t> behind) override;
 
+    /// The occlusion graph of members in one pass (occlusion_oracle.h), under the exact rule
+    /// only: each member's fragments listed per pixel and ordered there by the exact model,
+    /// consecutive depths giving the edges. False under another depth tolerance.
+    bool occlusionGraph(std::span<const uint32_t> members, std::vector<Occlusion>& edges) override;
+
     /// True when rows are walked with AVX2 (allowed, and the CPU has it).
     bool usesSimd() const;
     /// Threads the pass-level batches use (at least 1).

@@ -18,8 +18,15 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 namespace vissort {
+
+/// An edge of the occlusion graph: `front` lies in front of `back` at some pixel.
+struct Occlusion {
+    uint32_t front = 0, back = 0;
+    friend bool operator==(const Occlusion&, const Occlusion&) = default;
+};
 
 class OcclusionOracle {
 public:
@@ -63,6 +70,16 @@ public:
     /// (CpuOracle draws only those whose bounds meet the targets').
     virtual void queryAgainst(std::span<const uint32_t> occluders,
                               std::span<const uint32_t> targets, std::span<uint8_t> behind);
+
+    /// Optional: the occlusion graph among `members` (distinct primitives) in one pass, where
+    /// Vis-sort is stuck on a large set (vis_sort.cpp) and finding its cycles by group tests
+    /// would cost draws growing with the cycles. Appends edges {front, back} as positions in
+    /// members: front -> back only where anyBehind(back) would be true with front alone drawn
+    /// (a fragment of front strictly in front of one of back), and enough of them that one
+    /// member reaches another through them exactly when it does in the whole graph (so the
+    /// strongly connected components are the true ones). Returns false, leaving edges as they
+    /// were, where the oracle cannot: the default; the core then searches by group tests.
+    virtual bool occlusionGraph(std::span<const uint32_t> members, std::vector<Occlusion>& edges);
 };
 
 } // namespace vissort

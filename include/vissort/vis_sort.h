@@ -24,6 +24,7 @@ struct VisSortStats {
     uint64_t cycle_queries = 0;    // of queries, those spent finding cycles
     uint64_t cycle_draws = 0;      // of draws, those spent finding cycles
     uint32_t hinted_cycles = 0;    // cycles confirmed from CycleHints instead of searched for
+    uint32_t graph_passes = 0;     // stuck sets ordered from the oracle's occlusion graph
 
     /// Adds every count of `part` (a stage's or a step's) to these.
     VisSortStats& operator+=(const VisSortStats& part) {
@@ -35,6 +36,7 @@ struct VisSortStats {
         cycle_queries += part.cycle_queries;
         cycle_draws += part.cycle_draws;
         hinted_cycles += part.hinted_cycles;
+        graph_passes += part.graph_passes;
         return *this;
     }
 };
@@ -51,13 +53,8 @@ template <class Visit> void forEachStat(const VisSortStats& s, Visit&& visit) {
     visit("cycle_queries", s.cycle_queries);
     visit("cycle_draws", s.cycle_draws);
     visit("hinted_cycles", s.hinted_cycles);
+    visit("graph_passes", s.graph_passes);
 }
-
-/// An edge of the occlusion graph: `front` lies in front of `back` at some pixel.
-struct Occlusion {
-    uint32_t front = 0, back = 0;
-    friend bool operator==(const Occlusion&, const Occlusion&) = default;
-};
 
 struct VisibilityOrder {
     /// Primitive ids front to back: a permutation of 0..n-1.

@@ -150,7 +150,7 @@ void bindOrder(py::module_& m) {
                       "Each cycle the order met: its ids, ascending (uint32 arrays)")
         .def_readonly("stats", &OrderResult::stats,
                       "queries, draws, clears, iterations, stuck_iterations, cycle_queries, "
-                      "cycle_draws, hinted_cycles, ms: as the command line's --json")
+                      "cycle_draws, hinted_cycles, graph_passes, ms: as the command line's --json")
         .def_readonly("level", &OrderResult::level)
         .def_readonly("camera", &OrderResult::camera, "The camera the order was computed for")
         .def("__repr__", [](const OrderResult& r) {

@@ -114,6 +114,7 @@ _RenderStats = TypedDict(
         "cycle_queries": int,
         "cycle_draws": int,
         "hinted_cycles": int,
+        "graph_passes": int,
         # With highlight_collisions only.
         "colliding_pairs": int,
         "colliding_triangles": int,

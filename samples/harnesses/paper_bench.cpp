@@ -116,6 +116,7 @@ Status measurePath(const PaperBenchSettings& settings, PaperPath& path,
         frame.cpu_order_ms = orderFrame(cpu_orderer, cpu_selection.get());
         frame.cpu_queries = order.stats.queries;
         frame.cpu_cycle_queries = order.stats.cycle_queries;
+        frame.cpu_cycles = order.cycles.size();
         frame.triangles_drawn = ordered_triangles;
         if (gl_orderer && f < gl_frames) {
             frame.gl_order_ms = orderFrame(*gl_orderer, gl_selection.get());

@@ -43,6 +43,7 @@ struct PaperFrame {
     int frame = 0;
     uint64_t cpu_queries = 0;
     uint64_t cpu_cycle_queries = 0; // of cpu_queries, those the cycle search and its hints spent
+    uint64_t cpu_cycles = 0;        // the cycles the cpu oracle's order reported
     double cpu_order_ms = 0;
     std::optional<uint64_t> gl_queries; // the first gl_frames frames only
     std::optional<double> gl_order_ms;

@@ -63,6 +63,7 @@ nlohmann::json pathJson(const PaperPath& path) {
         frames.push_back({{"frame", f.frame},
                           {"cpu_queries", f.cpu_queries},
                           {"cpu_cycle_queries", f.cpu_cycle_queries},
+                          {"cpu_cycles", f.cpu_cycles},
                           {"cpu_order_ms", f.cpu_order_ms},
                           {"gl_queries", f.gl_queries ? nlohmann::json(*f.gl_queries) : nullptr},
                           {"gl_order_ms", optionalJson(f.gl_order_ms)},

@@ -103,4 +103,22 @@ void GroupedOracle::queryAgainst(std::span<const uint32_t> occluders,
     }
 }
 
+bool GroupedOracle::occlusionGraph(std::span<const uint32_t> groups,
+                                   std::vector<Occlusion>& edges) {
+    const std::span<const uint32_t> members = expand(groups, sequence_, &starts_);
+    std::vector<Occlusion> member_edges;
+    if (!base_.occlusionGraph(members, member_edges))
+        return false;
+    // The group (a position in groups) of each member position.
+    std::vector<uint32_t> group_of(members.size());
+    for (uint32_t g = 0; g < groups.size(); ++g)
+        std::fill(group_of.begin() + starts_[g], group_of.begin() + starts_[g + 1], g);
+    for (const Occlusion& e : member_edges)
+        if (group_of[e.front] != group_of[e.back])
+            edges.push_back({group_of[e.front], group_of[e.back]});
+    extra_test_draws_ += members.size() - groups.size();
+    extra_draws_ += members.size() - groups.size();
+    return true;
+}
+
 } // namespace vissort::detail

@@ -33,6 +33,11 @@ public:
     void queryAgainst(std::span<const uint32_t> occluders, std::span<const uint32_t> targets,
                       std::span<uint8_t> behind) override;
 
+    /// base's graph of the groups' members, each edge taken to the groups of its ends (edges
+    /// within a group dropped): a group reaches another exactly when one of its members reaches
+    /// one of the other's, since each group is strongly connected.
+    bool occlusionGraph(std::span<const uint32_t> groups, std::vector<Occlusion>& edges) override;
+
     /// The members' draws and queries beyond one a group: what base did on top of what the
     /// caller counted in groups (all of it, and of it the group tests').
     uint64_t extraDraws() const { return extra_draws_; }

@@ -90,4 +90,8 @@ void OcclusionOracle::queryAgainst(std::span<const uint32_t> occluders,
         behind[i] = anyBehind(targets[i]) ? 1 : 0;
 }
 
+bool OcclusionOracle::occlusionGraph(std::span<const uint32_t>, std::vector<Occlusion>&) {
+    return false;
+}
+
 } // namespace vissort

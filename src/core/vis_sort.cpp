@@ -10,6 +10,7 @@
 #include <cassert>
 
 #include "contracted_vis_sort.h"
+#include "graph_components.h"
 #include "hinted_cycles.h" // witnessConnects, for the assertion
 #include "source_cycle.h"
 
@@ -19,6 +20,12 @@ namespace {
 // Walks for source cycles in one stuck iteration. Every other cycle found then saves a stuck
 // iteration and the iteration that follows it, each a pass over everything still unsorted.
 constexpr uint32_t kWalksPerStuckIteration = 8;
+
+// A stuck set of at least this many primitives is ordered from the oracle's occlusion graph
+// where the oracle can give it (OcclusionOracle::occlusionGraph): one draw a member, where the
+// walks' group tests grow with the cycles (assimp's 2CylinderEngine.glb: 1,319 cycle draws for
+// a component of 84). Below it the walks are cheaper: measured in docs/benchmarks.md.
+constexpr std::size_t kGraphPassMembers = 16;
 
 // seen: scratch, so that the check (assertions on) allocates nothing once it has grown.
 bool isPermutation(std::span<const uint32_t> ids, uint32_t n, std::vector<uint8_t>& seen) {
@@ -145,6 +152,8 @@ private:
     // cycle-breaking rule), several per stuck iteration when the walks find them,
     // and go on; M stays valid because primitives are only removed.
     void outputSourceCycles() {
+        if (unsorted_.size() >= kGraphPassMembers && outputFromGraph())
+            return;
         in_cycle_.resize(oracle_.primitiveCount(), 0);
         std::vector<detail::SourceComponent> sources =
             detail::findSourceCycles(oracle_, unsorted_, in_monotone_run_, kWalksPerStuckIteration,
@@ -173,6 +182,38 @@ private:
                 result_.cycle_witnesses.push_back(std::move(source.witness));
             }
         }
+    }
+
+    // The whole stuck set at once, from its occlusion graph: the strongly connected components
+    // in topological order are a visibility order of the set (each component's members in list
+    // order, the cycle-breaking rule), and everything output so far comes before the set.
+    // False, with nothing done, where the oracle cannot give the graph.
+    bool outputFromGraph() {
+        std::vector<Occlusion> edges;
+        if (!oracle_.occlusionGraph(unsorted_, edges))
+            return false;
+        ++result_.stats.graph_passes;
+        result_.stats.clears += 1;
+        result_.stats.draws += unsorted_.size();
+        result_.stats.cycle_draws += unsorted_.size();
+        for (detail::SourceComponent& component :
+             detail::graphComponents(uint32_t(unsorted_.size()), edges)) {
+            for (uint32_t& at : component.members) {
+                at = unsorted_[at];
+                result_.order.push_back(at);
+            }
+            if (component.members.size() < 2)
+                continue;
+            for (Occlusion& o : component.witness)
+                o = {unsorted_[o.front], unsorted_[o.back]};
+            assert(detail::witnessConnects(component.members, component.witness));
+            std::sort(component.members.begin(), component.members.end());
+            result_.cycles.push_back(std::move(component.members));
+            result_.cycle_witnesses.push_back(std::move(component.witness));
+        }
+        unsorted_.clear();
+        in_monotone_run_.clear();
+        return true;
     }
 
     void count(std::size_t queries, std::size_t draws) {

@@ -157,4 +157,9 @@ void CpuOracle::queryAgainst(std::span<const uint32_t> occluders, std::span<cons
                         behind);
 }
 
+bool CpuOracle::occlusionGraph(std::span<const uint32_t> members, std::vector<Occlusion>& edges) {
+    impl_->setTolerance(depth_tolerance_);
+    return impl_->occlusionGraph(members, edges);
+}
+
 } // namespace vissort

@@ -72,30 +72,29 @@ void CpuOracle::Impl::makePixelLists(std::size_t tile, std::vector<uint32_t>& li
     for (uint32_t j = tile_starts_[tile]; j < tile_starts_[tile + 1]; ++j) {
         const uint32_t k = tile_setups_[j];
         const StoredSetup& s = setups_[k];
-        for (uint32_t py = std::max<uint32_t>(y_first, s.py_min); py < y_end && py <= s.py_max;
-             ++py)
-            for (uint32_t px = std::max<uint32_t>(x_first, s.px_min); px < x_end && px <= s.px_max;
-                 ++px)
-                if (certainlyCovers(s, px, py))
-                    entries.push_back({(py - y_first) * kTileSize + (px - x_first), s.d0, k});
+        if (anyCertainlyCoveredIn(
+                s, std::max<uint32_t>(x_first, s.px_min), std::min<uint32_t>(x_end - 1, s.px_max),
+                std::max<uint32_t>(y_first, s.py_min), std::min<uint32_t>(y_end - 1, s.py_max)))
+            for (uint32_t py = std::max<uint32_t>(y_first, s.py_min); py < y_end && py <= s.py_max;
+                 ++py)
+                for (uint32_t px = std::max<uint32_t>(x_first, s.px_min);
+                     px < x_end && px <= s.px_max; ++px)
+                    if (certainlyCovers(s, px, py))
+                        entries.push_back({(py - y_first) * kTileSize + (px - x_first), s.d0, k});
         if (s.band_first == 0)
             continue;
-        const uint32_t count = band_pixels_[s.band_first];
-        const uint32_t* pixels = band_pixels_.data() + s.band_first + 1;
-        for (uint32_t i = 0; i < count; ++i) {
-            const uint32_t px = pixels[i] & 0xFFFF, py = pixels[i] >> 16;
-            if (px >= x_first && px < x_end && py >= y_first && py < y_end &&
-                !certainlyCovers(s, px, py))
+        // The band pixels are row by row (bandPixelsOf): the tile's rows are one run.
+        const uint32_t* const band_first = band_pixels_.data() + s.band_first + 1;
+        const uint32_t* const band_end = band_first + band_pixels_[s.band_first];
+        for (const uint32_t* at = std::lower_bound(band_first, band_end, y_first << 16);
+             at != band_end && (*at >> 16) < y_end; ++at) {
+            const uint32_t px = *at & 0xFFFF, py = *at >> 16;
+            if (px >= x_first && px < x_end && !certainlyCovers(s, px, py))
                 entries.push_back({(py - y_first) * kTileSize + (px - x_first), s.d0, k});
         }
     }
-    std::sort(entries.begin(), entries.end(), [](const PixelEntry& a, const PixelEntry& b) {
-        if (a.pixel != b.pixel)
-            return a.pixel < b.pixel;
-        if (a.d0 != b.d0)
-            return a.d0 < b.d0;
-        return a.setup < b.setup;
-    });
+    // A counting sort by pixel (the tile's 64), then each pixel's few entries by plane and
+    // set-up: one std::sort of the tile's entries was half of making the lists.
     lists.assign(kTilePixels + 1 + entries.size(), 0);
     const uint32_t first = uint32_t(kTilePixels + 1);
     for (const PixelEntry& e : entries)
@@ -103,8 +102,20 @@ void CpuOracle::Impl::makePixelLists(std::size_t tile, std::vector<uint32_t>& li
     lists[0] = first;
     for (std::size_t p = 0; p < kTilePixels; ++p)
         lists[p + 1] += lists[p];
-    for (std::size_t i = 0; i < entries.size(); ++i)
-        lists[first + i] = entries[i].setup;
+    std::vector<PixelEntry>& sorted = pixel_list_sorted_;
+    sorted.resize(entries.size());
+    for (const PixelEntry& e : entries)
+        sorted[lists[e.pixel]++ - first] = e; // the starts as cursors, moved back below
+    for (std::size_t p = kTilePixels; p > 0; --p)
+        lists[p] = lists[p - 1];
+    lists[0] = first;
+    for (std::size_t p = 0; p < kTilePixels; ++p)
+        std::sort(sorted.begin() + (lists[p] - first), sorted.begin() + (lists[p + 1] - first),
+                  [](const PixelEntry& a, const PixelEntry& b) {
+                      return a.d0 != b.d0 ? a.d0 < b.d0 : a.setup < b.setup;
+                  });
+    for (std::size_t i = 0; i < sorted.size(); ++i)
+        lists[first + i] = sorted[i].setup;
 }
 
 bool CpuOracle::Impl::behindSomethingDrawn(uint32_t query_setup, uint32_t px, uint32_t py,
@@ -116,7 +127,8 @@ bool CpuOracle::Impl::behindSomethingDrawn(uint32_t query_setup, uint32_t px, ui
     uint32_t count = 0;
     const uint32_t* list = pixelList(px, py, count);
     std::optional<detail::DepthArbiter::Query> query; // made at the first set-up to ask about
-    const StoredSetup* asked = nullptr;               // the last one asked about: not nearer
+    std::optional<detail::TriangleCorners> query_corners;
+    const StoredSetup* asked = nullptr; // the last one asked about: not nearer
     for (uint32_t i = 0; i < count; ++i) {
         const uint32_t k = list[i];
         const StoredSetup& s = setups_[k];
@@ -131,6 +143,13 @@ bool CpuOracle::Impl::behindSomethingDrawn(uint32_t query_setup, uint32_t px, ui
         // 236 of each face) a pixel costs one question, not the stack.
         if (asked != nullptr && asked->d0 == s.d0 && std::memcmp(asked, &s, kSetupShapeBytes) == 0)
             continue;
+        // A copy of the query's own triangle ties with it at every pixel: seen from the corners
+        // before the query's fragment is computed (assimp's MDL/HL1 bodypart files are nine
+        // copies of one triangle, every pixel of which was arbitrated).
+        if (!query_corners)
+            query_corners = detail::TriangleCorners::of(positions_, triangle);
+        if (detail::TriangleCorners::of(positions_, s.triangle()).sameCornersAs(*query_corners))
+            continue;
         if (!query)
             query = arbiter_.query(triangle, px, py);
         if (arbiter_.nearnessCovering(*query, s.triangle()) ==
@@ -139,6 +158,63 @@ bool CpuOracle::Impl::behindSomethingDrawn(uint32_t query_setup, uint32_t px, ui
         asked = &s;
     }
     return false;
+}
+
+bool CpuOracle::Impl::tileSettledByPairs(uint32_t query_setup, uint32_t tile, uint32_t time) {
+    ensureTileIndex();
+    const StoredSetup& q = setups_[query_setup];
+    const uint32_t triangle = q.triangle();
+    // The query's pixels in the tile, within [x0, x1] x [y0, y1].
+    const uint32_t tx = tile % tiles_x_, ty = tile / tiles_x_;
+    const uint32_t x0 = std::max<uint32_t>(tx << kTileShift, q.px_min);
+    const uint32_t x1 = std::min<uint32_t>(((tx + 1) << kTileShift) - 1, q.px_max);
+    const uint32_t y0 = std::max<uint32_t>(ty << kTileShift, q.py_min);
+    const uint32_t y1 = std::min<uint32_t>(((ty + 1) << kTileShift) - 1, q.py_max);
+    if (x0 > x1 || y0 > y1)
+        return true;
+    // A plane's float depths over a rectangle lie between those at its corners (an affine
+    // function, evaluated in double before the float rounding, which keeps order), widened by
+    // a hair for the double's own rounding.
+    const auto extremes = [&](const StoredSetup& s, uint32_t ax, uint32_t bx, uint32_t ay,
+                              uint32_t by, double& low, double& high) {
+        low = std::numeric_limits<double>::infinity();
+        high = -low;
+        for (uint32_t px : {ax, bx})
+            for (uint32_t py : {ay, by}) {
+                const double d = fragmentAt(s, px, py);
+                low = std::min(low, d);
+                high = std::max(high, d);
+            }
+        const double hair = 0x1p-40 * (std::abs(low) + std::abs(high) + 1);
+        low -= hair;
+        high += hair;
+    };
+    double q_low, q_high;
+    extremes(q, x0, x1, y0, y1, q_low, q_high);
+    q_high += double(errors_[query_setup]);
+    std::optional<detail::TriangleCorners> corners;
+    for (uint32_t j = tile_starts_[tile]; j < tile_starts_[tile + 1]; ++j) {
+        const uint32_t k = tile_setups_[j];
+        const StoredSetup& s = setups_[k];
+        const uint32_t other = s.triangle();
+        if (other == triangle || s.px_min > x1 || s.px_max < x0 || s.py_min > y1 || s.py_max < y0 ||
+            !drawnBefore(primitiveOfSetup(k), time))
+            continue;
+        // Certainly farther than the query over the pixels both may cover.
+        double low, high;
+        extremes(s, std::max<uint32_t>(x0, s.px_min), std::min<uint32_t>(x1, s.px_max),
+                 std::max<uint32_t>(y0, s.py_min), std::min<uint32_t>(y1, s.py_max), low, high);
+        if (low - double(errors_[k]) > q_high)
+            continue;
+        if (arbiter_.knownNeverNearer(triangle, other))
+            continue;
+        // A copy of the query's triangle ties with it everywhere.
+        if (!corners)
+            corners = detail::TriangleCorners::of(positions_, triangle);
+        if (!detail::TriangleCorners::of(positions_, other).sameCornersAs(*corners))
+            return false;
+    }
+    return true;
 }
 
 bool CpuOracle::Impl::resolve(QueryContext& context, const TileRect& rect, CpuOracleStats& stats) {
@@ -168,6 +244,8 @@ bool CpuOracle::Impl::resolve(QueryContext& context, const TileRect& rect, CpuOr
         if (u.kind == Undecided::Kind::setup_pixel) {
             behind = setupBehind(u.what, u.where & 0xFFFF, u.where >> 16);
         } else if (u.kind == Undecided::Kind::setup_tile) {
+            if (tileSettledByPairs(u.what, u.where, context.time))
+                continue; // nothing drawn is nearer at any pixel of the tile
             const StoredSetup& s = setups_[u.what];
             const uint32_t tx = u.where % tiles_x_, ty = u.where / tiles_x_;
             for (uint32_t py = std::max(ty << kTileShift, row_first);
@@ -177,8 +255,10 @@ bool CpuOracle::Impl::resolve(QueryContext& context, const TileRect& rect, CpuOr
                     behind = certainlyCovers(s, px, py) && setupBehind(u.what, px, py);
         } else {
             // A far image's tile: each pixel whose image depth is undecided, against every
-            // triangle of the primitive the exact model says covers it. The primitive's set-ups
-            // that may cover a pixel of the tile are a run of the tile's index (ascending).
+            // triangle of the primitive that covers it by the exact model: the set-ups of the
+            // primitive in the pixel's list (certain pixels and exact band pixels), which the
+            // arbitration reads anyway. Testing each set-up whose bounds hold the pixel with
+            // the exact model instead was half of the 2CylinderEngine's ordering time.
             const detail::DepthImages& far = far_images_;
             const uint32_t tile = far.tile(u.where);
             const uint32_t slot = slotOf(u.what);
@@ -187,12 +267,8 @@ bool CpuOracle::Impl::resolve(QueryContext& context, const TileRect& rect, CpuOr
             const uint32_t tx = tile % tiles_x_, ty = tile / tiles_x_;
             const float* image = far.depths(u.where);
             ensureTileIndex();
-            const uint32_t* const index_first = tile_setups_.data() + tile_starts_[tile];
-            const uint32_t* const index_end = tile_setups_.data() + tile_starts_[tile + 1];
-            const uint32_t* const run_first =
-                std::lower_bound(index_first, index_end, primitive_setups_[u.what]);
-            const uint32_t* const run_end =
-                std::lower_bound(run_first, index_end, primitive_setups_[u.what + 1]);
+            const uint32_t first_setup = primitive_setups_[u.what];
+            const uint32_t setup_count = primitive_setups_[u.what + 1] - first_setup;
             for (uint32_t py = std::max(ty << kTileShift, row_first);
                  !behind && py < std::min((ty + 1) << kTileShift, row_end); ++py)
                 for (uint32_t px = tx << kTileShift;
@@ -202,22 +278,14 @@ bool CpuOracle::Impl::resolve(QueryContext& context, const TileRect& rect, CpuOr
                     if (detail::decide(depth, *pixel(px, py), band_width) !=
                         detail::Decision::undecided)
                         continue;
-                    const detail::ExactFragments& model = arbiter_.model();
-                    const detail::PixelRay ray = model.rays().centre(px, py);
-                    uint32_t last = std::numeric_limits<uint32_t>::max();
-                    for (const uint32_t* at = run_first; !behind && at != run_end; ++at) {
-                        const uint32_t k = *at;
-                        const StoredSetup& s = setups_[k];
-                        if (s.triangle() == last || px < s.px_min || px > s.px_max ||
-                            py < s.py_min || py > s.py_max)
-                            continue;
-                        last = s.triangle();
-                        // Certain coverage by the floats is the exact model's too.
-                        behind = (certainlyCovers(s, px, py) ||
-                                  model.covers(ray, detail::TriangleCorners::of(positions_,
-                                                                                s.triangle()))) &&
-                                 behindSomethingDrawn(k, px, py, context, fragmentAt(s, px, py),
-                                                      errors_[k], stats);
+                    uint32_t count = 0;
+                    const uint32_t* list = pixelList(px, py, count);
+                    for (uint32_t i = 0; !behind && i < count; ++i) {
+                        const uint32_t k = list[i];
+                        if (k - first_setup < setup_count)
+                            behind = behindSomethingDrawn(k, px, py, context,
+                                                          fragmentAt(setups_[k], px, py),
+                                                          errors_[k], stats);
                     }
                 }
         }

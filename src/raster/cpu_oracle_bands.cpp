@@ -5,12 +5,6 @@
 
 namespace vissort {
 
-// Bands per thread. Each band repeats the walk over the whole sequence (per triangle: its range,
-// its set-ups, the band test), which is most of a small triangle's cost: measured on the bunnies'
-// pass 1 (66,132 triangles, 2 threads), 3 bands per thread took 5.0 ms, 1 band per thread 3.5 ms,
-// one thread 6.0 ms. Bands are still claimed in turn, so more per thread is one constant away.
-constexpr uint32_t kBandsPerThread = 1;
-
 uint32_t CpuOracle::Impl::bandsFor(std::size_t count) const {
     if (threads_ <= 1 || count < parallel_threshold_ || count == 0 || tiles_y_ < 2)
         return 1;
@@ -20,43 +14,6 @@ uint32_t CpuOracle::Impl::bandsFor(std::size_t count) const {
 void CpuOracle::Impl::bandRows(uint32_t b, uint32_t bands, int32_t& first, int32_t& last) const {
     first = int32_t(uint64_t(b) * tiles_y_ / bands);
     last = int32_t(uint64_t(b + 1) * tiles_y_ / bands);
-}
-
-template <class Band> void CpuOracle::Impl::runBands(uint32_t bands, Band&& band) {
-    if (band_stats_.size() < bands)
-        band_stats_.resize(threads_ * kBandsPerThread); // once
-    for (uint32_t b = 0; b < bands; ++b)
-        band_stats_[b] = {};
-    if (pool_ == nullptr) {
-        pool_ = &WorkerPool::shared();
-        pool_->reserve(threads_); // grown once, to the largest count an oracle asks
-    }
-    struct Context {
-        std::remove_reference_t<Band>* band;
-        CpuOracleStats* stats;
-        uint32_t bands;
-        std::atomic<uint32_t> next{0}; // the next band to claim
-    };
-    Context context{&band, band_stats_.data(), bands};
-    pool_->run(
-        std::min(threads_, bands),
-        [](void* c, uint32_t) {
-            Context& context = *static_cast<Context*>(c);
-            for (uint32_t b;
-                 (b = context.next.fetch_add(1, std::memory_order_relaxed)) < context.bands;) {
-                // Counted on this thread's stack: the bands' entries share cache lines.
-                CpuOracleStats stats;
-                (*context.band)(b, stats);
-                context.stats[b] = stats;
-            }
-        },
-        &context);
-    for (uint32_t b = 0; b < bands; ++b) {
-        stats_.tiles_visited += band_stats_[b].tiles_visited;
-        stats_.tiles_culled += band_stats_[b].tiles_culled;
-        stats_.tiles_accepted += band_stats_[b].tiles_accepted;
-        stats_.arbitrations += band_stats_[b].arbitrations;
-    }
 }
 
 // Each band runs the whole sequence on its own tile rows: a tile sees the same draws and queries

@@ -276,6 +276,9 @@ uint32_t CpuOracle::Impl::bandPixelsOf(const detail::FastSetup& setup, uint32_t 
         return 0;
     }
     band_pixels_[at] = count;
+    // Row by row (py << 16 | px ascending): a tile's pixel lists find their rows by bisection,
+    // not by a scan of every band pixel of a long triangle for each tile it crosses.
+    std::sort(band_pixels_.begin() + std::ptrdiff_t(at) + 1, band_pixels_.end());
     return uint32_t(at);
 }
 

@@ -201,6 +201,11 @@ struct CpuOracle::Impl {
     void draw(uint32_t primitive);
     bool anyBehind(uint32_t primitive);
 
+    /// OcclusionOracle::occlusionGraph, under the exact rule (cpu_oracle_graph.cpp); false
+    /// under another rule, for a very large set, or where ties stack so high that the pairs to
+    /// visit would pass a budget linear in the fragments.
+    bool occlusionGraph(std::span<const uint32_t> members, std::vector<Occlusion>& edges);
+
     // Tiles of rows [row_first, row_last) and columns [column_first, column_last].
     struct TileRect {
         int32_t row_first, row_last, column_first, column_last;
@@ -231,12 +236,21 @@ struct CpuOracle::Impl {
     /// primitive drawn there before `time`, by the exact model.
     bool behindSomethingDrawn(uint32_t query_setup, uint32_t px, uint32_t py, QueryContext& context,
                               float fragment, float error, CpuOracleStats& stats);
+    /// Whether no fragment of set-up query_setup in tile `tile` can be behind, by pairs of
+    /// triangles instead of pixels (issue 57's per-pair decisions): every set-up drawn before
+    /// `time` whose bounds meet the query's pixels there is of its own triangle, certainly
+    /// farther over those pixels by the floats, a copy of its triangle (a tie everywhere), or
+    /// of a triangle the arbiter already found nearer at no shared pixel (touching, coplanar,
+    /// one-sided: DepthArbiter::knownNeverNearer). The first tile of a pair is arbitrated
+    /// pixel by pixel, which teaches the arbiter the pair; the pair's other tiles then cost a
+    /// look-up each. False means: decide pixel by pixel.
+    bool tileSettledByPairs(uint32_t query_setup, uint32_t tile, uint32_t time);
     /// The set-ups whose draws cover pixel (px, py) (certainly, or as a band pixel the exact
     /// model gave them), `count` of them: the pixel's list, its tile's made on first need after
     /// each (re)bind; thread-safe.
     const uint32_t* pixelList(uint32_t px, uint32_t py, uint32_t& count);
     /// A tile's pixel lists: kTilePixels + 1 starts into the same vector, then the set-ups.
-    /// Under tile_index_mutex_ (its scratch is pixel_list_entries_).
+    /// Under tile_index_mutex_ (its scratch: pixel_list_entries_ and pixel_list_sorted_).
     void makePixelLists(std::size_t tile, std::vector<uint32_t>& lists);
     /// The set-up's fragment value at a pixel (rule 6, no offset) and whether it certainly
     /// covers it (every edge function beyond the margin).
@@ -252,6 +266,60 @@ struct CpuOracle::Impl {
                     int64_t(py) * s.edge_step_y[e] <=
                 0)
                 return false;
+        return true;
+    }
+    /// The pixels of row py that s certainly covers (certainlyCovers), [x_first, x_last]: false
+    /// when none. Each edge function is affine along the row, so each bounds the row's run on
+    /// one side, found by one division: a long thin triangle's row costs three divisions, not a
+    /// test per pixel of its bounding box.
+    bool certainRowSpan(const StoredSetup& s, uint32_t py, uint32_t& x_first,
+                        uint32_t& x_last) const {
+        if (py < s.py_min || py > s.py_max)
+            return false;
+        int64_t lo = s.px_min, hi = s.px_max;
+        // floor(a / b) for b > 0.
+        const auto floorDiv = [](int64_t a, int64_t b) {
+            const int64_t q = a / b;
+            return (a % b != 0 && a < 0) ? q - 1 : q;
+        };
+        for (int e = 0; e < 3 && lo <= hi; ++e) {
+            // c + px * step > 0, c the edge at (0, py).
+            const int64_t c = s.edge_at_origin[e] + int64_t(py) * s.edge_step_y[e];
+            const int64_t step = s.edge_step_x[e];
+            if (step == 0) {
+                if (c <= 0)
+                    return false;
+            } else if (step > 0) {
+                lo = std::max(lo, floorDiv(-c, step) + 1); // px > -c / step
+            } else {
+                hi = std::min(hi, floorDiv(c - 1, -step)); // px * -step < c, i.e. <= c - 1
+            }
+        }
+        if (lo > hi)
+            return false;
+        assert(certainlyCovers(s, uint32_t(lo), py) && certainlyCovers(s, uint32_t(hi), py));
+        assert(lo == s.px_min || !certainlyCovers(s, uint32_t(lo - 1), py));
+        assert(hi == s.px_max || !certainlyCovers(s, uint32_t(hi + 1), py));
+        x_first = uint32_t(lo);
+        x_last = uint32_t(hi);
+        return true;
+    }
+    /// Whether some pixel of the rectangle [x0, x1] x [y0, y1] may be certainly covered by s: no
+    /// edge function is at most 0 at all four corners (each is affine, so its greatest value
+    /// over the rectangle is at a corner). False for an empty rectangle.
+    bool anyCertainlyCoveredIn(const StoredSetup& s, uint32_t x0, uint32_t x1, uint32_t y0,
+                               uint32_t y1) const {
+        if (x0 > x1 || y0 > y1)
+            return false;
+        for (int e = 0; e < 3; ++e) {
+            const int64_t at = s.edge_at_origin[e];
+            const int64_t x_lo = int64_t(x0) * s.edge_step_x[e],
+                          x_hi = int64_t(x1) * s.edge_step_x[e];
+            const int64_t y_lo = int64_t(y0) * s.edge_step_y[e],
+                          y_hi = int64_t(y1) * s.edge_step_y[e];
+            if (at + std::max(x_lo, x_hi) + std::max(y_lo, y_hi) <= 0)
+                return false;
+        }
         return true;
     }
     /// The primitive whose set-ups hold set-up k.
@@ -514,7 +582,7 @@ struct CpuOracle::Impl {
         double d0;
         uint32_t setup;
     };
-    std::vector<PixelEntry> pixel_list_entries_;
+    std::vector<PixelEntry> pixel_list_entries_, pixel_list_sorted_;
     std::vector<Undecided> undecided_;                   // a sequential query's
     std::vector<std::vector<Undecided>> band_undecided_; // per band
     std::vector<uint32_t> query_times_;                  // a banded pass's, per element
@@ -608,5 +676,50 @@ struct CpuOracle::Impl {
     uint32_t image_epoch_ = 1;
     std::vector<float> image_errors_; // per slot: the largest error bound of its set-ups
 };
+
+// Bands per thread. Each band repeats the walk over the whole sequence (per triangle: its range,
+// its set-ups, the band test), which is most of a small triangle's cost: measured on the bunnies'
+// pass 1 (66,132 triangles, 2 threads), 3 bands per thread took 5.0 ms, 1 band per thread 3.5 ms,
+// one thread 6.0 ms. Bands are still claimed in turn, so more per thread is one constant away.
+constexpr uint32_t kBandsPerThread = 1;
+
+// Defined here: the bands of passes (cpu_oracle_bands.cpp) and of the occlusion graph
+// (cpu_oracle_graph.cpp) call it with their own lambdas.
+template <class Band> inline void CpuOracle::Impl::runBands(uint32_t bands, Band&& band) {
+    if (band_stats_.size() < bands)
+        band_stats_.resize(threads_ * kBandsPerThread); // once
+    for (uint32_t b = 0; b < bands; ++b)
+        band_stats_[b] = {};
+    if (pool_ == nullptr) {
+        pool_ = &WorkerPool::shared();
+        pool_->reserve(threads_); // grown once, to the largest count an oracle asks
+    }
+    struct Context {
+        std::remove_reference_t<Band>* band;
+        CpuOracleStats* stats;
+        uint32_t bands;
+        std::atomic<uint32_t> next{0}; // the next band to claim
+    };
+    Context context{&band, band_stats_.data(), bands};
+    pool_->run(
+        std::min(threads_, bands),
+        [](void* c, uint32_t) {
+            Context& context = *static_cast<Context*>(c);
+            for (uint32_t b;
+                 (b = context.next.fetch_add(1, std::memory_order_relaxed)) < context.bands;) {
+                // Counted on this thread's stack: the bands' entries share cache lines.
+                CpuOracleStats stats;
+                (*context.band)(b, stats);
+                context.stats[b] = stats;
+            }
+        },
+        &context);
+    for (uint32_t b = 0; b < bands; ++b) {
+        stats_.tiles_visited += band_stats_[b].tiles_visited;
+        stats_.tiles_culled += band_stats_[b].tiles_culled;
+        stats_.tiles_accepted += band_stats_[b].tiles_accepted;
+        stats_.arbitrations += band_stats_[b].arbitrations;
+    }
+}
 
 } // namespace vissort

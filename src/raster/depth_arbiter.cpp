@@ -48,6 +48,12 @@ void DepthArbiter::addOrder(uint64_t key, Order order) {
     orders_[i] = {key, order};
 }
 
+bool DepthArbiter::knownNeverNearer(uint32_t query, uint32_t drawn) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    const Order* found = findOrder(uint64_t(query) << 32 | drawn);
+    return found != nullptr && *found == kNotNearer;
+}
+
 DepthArbiter::Query DepthArbiter::query(uint32_t triangle, uint32_t px, uint32_t py) const {
     Query q;
     q.ray = model_->rays().centre(px, py);

@@ -44,6 +44,11 @@ public:
     /// which is the exact model's): the coverage test skipped.
     Nearness nearnessCovering(const Query& query, uint32_t drawn);
 
+    /// Whether this bind already found that triangle `drawn` is nearer than triangle `query`
+    /// at no pixel they share (the pair decided whole by their planes: touching, coplanar and
+    /// one-sided pairs), so that a caller can settle many pixels without asking about each.
+    bool knownNeverNearer(uint32_t query, uint32_t drawn);
+
     /// Whether a candidate's triangle is nearer at the query's pixel: candidates are a caller's
     /// entries (triangles, set-ups) for the query, triangleOf(entry) their triangle, and
     /// irrelevant(entry) true where one cannot decide this pixel (outside it, certainly

@@ -109,9 +109,10 @@ TEST_F(Cli, BenchPaperQuickWritesEveryFigure) {
         EXPECT_DOUBLE_EQ(medians["cpu_order_ms"].get<double>(), median(order_ms)) << name;
         EXPECT_DOUBLE_EQ(medians["cpu_queries"].get<double>(), median(queries)) << name;
         EXPECT_DOUBLE_EQ(medians["cpu_cycle_queries"].get<double>(), median(cycle_queries)) << name;
-        // The plant's walls and glass panes make cycles on every frame: the search asks something.
+        // The plant's walls and glass panes make cycles on every frame (found by group tests or,
+        // for its large stuck set, from the cpu oracle's graph in one pass).
         if (name == "plant-walkthrough") {
-            EXPECT_GT(path["frames"][0]["cpu_cycle_queries"].get<uint64_t>(), 0u);
+            EXPECT_GT(path["frames"][0]["cpu_cycles"].get<uint64_t>(), 0u);
         }
         EXPECT_DOUBLE_EQ(medians["cpu_queries_per_primitive"].get<double>(),
                          median(queries) / path["primitives"].get<double>())

@@ -488,7 +488,12 @@ TEST_F(Cli, BenchOracleMeasuresEveryOracleInOneRun) {
 #endif
         EXPECT_EQ(oracles, expected) << workload;
         if (real) {
-            EXPECT_EQ(counts[workload]["cpu"], counts[workload]["cpu-reference"]) << workload;
+            // The same answers, but only the cpu oracle gives a stuck set's graph in one pass
+            // (OcclusionOracle::occlusionGraph), in place of the reference's group tests.
+            const auto queries = [&](const std::string& oracle) {
+                return std::stoull(counts[workload][oracle]);
+            };
+            EXPECT_LE(queries("cpu"), queries("cpu-reference")) << workload;
         }
     }
 }

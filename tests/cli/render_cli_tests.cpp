@@ -463,7 +463,7 @@ TEST_F(Cli, RenderCsvAndCamera) {
     EXPECT_EQ(rows[0], "frame,time_s,order_ms,render_ms,total_ms,passes,fragments,groups,"
                        "repaired_pixels,triangles,boxed_objects,culled_objects,queries,draws,"
                        "clears,iterations,stuck_iterations,cycle_queries,cycle_draws,hinted_cycles,"
-                       "max_abs,rmse,pixels_over_one");
+                       "graph_passes,max_abs,rmse,pixels_over_one");
     EXPECT_EQ(rows[2].substr(0, 2), "1,");
     const json doc = json::parse(readFile(path("r.json")));
     EXPECT_EQ(doc["frames"][1]["camera"]["projection"], "perspective");
