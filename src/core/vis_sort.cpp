@@ -24,7 +24,9 @@ constexpr uint32_t kWalksPerStuckIteration = 8;
 // A stuck set of at least this many primitives is ordered from the oracle's occlusion graph
 // where the oracle can give it (OcclusionOracle::occlusionGraph): one draw a member, where the
 // walks' group tests grow with the cycles (assimp's 2CylinderEngine.glb: 1,319 cycle draws for
-// a component of 84). Below it the walks are cheaper: measured in docs/benchmarks.md.
+// a component of 84, now 84 draws; the ten-times power plant: 1.76 million for 2,420, now
+// 3,313; docs/benchmarks.md). 16 is not measured against the walks yet: two- and three-member
+// cycles, the common ones, cost the walks a few group tests.
 constexpr std::size_t kGraphPassMembers = 16;
 
 // seen: scratch, so that the check (assertions on) allocates nothing once it has grown.
