@@ -72,15 +72,11 @@ void CpuOracle::Impl::makePixelLists(std::size_t tile, std::vector<uint32_t>& li
     for (uint32_t j = tile_starts_[tile]; j < tile_starts_[tile + 1]; ++j) {
         const uint32_t k = tile_setups_[j];
         const StoredSetup& s = setups_[k];
-        if (anyCertainlyCoveredIn(
-                s, std::max<uint32_t>(x_first, s.px_min), std::min<uint32_t>(x_end - 1, s.px_max),
-                std::max<uint32_t>(y_first, s.py_min), std::min<uint32_t>(y_end - 1, s.py_max)))
-            for (uint32_t py = std::max<uint32_t>(y_first, s.py_min); py < y_end && py <= s.py_max;
-                 ++py)
-                for (uint32_t px = std::max<uint32_t>(x_first, s.px_min);
-                     px < x_end && px <= s.px_max; ++px)
-                    if (certainlyCovers(s, px, py))
-                        entries.push_back({(py - y_first) * kTileSize + (px - x_first), s.d0, k});
+        for (uint32_t py = std::max<uint32_t>(y_first, s.py_min), x_lo, x_hi;
+             py < y_end && py <= s.py_max; ++py)
+            if (certainRowSpan(s, py, x_lo, x_hi))
+                for (uint32_t px = std::max(x_lo, x_first); px <= std::min(x_hi, x_end - 1); ++px)
+                    entries.push_back({(py - y_first) * kTileSize + (px - x_first), s.d0, k});
         if (s.band_first == 0)
             continue;
         // The band pixels are row by row (bandPixelsOf): the tile's rows are one run.
@@ -127,8 +123,7 @@ bool CpuOracle::Impl::behindSomethingDrawn(uint32_t query_setup, uint32_t px, ui
     uint32_t count = 0;
     const uint32_t* list = pixelList(px, py, count);
     std::optional<detail::DepthArbiter::Query> query; // made at the first set-up to ask about
-    std::optional<detail::TriangleCorners> query_corners;
-    const StoredSetup* asked = nullptr; // the last one asked about: not nearer
+    const StoredSetup* asked = nullptr;               // the last one asked about: not nearer
     for (uint32_t i = 0; i < count; ++i) {
         const uint32_t k = list[i];
         const StoredSetup& s = setups_[k];
@@ -142,13 +137,6 @@ bool CpuOracle::Impl::behindSomethingDrawn(uint32_t query_setup, uint32_t px, ui
         // alike: where a query ties with a stack of copies (assimp's OBJ/box_longline.obj has
         // 236 of each face) a pixel costs one question, not the stack.
         if (asked != nullptr && asked->d0 == s.d0 && std::memcmp(asked, &s, kSetupShapeBytes) == 0)
-            continue;
-        // A copy of the query's own triangle ties with it at every pixel: seen from the corners
-        // before the query's fragment is computed (assimp's MDL/HL1 bodypart files are nine
-        // copies of one triangle, every pixel of which was arbitrated).
-        if (!query_corners)
-            query_corners = detail::TriangleCorners::of(positions_, triangle);
-        if (detail::TriangleCorners::of(positions_, s.triangle()).sameCornersAs(*query_corners))
             continue;
         if (!query)
             query = arbiter_.query(triangle, px, py);

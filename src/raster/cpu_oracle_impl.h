@@ -304,24 +304,6 @@ struct CpuOracle::Impl {
         x_last = uint32_t(hi);
         return true;
     }
-    /// Whether some pixel of the rectangle [x0, x1] x [y0, y1] may be certainly covered by s: no
-    /// edge function is at most 0 at all four corners (each is affine, so its greatest value
-    /// over the rectangle is at a corner). False for an empty rectangle.
-    bool anyCertainlyCoveredIn(const StoredSetup& s, uint32_t x0, uint32_t x1, uint32_t y0,
-                               uint32_t y1) const {
-        if (x0 > x1 || y0 > y1)
-            return false;
-        for (int e = 0; e < 3; ++e) {
-            const int64_t at = s.edge_at_origin[e];
-            const int64_t x_lo = int64_t(x0) * s.edge_step_x[e],
-                          x_hi = int64_t(x1) * s.edge_step_x[e];
-            const int64_t y_lo = int64_t(y0) * s.edge_step_y[e],
-                          y_hi = int64_t(y1) * s.edge_step_y[e];
-            if (at + std::max(x_lo, x_hi) + std::max(y_lo, y_hi) <= 0)
-                return false;
-        }
-        return true;
-    }
     /// The primitive whose set-ups hold set-up k.
     uint32_t primitiveOfSetup(uint32_t k) const {
         return uint32_t(std::upper_bound(primitive_setups_.begin(),
