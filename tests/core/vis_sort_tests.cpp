@@ -257,6 +257,41 @@ TEST(VisSort, HintedOrdersTakeTheGraphOfTheGroupsMembers) {
     }
 }
 
+// An oracle that declines the one-pass graph (as CpuOracle does past its pair budget or member
+// limit): the stuck sets are then searched by group tests, with the same components.
+class DecliningGraphOracle : public GraphOracle {
+public:
+    using GraphOracle::GraphOracle;
+    bool occlusionGraph(std::span<const uint32_t>, std::vector<Occlusion>&) override {
+        ++graph_calls;
+        return false;
+    }
+    int graph_calls = 0;
+};
+
+TEST(VisSort, ADeclinedGraphLeavesLargeStuckSetsToGroupTests) {
+    std::mt19937 rng(41);
+    for (int trial = 0; trial < 20; ++trial) {
+        SCOPED_TRACE("trial " + std::to_string(trial));
+        const uint32_t n = 20 + rng() % 30;
+        DecliningGraphOracle g(n);
+        for (uint32_t p = 0; p < 18; ++p) // a ring of 18: stuck on at least 18 members
+            g.addEdge(p, (p + 1) % 18);
+        for (uint32_t a = 0; a < n; ++a)
+            for (uint32_t b = 0; b < n; ++b)
+                if (a != b && rng() % 100 < 4)
+                    g.addEdge(a, b);
+        std::vector<uint32_t> start = identity(n);
+        std::shuffle(start.begin(), start.end(), rng);
+        const auto r = visSort(g, start);
+        expectRespectsEdges(g, r);
+        const std::set<std::vector<uint32_t>> reported(r.cycles.begin(), r.cycles.end());
+        EXPECT_EQ(reported, referenceCycles(g));
+        EXPECT_GT(g.graph_calls, 0); // asked, declined
+        EXPECT_EQ(r.stats.graph_passes, 0u);
+    }
+}
+
 TEST(VisSort, SmallStuckSetsAreSearchedByGroupTests) {
     OnePassGraphOracle g(3, false);
     g.addEdge(0, 1);

@@ -152,6 +152,33 @@ TEST(OcclusionGraph, TheSameEdgesOnEveryThreadCount) {
     EXPECT_EQ(graphs[2], graphs[0]);
 }
 
+// Ties stacked at every pixel (200 copies of one square, each its own object: 19,900 tied pairs a
+// pixel) pass the pair budget: the oracle declines, leaving the edges as they were, rather than
+// square its work; the orderer's group tests take the set (vis_sort_tests).
+TEST(OcclusionGraph, StackedTiesPastThePairBudgetAreDeclined) {
+    Model m;
+    const uint32_t copies = 200;
+    for (uint32_t c = 0; c < copies; ++c) {
+        const uint32_t first = uint32_t(m.positions.triangleCount());
+        test::addTriangle(m.positions, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0});
+        test::addTriangle(m.positions, {-1, -1, 0}, {1, 1, 0}, {-1, 1, 0});
+        m.objects.push_back({first, 2});
+    }
+    const ViewProjection view = frameCamera({}, m.positions.bounds(), 64, 64);
+    CpuOracle oracle;
+    oracle.bind(m.positions, view, m.objects);
+    std::vector<uint32_t> members(copies);
+    for (uint32_t i = 0; i < copies; ++i)
+        members[i] = i;
+    std::vector<Occlusion> edges{{7, 7}};
+    EXPECT_FALSE(oracle.occlusionGraph(members, edges));
+    EXPECT_EQ(edges, (std::vector<Occlusion>{{7, 7}}));
+    // A few of them are within the budget, and copies occlude nothing.
+    members.resize(20);
+    EXPECT_TRUE(oracle.occlusionGraph(members, edges));
+    EXPECT_EQ(edges, (std::vector<Occlusion>{{7, 7}}));
+}
+
 TEST(OcclusionGraph, OnlyUnderTheExactRule) {
     const Model m = crossingSoup(3, 20);
     const ViewProjection view = frameCamera({}, m.positions.bounds(), 64, 48);
