@@ -130,28 +130,6 @@ TEST(OcclusionGraph, ConnectsWhatTheExactGraphConnects) {
     EXPECT_GT(true_edges, 1000u);
 }
 
-// The strips split over 1, 2 and 3 threads give the same edges, in the same order.
-TEST(OcclusionGraph, TheSameEdgesOnEveryThreadCount) {
-    const Model m = crossingSoup(4, 80);
-    const ViewProjection view = frameCamera({}, m.positions.bounds(), 160, 120);
-    std::vector<uint32_t> members(m.objects.size());
-    for (uint32_t i = 0; i < members.size(); ++i)
-        members[i] = uint32_t(members.size()) - 1 - i;
-    std::vector<std::vector<Occlusion>> graphs;
-    for (uint32_t threads : {1u, 2u, 3u}) {
-        CpuOracleOptions options;
-        options.threads = threads;
-        options.parallel_threshold = 0;
-        CpuOracle oracle(options);
-        oracle.bind(m.positions, view, m.objects);
-        graphs.emplace_back();
-        EXPECT_TRUE(oracle.occlusionGraph(members, graphs.back()));
-    }
-    EXPECT_GT(graphs[0].size(), 50u);
-    EXPECT_EQ(graphs[1], graphs[0]);
-    EXPECT_EQ(graphs[2], graphs[0]);
-}
-
 // Ties stacked at every pixel (200 copies of one square, each its own object: 19,900 tied pairs a
 // pixel) pass the pair budget: the oracle declines, leaving the edges as they were, rather than
 // square its work; the orderer's group tests take the set (vis_sort_tests).

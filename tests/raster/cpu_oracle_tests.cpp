@@ -774,6 +774,33 @@ TEST(CpuOracle, PassesOnALargeViewportMatchWithEveryBandCount) {
         comparePasses(p, viewOf(p.bounds(), projection, 803, 611), primitives, 17);
 }
 
+// The one-pass occlusion graph's strips split over 1, 2 and 3 threads give the same edges, in
+// the same order (here, in the raster tests, so that ThreadSanitizer runs its bands; its edges
+// are checked against the exact ground truth in tests/order/occlusion_graph_tests.cpp).
+TEST(CpuOracle, OcclusionGraphIsTheSameOnEveryThreadCount) {
+    const TrianglePositions p = randomSoup(4, 160, 0.2, 0.6);
+    std::vector<PrimitiveRange> primitives;
+    for (uint32_t t = 0; t < p.triangleCount(); ++t)
+        primitives.push_back({t, 1});
+    const ViewProjection view = frameCamera({}, p.bounds(), 160, 120);
+    std::vector<uint32_t> members(primitives.size());
+    for (uint32_t i = 0; i < members.size(); ++i)
+        members[i] = uint32_t(members.size()) - 1 - i;
+    std::vector<std::vector<Occlusion>> graphs;
+    for (uint32_t threads : {1u, 2u, 3u}) {
+        CpuOracleOptions options;
+        options.threads = threads;
+        options.parallel_threshold = 0;
+        CpuOracle oracle(options);
+        oracle.bind(p, view, primitives);
+        graphs.emplace_back();
+        EXPECT_TRUE(oracle.occlusionGraph(members, graphs.back()));
+    }
+    EXPECT_GT(graphs[0].size(), 50u);
+    EXPECT_EQ(graphs[1], graphs[0]);
+    EXPECT_EQ(graphs[2], graphs[0]);
+}
+
 TEST(CpuOracle, VisSortOrderMatchesReferenceOnBunnies) {
     const Result<Scene> loaded = samples::loadScene("builtin:bunnies?n=6");
     ASSERT_TRUE(loaded) << loaded.error;
