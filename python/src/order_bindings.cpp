@@ -42,7 +42,8 @@ OrderResult resultOf(FrameOrder&& frame, const PythonCamera& camera) {
 // one's order. One call at a time: a second thread waits for the first.
 class Orderer {
 public:
-    Orderer(const py::object& objects, const std::string& level, const std::string& oracle) {
+    Orderer(const py::object& objects, const std::string& level, const std::string& oracle,
+            uint32_t threads) {
         const Result<OrderLevel> parsed_level = parseOrderLevel(level);
         if (!parsed_level)
             throw py::value_error(parsed_level.error);
@@ -68,7 +69,9 @@ public:
             }
             GlTurn turn(gl_);
 #endif
-            made = makeOracle(*kind.value);
+            OracleOptions options;
+            options.threads = threads;
+            made = makeOracle(*kind.value, options);
         }
         if (!made)
             throw std::runtime_error(made.error);
@@ -161,12 +164,13 @@ void bindOrder(py::module_& m) {
     py::class_<Orderer>(m, "Orderer",
                         "Orders successive frames of the same objects, each frame starting from "
                         "the last one's order: about linear work on coherent frames")
-        .def(py::init<const py::object&, const std::string&, const std::string&>(),
+        .def(py::init<const py::object&, const std::string&, const std::string&, uint32_t>(),
              py::arg("objects") = py::none(), py::kw_only(), py::arg("level") = "object",
-             py::arg("oracle") = "cpu",
+             py::arg("oracle") = "cpu", py::arg("threads") = 0u,
              "objects: a Scene (kept alive by the orderer), integer (first, count) ranges (K, 2) "
              "or counts (K,), or None: every triangle its own object. level: object, triangle or "
-             "multistage. oracle: cpu, cpu-reference, exact or gl")
+             "multistage. oracle: cpu, cpu-reference, exact or gl. threads: the cpu oracle's, the "
+             "calling one included (0: one per core; the order never depends on it)")
         .def(
             "order",
             [](Orderer& orderer, const py::object& positions, const py::object& camera,
@@ -181,17 +185,17 @@ void bindOrder(py::module_& m) {
         "order",
         [](const py::object& positions, const py::object& objects, const py::object& camera,
            const py::object& size, const std::string& level, const std::string& oracle,
-           const py::object& triangles, const py::object& time) {
+           const py::object& triangles, const py::object& time, uint32_t threads) {
             const bool scene = py::isinstance<Scene>(positions);
             if (scene && !objects.is_none())
                 throw py::value_error("a Scene brings its own objects: objects must be None");
-            Orderer orderer(scene ? positions : objects, level, oracle);
+            Orderer orderer(scene ? positions : objects, level, oracle, threads);
             return orderer.order(positions, triangles, camera, size, time);
         },
         py::arg("positions"), py::arg("objects") = py::none(), py::arg("camera") = py::none(),
         py::arg("size") = py::make_tuple(1024, 1024), py::arg("level") = "object",
         py::arg("oracle") = "cpu", py::kw_only(), py::arg("triangles") = py::none(),
-        py::arg("time") = py::none(),
+        py::arg("time") = py::none(), py::arg("threads") = 0u,
         ("One frame's order (Orderer keeps it for the next). objects as Orderer's. " +
          std::string(kOrderDoc))
             .c_str());

@@ -26,7 +26,7 @@ FramePipelineDef pipelineDefOf(const std::string& method, const std::string& lev
                                const std::string& oracle, bool all_transparent, double alpha,
                                const std::string& shading, int samples, const std::string& check,
                                const py::handle& background, bool highlight_collisions,
-                               double lod_error) {
+                               double lod_error, uint32_t threads) {
     FramePipelineDef def;
     def.highlight_collisions = highlight_collisions;
     RenderSettings& settings = def.settings;
@@ -42,6 +42,7 @@ FramePipelineDef pipelineDefOf(const std::string& method, const std::string& lev
     if (!parsed_oracle)
         throw py::value_error(parsed_oracle.error);
     settings.oracle = *parsed_oracle.value;
+    settings.oracle_options.threads = threads;
     settings.all_transparent = all_transparent;
     settings.alpha = float(alpha);
     const Result<Shading> parsed_shading = parseShading(shading);
@@ -148,7 +149,8 @@ constexpr const char* kSettingsDoc =
     "the triangles that intersect another object's in opaque magenta, the rest dimmed, each "
     "frame (stats then count the collisions). lod_error: levels of detail within that many "
     "pixels, objects out of view left out (0: every triangle; stats count the triangles "
-    "drawn). As the command line's render options.";
+    "drawn). threads: the cpu oracle's, the calling one included (0: one per core; the "
+    "picture never depends on it). As the command line's render options.";
 
 } // namespace
 
@@ -158,12 +160,12 @@ void bindRender(py::module_& m) {
                          const std::string& level, const std::string& oracle, bool all_transparent,
                          double alpha, const std::string& shading, int samples,
                          const std::string& check, const py::object& background,
-                         bool highlight_collisions, double lod_error) {
+                         bool highlight_collisions, double lod_error, uint32_t threads) {
         if (!scene)
             throw py::value_error("render needs a Scene (vissort.load or vissort.builtin)");
         return std::make_unique<Renderer>(
             scene, pipelineDefOf(method, level, oracle, all_transparent, alpha, shading, samples,
-                                 check, background, highlight_collisions, lod_error));
+                                 check, background, highlight_collisions, lod_error, threads));
     };
     py::class_<Renderer>(m, "Renderer",
                          "Renders frames of one scene with transparency; each frame starts "
@@ -173,7 +175,7 @@ void bindRender(py::module_& m) {
              py::arg("all_transparent") = false, py::arg("alpha") = 0.5, py::arg("shading") = "lit",
              py::arg("samples") = 1, py::arg("check") = "auto",
              py::arg("background") = defaultBackground(), py::arg("highlight_collisions") = false,
-             py::arg("lod_error") = 0.0, kSettingsDoc)
+             py::arg("lod_error") = 0.0, py::arg("threads") = 0u, kSettingsDoc)
         .def("render", &Renderer::render, py::arg("camera") = py::none(),
              py::arg("size") = py::make_tuple(1024, 1024), py::kw_only(),
              py::arg("time") = py::none(), py::arg("positions") = py::none(),
@@ -189,9 +191,11 @@ void bindRender(py::module_& m) {
                const std::string& oracle, bool all_transparent, double alpha,
                const std::string& shading, int samples, const std::string& check,
                const py::object& background, bool highlight_collisions, double lod_error,
-               const py::object& time, const py::object& positions, const py::object& triangles) {
-            auto renderer = make(scene, method, level, oracle, all_transparent, alpha, shading,
-                                 samples, check, background, highlight_collisions, lod_error);
+               uint32_t threads, const py::object& time, const py::object& positions,
+               const py::object& triangles) {
+            auto renderer =
+                make(scene, method, level, oracle, all_transparent, alpha, shading, samples, check,
+                     background, highlight_collisions, lod_error, threads);
             return renderer->render(camera, size, time, positions, triangles);
         },
         py::arg("scene"), py::arg("camera") = py::none(),
@@ -200,7 +204,7 @@ void bindRender(py::module_& m) {
         py::arg("alpha") = 0.5, py::arg("shading") = "lit", py::arg("samples") = 1,
         py::arg("check") = "auto", py::arg("background") = defaultBackground(),
         py::arg("highlight_collisions") = false, py::arg("lod_error") = 0.0,
-        py::arg("time") = py::none(), py::arg("positions") = py::none(),
+        py::arg("threads") = 0u, py::arg("time") = py::none(), py::arg("positions") = py::none(),
         py::arg("triangles") = py::none(),
         ("One frame as an (H, W, 4) uint8 RGBA image (Renderer renders many). " +
          std::string(kSettingsDoc))

@@ -6,6 +6,7 @@ import threading
 import time
 
 import numpy as np
+import pytest
 
 import vissort
 
@@ -91,3 +92,40 @@ def test_one_orderer_from_two_threads_is_serialised():
     expected = vissort.order(scene, level="triangle", size=(64, 64), time=0.4).order.tolist()
     results = run_on_threads(lambda: orderer.order(time=0.4, size=(64, 64)).order.tolist(), 2, 4)
     assert len(results) == 8 and all(r == expected for r in results)
+
+
+def test_the_cpu_oracles_threads_never_change_an_order():
+    """threads=0 (one per core, the default), 1, 2 and 3 give the same orders and counts over two
+    coherent frames of the pile, whose stuck set goes to the one-pass graph."""
+    scene = vissort.builtin("pile")
+    runs = []
+    for threads in (None, 1, 2, 3):
+        options = {} if threads is None else {"threads": threads}
+        orderer = vissort.Orderer(scene, **options)
+        frames = [orderer.order(size=(320, 240), time=t) for t in (0.0, 1 / 30)]
+        runs.append([(f.order.tolist(), [c.tolist() for c in f.cycles],
+                      {k: v for k, v in f.stats.items() if k != "ms"}) for f in frames])
+    assert runs[0][0][2]["graph_passes"] >= 1
+    for run in runs[1:]:
+        assert run == runs[0]
+    one = vissort.order(scene, size=(320, 240), threads=1)
+    assert one.order.tolist() == runs[0][0][0]
+
+
+def test_a_negative_thread_count_is_refused():
+    scene = vissort.builtin("slabs")
+    try:
+        vissort.Orderer(scene, threads=-1)
+    except TypeError as error:
+        assert "threads" in str(error) or "incompatible" in str(error)
+    else:
+        raise AssertionError("threads=-1 was accepted")
+
+
+@pytest.mark.skipif(not vissort.has_gl, reason="render needs OpenGL; this build has none")
+def test_renders_are_the_same_on_every_thread_count():
+    scene = vissort.builtin("bunnies", n=6, seed=1)
+    images = [vissort.render(scene, size=(160, 120), all_transparent=True, threads=t)
+              for t in (0, 1, 3)]
+    assert np.array_equal(images[0], images[1])
+    assert np.array_equal(images[0], images[2])

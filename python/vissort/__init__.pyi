@@ -342,11 +342,13 @@ class Orderer:
         *,
         level: _Level = "object",
         oracle: _Oracle = "cpu",
+        threads: int = 0,
     ) -> None:
         """objects: a Scene (kept alive by the orderer), integer (first, count) ranges (K, 2)
         or counts (K,), or None: the objects of the Scene the first frame
         is, else every triangle its own object. level: object, triangle or multistage. oracle:
-        cpu, cpu-reference, exact or gl."""
+        cpu, cpu-reference, exact or gl. threads: the cpu oracle's, the calling one included
+        (0: one per core; the order never depends on it)."""
     def order(
         self,
         positions: Union[Scene, npt.ArrayLike, None] = None,
@@ -372,13 +374,14 @@ def order(
     *,
     triangles: Optional[npt.ArrayLike] = None,
     time: Optional[_Seconds] = None,
+    threads: int = 0,
 ) -> OrderResult:
     """One frame's order (Orderer keeps it for the next). objects as Orderer's (None with a
     Scene, which brings its own). Orders positions front to back. positions: a Scene (at time,
     default 0) or triangle corners, float (T, 3, 3) or (V, 3) with triangles=(T, 3) indices.
     camera: a Camera (ValueError for anything else but None); default the command line's (a
     scene's own, else the geometry framed). size: (width, height) of the oracle's image.
-    Releases the GIL."""
+    threads as Orderer's. Releases the GIL."""
 
 class Renderer:
     """Renders frames of one scene with transparency; each frame starts from the last one's
@@ -399,6 +402,7 @@ class Renderer:
         background: npt.ArrayLike = (0.3, 0.32, 0.36, 1.0),
         highlight_collisions: bool = False,
         lod_error: float = 0.0,
+        threads: int = 0,
     ) -> None:
         """method: vissort, unsorted, centroid, peel, dual-peel, linked-list or weighted. level
         and oracle: vissort's ordering (centroid's unit). all_transparent with alpha: every
@@ -407,8 +411,9 @@ class Renderer:
         background: (r, g, b[, a]) in [0, 1]. highlight_collisions: the triangles that
         intersect another object's in magenta, each frame (stats then count the collisions).
         lod_error: levels of detail within that many pixels, objects out of view left out (0:
-        every triangle; stats count the triangles drawn). As the command line's render
-        options."""
+        every triangle; stats count the triangles drawn). threads: the cpu oracle's, the
+        calling one included (0: one per core; the picture never depends on it). As the command
+        line's render options."""
     def render(
         self,
         camera: Optional[Camera] = None,
@@ -442,6 +447,7 @@ def render(
     background: npt.ArrayLike = (0.3, 0.32, 0.36, 1.0),
     highlight_collisions: bool = False,
     lod_error: float = 0.0,
+    threads: int = 0,
     time: Optional[_Seconds] = None,
     positions: Optional[npt.ArrayLike] = None,
     triangles: Optional[npt.ArrayLike] = None,
@@ -452,7 +458,7 @@ def render(
     method: vissort, unsorted, centroid, peel, dual-peel, linked-list or weighted. level and
     oracle: vissort's ordering (centroid's unit). all_transparent with alpha: every object
     transparent. shading: lit, flat or membrane. samples: 1, 2, 4 or 8 a pixel, averaged
-    (anti-aliasing). check: auto, on or off (vissort's per-pixel check and repair). background: (r, g, b[, a]) in [0, 1]. As the command line's render options.
+    (anti-aliasing). check: auto, on or off (vissort's per-pixel check and repair). background: (r, g, b[, a]) in [0, 1]. threads as Renderer's. As the command line's render options.
     Needs OpenGL (has_gl); RuntimeError without it. Releases the GIL."""
 
 class CollisionDetector:

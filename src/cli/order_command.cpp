@@ -87,6 +87,7 @@ CLI::App* addOrderCommand(CLI::App& app, OrderOptions& options) {
         ->add_option("scene", options.scene, "Mesh file, JSON scene, or builtin:NAME?key=value&...")
         ->required();
     addObjectsOption(*command, options.objects);
+    addThreadsOption(*command);
     addViewOptions(*command, options.view);
     command->add_option("--level", options.level, "object, triangle or multistage")
         ->capture_default_str();

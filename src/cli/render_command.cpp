@@ -121,6 +121,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
         ->add_option("scene", options.scene, "Mesh file, JSON scene, or builtin:NAME?key=value&...")
         ->required(kWithGl);
     addObjectsOption(*command, options.objects);
+    addThreadsOption(*command);
     addViewOptions(*command, options.view);
     addRendererOptions(*command, options.renderer,
                        blendMethodNames() + "; all: every method side by side in one PNG, with "

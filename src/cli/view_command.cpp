@@ -7,6 +7,7 @@
 
 #if VISSORT_WITH_VIEWER
 #include "cli/command_line_errors.h"
+#include "cli/environment.h"
 #include "cli/text_output.h"
 #include "cli/volume_options.h"
 #include "viewer/input_script.h"
@@ -36,6 +37,7 @@ CLI::App* addViewCommand(CLI::App& app, ViewerOptions& options) {
                      "vissort volume takes it), rendered by the volume renderer")
         ->required(kWithViewer);
     addObjectsOption(*command, options.objects);
+    addThreadsOption(*command);
     options.view.size = "1024x768";
     addViewOptions(*command, options.view);
     addRendererOptions(*command, options.renderer,

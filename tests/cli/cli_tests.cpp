@@ -216,6 +216,40 @@ TEST_F(Cli, ScenePathFollowsThePowerplantsWalkthrough) {
     EXPECT_NE(orderOf(doc["frames"][0]), orderOf(doc["frames"][59]));
 }
 
+// The cpu oracle's threads (--threads, VISSORT_THREADS, by default one per core) never change
+// an order: builtin:pile's thousand bodies, whose stuck set is ordered from the one-pass graph,
+// over two coherent frames, at 1, 2 and 3 threads and the default give the same orders, cycles
+// and counts; the option wins over the variable.
+TEST_F(Cli, OrdersAreTheSameOnEveryThreadCount) {
+    const std::vector<std::string> args{"builtin:pile", "--size", "320x240", "--frames", "2"};
+    const auto withoutTimes = [](json doc) {
+        for (json& frame : doc["frames"])
+            frame["stats"].erase("ms");
+        doc.erase("stats");
+        return doc["frames"];
+    };
+    const json one = withoutTimes(orderJson([&] {
+        auto a = args;
+        a.insert(a.end(), {"--threads", "1"});
+        return a;
+    }()));
+    ASSERT_EQ(one.size(), 2u);
+    EXPECT_GE(one[0]["stats"]["graph_passes"].get<int>(), 1) << "no one-pass graph was taken";
+    for (const char* threads : {"2", "3"}) {
+        auto a = args;
+        a.insert(a.end(), {"--threads", threads});
+        EXPECT_EQ(withoutTimes(orderJson(a)), one) << threads << " threads";
+    }
+    EXPECT_EQ(withoutTimes(orderJson(args)), one) << "the default (one per core)";
+    // The option over the variable: a bad variable is still refused, a good one overridden.
+    auto a = args;
+    a.insert(a.end(), {"--threads", "1", "--json", path("env.json")});
+    a.insert(a.begin(), "order");
+    const RunResult r = run(a, 60, "env VISSORT_THREADS=3");
+    EXPECT_EQ(r.code, 0) << r;
+    EXPECT_EQ(withoutTimes(json::parse(readFile(path("env.json")))), one);
+}
+
 TEST_F(Cli, FramesPrintOneLineEach) {
     const RunResult r =
         run({"order", kBunnies, "--size", "32x24", "--frames", "3", "--path", "flythrough"});
@@ -594,6 +628,16 @@ TEST_F(Cli, ErrorSize) {
     expectError({"order", kBunnies, "--size", "0x10"}, kUsage, {"--size"});
     expectError({"order", kBunnies, "--size", "100000x100000"}, kUsage, {"--size"});
     expectError({"order", kBunnies, "--size", "abc"}, kUsage, {"--size"});
+}
+
+TEST_F(Cli, ErrorThreads) {
+    expectError({"order", kBunnies, "--threads", "257"}, kUsage, {"--threads", "257"});
+    expectError({"render", kBunnies, "--threads", "-1", "-o", path("x.png")}, kUsage,
+                {"--threads"});
+    expectError({"order", kBunnies, "--threads", "two"}, kUsage, {"--threads"});
+    const RunResult r = run({"order", kBunnies}, 60, "env VISSORT_THREADS=two");
+    EXPECT_NE(r.code, 0) << r;
+    EXPECT_NE(r.err.find("VISSORT_THREADS must be a whole number"), std::string::npos) << r;
 }
 
 TEST_F(Cli, ErrorInfoOptions) {

@@ -135,10 +135,13 @@ class _Engine:
             self.worker = vissort.CollisionDetector(self.scene, **job.options)
             return
         self.base = vissort.Camera.default(self.scene, job.size, frames=job.camera_frames)
+        # One oracle thread a task unless asked: the workers are the batch's parallelism, and
+        # each using every core would oversubscribe the machine.
+        options = {"threads": 1, **job.options}
         if job.kind == "order":
-            self.worker = vissort.Orderer(self.scene, **job.options)
+            self.worker = vissort.Orderer(self.scene, **options)
         else:
-            self.worker = vissort.Renderer(self.scene, **job.options)
+            self.worker = vissort.Renderer(self.scene, **options)
 
 
 # The engine of the last job this process ran chunks of (one: a renderer holds a GL context).
