@@ -166,11 +166,11 @@ void bindOrder(py::module_& m) {
                         "the last one's order: about linear work on coherent frames")
         .def(py::init<const py::object&, const std::string&, const std::string&, uint32_t>(),
              py::arg("objects") = py::none(), py::kw_only(), py::arg("level") = "object",
-             py::arg("oracle") = "cpu", py::arg("threads") = 0u,
+             py::arg("oracle") = "cpu", py::arg("threads") = 1u,
              "objects: a Scene (kept alive by the orderer), integer (first, count) ranges (K, 2) "
              "or counts (K,), or None: every triangle its own object. level: object, triangle or "
              "multistage. oracle: cpu, cpu-reference, exact or gl. threads: the cpu oracle's, the "
-             "calling one included (0: one per core; the order never depends on it)")
+             "calling one included (default 1; 0: one per core; the order never depends on it)")
         .def(
             "order",
             [](Orderer& orderer, const py::object& positions, const py::object& camera,
@@ -195,7 +195,7 @@ void bindOrder(py::module_& m) {
         py::arg("positions"), py::arg("objects") = py::none(), py::arg("camera") = py::none(),
         py::arg("size") = py::make_tuple(1024, 1024), py::arg("level") = "object",
         py::arg("oracle") = "cpu", py::kw_only(), py::arg("triangles") = py::none(),
-        py::arg("time") = py::none(), py::arg("threads") = 0u,
+        py::arg("time") = py::none(), py::arg("threads") = 1u,
         ("One frame's order (Orderer keeps it for the next). objects as Orderer's. " +
          std::string(kOrderDoc))
             .c_str());

@@ -175,7 +175,7 @@ void bindRender(py::module_& m) {
              py::arg("all_transparent") = false, py::arg("alpha") = 0.5, py::arg("shading") = "lit",
              py::arg("samples") = 1, py::arg("check") = "auto",
              py::arg("background") = defaultBackground(), py::arg("highlight_collisions") = false,
-             py::arg("lod_error") = 0.0, py::arg("threads") = 0u, kSettingsDoc)
+             py::arg("lod_error") = 0.0, py::arg("threads") = 1u, kSettingsDoc)
         .def("render", &Renderer::render, py::arg("camera") = py::none(),
              py::arg("size") = py::make_tuple(1024, 1024), py::kw_only(),
              py::arg("time") = py::none(), py::arg("positions") = py::none(),
@@ -204,7 +204,7 @@ void bindRender(py::module_& m) {
         py::arg("alpha") = 0.5, py::arg("shading") = "lit", py::arg("samples") = 1,
         py::arg("check") = "auto", py::arg("background") = defaultBackground(),
         py::arg("highlight_collisions") = false, py::arg("lod_error") = 0.0,
-        py::arg("threads") = 0u, py::arg("time") = py::none(), py::arg("positions") = py::none(),
+        py::arg("threads") = 1u, py::arg("time") = py::none(), py::arg("positions") = py::none(),
         py::arg("triangles") = py::none(),
         ("One frame as an (H, W, 4) uint8 RGBA image (Renderer renders many). " +
          std::string(kSettingsDoc))

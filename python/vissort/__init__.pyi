@@ -342,13 +342,13 @@ class Orderer:
         *,
         level: _Level = "object",
         oracle: _Oracle = "cpu",
-        threads: int = 0,
+        threads: int = 1,
     ) -> None:
         """objects: a Scene (kept alive by the orderer), integer (first, count) ranges (K, 2)
         or counts (K,), or None: the objects of the Scene the first frame
         is, else every triangle its own object. level: object, triangle or multistage. oracle:
         cpu, cpu-reference, exact or gl. threads: the cpu oracle's, the calling one included
-        (0: one per core; the order never depends on it)."""
+        (default 1; 0: one per core; the order never depends on it)."""
     def order(
         self,
         positions: Union[Scene, npt.ArrayLike, None] = None,
@@ -374,7 +374,7 @@ def order(
     *,
     triangles: Optional[npt.ArrayLike] = None,
     time: Optional[_Seconds] = None,
-    threads: int = 0,
+    threads: int = 1,
 ) -> OrderResult:
     """One frame's order (Orderer keeps it for the next). objects as Orderer's (None with a
     Scene, which brings its own). Orders positions front to back. positions: a Scene (at time,
@@ -402,7 +402,7 @@ class Renderer:
         background: npt.ArrayLike = (0.3, 0.32, 0.36, 1.0),
         highlight_collisions: bool = False,
         lod_error: float = 0.0,
-        threads: int = 0,
+        threads: int = 1,
     ) -> None:
         """method: vissort, unsorted, centroid, peel, dual-peel, linked-list or weighted. level
         and oracle: vissort's ordering (centroid's unit). all_transparent with alpha: every
@@ -412,7 +412,7 @@ class Renderer:
         intersect another object's in magenta, each frame (stats then count the collisions).
         lod_error: levels of detail within that many pixels, objects out of view left out (0:
         every triangle; stats count the triangles drawn). threads: the cpu oracle's, the
-        calling one included (0: one per core; the picture never depends on it). As the command
+        calling one included (default 1; 0: one per core; the picture never depends on it). As the command
         line's render options."""
     def render(
         self,
@@ -447,7 +447,7 @@ def render(
     background: npt.ArrayLike = (0.3, 0.32, 0.36, 1.0),
     highlight_collisions: bool = False,
     lod_error: float = 0.0,
-    threads: int = 0,
+    threads: int = 1,
     time: Optional[_Seconds] = None,
     positions: Optional[npt.ArrayLike] = None,
     triangles: Optional[npt.ArrayLike] = None,
@@ -590,7 +590,7 @@ class VolumeRenderer:
         method: _VolumeMethod = "vissort",
         *,
         oracle: _Oracle = "cpu",
-        threads: int = 0,
+        threads: int = 1,
     ) -> None: ...
     def render(
         self,

@@ -1,7 +1,7 @@
 #pragma once
 // The environment variables the vissort command reads, in one place (the library reads none;
 // README.md, "Environment"):
-//   VISSORT_THREADS      threads of the cpu oracle's passes (0: one per core, the default); the
+//   VISSORT_THREADS      threads of the cpu oracle's passes (default 1; 0: one per core); the
 //                        `--threads` option of order, render and view wins over it
 //   VISSORT_SIMD=0       the cpu oracle's scalar rows instead of AVX2 (benchmarks of the fallback)
 //   VISSORT_GL_PLATFORM  auto, device or surfaceless: where the OpenGL context is made
@@ -22,7 +22,7 @@ namespace vissort::cli {
 Status applyEnvironment();
 
 /// `--threads N` on a command whose ordering runs on the cpu oracle: its passes' threads, the
-/// calling one included (0: one per core, the default); over VISSORT_THREADS.
+/// calling one included (default 1; 0: one per core); over VISSORT_THREADS.
 void addThreadsOption(CLI::App& command);
 
 /// The oracle options the environment and `--threads` ask for (threads, SIMD), for every oracle the

@@ -216,9 +216,9 @@ TEST_F(Cli, ScenePathFollowsThePowerplantsWalkthrough) {
     EXPECT_NE(orderOf(doc["frames"][0]), orderOf(doc["frames"][59]));
 }
 
-// The cpu oracle's threads (--threads, VISSORT_THREADS, by default one per core) never change
+// The cpu oracle's threads (--threads, VISSORT_THREADS; 0: one per core) never change
 // an order: builtin:pile's thousand bodies, whose stuck set is ordered from the one-pass graph,
-// over two coherent frames, at 1, 2 and 3 threads and the default give the same orders, cycles
+// over two coherent frames, at 1, 2, 3 and 0 threads give the same orders, cycles
 // and counts; the option wins over the variable.
 TEST_F(Cli, OrdersAreTheSameOnEveryThreadCount) {
     const std::vector<std::string> args{"builtin:pile", "--size", "320x240", "--frames", "2"};
@@ -240,7 +240,10 @@ TEST_F(Cli, OrdersAreTheSameOnEveryThreadCount) {
         a.insert(a.end(), {"--threads", threads});
         EXPECT_EQ(withoutTimes(orderJson(a)), one) << threads << " threads";
     }
-    EXPECT_EQ(withoutTimes(orderJson(args)), one) << "the default (one per core)";
+    auto per_core = args;
+    per_core.insert(per_core.end(), {"--threads", "0"});
+    EXPECT_EQ(withoutTimes(orderJson(per_core)), one) << "one per core";
+    EXPECT_EQ(withoutTimes(orderJson(args)), one) << "the default";
     // The option over the variable: a bad variable is still refused, a good one overridden.
     auto a = args;
     a.insert(a.end(), {"--threads", "1", "--json", path("env.json")});

@@ -135,8 +135,8 @@ class _Engine:
             self.worker = vissort.CollisionDetector(self.scene, **job.options)
             return
         self.base = vissort.Camera.default(self.scene, job.size, frames=job.camera_frames)
-        # One oracle thread a task unless asked: the workers are the batch's parallelism, and
-        # each using every core would oversubscribe the machine.
+        # One oracle thread a task unless asked, whatever the module's default: the workers are
+        # the batch's parallelism, and each using every core would oversubscribe the machine.
         options = {"threads": 1, **job.options}
         if job.kind == "order":
             self.worker = vissort.Orderer(self.scene, **options)
