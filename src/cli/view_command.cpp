@@ -4,10 +4,10 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "cli/environment.h"
 
 #if VISSORT_WITH_VIEWER
 #include "cli/command_line_errors.h"
-#include "cli/environment.h"
 #include "cli/text_output.h"
 #include "cli/volume_options.h"
 #include "viewer/input_script.h"
