@@ -149,8 +149,8 @@ constexpr const char* kSettingsDoc =
     "the triangles that intersect another object's in opaque magenta, the rest dimmed, each "
     "frame (stats then count the collisions). lod_error: levels of detail within that many "
     "pixels, objects out of view left out (0: every triangle; stats count the triangles "
-    "drawn). threads: the cpu oracle's, the calling one included (0: one per core; the "
-    "picture never depends on it). As the command line's render options.";
+    "drawn). threads: the cpu oracle's, the calling one included (default 1; 0: one per "
+    "core; the picture never depends on it). As the command line's render options.";
 
 } // namespace
 

@@ -412,8 +412,8 @@ class Renderer:
         intersect another object's in magenta, each frame (stats then count the collisions).
         lod_error: levels of detail within that many pixels, objects out of view left out (0:
         every triangle; stats count the triangles drawn). threads: the cpu oracle's, the
-        calling one included (default 1; 0: one per core; the picture never depends on it). As the command
-        line's render options."""
+        calling one included (default 1; 0: one per core; the picture never depends on it). As
+        the command line's render options."""
     def render(
         self,
         camera: Optional[Camera] = None,
@@ -590,7 +590,7 @@ class VolumeRenderer:
         method: _VolumeMethod = "vissort",
         *,
         oracle: _Oracle = "cpu",
-        threads: int = 1,
+        threads: int = 0,
     ) -> None: ...
     def render(
         self,
