@@ -1,4 +1,5 @@
-"""Shared fixtures: the command line tool the module is compared with, and the repository."""
+"""Shared fixtures: the command line tool the module is compared with, the exact ground truth's
+order check, and the repository."""
 
 import json
 import os
@@ -49,3 +50,24 @@ def cli_json(cli, tmp_path_factory):
 
 def source_file(relative):
     return str(SOURCE_DIR / relative)
+
+
+@pytest.fixture(scope="session")
+def order_verdict():
+    """The exact ground truth's verdict on one frame's order (tests/support/order_check): the
+    frame the command line and the module order for (scene, size, path, frames, frame) with the
+    default camera. Returns {"permutation": 0/1, "violations": V, "checked": C}."""
+    tool = os.environ.get("VISSORT_ORDER_CHECK")
+    if not tool:
+        pytest.fail("VISSORT_ORDER_CHECK must name the built order_check tool (ctest sets it)")
+
+    def verdict(scene, size, path, frames, frame, order, cycles):
+        text = " ".join(map(str, order)) + "\n" + "".join(
+            " ".join(map(str, c)) + "\n" for c in cycles)
+        done = subprocess.run([tool, scene, str(size[0]), str(size[1]), path, str(frames),
+                               str(frame)], input=text, capture_output=True, text=True,
+                              check=True)
+        words = done.stdout.split()
+        return dict(zip(words[::2], map(int, words[1::2])))
+
+    return verdict

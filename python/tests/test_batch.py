@@ -157,20 +157,12 @@ def test_pairs_on_two_workers_equal_brute_force_on_every_frame(client):
     assert all(np.array_equal(a, b) for a, b in zip(here.results, expected))
 
 
-def check_order(frames, frame, order, cycles, path="orbit", scene=SCENE):
-    """The exact ground truth's verdict on one frame's order (tests/support/order_check)."""
-    tool = os.environ.get("VISSORT_ORDER_CHECK")
-    if not tool:
-        pytest.fail("VISSORT_ORDER_CHECK must name the built order_check tool (ctest sets it)")
-    text = " ".join(map(str, order)) + "\n" + "".join(
-        " ".join(map(str, c)) + "\n" for c in cycles)
-    done = subprocess.run([tool, scene, str(SIZE[0]), str(SIZE[1]), path, str(frames),
-                           str(frame)], input=text, capture_output=True, text=True, check=True)
-    words = done.stdout.split()
-    return dict(zip(words[::2], map(int, words[1::2])))
+def check_order(order_verdict, frames, frame, order, cycles, path="orbit", scene=SCENE):
+    """The exact ground truth's verdict on one frame's order (conftest's order_verdict)."""
+    return order_verdict(scene, SIZE, path, frames, frame, order, cycles)
 
 
-def test_orders_on_two_workers_are_valid_on_every_frame(client):
+def test_orders_on_two_workers_are_valid_on_every_frame(client, order_verdict):
     # Orders are not unique (a chunk's seed starts from no order), so each frame's is checked
     # against the exact ground truth, not against the plain loop's.
     frames = 7
@@ -178,13 +170,13 @@ def test_orders_on_two_workers_are_valid_on_every_frame(client):
                          progress=False)
     assert result.frame_numbers == list(range(frames))
     for f in range(frames):
-        verdict = check_order(frames, f, result.results[f], result.cycles[f])
+        verdict = check_order(order_verdict, frames, f, result.results[f], result.cycles[f])
         assert verdict["permutation"] == 1, f"frame {f}"
         assert verdict["violations"] == 0, f"frame {f}: {verdict}"
         assert verdict["checked"] > 0, f"frame {f}"
     assert list(result.stats["queries"] > 0) == [True] * frames
     # The check can fail: frame 0's order reversed is wrong where bunnies overlap.
-    wrong = check_order(frames, 0, result.results[0][::-1], [])
+    wrong = check_order(order_verdict, frames, 0, result.results[0][::-1], [])
     assert wrong["violations"] > 0
 
 
@@ -200,7 +192,7 @@ def brute_pairs(scene):
     return vissort.CollisionDetector(scene, method="brute").collide(scene)
 
 
-def test_a_static_scene_travels_to_the_workers_as_its_arrays(client):
+def test_a_static_scene_travels_to_the_workers_as_its_arrays(client, order_verdict):
     # The plant loaded here (a static Scene): the workers get it pickled, and each frame's order
     # is checked by the exact ground truth of the plant loaded by name.
     frames, spec = 5, "builtin:plant"
@@ -208,7 +200,8 @@ def test_a_static_scene_travels_to_the_workers_as_its_arrays(client):
                          client=client, progress=False)
     assert result.frame_numbers == list(range(frames))
     for f in range(frames):
-        verdict = check_order(frames, f, result.results[f], result.cycles[f], scene=spec)
+        verdict = check_order(order_verdict, frames, f, result.results[f], result.cycles[f],
+                              scene=spec)
         assert verdict["permutation"] == 1 and verdict["violations"] == 0, f"frame {f}"
         assert verdict["checked"] > 0, f"frame {f}"
     # Collisions of a Scene made from arrays, against brute force.

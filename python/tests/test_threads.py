@@ -94,21 +94,30 @@ def test_one_orderer_from_two_threads_is_serialised():
     assert len(results) == 8 and all(r == expected for r in results)
 
 
-def test_the_cpu_oracles_threads_never_change_an_order():
+def test_the_cpu_oracles_threads_never_change_an_order(order_verdict):
     """The default, threads=0 (one per core), 1, 2 and 3 give the same orders and counts over two
-    coherent frames of the pile, whose stuck set goes to the one-pass graph."""
-    scene = vissort.builtin("pile")
+    frames of the pile's motion (its stuck set goes to the one-pass graph), and every frame of
+    every run is exact by its own ground truth (order_check)."""
+    spec, size = "builtin:pile?n=200", (320, 240)
+    scene = vissort.builtin("pile", n=200)
     runs = []
     for threads in (None, 0, 1, 2, 3):
         options = {} if threads is None else {"threads": threads}
         orderer = vissort.Orderer(scene, **options)
-        frames = [orderer.order(size=(320, 240), time=t) for t in (0.0, 1 / 30)]
-        runs.append([(f.order.tolist(), [c.tolist() for c in f.cycles],
-                      {k: v for k, v in f.stats.items() if k != "ms"}) for f in frames])
+        run = []
+        for f in range(2):
+            result = orderer.order(size=size, time=f / 30)
+            verdict = order_verdict(spec, size, "static", 2, f, result.order, result.cycles)
+            assert verdict["permutation"] == 1, (threads, f)
+            assert verdict["violations"] == 0, (threads, f, verdict)
+            assert verdict["checked"] > 0, (threads, f)
+            run.append((result.order.tolist(), [c.tolist() for c in result.cycles],
+                        {k: v for k, v in result.stats.items() if k != "ms"}))
+        runs.append(run)
     assert runs[0][0][2]["graph_passes"] >= 1
     for run in runs[1:]:
         assert run == runs[0]
-    one = vissort.order(scene, size=(320, 240), threads=1)
+    one = vissort.order(scene, size=size, threads=3)
     assert one.order.tolist() == runs[0][0][0]
 
 
@@ -123,9 +132,14 @@ def test_a_negative_thread_count_is_refused():
 
 
 @pytest.mark.skipif(not vissort.has_gl, reason="render needs OpenGL; this build has none")
-def test_renders_are_the_same_on_every_thread_count():
+def test_renders_are_exact_and_the_same_on_every_thread_count():
+    """Each picture within 1/255 of the per-pixel linked-list reference (an independent method),
+    and the same bytes at 0, 1 and 3 threads."""
     scene = vissort.builtin("bunnies", n=6, seed=1)
-    images = [vissort.render(scene, size=(160, 120), all_transparent=True, threads=t)
-              for t in (0, 1, 3)]
+    settings = dict(size=(160, 120), all_transparent=True)
+    reference = vissort.render(scene, method="linked-list", **settings).astype(int)
+    images = [vissort.render(scene, threads=t, **settings) for t in (0, 1, 3)]
+    for image in images:
+        assert np.abs(image.astype(int) - reference).max() <= 1
     assert np.array_equal(images[0], images[1])
     assert np.array_equal(images[0], images[2])

@@ -43,9 +43,8 @@ Status applyEnvironment() {
             std::from_chars(threads.data(), threads.data() + threads.size(), value);
         if (error != std::errc{} || end != threads.data() + threads.size() || value > kMaxThreads)
             return Status::failure(
-                "VISSORT_THREADS must be a whole number from 0 (one per core) to "
-                "256, not '" +
-                std::string(threads) + "'");
+                "VISSORT_THREADS must be a whole number from 0 (one per core) to " +
+                std::to_string(kMaxThreads) + ", not '" + std::string(threads) + "'");
         oracle_options.threads = value;
     }
     if (threads_option)
